@@ -1,0 +1,60 @@
+"""The ``seaecho`` command: thin subcommands, parse -> config -> stage -> files.
+
+Each subcommand lives in its own module of this package with two functions:
+``register(subparsers)`` adds its parser (and sets ``func``), ``run(args) -> int`` does
+the work. Modules import heavy dependencies inside ``run`` so that ``seaecho check`` and
+``--help`` stay fast. Any :class:`~seaecho.config.SceneError` or ``ValueError`` raised for
+bad input becomes one message on stderr and exit status 2, with no traceback.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from .. import __version__
+
+#: Subcommand modules, in the order ``seaecho --help`` lists them.
+COMMANDS = (
+    "check",
+    "surface",
+)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="seaecho",
+        description="Physics-based simulator of bistatic, polarimetric marine radar echoes.",
+    )
+    parser.add_argument("--version", action="version", version=f"seaecho {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    sub.required = True
+    for name in COMMANDS:
+        module = importlib.import_module(f".{name}", __name__)
+        module.register(sub)
+    return parser
+
+
+class UsageError(ValueError):
+    """Bad command-line or scene input: reported in one line, exit status 2."""
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point of the ``seaecho`` console script."""
+    from ..config import SceneError
+
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        return int(args.func(args) or 0)
+    except (SceneError, UsageError) as exc:
+        print(f"seaecho: error: {exc}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("seaecho: interrupted; no partial output was left", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

@@ -1,0 +1,35 @@
+"""``seaecho check SCENE.toml``: validate a scene file, write nothing."""
+
+from __future__ import annotations
+
+import argparse
+import warnings
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("check", help="validate a scene file (writes nothing)",
+                       description="Validate a scene file and print a summary.")
+    p.add_argument("scene", help="scene file (TOML)")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..config import load_scene
+    from ..ocean.sampling import check_sampling
+
+    scene = load_scene(args.scene)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        check_sampling(scene)
+    lx, ly = scene.sea.size_m
+    nx, ny = scene.sea.grid_shape
+    print(f"{args.scene}: valid scene '{scene.name}'")
+    print(f"  sea: {scene.sea.spectrum} spectrum, U19.5 = {scene.sea.wind_speed_m_s} m/s "
+          f"towards {scene.sea.wind_direction_deg} deg, tile {lx} x {ly} m on {nx} x {ny}")
+    if scene.ship is not None:
+        s = scene.ship
+        print(f"  ship: {s.length_m} x {s.beam_m} m, draft {s.draft_m} m, "
+              f"{s.speed:.3f} m/s heading {s.heading_deg} deg")
+    for w in caught:
+        print(f"  warning: {w.message}")
+    return 0

@@ -1,0 +1,33 @@
+"""The whole scene: one model composed of the sections of a scene file.
+
+Sections (a TOML table each):
+
+- ``[sea]``      sea state, spectrum, tile and grid (:class:`SeaConfig`), required
+- ``[ship]``     a ship and its wake (:class:`ShipConfig`), optional
+- ``[run]``      seed, output, times (:class:`RunConfig`)
+
+Sections that later stages add (radar, platforms, tracing, objects, targets) are
+registered here too, each in its own module of this package.
+"""
+
+from __future__ import annotations
+
+from pydantic import Field
+
+from .base import Section
+from .run import RunConfig
+from .sea import SeaConfig
+from .ship import ShipConfig
+
+
+class Scene(Section):
+    """A validated scene file."""
+
+    name: str = Field("", max_length=200, description="a short name for the scene")
+    description: str = Field("", max_length=5000, description="free text")
+    sea: SeaConfig = Field(..., description="the sea [sea]")
+    ship: ShipConfig | None = Field(None, description="the ship and its wake [ship]")
+    run: RunConfig = Field(default_factory=RunConfig, description="run options [run]")
+
+
+__all__ = ["Scene"]

@@ -1,0 +1,94 @@
+"""``[sea]`` section: sea state, wave spectrum, tile and grid, sea water."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from .base import Section
+
+SpectrumName = Literal["pierson-moskowitz", "jonswap", "elfouhaily"]
+SpreadingName = Literal["longuet-higgins", "elfouhaily"]
+
+
+class SeaConfig(Section):
+    """The wind-driven sea: spectrum, tile, grid and water properties."""
+
+    spectrum: SpectrumName = Field(
+        "elfouhaily",
+        description="omnidirectional wave spectrum (paper eqs 4-5): 'pierson-moskowitz', "
+        "'jonswap' (fetch-limited) or 'elfouhaily' (unified, with capillary waves)",
+    )
+    spreading: SpreadingName = Field(
+        "longuet-higgins",
+        description="directional spreading function: 'longuet-higgins' cos^2s(psi/2) "
+        "(paper eq 6) or 'elfouhaily' (Elfouhaily et al. 1997, eq 49)",
+    )
+    spreading_s: float = Field(
+        1.0,
+        gt=0.0,
+        le=100.0,
+        description="Longuet-Higgins spreading exponent s [-] (paper eq 6 uses s = 1)",
+    )
+    wind_speed_m_s: float = Field(
+        ...,
+        gt=0.0,
+        le=40.0,
+        description="wind speed U19.5 at 19.5 m above the sea [m/s] (paper eq 5)",
+    )
+    wind_direction_deg: float = Field(
+        0.0,
+        ge=-360.0,
+        le=360.0,
+        description="direction the wind blows towards, counter-clockwise from +x (east) [deg]",
+    )
+    fetch_m: float | None = Field(
+        None,
+        gt=0.0,
+        le=1.0e8,
+        description="fetch [m]; required by 'jonswap'; omit for a fully developed sea "
+        "with 'elfouhaily'",
+    )
+    depth_m: float | None = Field(
+        None,
+        gt=0.0,
+        le=1.0e5,
+        description="water depth for the dispersion relation (paper eq 15) [m]; omit for "
+        "deep water",
+    )
+    size_x_m: float = Field(
+        ..., gt=0.0, le=1.0e5, description="tile extent along x (east) [m]"
+    )
+    size_y_m: float | None = Field(
+        None, gt=0.0, le=1.0e5, description="tile extent along y (north) [m]; default size_x_m"
+    )
+    nx: int = Field(..., ge=4, le=16384, description="grid points along x [-] (even)")
+    ny: int | None = Field(None, ge=4, le=16384, description="grid points along y [-]; default nx")
+    temperature_c: float = Field(
+        20.0, ge=-2.0, le=40.0, description="sea surface temperature [degC]"
+    )
+    salinity_psu: float = Field(35.0, ge=0.0, le=45.0, description="salinity [psu]")
+
+    @model_validator(mode="after")
+    def _check(self) -> SeaConfig:
+        for name in ("nx", "ny"):
+            n = getattr(self, name)
+            if n is not None and n % 2:
+                raise ValueError(f"{name} = {n}: must be even (FFT grid with a Nyquist bin)")
+        if self.spectrum == "jonswap" and self.fetch_m is None:
+            raise ValueError("fetch_m is required when spectrum = 'jonswap' (fetch-limited sea)")
+        return self
+
+    @property
+    def grid_shape(self) -> tuple[int, int]:
+        """(nx, ny) grid points."""
+        return self.nx, self.ny if self.ny is not None else self.nx
+
+    @property
+    def size_m(self) -> tuple[float, float]:
+        """(Lx, Ly) tile extents [m]."""
+        return self.size_x_m, self.size_y_m if self.size_y_m is not None else self.size_x_m
+
+
+__all__ = ["SeaConfig", "SpectrumName", "SpreadingName"]

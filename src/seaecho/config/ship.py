@@ -1,0 +1,57 @@
+"""``[ship]`` section: the ship that makes the wake (and, later, the hull echo)."""
+
+from __future__ import annotations
+
+from pydantic import Field, model_validator
+
+from ..constants import KNOT
+from .base import Section
+
+
+class ShipConfig(Section):
+    """A ship sailing in a straight line at constant speed."""
+
+    length_m: float = Field(..., gt=0.0, le=500.0, description="waterline length L [m]")
+    beam_m: float = Field(..., gt=0.0, le=80.0, description="beam B [m]")
+    draft_m: float = Field(..., gt=0.0, le=30.0, description="draft T [m]")
+    speed_kn: float | None = Field(
+        None, ge=0.0, le=60.0, description="speed through the water [kn]; or give speed_m_s"
+    )
+    speed_m_s: float | None = Field(
+        None, ge=0.0, le=31.0, description="speed through the water [m/s]; or give speed_kn"
+    )
+    heading_deg: float = Field(
+        0.0,
+        ge=-360.0,
+        le=360.0,
+        description="course the ship sails towards, counter-clockwise from +x (east) [deg]",
+    )
+    position_m: tuple[float, float] = Field(
+        (0.0, 0.0), description="(x, y) of the hull centre at time 0 [m]"
+    )
+    kelvin_wake: bool = Field(True, description="add the Kelvin wake (paper eq 16) to the sea")
+    turbulent_wake_length_m: float | None = Field(
+        None,
+        ge=0.0,
+        le=1.0e5,
+        description="length of the turbulent (damped) wake strip behind the stern [m]; "
+        "default 20 ship lengths",
+    )
+
+    @model_validator(mode="after")
+    def _one_speed(self) -> ShipConfig:
+        if (self.speed_kn is None) == (self.speed_m_s is None):
+            raise ValueError("give exactly one of speed_kn and speed_m_s")
+        if self.beam_m >= self.length_m:
+            raise ValueError(
+                f"beam_m = {self.beam_m} must be smaller than length_m = {self.length_m}"
+            )
+        return self
+
+    @property
+    def speed(self) -> float:
+        """Speed [m/s]."""
+        return self.speed_m_s if self.speed_m_s is not None else self.speed_kn * KNOT
+
+
+__all__ = ["ShipConfig"]

@@ -1,0 +1,1 @@
+"""seaecho.ocean stage."""

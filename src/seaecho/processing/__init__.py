@@ -1,0 +1,1 @@
+"""seaecho.processing stage."""

@@ -1,0 +1,1 @@
+"""seaecho.tracing stage."""
