@@ -15,6 +15,7 @@ from __future__ import annotations
 from pydantic import Field
 
 from .base import Section
+from .radar import PlatformConfig, RadarConfig, TargetConfig
 from .run import RunConfig
 from .sea import SeaConfig
 from .ship import ShipConfig
@@ -28,6 +29,18 @@ class Scene(Section):
     sea: SeaConfig = Field(..., description="the sea [sea]")
     ship: ShipConfig | None = Field(None, description="the ship and its wake [ship]")
     run: RunConfig = Field(default_factory=RunConfig, description="run options [run]")
+    radar: RadarConfig | None = Field(
+        None, description="the radar: waveform, pulses, noise [radar]"
+    )
+    transmitter: PlatformConfig | None = Field(
+        None, description="transmitting platform and antenna [transmitter]"
+    )
+    receiver: PlatformConfig | None = Field(
+        None, description="receiving platform and antenna [receiver]; omit for monostatic"
+    )
+    targets: tuple[TargetConfig, ...] = Field(
+        (), max_length=10_000, description="point targets [[targets]]"
+    )
 
 
 __all__ = ["Scene"]

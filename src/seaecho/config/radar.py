@@ -1,0 +1,373 @@
+"""Radar sections of a scene file: platforms, antennas, waveform, receiver, targets.
+
+Sections (TOML tables):
+
+- ``[radar]``                 carrier, sampling, PRF, pulses, power, noise, channels, sea
+  clutter on/off; ``[radar.waveform]`` the transmitted pulse.
+- ``[transmitter]``           the transmitting platform (trajectory, attitude, optional
+  Gauss-Markov perturbation ``[transmitter.perturbation]``) and its antenna
+  ``[transmitter.antenna]``.
+- ``[receiver]``              the same for the receiver; omit it for a monostatic radar
+  (the receiver is then the transmitter's platform and antenna).
+- ``[[targets]]``             point targets: position, velocity, RCS or a 2x2 scattering
+  matrix.
+
+Conventions (``shared/DESIGN.md``): SI inside, degrees and dB only in names ending
+``_deg``/``_db``; world frame x east, y north, z up. A platform's body frame is x forward,
+y left, z up; its attitude (yaw, pitch, roll) turns the body frame into the world frame
+as R = Rz(yaw) Ry(-pitch) Rx(roll): yaw counter-clockwise from +x (east), pitch positive
+nose up, roll positive right wing down.
+
+Polarisation ports. An antenna has two orthogonal ports, named by its ``basis``:
+``hv`` (ports H and V), ``slant`` (ports P = +45 deg and M = -45 deg) or ``circular``
+(ports R and L, IEEE handedness). A channel ``"mn"`` is receive port m, transmit port n
+(S_mn: m received, n transmitted), e.g. ``"HV"`` receives H and transmits V.
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from .base import Section
+
+Vec3 = tuple[float, float, float]
+
+#: Port letters of each antenna polarisation basis (first letter, second letter).
+PORTS: dict[str, tuple[str, str]] = {"hv": ("H", "V"), "slant": ("P", "M"), "circular": ("R", "L")}
+
+PatternName = Literal["rectangular", "isotropic", "dipole", "hw_dipole", "tr38901"]
+BasisName = Literal["hv", "slant", "circular"]
+WeightingName = Literal["none", "hamming", "taylor"]
+
+_POS = 1.0e8  # bound on coordinates [m]: beyond geostationary orbit
+_VEL = 1.0e4  # bound on speeds [m/s]: beyond orbital speed
+
+
+class GaussMarkovConfig(Section):
+    """First-order Gauss-Markov perturbation of a platform's path and attitude.
+
+    Each axis x of the perturbation obeys dx/dt = -x / tau + w(t), with w white, so that x
+    is stationary with standard deviation sigma and autocorrelation
+    sigma^2 exp(-|dt| / tau) (Gelb, *Applied Optimal Estimation*, 1974, section 3.8).
+    The draws come from the scene's seed (``[run].seed``), one stream per platform.
+    """
+
+    position_sigma_m: Vec3 = Field(
+        (0.0, 0.0, 0.0),
+        description="stationary standard deviation of the path error along world x, y, z [m]",
+    )
+    position_tau_s: float = Field(
+        10.0, gt=0.0, le=1.0e6, description="correlation time of the path error [s]"
+    )
+    attitude_sigma_deg: Vec3 = Field(
+        (0.0, 0.0, 0.0),
+        description="stationary standard deviation of the (yaw, pitch, roll) error [deg]",
+    )
+    attitude_tau_s: float = Field(
+        1.0, gt=0.0, le=1.0e6, description="correlation time of the attitude error [s]"
+    )
+    step_s: float = Field(
+        1.0e-3, gt=0.0, le=10.0,
+        description="time step on which the process is drawn (then interpolated) [s]",
+    )
+
+    @model_validator(mode="after")
+    def _check(self) -> GaussMarkovConfig:
+        for name in ("position_sigma_m", "attitude_sigma_deg"):
+            values = getattr(self, name)
+            if any(not (0.0 <= v <= 1.0e4) for v in values):
+                raise ValueError(f"{name} = {list(values)}: each must be in [0, 1e4]")
+        return self
+
+
+class AntennaConfig(Section):
+    """An antenna: pattern, size, polarisation ports, pointing."""
+
+    pattern: PatternName = Field(
+        "rectangular",
+        description="'rectangular' (uniformly illuminated aperture width x height, the "
+        "paper's section V), 'isotropic', or Sionna RT's 'dipole', 'hw_dipole', 'tr38901'",
+    )
+    width_m: float | None = Field(
+        None, gt=0.0, le=100.0,
+        description="aperture width, along the antenna's horizontal axis [m] (rectangular)",
+    )
+    height_m: float | None = Field(
+        None, gt=0.0, le=100.0,
+        description="aperture height, along the antenna's vertical axis [m] (rectangular)",
+    )
+    basis: BasisName = Field(
+        "hv",
+        description="polarisation ports: 'hv' (H, V), 'slant' (P = +45 deg, M = -45 deg) "
+        "or 'circular' (R, L)",
+    )
+    cross_polar_isolation_db: float | None = Field(
+        None, ge=0.0, le=200.0,
+        description="cross-polar isolation of each port [dB]; omit for ideal ports",
+    )
+    look_at_m: Vec3 | None = Field(
+        None, description="point the boresight at this world point (x, y, z) [m]"
+    )
+    track_look_at: bool = Field(
+        False,
+        description="keep the boresight on look_at_m at every pulse (spotlight); default: "
+        "aim at t = 0 and stay fixed to the platform (stripmap)",
+    )
+    azimuth_deg: float | None = Field(
+        None, ge=-360.0, le=360.0,
+        description="boresight azimuth in the platform body frame, counter-clockwise from "
+        "body x (forward) [deg]; with depression_deg, instead of look_at_m",
+    )
+    depression_deg: float | None = Field(
+        None, ge=-90.0, le=90.0,
+        description="boresight depression below the body horizontal plane [deg]",
+    )
+
+    @model_validator(mode="after")
+    def _check(self) -> AntennaConfig:
+        if self.pattern == "rectangular" and (self.width_m is None or self.height_m is None):
+            raise ValueError("pattern 'rectangular' needs width_m and height_m")
+        by_angles = self.azimuth_deg is not None or self.depression_deg is not None
+        if by_angles and (self.azimuth_deg is None or self.depression_deg is None):
+            raise ValueError("give both azimuth_deg and depression_deg")
+        if by_angles == (self.look_at_m is not None):
+            raise ValueError("point the antenna by look_at_m or by azimuth_deg/depression_deg "
+                             "(exactly one)")
+        if self.track_look_at and self.look_at_m is None:
+            raise ValueError("track_look_at needs look_at_m")
+        return self
+
+    @property
+    def ports(self) -> tuple[str, str]:
+        """The two port letters of this antenna's basis."""
+        return PORTS[self.basis]
+
+
+class PlatformConfig(Section):
+    """A platform carrying an antenna: trajectory, attitude, perturbation."""
+
+    motion: Literal["fixed", "linear", "waypoints"] = Field(
+        "fixed",
+        description="'fixed' (position_m), 'linear' (position_m at t = 0 + velocity_m_s t) "
+        "or 'waypoints' (piecewise-linear through waypoint_positions_m)",
+    )
+    position_m: Vec3 | None = Field(
+        None, description="position (x, y, z) at t = 0 [m] (fixed, linear)"
+    )
+    velocity_m_s: Vec3 = Field((0.0, 0.0, 0.0), description="velocity (linear) [m/s]")
+    waypoint_times_s: tuple[float, ...] | None = Field(
+        None, min_length=2, max_length=100_000,
+        description="times of the waypoints, increasing [s] (waypoints)",
+    )
+    waypoint_positions_m: tuple[Vec3, ...] | None = Field(
+        None, min_length=2, max_length=100_000,
+        description="waypoint positions (x, y, z) [m], one per waypoint time",
+    )
+    yaw_deg: float | None = Field(
+        None, ge=-360.0, le=360.0,
+        description="heading of the body x axis, counter-clockwise from east [deg]; "
+        "default: along the horizontal velocity (0 if at rest)",
+    )
+    pitch_deg: float = Field(0.0, ge=-90.0, le=90.0, description="pitch, nose up [deg]")
+    roll_deg: float = Field(
+        0.0, ge=-180.0, le=180.0, description="roll, right wing down [deg]"
+    )
+    perturbation: GaussMarkovConfig | None = Field(
+        None, description="random path and attitude errors [<platform>.perturbation]"
+    )
+    antenna: AntennaConfig = Field(..., description="the antenna [<platform>.antenna]")
+
+    @model_validator(mode="after")
+    def _check(self) -> PlatformConfig:
+        for name in ("position_m", "velocity_m_s"):
+            v = getattr(self, name)
+            bound = _POS if name == "position_m" else _VEL
+            if v is not None and any(abs(c) > bound for c in v):
+                raise ValueError(f"{name} = {list(v)}: each component must be within "
+                                 f"+-{bound:g}")
+        if self.motion in ("fixed", "linear"):
+            if self.position_m is None:
+                raise ValueError(f"motion '{self.motion}' needs position_m")
+            if self.waypoint_times_s is not None or self.waypoint_positions_m is not None:
+                raise ValueError("waypoints are only used with motion 'waypoints'")
+            if self.motion == "fixed" and any(self.velocity_m_s):
+                raise ValueError("motion 'fixed' cannot have a velocity; use 'linear'")
+        else:
+            t, p = self.waypoint_times_s, self.waypoint_positions_m
+            if t is None or p is None:
+                raise ValueError("motion 'waypoints' needs waypoint_times_s and "
+                                 "waypoint_positions_m")
+            if len(t) != len(p):
+                raise ValueError(f"{len(t)} waypoint times but {len(p)} positions")
+            if any(b <= a for a, b in zip(t, t[1:], strict=False)):
+                raise ValueError(f"waypoint_times_s = {list(t)}: must increase strictly")
+            if self.position_m is not None or any(self.velocity_m_s):
+                raise ValueError("motion 'waypoints' takes no position_m/velocity_m_s")
+        return self
+
+
+class WaveformConfig(Section):
+    """The transmitted pulse (complex baseband envelope)."""
+
+    kind: Literal["lfm", "pulse"] = Field(
+        "lfm", description="'lfm' (linear FM chirp) or 'pulse' (plain rectangular pulse)"
+    )
+    bandwidth_hz: float | None = Field(
+        None, gt=0.0, le=1.0e10, description="chirp bandwidth B [Hz] (lfm)"
+    )
+    duration_s: float = Field(..., gt=0.0, le=1.0e-2, description="pulse duration T [s]")
+    up_chirp: bool = Field(True, description="frequency increases over the pulse (lfm)")
+
+    @model_validator(mode="after")
+    def _check(self) -> WaveformConfig:
+        if self.kind == "lfm" and self.bandwidth_hz is None:
+            raise ValueError("kind 'lfm' needs bandwidth_hz")
+        if self.kind == "pulse" and self.bandwidth_hz is not None:
+            raise ValueError("kind 'pulse' has bandwidth 1/duration_s; omit bandwidth_hz")
+        return self
+
+
+class RadarConfig(Section):
+    """Carrier, sampling, pulses, power, receiver noise, channels, what to simulate."""
+
+    carrier_frequency_hz: float = Field(
+        ..., gt=1.0e6, le=1.0e12, description="carrier frequency f_c [Hz]"
+    )
+    sampling_rate_hz: float = Field(
+        ..., gt=0.0, le=1.0e11, description="complex baseband sampling rate f_s [Hz]"
+    )
+    prf_hz: float = Field(..., gt=0.0, le=1.0e7, description="pulse repetition frequency [Hz]")
+    n_pulses: int = Field(1, ge=1, le=10_000_000, description="number of pulses [-]")
+    start_time_s: float = Field(
+        0.0, ge=-1.0e7, le=1.0e7, description="emission time of pulse 0 [s]"
+    )
+    transmit_power_w: float = Field(
+        1.0, gt=0.0, le=1.0e9, description="peak transmit power P_t [W]"
+    )
+    waveform: WaveformConfig = Field(..., description="the pulse [radar.waveform]")
+    window_start_m: float | None = Field(
+        None, ge=0.0, le=1.0e9,
+        description="start of the receive window as range c*tau/2 (half the bistatic path "
+        "length) [m]; omit (with window_end_m) to cover the tile and targets",
+    )
+    window_end_m: float | None = Field(
+        None, gt=0.0, le=1.0e9, description="end of the receive window as range c*tau/2 [m]"
+    )
+    channels: tuple[str, ...] = Field(
+        ("HH", "HV", "VH", "VV"), min_length=1, max_length=4,
+        description="channels 'mn' (receive port m, transmit port n), e.g. HH, HV, VH, VV",
+    )
+    sea_clutter: bool = Field(True, description="simulate the sea's echo (off: targets only)")
+    sea_update_pulses: int = Field(
+        1, ge=1, le=10_000_000, description="recompute the sea surface every N pulses [-]"
+    )
+    thermal_noise: bool = Field(False, description="add receiver thermal noise k T0 F B")
+    noise_figure_db: float = Field(3.0, ge=0.0, le=50.0, description="noise figure F [dB]")
+    noise_bandwidth_hz: float | None = Field(
+        None, gt=0.0, le=1.0e11,
+        description="receiver noise bandwidth B_n [Hz]; default the sampling rate",
+    )
+    range_weighting: WeightingName = Field(
+        "none", description="matched-filter weighting: 'none', 'hamming' or 'taylor'"
+    )
+    taylor_nbar: int = Field(5, ge=1, le=100, description="Taylor window nbar [-]")
+    taylor_sidelobe_db: float = Field(
+        35.0, gt=0.0, le=150.0, description="Taylor window peak sidelobe level below peak [dB]"
+    )
+    sigma_map_pulse: int = Field(
+        0, ge=0, description="pulse whose per-facet sigma maps are saved [-]"
+    )
+
+    @model_validator(mode="after")
+    def _check(self) -> RadarConfig:
+        if (self.window_start_m is None) != (self.window_end_m is None):
+            raise ValueError("give both window_start_m and window_end_m, or neither")
+        if self.window_start_m is not None and self.window_end_m <= self.window_start_m:
+            raise ValueError(f"window_end_m = {self.window_end_m} must exceed "
+                             f"window_start_m = {self.window_start_m}")
+        if len(set(self.channels)) != len(self.channels):
+            raise ValueError(f"channels = {list(self.channels)}: repeated channel")
+        w = self.waveform
+        bandwidth = w.bandwidth_hz if w.kind == "lfm" else 1.0 / w.duration_s
+        if bandwidth > self.sampling_rate_hz:
+            raise ValueError(f"waveform bandwidth {bandwidth:g} Hz exceeds sampling_rate_hz "
+                             f"= {self.sampling_rate_hz:g} (complex sampling needs f_s >= B)")
+        if w.duration_s >= 1.0 / self.prf_hz:
+            raise ValueError(f"pulse duration {w.duration_s:g} s is not shorter than the "
+                             f"pulse repetition interval {1.0 / self.prf_hz:g} s")
+        if self.sigma_map_pulse >= self.n_pulses:
+            raise ValueError(f"sigma_map_pulse = {self.sigma_map_pulse} must be below "
+                             f"n_pulses = {self.n_pulses}")
+        return self
+
+    @property
+    def wavelength_m(self) -> float:
+        """Carrier wavelength lambda = c0 / f_c [m]."""
+        from ..constants import C0
+
+        return C0 / self.carrier_frequency_hz
+
+
+class TargetConfig(Section):
+    """A point target: position, velocity and its RCS or 2x2 scattering matrix.
+
+    The scattering amplitudes s_mn are in metres, |s_mn|^2 = sigma_mn [m^2], in the
+    forward-scattering-alignment bases of ``shared/DESIGN.md`` (m received, n transmitted),
+    given as (real, imaginary) pairs.
+    """
+
+    name: str = Field("", max_length=200, description="a label for the target")
+    position_m: Vec3 = Field(..., description="position (x, y, z) at t = 0 [m]")
+    velocity_m_s: Vec3 = Field((0.0, 0.0, 0.0), description="constant velocity [m/s]")
+    rcs_m2: float | None = Field(
+        None, ge=0.0, le=1.0e9,
+        description="RCS sigma [m^2] of a co-polar target (s_hh = s_vv = sqrt(sigma), "
+        "s_hv = s_vh = 0); or give s_hh, s_hv, s_vh, s_vv",
+    )
+    s_hh: tuple[float, float] | None = Field(None, description="s_hh (re, im) [m]")
+    s_hv: tuple[float, float] | None = Field(None, description="s_hv (re, im) [m]")
+    s_vh: tuple[float, float] | None = Field(None, description="s_vh (re, im) [m]")
+    s_vv: tuple[float, float] | None = Field(None, description="s_vv (re, im) [m]")
+
+    @model_validator(mode="after")
+    def _check(self) -> TargetConfig:
+        given = [getattr(self, n) is not None for n in ("s_hh", "s_hv", "s_vh", "s_vv")]
+        if (self.rcs_m2 is None) == (not any(given)):
+            raise ValueError("give either rcs_m2 or the scattering matrix s_hh, s_hv, s_vh, "
+                             "s_vv (missing ones are 0)")
+        for name in ("position_m", "velocity_m_s"):
+            v = getattr(self, name)
+            bound = _POS if name == "position_m" else _VEL
+            if any(abs(c) > bound for c in v):
+                raise ValueError(f"{name} = {list(v)}: each component must be within "
+                                 f"+-{bound:g}")
+        return self
+
+    def scattering_matrix(self):
+        """The 2x2 complex scattering amplitude [m] in (v, h) order: [[s_vv, s_vh], [s_hv, s_hh]].
+
+        Row = received, column = transmitted, both ordered (v, h) as in ``shared/DESIGN.md``.
+        """
+        import numpy as np
+
+        if self.rcs_m2 is not None:
+            a = np.sqrt(self.rcs_m2)
+            return np.array([[a, 0.0], [0.0, a]], dtype=complex)
+
+        def c(v):
+            return 0.0 if v is None else complex(v[0], v[1])
+
+        return np.array([[c(self.s_vv), c(self.s_vh)], [c(self.s_hv), c(self.s_hh)]])
+
+
+__all__ = [
+    "PORTS",
+    "AntennaConfig",
+    "GaussMarkovConfig",
+    "PlatformConfig",
+    "RadarConfig",
+    "TargetConfig",
+    "WaveformConfig",
+]
