@@ -1,1 +1,1 @@
-"""seaecho.io stage."""
+"""Datasets (netCDF via xarray/h5netcdf, written atomically) and figures."""

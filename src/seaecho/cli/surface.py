@@ -1,0 +1,57 @@
+"""``seaecho surface SCENE.toml -o OUT.nc``: the sea (+ wake) at one or several times."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "surface", help="synthesise the sea surface (+ wake) at given times",
+        description="Synthesise the scene's sea surface and ship wake at one or several "
+        "times; write a netCDF dataset and a PNG elevation map (paper Fig. 6a).",
+    )
+    p.add_argument("scene", help="scene file (TOML)")
+    p.add_argument("-o", "--output", help="output netCDF file (default: [run] output, "
+                   "else <scene>_surface.nc)")
+    p.add_argument("--time", "-t", type=float, nargs="+", metavar="T_S",
+                   help="times [s] (default: [run] surface_times_s)")
+    p.add_argument("--no-figure", action="store_true", help="do not write the PNG")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    import math
+    import warnings
+
+    from ..config import load_scene
+    from ..io.dataset import write_dataset_atomic
+    from ..io.figures import elevation_map
+    from ..io.surface import surface_dataset
+    from ..ocean.sampling import check_sampling
+    from . import UsageError
+
+    scene = load_scene(args.scene)
+    if args.output:
+        out = Path(args.output)
+    elif scene.run.output:
+        out = Path(scene.run.output)
+    else:
+        out = Path(Path(args.scene).stem + "_surface.nc")
+    if not out.parent.is_dir() and str(out.parent):
+        raise UsageError(f"output directory {out.parent} does not exist")
+    times = args.time if args.time else list(scene.run.surface_times_s)
+    if any(not math.isfinite(t) for t in times):
+        raise UsageError(f"--time {times}: times must be finite numbers of seconds")
+    with warnings.catch_warnings():
+        warnings.simplefilter("always")
+        check_sampling(scene)
+    ds = surface_dataset(scene, times)
+    write_dataset_atomic(ds, out)
+    print(f"wrote {out} ({len(times)} time(s), {ds.sizes['y']} x {ds.sizes['x']} grid, "
+          f"Hs of resolved band {ds.attrs['expected_hs_resolved_m']:.3f} m)")
+    if not args.no_figure:
+        png = elevation_map(ds, out.with_suffix(".png"))
+        print(f"wrote {png}")
+    return 0

@@ -1,0 +1,253 @@
+"""Random sea surface synthesis and time evolution (paper eqs 12 and 15).
+
+A realisation is drawn once, in the Fourier domain, and evolved to any time t exactly:
+
+.. math::
+
+    \\hat z(\\mathbf K, t) = h_0(\\mathbf K) e^{-j\\omega t}
+        + h_0^*(-\\mathbf K) e^{+j\\omega t},\\qquad
+    h_0(\\mathbf K) = \\xi(\\mathbf K)\\sqrt{\\tfrac12 \\bar\\Psi(\\mathbf K)\\,\\delta K_x
+        \\delta K_y}                                                               (12')
+
+    z(\\mathbf r, t) = \\sum_{\\mathbf K} \\hat z(\\mathbf K, t) e^{j \\mathbf K\\cdot\\mathbf r}
+
+with xi zero-mean circular complex Gaussian of unit variance (the paper's uniform [0, 1]
+draws of eq 12 have a non-zero mean and the wrong distribution, see
+``../shared/DESIGN.md``), omega(K) from the dispersion relation (eq 15) and
+:math:`\\bar\\Psi` the spectrum averaged over each grid cell. The first term is the wave
+that travels along +K, the second the one along -K; the sum is Hermitian
+(:math:`\\hat z(-K) = \\hat z^*(K)`) so z is real, and
+:math:`E\\,z^2 = \\sum_K \\bar\\Psi\\,\\delta K^2`, the integral of the spectrum over the
+resolved band (every grid cell but the zero-wavenumber one and the Nyquist row/column).
+
+Slopes are spectral derivatives (j K_x, j K_y); the vertical surface velocity is
+dz/dt; the horizontal orbital velocity at the surface follows linear wave theory,
+u = (K / K) omega coth(K d) z for a wave travelling along K (Lamb 1932, art. 228).
+
+The tessellated FFT approach is that of Tessendorf (2001) and Mastin et al. (1987).
+
+References
+----------
+.. [1] G. A. Mastin, P. A. Watterberg and J. F. Mareda, "Fourier synthesis of ocean
+   scenes", IEEE Computer Graphics and Applications 7(3), 16-23, 1987.
+.. [2] J. Tessendorf, "Simulating ocean water", SIGGRAPH course notes, 2001.
+.. [3] H. Lamb, *Hydrodynamics*, 6th ed., 1932, art. 228.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.fft
+from numpy.typing import NDArray
+
+from ..constants import SURFACE_TENSION_OVER_DENSITY
+from .dispersion import angular_frequency
+from .spectra import DirectionalSpectrum
+
+#: Grid cells whose centre lies within this many peak wavenumbers are integrated on a
+#: sub-grid when a cell is coarser than _REFINE_COARSE peak wavenumbers; elsewhere the
+#: spectrum is smooth on the scale of a cell (midpoint error ~ (dk / k_p)^2 < 0.3 %).
+_REFINE_PEAKS = 4.0
+_REFINE_COARSE = 0.05
+_REFINE_SUB = 6
+
+
+def grid_coordinates(size: float, n: int) -> NDArray[np.float64]:
+    """Cell coordinates of a periodic grid centred on 0: (arange(n) - n/2) * size / n [m]."""
+    return (np.arange(n) - n // 2) * (size / n)
+
+
+def cell_averaged_spectrum(
+    spectrum: DirectionalSpectrum,
+    kx: NDArray[np.float64],
+    ky: NDArray[np.float64],
+    dkx: float,
+    dky: float,
+) -> NDArray[np.float64]:
+    """Psi averaged over the grid cells centred on (kx, ky) of size dkx x dky [m^4].
+
+    Near the spectral peak (within a few peak wavenumbers) the spectrum varies on the
+    scale of a cell of a small tile, so those cells are integrated with a 6 x 6 midpoint
+    rule; elsewhere the midpoint value is used. kx, ky broadcast against each other.
+    """
+    kx, ky = np.broadcast_arrays(np.asarray(kx, float), np.asarray(ky, float))
+    k = np.hypot(kx, ky)
+    psi = _psi_on_fft_grid(spectrum, kx, ky, k)
+    k_peak = spectrum.peak_wavenumber()
+    refine = np.broadcast_to(k < _REFINE_PEAKS * k_peak + 2 * np.hypot(dkx, dky), psi.shape)
+    if max(dkx, dky) > _REFINE_COARSE * k_peak and np.any(refine):
+        kxb, kyb = np.broadcast_arrays(kx, ky)
+        cx = kxb[refine][:, None]
+        cy = kyb[refine][:, None]
+        offsets = (np.arange(_REFINE_SUB) + 0.5) / _REFINE_SUB - 0.5
+        ox, oy = np.meshgrid(offsets * dkx, offsets * dky, indexing="xy")
+        sub = spectrum(cx + ox.ravel()[None, :], cy + oy.ravel()[None, :])
+        psi = psi.copy()
+        psi[refine] = sub.mean(axis=1)
+    return psi
+
+
+def _psi_on_fft_grid(
+    spectrum: DirectionalSpectrum,
+    kx: NDArray[np.float64],
+    ky: NDArray[np.float64],
+    k: NDArray[np.float64],
+) -> NDArray[np.float64]:
+    """Psi on a grid, evaluating the (costly) omnidirectional spectrum once per |K|.
+
+    On an FFT grid |K| takes each value at up to four points (+-kx, +-ky); the
+    omnidirectional part is evaluated on the unique (|kx|, |ky|) pairs and gathered, which
+    gives the same numbers as ``spectrum(kx, ky)`` at a quarter of the cost.
+    """
+    ukx, ix = np.unique(np.abs(kx[0, :]), return_inverse=True)
+    uky, iy = np.unique(np.abs(ky[:, 0]), return_inverse=True)
+    if ukx.size * uky.size * 2 > k.size or not (
+        np.all(kx == kx[:1, :]) and np.all(ky == ky[:, :1])
+    ):
+        return spectrum(kx, ky)
+    kq = np.hypot(ukx[None, :], uky[:, None])
+    omni = spectrum.omni(kq)[iy[:, None], ix[None, :]]
+    psi_dir = np.arctan2(ky, kx) - spectrum.wind_direction
+    pos = k > 0
+    ks = np.where(pos, k, 1.0)
+    return np.where(pos, omni * spectrum.spread(ks, psi_dir) / ks, 0.0)  # Eq. 4
+
+
+@dataclass(frozen=True)
+class SurfaceFields:
+    """The sea surface on the grid at one time; arrays shaped (ny, nx)."""
+
+    t: float  #: time [s]
+    elevation: NDArray[np.float64]  #: z [m]
+    slope_x: NDArray[np.float64]  #: dz/dx [-]
+    slope_y: NDArray[np.float64]  #: dz/dy [-]
+    velocity: NDArray[np.float64]  #: surface particle velocity (u, v, w), shape (ny, nx, 3) [m/s]
+
+
+class SeaSurface:
+    """One random realisation of a sea surface on a periodic grid, at any time.
+
+    Parameters
+    ----------
+    spectrum : DirectionalSpectrum
+        The directional wave spectrum.
+    size : (float, float)
+        Tile extents (Lx, Ly) [m].
+    shape : (int, int)
+        Grid points (nx, ny), each even.
+    rng : numpy.random.Generator
+        Source of the random amplitudes (see :mod:`seaecho.rng`).
+    depth : float or None
+        Water depth [m] for the dispersion relation (eq 15); None for deep water.
+    surface_tension : float
+        Kinematic surface tension [m^3/s^2] in the dispersion relation; 0 for eq 15 as
+        printed.
+
+    Notes
+    -----
+    Arrays are shaped (ny, nx): axis 0 is y (north), axis 1 is x (east). Coordinates are
+    ``x = (arange(nx) - nx/2) dx``; the tile is periodic.
+    """
+
+    def __init__(
+        self,
+        spectrum: DirectionalSpectrum,
+        size: tuple[float, float],
+        shape: tuple[int, int],
+        rng: np.random.Generator,
+        depth: float | None = None,
+        surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
+    ) -> None:
+        lx, ly = (float(v) for v in size)
+        nx, ny = (int(v) for v in shape)
+        if nx < 4 or ny < 4 or nx % 2 or ny % 2:
+            raise ValueError(f"shape = {shape}: grid sizes must be even and >= 4")
+        if not (lx > 0 and ly > 0):
+            raise ValueError(f"size = {size} m: tile extents must be > 0")
+        self.spectrum = spectrum
+        self.size = (lx, ly)
+        self.shape = (nx, ny)
+        self.depth = depth
+        self.dx, self.dy = lx / nx, ly / ny
+        self.x = grid_coordinates(lx, nx)
+        self.y = grid_coordinates(ly, ny)
+        self.dkx, self.dky = 2 * np.pi / lx, 2 * np.pi / ly
+
+        # full-plane wavenumber grid in FFT order, (ny, nx)
+        kx = 2 * np.pi * np.fft.fftfreq(nx, self.dx)
+        ky = 2 * np.pi * np.fft.fftfreq(ny, self.dy)
+        kxg, kyg = kx[None, :], ky[:, None]
+        psi = cell_averaged_spectrum(spectrum, kxg, kyg, self.dkx, self.dky)
+        resolved = np.ones((ny, nx), dtype=bool)
+        resolved[0, 0] = False  # zero mean
+        resolved[ny // 2, :] = False  # Nyquist row and column: no travelling direction
+        resolved[:, nx // 2] = False
+        psi = np.where(resolved, psi, 0.0)
+        #: expected variance of z: the integral of Psi over the resolved band [m^2]
+        self.resolved_variance = float(psi.sum() * self.dkx * self.dky)
+
+        xi = (rng.standard_normal((ny, nx)) + 1j * rng.standard_normal((ny, nx))) / np.sqrt(2)
+        h0 = xi * np.sqrt(0.5 * psi * self.dkx * self.dky)  # Eq. 12'
+        h0_neg_conj = np.conj(np.roll(np.flip(h0, axis=(0, 1)), 1, axis=(0, 1)))  # h0*(-K)
+
+        # keep the half plane kx >= 0 for real inverse FFTs (axis 1 = x is the rfft axis)
+        half = nx // 2 + 1
+        self._a = np.ascontiguousarray(h0[:, :half])
+        self._b = np.ascontiguousarray(h0_neg_conj[:, :half])
+        self._kx = kx[:half][None, :].copy()
+        self._kx[0, -1] = np.pi / self.dx  # Nyquist column (zero amplitude anyway)
+        self._ky = ky[:, None].copy()
+        k = np.hypot(self._kx, self._ky)
+        self._omega = angular_frequency(k, depth, surface_tension)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            coth = 1.0 if depth is None else 1.0 / np.tanh(k * depth)
+            self._ux = np.where(k > 0, self._kx / k * self._omega * coth, 0.0)
+            self._uy = np.where(k > 0, self._ky / k * self._omega * coth, 0.0)
+
+    @classmethod
+    def from_scene(cls, scene, rng: np.random.Generator | None = None) -> SeaSurface:
+        """The surface of a :class:`seaecho.config.Scene` (stream "surface" of its seed)."""
+        from ..rng import generator
+
+        sea = scene.sea
+        return cls(
+            DirectionalSpectrum.from_sea_config(sea),
+            size=sea.size_m,
+            shape=sea.grid_shape,
+            rng=rng if rng is not None else generator(scene.run.seed, "surface"),
+            depth=sea.depth_m,
+        )
+
+    def _irfft(self, spec: NDArray[np.complex128]) -> NDArray[np.float64]:
+        ny, nx = self.shape[1], self.shape[0]
+        return scipy.fft.irfft2(spec, s=(ny, nx), norm="forward", workers=-1)
+
+    def _travelling(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+        phase = np.exp(-1j * self._omega * t)  # Eq. 15 evolution, exp(-j omega t)
+        return self._a * phase, self._b * np.conj(phase)
+
+    def elevation(self, t: float = 0.0) -> NDArray[np.float64]:
+        """z(x, y, t) [m], shape (ny, nx)."""
+        plus, minus = self._travelling(t)
+        return self._irfft(plus + minus)
+
+    def fields(self, t: float = 0.0) -> SurfaceFields:
+        """Elevation, slopes and surface velocity at time t [s]."""
+        plus, minus = self._travelling(t)
+        z_hat = plus + minus
+        diff = plus - minus  # wave along +K minus wave along -K
+        elevation = self._irfft(z_hat)
+        slope_x = self._irfft(1j * self._kx * z_hat)
+        slope_y = self._irfft(1j * self._ky * z_hat)
+        w = self._irfft(-1j * self._omega * diff)  # dz/dt
+        u = self._irfft(self._ux * diff)
+        v = self._irfft(self._uy * diff)
+        return SurfaceFields(
+            t=float(t), elevation=elevation, slope_x=slope_x, slope_y=slope_y,
+            velocity=np.stack([u, v, w], axis=-1),
+        )
+
+
+__all__ = ["SeaSurface", "SurfaceFields", "cell_averaged_spectrum", "grid_coordinates"]
