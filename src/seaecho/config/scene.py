@@ -19,6 +19,7 @@ from .radar import PlatformConfig, RadarConfig, TargetConfig
 from .run import RunConfig
 from .sea import SeaConfig
 from .ship import ShipConfig
+from .tracing import ObjectConfig, TracingConfig
 
 
 class Scene(Section):
@@ -40,6 +41,12 @@ class Scene(Section):
     )
     targets: tuple[TargetConfig, ...] = Field(
         (), max_length=10_000, description="point targets [[targets]]"
+    )
+    tracing: TracingConfig = Field(
+        default_factory=TracingConfig, description="facet mode and ray tracing [tracing]"
+    )
+    objects: tuple[ObjectConfig, ...] = Field(
+        (), max_length=1000, description="meshes / XML scenes that occlude the sea [[objects]]"
     )
 
 

@@ -1,0 +1,109 @@
+"""``[tracing]`` section (facet mode, Mitsuba variant, refresh) and ``[[objects]]`` entries.
+
+``[tracing]`` chooses how facets are seen from the transmitter and the receiver:
+``mode = "raytraced"`` (Sionna RT / Mitsuba shadow rays against the sea and the objects) or
+``"analytic"`` (normals from analytic slopes, Smith's statistical shadowing or none).
+
+``[[objects]]`` adds geometry that occludes the sea in ray-traced mode: a mesh file
+(PLY/OBJ/STL, through trimesh) or a Mitsuba/Sionna XML scene, placed by position,
+orientation and velocity, with a radio material (an ITU name or a custom permittivity).
+Paths are relative to the scene file's folder.
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import Field, model_validator
+
+from .base import Section
+
+#: Mitsuba variants seaecho can trace with (polarised, differentiable, mono-spectral).
+VariantName = Literal["llvm_ad_mono_polarized", "cuda_ad_mono_polarized"]
+#: ITU-R P.2040 materials known to Sionna RT (``sionna.rt.ITURadioMaterial``).
+ItuMaterial = Literal[
+    "concrete", "brick", "plasterboard", "wood", "glass", "ceiling_board", "chipboard",
+    "plywood", "marble", "floorboard", "metal", "very_dry_ground", "medium_dry_ground",
+    "wet_ground",
+]
+
+
+class TracingConfig(Section):
+    """How facets are seen from the transmitter and the receiver."""
+
+    mode: Literal["raytraced", "analytic"] = Field(
+        "raytraced",
+        description="'raytraced' (shadow rays on Sionna RT / Mitsuba against sea and objects)"
+        " or 'analytic' (normals from analytic slopes, no ray tracing)",
+    )
+    variant: VariantName = Field(
+        "llvm_ad_mono_polarized",
+        description="Mitsuba variant: 'llvm_ad_mono_polarized' (CPU) or "
+        "'cuda_ad_mono_polarized' (needs a CUDA GPU)",
+    )
+    shadowing: Literal["smith", "none"] = Field(
+        "smith",
+        description="analytic mode only: weight facets by Smith's statistical shadowing "
+        "(Smith 1967; bistatic: Bourlier et al. 2002) or by the facing test alone",
+    )
+    refresh_interval_s: float = Field(
+        0.0, ge=0.0, le=3600.0,
+        description="visibility (BVH rebuild + shadow rays) is computed on the surface at "
+        "t_ref = floor(t / interval) * interval and reused until the next multiple; "
+        "0 = every time step [s]",
+    )
+
+
+class ObjectConfig(Section):
+    """A mesh or Mitsuba/Sionna XML scene placed in the scene (ship hull, breakwater, ...)."""
+
+    name: str = Field(..., min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_.-]+$",
+                      description="unique object name (letters, digits, _ . -)")
+    file: str = Field(..., min_length=1, max_length=1000,
+                      description="mesh (.ply, .obj, .stl) or Mitsuba/Sionna scene (.xml), "
+                      "relative to the scene file's folder")
+    position_m: tuple[float, float, float] = Field(
+        (0.0, 0.0, 0.0), description="(x, y, z) of the object's origin at time 0 [m]")
+    orientation_deg: tuple[float, float, float] = Field(
+        (0.0, 0.0, 0.0),
+        description="rotation (yaw about z, pitch about y, roll about x), applied to the "
+        "file's coordinates in the order roll, pitch, yaw (Sionna's convention) [deg]",
+    )
+    velocity_m_s: tuple[float, float, float] = Field(
+        (0.0, 0.0, 0.0), description="constant velocity of the object [m/s]")
+    scale: float = Field(1.0, gt=0.0, le=1.0e4, description="scale applied to the file [-]")
+    follow_ship: bool = Field(
+        False,
+        description="place the object on the [ship]: position (x, y) and velocity from its "
+        "track, yaw from its heading (added to orientation_deg[0])",
+    )
+    material: ItuMaterial | None = Field(
+        None, description="ITU-R P.2040 material name (default 'metal' for meshes; for XML "
+        "the file's own materials are kept unless this is given)")
+    relative_permittivity: float | None = Field(
+        None, ge=1.0, le=1.0e3, description="custom relative permittivity eps' [-] "
+        "(instead of an ITU material)")
+    conductivity_s_m: float | None = Field(
+        None, ge=0.0, le=1.0e8, description="custom conductivity [S/m] (with "
+        "relative_permittivity)")
+
+    @model_validator(mode="after")
+    def _material(self) -> ObjectConfig:
+        custom = self.relative_permittivity is not None or self.conductivity_s_m is not None
+        if custom and self.material is not None:
+            raise ValueError("give either material (ITU name) or relative_permittivity/"
+                             "conductivity_s_m, not both")
+        if self.conductivity_s_m is not None and self.relative_permittivity is None:
+            raise ValueError("conductivity_s_m needs relative_permittivity")
+        suffix = self.file.rsplit(".", 1)[-1].lower() if "." in self.file else ""
+        if suffix not in ("ply", "obj", "stl", "xml"):
+            raise ValueError(f"file = {self.file!r}: allowed extensions .ply, .obj, .stl, .xml")
+        return self
+
+    @property
+    def moving(self) -> bool:
+        """True if the object moves (own velocity or following the ship)."""
+        return self.follow_ship or any(v != 0.0 for v in self.velocity_m_s)
+
+
+__all__ = ["ItuMaterial", "ObjectConfig", "TracingConfig", "VariantName"]
