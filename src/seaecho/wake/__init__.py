@@ -1,1 +1,35 @@
-"""seaecho.wake stage."""
+"""seaecho.wake: the ship's Kelvin wake and turbulent wake strip (paper section IV-B).
+
+- :class:`Ship`: hull dimensions and a straight constant-speed track (eq W1).
+- :class:`KelvinWake`: deterministic Kelvin wake from Michell's thin-ship theory
+  (Wigley hull fitted to L, B, T), elevation, slopes and dz/dt at any time (eqs W4-W12).
+- :func:`turbulent_wake_mask`: the damped strip behind the stern (eqs W13-W14).
+
+Theory and sources: ``docs/wake.md``.
+"""
+
+from .kelvin import KELVIN_HALF_ANGLE, KelvinWake, WakeFields, kelvin_crest_lines
+from .michell import (
+    havelock_wave_resistance,
+    submerged_source_amplitude,
+    wigley_amplitude,
+    wigley_wave_resistance,
+    wigley_wetted_surface,
+)
+from .ship import Ship
+from .turbulent import turbulent_wake_mask, turbulent_wake_width
+
+__all__ = [
+    "KELVIN_HALF_ANGLE",
+    "KelvinWake",
+    "Ship",
+    "WakeFields",
+    "havelock_wave_resistance",
+    "kelvin_crest_lines",
+    "submerged_source_amplitude",
+    "turbulent_wake_mask",
+    "turbulent_wake_width",
+    "wigley_amplitude",
+    "wigley_wave_resistance",
+    "wigley_wetted_surface",
+]

@@ -1,0 +1,139 @@
+"""Turbulent wake strip behind the hull, where short (Bragg) waves are damped.
+
+Behind a ship the propeller and hull boundary layer leave a turbulent, bubble- and
+surfactant-laden strip in which short gravity-capillary waves are suppressed; it is the
+dark centreline of SAR images of ship wakes (Reed & Milgram 2002; Milgram, Peltzer &
+Griffin 1993). Far behind a self-propelled ship the wake carries no net momentum, and the
+self-similar momentumless wake grows as the one-fifth power of the distance (Tennekes &
+Lumley 1972, section 4.3; the x^(1/5) growth of ship wakes is reported in the review of
+Reed & Milgram 2002, section 5). The strip is modelled by its full width
+
+.. math::
+
+    w(\\xi) = w_0 \\left(1 + \\frac{\\xi}{w_0}\\right)^{1/5}                  (W13)
+
+with xi the distance behind the stern along the track and w_0 the width at the stern
+(default: the beam B; the virtual origin one stern width behind the stern keeps w finite
+and smooth there), over a length L_t (default 20 ship lengths, issue 2). The mask is 1 in
+the core of the strip (fully damped) and falls smoothly to 0 across its edges and at its
+two ends:
+
+.. math::
+
+    M(\\xi, \\eta) = S\\!\\left(\\frac{\\xi}{w_0}\\right)
+        S\\!\\left(\\frac{L_t - \\xi}{0.2 L_t}\\right)
+        S\\!\\left(\\frac{w(\\xi)/2 + \\delta/2 - |\\eta|}{\\delta}\\right),
+    \\quad \\delta = 0.25\\, w(\\xi),\\quad
+    S(s) = \\sin^2\\!\\left(\\tfrac{\\pi}{2}\\,\\mathrm{clip}(s, 0, 1)\\right)   (W14)
+
+with eta the transverse distance from the track. The exponent is the published part;
+the prefactor (w_0 = B) and the edge shape are modelling choices, exposed as parameters.
+
+References
+----------
+.. [1] A. M. Reed and J. H. Milgram, "Ship wakes and their radar images", Annu. Rev.
+   Fluid Mech. 34, 469-502 (2002).
+.. [2] J. H. Milgram, R. D. Peltzer and O. M. Griffin, "Suppression of short sea waves
+   in ship wakes: measurements and observations", J. Geophys. Res. 98(C4), 7103-7114
+   (1993).
+.. [3] H. Tennekes and J. L. Lumley, *A First Course in Turbulence*, MIT Press (1972),
+   section 4.3.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .ship import Ship
+
+
+def _smooth_step(s: NDArray[np.float64]) -> NDArray[np.float64]:
+    """S(s) = sin^2(pi/2 clip(s, 0, 1)) [-] of eq W14: 0 below 0, 1 above 1, C1."""
+    return np.sin(0.5 * np.pi * np.clip(s, 0.0, 1.0)) ** 2
+
+
+def turbulent_wake_width(xi: ArrayLike, width_at_stern: float) -> NDArray[np.float64]:
+    """Full width of the turbulent wake strip w(xi) [m] (eq W13).
+
+    Parameters
+    ----------
+    xi : array_like
+        Distance behind the stern along the track, >= 0 [m] (negative values are
+        treated as 0).
+    width_at_stern : float
+        w_0 > 0 [m].
+
+    Returns
+    -------
+    ndarray
+        w [m]; grows as xi^(1/5) for xi >> w_0.
+
+    References
+    ----------
+    Tennekes & Lumley (1972) section 4.3; Reed & Milgram (2002).
+    """
+    xi = np.maximum(np.asarray(xi, dtype=np.float64), 0.0)
+    # Eq W13
+    return width_at_stern * (1.0 + xi / width_at_stern) ** 0.2
+
+
+def turbulent_wake_mask(
+    ship: Ship,
+    x: ArrayLike,
+    y: ArrayLike,
+    t: float = 0.0,
+    length: float | None = None,
+    width_at_stern: float | None = None,
+) -> NDArray[np.float64]:
+    """Mask of the turbulent wake strip on the grid (x, y) at time t (eqs W13, W14).
+
+    Parameters
+    ----------
+    ship : Ship
+        The ship (position at time t from eq W1).
+    x : array_like, shape (nx,)
+        x coordinates (east) [m].
+    y : array_like, shape (ny,)
+        y coordinates (north) [m].
+    t : float
+        Time [s].
+    length : float or None
+        Length of the strip behind the stern L_t [m]; None takes
+        ``ship.turbulent_wake_length`` or, if that is None, 20 ship lengths.
+    width_at_stern : float or None
+        w_0 [m]; None takes the beam.
+
+    Returns
+    -------
+    ndarray, shape (ny, nx)
+        Damping mask in [0, 1]: 1 where short waves are fully damped, 0 outside.
+
+    References
+    ----------
+    Reed & Milgram (2002); Milgram, Peltzer & Griffin (1993); Tennekes & Lumley (1972).
+    """
+    x = np.asarray(x, dtype=np.float64)
+    y = np.asarray(y, dtype=np.float64)
+    if x.ndim != 1 or y.ndim != 1:
+        raise ValueError("x and y must be 1-D coordinate arrays [m]")
+    lt = ship.wake_length if length is None else float(length)
+    if not np.isfinite(lt) or lt < 0.0:
+        raise ValueError(f"length = {length!r} m: must be >= 0")
+    w0 = ship.beam if width_at_stern is None else float(width_at_stern)
+    if not np.isfinite(w0) or w0 <= 0.0:
+        raise ValueError(f"width_at_stern = {width_at_stern!r} m: must be > 0")
+    if lt == 0.0:
+        return np.zeros((y.size, x.size))
+    xs, ys = ship.to_ship_frame(x[None, :], y[:, None], t)
+    xi = xs - 0.5 * ship.length  # distance behind the stern
+    eta = np.abs(ys)
+    w = turbulent_wake_width(xi, w0)
+    delta = 0.25 * w
+    # Eq W14: onset behind the stern, fade-out at the end, smooth lateral edges
+    along = _smooth_step(xi / w0) * _smooth_step((lt - xi) / (0.2 * lt))
+    across = _smooth_step((0.5 * w + 0.5 * delta - eta) / delta)
+    return along * across
+
+
+__all__ = ["turbulent_wake_mask", "turbulent_wake_width"]
