@@ -1,0 +1,61 @@
+"""Fresnel reflection coefficients of a flat interface with a lossy medium.
+
+Time convention ``exp(+j omega t)``: ``eps_r = eps' - j eps''``. The square root
+``sqrt(eps_r - sin^2 theta)`` is taken on numpy's principal branch, whose imaginary part is
+then <= 0: the transmitted wave decays away from the interface.
+
+References
+----------
+.. [1] Born, M. and Wolf, E. (1999). *Principles of Optics*, 7th ed., sec. 1.5.2.
+.. [2] Ulaby, F. T. and Long, D. G. (2014). *Microwave Radar and Radiometric Remote
+   Sensing*, sec. 2-8 (eqs 2.113-2.114, with the same sign conventions as here).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+
+def fresnel_coefficients(cos_theta: ArrayLike, eps_r: ArrayLike) -> tuple[NDArray, NDArray]:
+    """Fresnel reflection coefficients ``R_h`` (TE) and ``R_v`` (TM).
+
+    .. math::
+        R_h = \\frac{\\cos\\theta - \\sqrt{\\varepsilon_r - \\sin^2\\theta}}
+                   {\\cos\\theta + \\sqrt{\\varepsilon_r - \\sin^2\\theta}}, \\qquad
+        R_v = \\frac{\\varepsilon_r\\cos\\theta - \\sqrt{\\varepsilon_r - \\sin^2\\theta}}
+                   {\\varepsilon_r\\cos\\theta + \\sqrt{\\varepsilon_r - \\sin^2\\theta}}
+        \\qquad \\text{(R1, R2)}
+
+    In the forward scattering alignment bases of :mod:`.frames` (in (h, v) order) the
+    field reflected by a flat facet is ``diag(R_h, R_v)`` times the incident field: at
+    normal incidence on a perfect conductor ``R_h = -1``, ``R_v = +1``.
+
+    Parameters
+    ----------
+    cos_theta : array_like
+        Cosine of the local incidence angle [-], clipped to [0, 1] (grazing gives
+        ``R = -1`` for both).
+    eps_r : array_like of complex
+        Relative permittivity ``eps' - j eps''`` [-].
+
+    Returns
+    -------
+    r_h, r_v : ndarray of complex
+
+    References
+    ----------
+    .. [1] Born and Wolf (1999), eqs 1.5.(21a), (21b) (with ``n^2 = eps_r``).
+    """
+    c = np.clip(np.asarray(cos_theta, dtype=float), 0.0, 1.0)
+    eps = np.asarray(eps_r, dtype=complex)
+    # Transmitted normal wavenumber over k, decaying branch.
+    root = np.sqrt(eps - (1.0 - c * c))
+    # Eq R1 (TE, horizontal).
+    r_h = (c - root) / (c + root)
+    # Eq R2 (TM, vertical).
+    r_v = (eps * c - root) / (eps * c + root)
+    return r_h, r_v
+
+
+__all__ = ["fresnel_coefficients"]
