@@ -22,7 +22,8 @@ from typing import Literal
 
 import numpy as np
 
-from .bistatic import basis_rotation, global_angles, local_angles, ranges_directions
+from ..scattering.frames import local_angles, tilt_rotation
+from .bistatic import global_angles, ranges_directions
 from .mesh import facet_geometry, grid_vertices, to_facets
 from .shadowing import directional_slope_std, height_cdf, smith_lambda, smith_nu
 
@@ -61,7 +62,9 @@ class Facets:
     theta_i_global, theta_s_global, phi_global : (N,)
         The same about the mean-plane normal +z [rad].
     rot_i, rot_s : (N, 2, 2)
-        Basis rotations: ``S_global = rot_s @ S_local @ rot_i`` (eq G6).
+        Rotations from the global to the local polarisation bases of the incident and
+        scattered waves, (h, v) order (:func:`seaecho.scattering.frames.tilt_rotation`):
+        ``S_global = frames.to_global(S_local, rot_i, rot_s)`` (eq F4 there).
     lit, seen : (N,)
         Illuminated by the transmitter / visible from the receiver, in [0, 1] [-].
     visibility : (N,)
@@ -114,7 +117,7 @@ class Facets:
 
 def facet_frames(centroid: np.ndarray, normal: np.ndarray, tx: np.ndarray, rx: np.ndarray
                  ) -> dict[str, np.ndarray]:
-    """Ranges, directions, local/global angles and basis rotations of facets (eqs G1-G6).
+    """Ranges, directions, local/global angles and basis rotations of facets.
 
     Parameters
     ----------
@@ -134,7 +137,7 @@ def facet_frames(centroid: np.ndarray, normal: np.ndarray, tx: np.ndarray, rx: n
     r_tx, r_rx, n_i, n_s = ranges_directions(centroid, tx, rx)
     theta_i, theta_s, phi = local_angles(n_i, n_s, normal)
     tig, tsg, phig = global_angles(n_i, n_s)
-    rot_i, rot_s = basis_rotation(n_i, n_s, normal)
+    rot_i, rot_s = tilt_rotation(n_i, n_s, normal)
     return dict(r_tx=r_tx, r_rx=r_rx, n_i=n_i, n_s=n_s, theta_i=theta_i, theta_s=theta_s,
                 phi=phi, theta_i_global=tig, theta_s_global=tsg, phi_global=phig,
                 rot_i=rot_i, rot_s=rot_s)

@@ -1,0 +1,160 @@
+"""Ray-traced facets: visibility of every sea facet from the transmitter and the receiver.
+
+A facet is *lit* when it faces the transmitter (``-n_i . N > 0``) and the segment from
+its centroid to the transmitter hits neither the sea nor any object; *seen* likewise for
+the receiver (``n_s . N > 0``). The segments start ``eps`` above the centroid along the
+normal, ``eps = max(1e-3 * cell size, 8 float32 ulps of the largest coordinate)``, so that
+a ray does not hit its own triangle in float32. Everything else (ranges, directions,
+angles, bases) is float64 numpy (:func:`seaecho.geometry.facets.facet_frames`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from ..geometry.facets import Facets, facet_frames
+from ..geometry.mesh import facet_geometry, grid_vertices, to_facets
+from .scene import ObjectGeometry, ObjectScene, SeaScene, shadow_rays
+
+__all__ = ["FacetTracer"]
+
+
+class FacetTracer:
+    """The sea (plus objects) in Sionna RT / Mitsuba scenes, traced facet by facet.
+
+    Parameters
+    ----------
+    x : (nx,) array
+        Node abscissae [m].
+    y : (ny,) array
+        Node ordinates [m].
+    elevation : (ny, nx) array, optional
+        Initial elevation [m] (default flat).
+    objects : sequence of ObjectGeometry
+        Occluding objects (:func:`seaecho.tracing.scene.load_object`); static ones go in
+        one scene built once, moving ones in another (the sea's BVH is never rebuilt
+        because an object moved).
+    eps_r : complex, optional
+        Sea-water permittivity for the Sionna material [-].
+    frequency_hz : float
+        Frequency of the Sionna scenes [Hz].
+    variant : str, optional
+        Mitsuba variant (default ``llvm_ad_mono_polarized``).
+    """
+
+    def __init__(self, x: np.ndarray, y: np.ndarray, elevation: np.ndarray | None = None, *,
+                 objects: Sequence[ObjectGeometry] = (), eps_r: complex | None = None,
+                 frequency_hz: float = 10.0e9, variant: str | None = None) -> None:
+        self.x = np.asarray(x, dtype=np.float64)
+        self.y = np.asarray(y, dtype=np.float64)
+        z = np.zeros((self.y.size, self.x.size)) if elevation is None else elevation
+        self.sea = SeaScene(self.x, self.y, z, eps_r=eps_r, frequency_hz=frequency_hz,
+                            variant=variant)
+        self._elevation = np.array(z, dtype=np.float64)
+        static = [o for o in objects if not o.moving]
+        moving = [o for o in objects if o.moving]
+        self.static_objects = ObjectScene(static, variant=variant) if static else None
+        self.moving_objects = ObjectScene(moving, variant=variant) if moving else None
+        cell = min(np.min(np.diff(self.x)), np.min(np.diff(self.y)))
+        self._cell = float(cell)
+
+    @property
+    def mi_scenes(self) -> list:
+        """The Mitsuba scenes every shadow ray is tested against."""
+        out = [self.sea.mi_scene]
+        out += [s.mi_scene for s in (self.static_objects, self.moving_objects) if s is not None]
+        return out
+
+    def set_surface(self, elevation: np.ndarray) -> None:
+        """New sea elevation (ny, nx) [m]: vertex update and BVH rebuild of the sea scene."""
+        self.sea.update(elevation)
+        self._elevation = np.array(elevation, dtype=np.float64)
+
+    def set_time(self, t: float) -> None:
+        """Move the moving objects to their positions at time ``t`` [s]."""
+        if self.moving_objects is not None:
+            self.moving_objects.move_to(t)
+
+    def occluded(self, centroid: np.ndarray, normal: np.ndarray, position: np.ndarray,
+                 mask: np.ndarray | None = None) -> np.ndarray:
+        """Whether the segments from the facets to a position hit the sea or an object.
+
+        Parameters
+        ----------
+        centroid, normal : (N, 3) arrays
+            Facet centroids [m] and unit normals [-] of the current surface.
+        position : (3,) array
+            Transmitter or receiver position [m].
+        mask : (N,) bool array, optional
+            Only trace these facets (others come back False).
+
+        Returns
+        -------
+        (N,) bool array
+        """
+        p = np.asarray(position, dtype=np.float64)
+        idx = None if mask is None else np.flatnonzero(mask)
+        c = centroid if idx is None else centroid[idx]
+        nrm = normal if idx is None else normal[idx]
+        scale = max(float(np.max(np.abs(c))) if c.size else 0.0, float(np.max(np.abs(p))))
+        eps = max(1e-3 * self._cell, 8.0 * np.finfo(np.float32).eps * scale)
+        origin = c + eps * nrm
+        d = p - origin
+        r = np.sqrt(np.einsum("ij,ij->i", d, d))
+        d /= r[:, None]
+        hit_sub = shadow_rays(self.mi_scenes, origin, d, r * (1.0 - 1e-6))
+        if idx is None:
+            return hit_sub
+        hit = np.zeros(centroid.shape[0], dtype=bool)
+        hit[idx] = hit_sub
+        return hit
+
+    def facets(self, elevation: np.ndarray | None, velocity: np.ndarray | None,
+               tx: np.ndarray, rx: np.ndarray | None = None, *, t: float = 0.0,
+               update: bool = True) -> Facets:
+        """Ray-traced facets of a surface seen from a transmitter and a receiver.
+
+        Parameters
+        ----------
+        elevation : (ny, nx) array or None
+            Surface elevation [m]; None keeps the current one.
+        velocity : (ny, nx, 3) array or None
+            Surface velocity at the nodes [m/s] (None: zero).
+        tx : (3,) array
+            Transmitter position [m].
+        rx : (3,) array, optional
+            Receiver position [m]; None for monostatic.
+        t : float
+            Time [s]: moving objects are placed at their time-``t`` positions.
+        update : bool
+            Push ``elevation`` to the sea scene (rebuild its BVH) before tracing.
+
+        Returns
+        -------
+        Facets
+            ``lit``, ``seen``, ``visibility`` are 0 or 1.
+        """
+        tx = np.asarray(tx, dtype=np.float64)
+        rx = tx if rx is None else np.asarray(rx, dtype=np.float64)
+        if elevation is not None and update:
+            self.set_surface(elevation)
+        self.set_time(t)
+        z = self._elevation if elevation is None else np.asarray(elevation, dtype=np.float64)
+        centroid, area, normal = facet_geometry(grid_vertices(self.x, self.y, z))
+        geo = facet_frames(centroid, normal, tx, rx)
+        facing_tx = geo["theta_i"] < np.pi / 2
+        facing_rx = geo["theta_s"] < np.pi / 2
+        lit = facing_tx & ~self.occluded(centroid, normal, tx, mask=facing_tx)
+        if np.array_equal(tx, rx):
+            seen = lit.copy()
+        else:
+            seen = facing_rx & ~self.occluded(centroid, normal, rx, mask=facing_rx)
+        vel = (np.zeros_like(centroid) if velocity is None
+               else to_facets(np.asarray(velocity, dtype=np.float64)))
+        return Facets(mode="raytraced", time_s=float(t), visibility_time_s=float(t),
+                      grid_shape=(self.y.size - 1, self.x.size - 1, 2), centroid=centroid,
+                      area=area, normal=normal, velocity=vel, lit=lit.astype(np.float64),
+                      seen=seen.astype(np.float64), visibility=(lit & seen).astype(np.float64),
+                      **geo)
