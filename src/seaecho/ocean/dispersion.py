@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..constants import G, SURFACE_TENSION_OVER_DENSITY
+from ..constants import SURFACE_TENSION_OVER_DENSITY, G
 
 
 def angular_frequency(

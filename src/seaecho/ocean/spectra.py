@@ -47,6 +47,7 @@ References
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Protocol
@@ -56,6 +57,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.special import gammaln
 
 from ..constants import G
+from ..warnings import ValidityWarning
 
 #: U19.5 / U10 for a neutral logarithmic wind profile (Stewart 2008, section 16.3).
 U19_5_OVER_U10 = 1.026
@@ -121,10 +123,15 @@ def register_spreading(name: str) -> Callable[[Spreading], Spreading]:
     return wrap
 
 
+#: Below this wavenumber [rad/m] (wavelength 6,000 km) every spectrum here is 0 in double
+#: precision (exp(-b0 g^2 / (K^2 U^4)) underflows); treating it as 0 avoids 0 x inf.
+K_FLOOR = 1e-6
+
+
 def _positive(k: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.bool_], NDArray[np.float64]]:
-    """k as float array, the mask k > 0, and k with zeros replaced by 1 (safe to divide)."""
+    """k as float array, the mask k > K_FLOOR, and k with the rest replaced by 1."""
     k = np.asarray(k, dtype=np.float64)
-    pos = k > 0
+    pos = k > K_FLOOR
     return k, pos, np.where(pos, k, 1.0)
 
 
@@ -200,7 +207,8 @@ def jonswap(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArray[n
 
         S(\\omega) = \\frac{\\alpha g^2}{\\omega^5}
         \\exp\\left[-\\frac54 \\left(\\frac{\\omega_p}{\\omega}\\right)^4\\right]
-        \\gamma^{r},\\quad r = \\exp\\left[-\\frac{(\\omega-\\omega_p)^2}{2\\sigma^2\\omega_p^2}\\right]
+        \\gamma^{r},\\quad
+        r = \\exp\\left[-\\frac{(\\omega-\\omega_p)^2}{2\\sigma^2\\omega_p^2}\\right]
 
     with gamma = 3.3, sigma = 0.07 (omega <= omega_p) or 0.09, alpha and omega_p from
     :func:`jonswap_parameters`; mapped to wavenumber with the deep-water relation
@@ -285,6 +293,15 @@ def elfouhaily_parameters(u19_5: float, fetch: float | None = None) -> Elfouhail
         alpha_m = 1e-2 * (1.0 + np.log(u_star / C_M))  # Eq. 44
     else:
         alpha_m = 1e-2 * (1.0 + 3.0 * np.log(u_star / C_M))  # Eq. 44
+    if alpha_m < 0:
+        # eq 44 turns negative for u* < c_m / e (U10 below about 2 m/s): outside the
+        # winds the spectrum was fitted to; no short-wave (capillary) part is left
+        warnings.warn(
+            f"Elfouhaily spectrum at U10 = {u10:.2f} m/s: friction velocity {u_star:.3f} m/s "
+            f"< c_m / e, eq 44 gives alpha_m < 0; the capillary part is set to 0",
+            ValidityWarning, stacklevel=2,
+        )
+        alpha_m = 0.0
     return ElfouhailyParameters(
         u10=u10, omega_c=float(omega_c), k_p=float(k_p), c_p=c_p, u_star=float(u_star),
         alpha_p=float(alpha_p), alpha_m=float(alpha_m), gamma=float(gamma),
@@ -414,7 +431,7 @@ def elfouhaily_spreading(
     """
     p = elfouhaily_parameters(u19_5, fetch)
     k = np.asarray(k, dtype=np.float64)
-    ks = np.where(k > 0, k, 1e-12)
+    ks = np.maximum(k, K_FLOOR)
     c = _elfouhaily_phase_speed(ks)
     a0 = np.log(2.0) / 4.0
     a_m = 0.13 * p.u_star / C_M  # Eq. 59
@@ -501,7 +518,7 @@ class DirectionalSpectrum:
         ky = np.asarray(ky, dtype=np.float64)
         k = np.hypot(kx, ky)
         psi = np.arctan2(ky, kx) - self.wind_direction
-        pos = k > 0
+        pos = k > K_FLOOR
         ks = np.where(pos, k, 1.0)
         return np.where(pos, self.omni(ks) * self.spread(ks, psi) / ks, 0.0)  # Eq. 4
 

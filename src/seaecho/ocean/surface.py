@@ -44,7 +44,7 @@ from numpy.typing import NDArray
 
 from ..constants import SURFACE_TENSION_OVER_DENSITY
 from .dispersion import angular_frequency
-from .spectra import DirectionalSpectrum
+from .spectra import K_FLOOR, DirectionalSpectrum
 
 #: Grid cells whose centre lies within this many peak wavenumbers are integrated on a
 #: sub-grid when a cell is coarser than _REFINE_COARSE peak wavenumbers; elsewhere the
@@ -110,7 +110,7 @@ def _psi_on_fft_grid(
     kq = np.hypot(ukx[None, :], uky[:, None])
     omni = spectrum.omni(kq)[iy[:, None], ix[None, :]]
     psi_dir = np.arctan2(ky, kx) - spectrum.wind_direction
-    pos = k > 0
+    pos = k > K_FLOOR
     ks = np.where(pos, k, 1.0)
     return np.where(pos, omni * spectrum.spread(ks, psi_dir) / ks, 0.0)  # Eq. 4
 
