@@ -346,9 +346,10 @@ class TargetConfig(Section):
         return self
 
     def scattering_matrix(self):
-        """The 2x2 complex scattering amplitude [m] in (v, h) order: [[s_vv, s_vh], [s_hv, s_hh]].
+        """The 2x2 complex scattering amplitude [m] in (h, v) order: [[s_hh, s_hv], [s_vh, s_vv]].
 
-        Row = received, column = transmitted, both ordered (v, h) as in ``shared/DESIGN.md``.
+        ``M[m, n]``: m received, n transmitted, both ordered (h, v) as in
+        ``seaecho.scattering.frames``, so ``M.reshape(4)`` lists HH, HV, VH, VV.
         """
         import numpy as np
 
@@ -359,7 +360,7 @@ class TargetConfig(Section):
         def c(v):
             return 0.0 if v is None else complex(v[0], v[1])
 
-        return np.array([[c(self.s_vv), c(self.s_vh)], [c(self.s_hv), c(self.s_hh)]])
+        return np.array([[c(self.s_hh), c(self.s_hv)], [c(self.s_vh), c(self.s_vv)]])
 
 
 __all__ = [

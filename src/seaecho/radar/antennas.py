@@ -1,0 +1,429 @@
+"""Antennas: gain patterns, polarisation ports and pointing, evaluated in the world frame.
+
+Antenna frame (as Sionna RT's): x along the boresight, y along the aperture's width
+(horizontal, to the left looking out), z along its height (up). A direction d in the
+world frame has antenna coordinates d_a = A^T d, where the columns of A are the antenna
+axes in the world (:func:`antenna_axes`).
+
+Patterns (power gain G, normalised so that the directivity integrates to 4 pi):
+
+- ``rectangular``: uniformly illuminated aperture of width a and height b (the paper's
+  section V), Huygens-source obliquity factor,
+
+  .. math::
+
+      F(\\hat d) = \\frac{1 + \\cos\\theta}{2}\\,
+          \\mathrm{sinc}\\!\\left(\\frac{a\\,u}{\\lambda}\\right)
+          \\mathrm{sinc}\\!\\left(\\frac{b\\,v}{\\lambda}\\right),\\quad
+      G = \\frac{4\\pi\\,|F|^2}{\\oint |F|^2\\, d\\Omega}                           (A1)
+
+  with u = d_a . y, v = d_a . z, cos(theta) = d_a . x and sinc(x) = sin(pi x)/(pi x);
+  the peak tends to 4 pi a b / lambda^2 for a, b >> lambda (Balanis 2016, eq 12-38).
+- ``isotropic`` (G = 1), and Sionna RT's built-ins by name: ``dipole``
+  (G = 1.5 sin^2 theta, Balanis eq 4-26a), ``hw_dipole``
+  (G = 1.643 cos^2(pi/2 cos theta)/sin^2 theta, Balanis eq 4-84), ``tr38901``
+  (3GPP TR 38.901 Table 7.3-1), with theta from the antenna's z axis as in Sionna.
+
+Polarisation ports. For a wave propagating along n (n = d from a transmitting antenna
+towards the scatterer, n = -d arriving at a receiving one) the antenna's own basis is
+
+.. math::
+
+    \\hat h_a = \\frac{\\hat z_a \\times \\hat n}{|\\hat z_a \\times \\hat n|},\\quad
+    \\hat v_a = \\hat h_a \\times \\hat n                                               (A2)
+
+(the forward scattering alignment of ``shared/DESIGN.md`` with the platform's vertical
+z_a, body z in the world, in place of the world z: on a level platform a port H excites
+exactly the world basis h of eq F1 in every direction; roll and attitude errors mix the
+ports). Port states: H = h_a, V = v_a, P = (v_a + h_a)/sqrt 2 (+45 deg),
+M = (v_a - h_a)/sqrt 2 (-45 deg), R = (v_a - j h_a)/sqrt 2, L = (v_a + j h_a)/sqrt 2
+(IEEE handedness for exp(+j omega t), (v, h, n) right-handed). A cross-polar isolation
+X [dB] mixes in x = 10^(-X/20) of the other port: e_1' = (e_1 + x e_2)/sqrt(1 + x^2).
+
+References
+----------
+.. [1] C. A. Balanis, *Antenna Theory: Analysis and Design*, 4th ed., Wiley, 2016,
+   sections 4.2, 4.6 and 12.5 (rectangular apertures), eq 12-38.
+.. [2] 3GPP TR 38.901 v17.0.0, Table 7.3-1 (antenna element pattern).
+.. [3] IEEE Std 145-2013, Definitions of Terms for Antennas (handedness of circular
+   polarisation).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..config.radar import PORTS, AntennaConfig
+
+_SQRT_HALF = np.sqrt(0.5)
+_DEGENERATE = 1e-12
+
+
+def _normalise(a: NDArray) -> NDArray:
+    return a / np.linalg.norm(a, axis=-1, keepdims=True)
+
+
+# --------------------------------------------------------------------------- patterns
+def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: float
+                   ) -> NDArray[np.float64]:
+    """Un-normalised far-field amplitude F of a uniform rectangular aperture, eq (A1).
+
+    Parameters
+    ----------
+    d_local : array_like (..., 3)
+        Unit directions in the antenna frame (x boresight, y width, z height) [-].
+    width, height : float
+        Aperture width a and height b [m].
+    wavelength : float
+        Wavelength lambda [m].
+
+    Returns
+    -------
+    ndarray (...)
+        F [-], 1 at boresight.
+
+    References
+    ----------
+    Balanis (2016), section 12.5: the uniform aperture's sinc pattern; the Huygens
+    obliquity (1 + cos theta)/2 of section 12.2.
+    """
+    d = np.asarray(d_local, dtype=float)
+    # Eq (A1): sinc in the two direction cosines, Huygens obliquity factor
+    return (0.5 * (1.0 + d[..., 0]) * np.sinc(width * d[..., 1] / wavelength)
+            * np.sinc(height * d[..., 2] / wavelength))
+
+
+@lru_cache(maxsize=64)
+def aperture_radiated_power(width: float, height: float, wavelength: float) -> float:
+    """Integral of |F|^2 over the sphere [sr] for eq (A1)'s normalisation.
+
+    Product Gauss-Legendre (polar angle from the boresight) x trapezoid (azimuth) rule,
+    with enough nodes per sidelobe (about 8 per lambda/a in each angle).
+
+    Parameters
+    ----------
+    width, height, wavelength : float
+        Aperture width, height and wavelength [m].
+
+    Returns
+    -------
+    float
+        The integral of |F|^2 d Omega [sr]; the peak directivity is 4 pi / this value.
+    """
+    size = max(width, height) / wavelength
+    n_theta = int(8 * size) + 96
+    n_phi = 2 * n_theta
+    x, w = np.polynomial.legendre.leggauss(n_theta)
+    theta = 0.5 * np.pi * (x + 1.0)  # polar angle from the boresight, [0, pi]
+    w_theta = 0.5 * np.pi * w * np.sin(theta)
+    phi = 2.0 * np.pi * np.arange(n_phi) / n_phi
+    total = 0.0
+    chunk = max(1, 2_000_000 // n_phi)
+    for i in range(0, n_theta, chunk):  # chunks bound the memory; not a hot path
+        th = theta[i:i + chunk, None]
+        d = np.stack(np.broadcast_arrays(np.cos(th), np.sin(th) * np.cos(phi),
+                                         np.sin(th) * np.sin(phi)), axis=-1)
+        f2 = aperture_field(d, width, height, wavelength) ** 2
+        total += float(np.sum(f2.sum(axis=1) * w_theta[i:i + chunk]))
+    return total * 2.0 * np.pi / n_phi
+
+
+def builtin_gain(name: str, d_local: ArrayLike) -> NDArray[np.float64]:
+    """Power gain of the isotropic and Sionna RT built-in patterns [-].
+
+    Parameters
+    ----------
+    name : {'isotropic', 'dipole', 'hw_dipole', 'tr38901'}
+    d_local : array_like (..., 3)
+        Unit directions in the antenna frame [-]; theta from +z, phi from +x.
+
+    References
+    ----------
+    Balanis (2016) eqs 4-26a (short dipole), 4-84 (half-wave dipole); 3GPP TR 38.901
+    Table 7.3-1; the same formulas as ``sionna.rt.antenna_pattern``.
+    """
+    d = np.asarray(d_local, dtype=float)
+    cos_t = np.clip(d[..., 2], -1.0, 1.0)
+    sin2_t = np.maximum(1.0 - cos_t**2, 0.0)
+    if name == "isotropic":
+        return np.ones(d.shape[:-1])
+    if name == "dipole":
+        return 1.5 * sin2_t  # Balanis eq 4-26a, D = 1.5
+    if name == "hw_dipole":
+        safe = np.where(sin2_t < 1e-10, 1.0, sin2_t)
+        g = 1.643 * np.cos(0.5 * np.pi * cos_t) ** 2 / safe  # Balanis eq 4-84
+        return np.where(sin2_t < 1e-10, 0.0, g)
+    if name == "tr38901":
+        theta = np.arccos(cos_t)
+        phi = np.arctan2(d[..., 1], d[..., 0])
+        t3 = np.deg2rad(65.0)
+        # 3GPP TR 38.901 Table 7.3-1: vertical and horizontal cuts, 30 dB floor, 8 dBi
+        a_v = -np.minimum(12.0 * ((theta - 0.5 * np.pi) / t3) ** 2, 30.0)
+        a_h = -np.minimum(12.0 * (phi / t3) ** 2, 30.0)
+        a_db = -np.minimum(-(a_v + a_h), 30.0) + 8.0
+        return 10.0 ** (a_db / 10.0)
+    raise ValueError(f"pattern = {name!r}: unknown; allowed: isotropic, dipole, hw_dipole, "
+                     f"tr38901, rectangular")
+
+
+# --------------------------------------------------------------------------- pointing
+def antenna_axes(boresight: ArrayLike, up: ArrayLike) -> NDArray[np.float64]:
+    """Antenna axes in the world: columns (boresight x_a, width y_a, height z_a).
+
+    y_a = up x b / |up x b| is horizontal with respect to ``up``; z_a = b x y_a. At a
+    boresight along ``up`` the width axis falls back to the world y axis.
+
+    Parameters
+    ----------
+    boresight : array_like (..., 3)
+        Boresight direction (normalised here) [-].
+    up : array_like (..., 3)
+        The platform's up axis (body z in the world) [-].
+
+    Returns
+    -------
+    ndarray (..., 3, 3)
+        A with ``d_local = A^T d_world``.
+    """
+    b = _normalise(np.asarray(boresight, dtype=float))
+    up = np.broadcast_to(np.asarray(up, dtype=float), b.shape)
+    y = np.cross(up, b)
+    norm = np.linalg.norm(y, axis=-1, keepdims=True)
+    if np.any(norm < 1e-9):
+        # Boresight along `up`: width axis = world y made orthogonal to b
+        ey = np.broadcast_to([0.0, 1.0, 0.0], b.shape)
+        alt = ey - b * np.sum(ey * b, axis=-1, keepdims=True)
+        y = np.where(norm < 1e-9, alt, y)
+    y = _normalise(y)
+    z = np.cross(b, y)
+    return np.stack([b, y, z], axis=-1)
+
+
+# ------------------------------------------------------------------------ polarisation
+def port_states(basis: str, h: NDArray, v: NDArray, cross_polar_isolation_db: float | None
+                ) -> NDArray[np.complex128]:
+    """The two port polarisation states of ``basis`` from the unit vectors h_a, v_a.
+
+    Parameters
+    ----------
+    basis : {'hv', 'slant', 'circular'}
+    h, v : ndarray (..., 3)
+        Eq (A2) basis vectors (world or antenna frame) [-].
+    cross_polar_isolation_db : float or None
+        Isolation X [dB]; None for ideal ports.
+
+    Returns
+    -------
+    ndarray (..., 2, 3) complex
+        Port 1 and port 2 unit polarisation vectors, in the order of ``PORTS[basis]``.
+    """
+    if basis == "hv":
+        e1, e2 = h.astype(complex), v.astype(complex)
+    elif basis == "slant":
+        e1, e2 = _SQRT_HALF * (v + h) + 0j, _SQRT_HALF * (v - h) + 0j
+    elif basis == "circular":
+        # IEEE right-hand circular for exp(+j omega t) with (v, h, n) right-handed
+        e1, e2 = _SQRT_HALF * (v - 1j * h), _SQRT_HALF * (v + 1j * h)
+    else:
+        raise ValueError(f"basis = {basis!r}: unknown; allowed: {sorted(PORTS)}")
+    if cross_polar_isolation_db is not None:
+        x = 10.0 ** (-cross_polar_isolation_db / 20.0)
+        e1, e2 = (e1 + x * e2) / np.sqrt(1 + x * x), (e2 + x * e1) / np.sqrt(1 + x * x)
+    return np.stack([e1, e2], axis=-2)
+
+
+def wave_basis(n: NDArray, up: NDArray) -> tuple[NDArray, NDArray]:
+    """Eq (A2): h = up x n / |up x n|, v = h x n, with a fallback at n parallel to up.
+
+    Parameters
+    ----------
+    n : ndarray (..., 3)
+        Unit propagation direction [-].
+    up : ndarray (..., 3) or (3,)
+        Reference (antenna height) axis [-].
+    """
+    up = np.broadcast_to(up, n.shape)
+    h = np.cross(up, n)
+    norm = np.linalg.norm(h, axis=-1, keepdims=True)
+    if np.any(norm < 1e-9):
+        # Limit along the reference azimuth (the antenna's boresight side)
+        ref = np.cross(up, np.cross(np.broadcast_to([1.0, 0.0, 0.0], n.shape), up))
+        ref = np.where(np.linalg.norm(ref, axis=-1, keepdims=True) < 1e-9,
+                       np.broadcast_to([0.0, 1.0, 0.0], n.shape), ref)
+        h = np.where(norm < 1e-9, np.cross(up, ref), h)
+        norm = np.linalg.norm(h, axis=-1, keepdims=True)
+    h = h / norm
+    return h, np.cross(h, n)
+
+
+# ---------------------------------------------------------------------------- antenna
+@dataclass(frozen=True)
+class Antenna:
+    """An antenna: pattern, polarisation ports (evaluation only; pointing is separate).
+
+    Attributes
+    ----------
+    pattern : str
+        'rectangular', 'isotropic', 'dipole', 'hw_dipole' or 'tr38901'.
+    wavelength : float
+        Carrier wavelength [m].
+    width, height : float or None
+        Aperture size [m] (rectangular).
+    basis : str
+        'hv', 'slant' or 'circular'.
+    cross_polar_isolation_db : float or None
+        Port isolation [dB].
+    """
+
+    pattern: str
+    wavelength: float
+    width: float | None = None
+    height: float | None = None
+    basis: str = "hv"
+    cross_polar_isolation_db: float | None = None
+
+    @classmethod
+    def from_config(cls, cfg: AntennaConfig, wavelength: float) -> Antenna:
+        """Antenna of a ``[<platform>.antenna]`` section at carrier wavelength [m]."""
+        return cls(cfg.pattern, wavelength, cfg.width_m, cfg.height_m, cfg.basis,
+                   cfg.cross_polar_isolation_db)
+
+    @property
+    def ports(self) -> tuple[str, str]:
+        """Port letters, e.g. ('H', 'V')."""
+        return PORTS[self.basis]
+
+    @property
+    def peak_gain(self) -> float:
+        """Directivity at boresight [-] (1 for isotropic)."""
+        return float(self.gain_local(np.array([1.0, 0.0, 0.0])))
+
+    def gain_local(self, d_local: ArrayLike) -> NDArray[np.float64]:
+        """Power gain G [-] for unit directions in the antenna frame (..., 3), eq (A1)."""
+        if self.pattern == "rectangular":
+            f = aperture_field(d_local, self.width, self.height, self.wavelength)
+            norm = 4.0 * np.pi / aperture_radiated_power(self.width, self.height,
+                                                         self.wavelength)
+            return norm * f * f
+        return builtin_gain(self.pattern, d_local)
+
+    def response(self, d_world: ArrayLike, axes: ArrayLike, receive: bool,
+                 up: ArrayLike | None = None
+                 ) -> tuple[NDArray[np.float64], NDArray[np.complex128]]:
+        """Gain and port polarisation vectors towards world directions.
+
+        Parameters
+        ----------
+        d_world : array_like (..., 3)
+            Unit directions from the antenna towards the scatterers (world) [-].
+        axes : array_like (3, 3) or (..., 3, 3)
+            Antenna axes in the world (:func:`antenna_axes`).
+        receive : bool
+            False: states of the wave leaving along d (transmit). True: states of the
+            wave arriving along -d, conjugated, so that the received voltage of port m is
+            ``sum(out[..., m, :] * E)`` (projection on the port's polarisation state).
+        up : array_like (3,) or None
+            Polarisation reference axis of eq (A2): the platform's vertical (body z in
+            the world), so that "H" means horizontal for a level platform whatever the
+            antenna's tilt; default the antenna's height axis.
+
+        Returns
+        -------
+        gain : ndarray (...)
+            Power gain [-].
+        ports : ndarray (..., 2, 3) complex
+            Port vectors in the world frame [-].
+        """
+        d = np.asarray(d_world, dtype=float)
+        a = np.asarray(axes, dtype=float)
+        d_local = np.einsum("...ji,...j->...i", a, d)
+        gain = self.gain_local(d_local)
+        n = -d if receive else d
+        ref = a[..., :, 2] if up is None else np.asarray(up, dtype=float)
+        h, v = wave_basis(n, ref)
+        ports = port_states(self.basis, h, v, self.cross_polar_isolation_db)
+        return gain, (np.conj(ports) if receive else ports)
+
+
+def project_ports(ports: NDArray[np.complex128], h: NDArray, v: NDArray
+                  ) -> NDArray[np.complex128]:
+    """Components of port vectors on a wave basis (h, v): shape (..., 2 ports, 2 (h, v)).
+
+    Parameters
+    ----------
+    ports : ndarray (..., 2, 3) complex
+        Port vectors in the world (from :meth:`Antenna.response`).
+    h, v : ndarray (..., 3)
+        World FSA basis of the wave (``seaecho.scattering.frames.polarisation_basis``).
+    """
+    return np.stack([np.einsum("...pi,...i->...p", ports, h),
+                     np.einsum("...pi,...i->...p", ports, v)], axis=-1)
+
+
+# ------------------------------------------------------------------- Sionna RT pattern
+def sionna_aperture_v_pattern(width: float, height: float, wavelength: float):
+    """A Dr.Jit-traceable vertically polarised pattern ``f(theta, phi) -> C_theta`` of eq (A1).
+
+    For ``sionna.rt.antenna_pattern.PolarizedAntennaPattern(v_pattern=...)``: Sionna's
+    antenna frame has its boresight on +x, theta from +z, phi from +x, which is the frame
+    of this module. The amplitude is sqrt(G), G normalised as eq (A1).
+    """
+    import drjit as dr  # local: only this helper needs Dr.Jit
+
+    scale = float(np.sqrt(4.0 * np.pi / aperture_radiated_power(width, height, wavelength)))
+    ka = float(np.pi * width / wavelength)
+    kb = float(np.pi * height / wavelength)
+
+    def sinc(x):
+        return dr.select(dr.abs(x) < 1e-6, 1.0, dr.sin(x) / dr.select(dr.abs(x) < 1e-6, 1.0, x))
+
+    def v_pattern(theta, phi):
+        import mitsuba as mi  # the variant is chosen by the caller (seaecho.tracing)
+
+        st, ct = dr.sin(theta), dr.cos(theta)
+        sp, cp = dr.sin(phi), dr.cos(phi)
+        cos_b = st * cp  # cosine from the boresight (+x)
+        # Eq (A1) in Sionna's angles: u = sin(theta) sin(phi), v = cos(theta)
+        amp = scale * 0.5 * (1.0 + cos_b) * sinc(ka * st * sp) * sinc(kb * ct)
+        return mi.Complex2f(dr.abs(amp), 0)
+
+    return v_pattern
+
+
+def register_sionna_aperture(width: float, height: float, wavelength: float,
+                             name: str | None = None) -> str:
+    """Register eq (A1) as a Sionna RT antenna pattern; returns its registered name.
+
+    Use the name as ``PlanarArray(pattern=name, polarization="VH", ...)``. This helper
+    imports ``sionna.rt`` lazily (the tracing stage is the only user).
+    """
+    from sionna.rt.antenna_pattern import PolarizedAntennaPattern, register_antenna_pattern
+
+    if name is None:
+        name = f"seaecho_rect_{width:g}x{height:g}m_{wavelength:g}m"
+    v_pattern = sionna_aperture_v_pattern(width, height, wavelength)
+
+    def factory(*, polarization: str, polarization_model: str = "tr38901_2"):
+        return PolarizedAntennaPattern(v_pattern=v_pattern, polarization=polarization,
+                                       polarization_model=polarization_model)
+
+    register_antenna_pattern(name, factory)
+    return name
+
+
+__all__ = [
+    "Antenna",
+    "antenna_axes",
+    "aperture_field",
+    "aperture_radiated_power",
+    "builtin_gain",
+    "port_states",
+    "project_ports",
+    "register_sionna_aperture",
+    "sionna_aperture_v_pattern",
+    "wave_basis",
+]

@@ -1,0 +1,338 @@
+"""The assembled radar of a scene: platforms, antennas and pointing, waveform, window.
+
+:class:`RadarSystem` is the radar stage's entry point. It is built from the scene's
+``[radar]``, ``[transmitter]`` and ``[receiver]`` sections and then works on plain arrays:
+for pulse ``p`` and scatterers (positions, velocities, 2x2 scattering amplitudes in the
+world FSA bases), :meth:`RadarSystem.scatterer_echo` gives the delays and per-channel
+complex amplitudes of eq (R1) (``seaecho.radar.equation``), and
+:meth:`RadarSystem.receive` sums them into the raw samples (eq E2,
+``seaecho.radar.echo``) with optional thermal noise. Pulse p is emitted at
+t_p = t_start + p / PRF. Nothing is carried from pulse to pulse.
+
+Pointing. A look-at antenna is aimed at t_start from the nominal track and then stays
+fixed to its platform (stripmap; the platform's attitude errors move the beam), unless
+``track_look_at`` keeps it on the point at every pulse (spotlight). Antennas pointed by
+angles are fixed in the body frame.
+
+Approximations: stop-and-hop within one pulse (the delay is constant over the pulse;
+the Doppler phase changes from pulse to pulse) and the receiver's attitude taken at the
+emission time (the echo arrives microseconds later).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..config.radar import AntennaConfig
+from ..constants import C0
+from ..rng import generator
+from ..scattering.frames import polarisation_basis
+from .antennas import Antenna, antenna_axes, project_ports
+from .echo import ReceiveWindow, accumulate
+from .equation import channel_matrix, noise_power, path_amplitude, thermal_noise, time_of_flight
+from .platforms import Platform, PlatformState, platforms_from_scene
+from .waveform import Waveform
+
+
+@dataclass(frozen=True)
+class Pointing:
+    """How an antenna's axes follow its platform.
+
+    Attributes
+    ----------
+    axes_body : ndarray (3, 3) or None
+        Antenna axes in the body frame (fixed mounting).
+    look_at : ndarray (3,) or None
+        World point kept on the boresight at every pulse (spotlight).
+    """
+
+    axes_body: NDArray[np.float64] | None = None
+    look_at: NDArray[np.float64] | None = None
+
+    @classmethod
+    def from_config(cls, cfg: AntennaConfig, platform: Platform, t_ref: float) -> Pointing:
+        """Pointing of an ``[<platform>.antenna]`` section; aimed at time ``t_ref`` [s]."""
+        if cfg.look_at_m is not None:
+            target = np.array(cfg.look_at_m, dtype=float)
+            if cfg.track_look_at:
+                return cls(look_at=target)
+            nominal = platform.nominal_state(t_ref)
+            r = nominal.rotation
+            axes_world = antenna_axes(target - nominal.position, r[:, 2])
+            return cls(axes_body=r.T @ axes_world)
+        az, dep = np.deg2rad(cfg.azimuth_deg), np.deg2rad(cfg.depression_deg)
+        b = np.array([np.cos(dep) * np.cos(az), np.cos(dep) * np.sin(az), -np.sin(dep)])
+        return cls(axes_body=antenna_axes(b, np.array([0.0, 0.0, 1.0])))
+
+    def axes(self, state: PlatformState) -> NDArray[np.float64]:
+        """Antenna axes in the world (columns boresight, width, height) for one state."""
+        if self.look_at is not None:
+            return antenna_axes(self.look_at - state.position, state.rotation[..., :, 2])
+        return state.rotation @ self.axes_body
+
+
+@dataclass(frozen=True)
+class PulseGeometry:
+    """Platform states and antenna axes at one pulse's emission time."""
+
+    time: float
+    tx: PlatformState
+    rx: PlatformState
+    tx_axes: NDArray[np.float64]
+    rx_axes: NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class ScattererEcho:
+    """Delays and amplitudes of a set of scatterers for one pulse (eq R1).
+
+    Attributes
+    ----------
+    tau : (K,) total delay tau_t + tau_r [s] (float64)
+    amplitudes : (C, K) complex amplitude per channel [sqrt(W)], carrier phase included
+    r_t, r_r : (K,) ranges [m]
+    g_t, g_r : (K,) antenna power gains [-]
+    n_i, n_s : (K, 3) unit propagation directions [-]
+    """
+
+    tau: NDArray[np.float64]
+    amplitudes: NDArray[np.complex128]
+    r_t: NDArray[np.float64]
+    r_r: NDArray[np.float64]
+    g_t: NDArray[np.float64]
+    g_r: NDArray[np.float64]
+    n_i: NDArray[np.float64]
+    n_s: NDArray[np.float64]
+
+
+def canonical_channels(channels, rx_ports: tuple[str, str], tx_ports: tuple[str, str]
+                       ) -> list[tuple[str, int, int]]:
+    """Validate channel names and order them like HH, HV, VH, VV.
+
+    Returns
+    -------
+    list of (name, receive port index, transmit port index)
+    """
+    out = []
+    for name in channels:
+        if len(name) != 2 or name[0] not in rx_ports or name[1] not in tx_ports:
+            raise ValueError(f"channel {name!r}: must be a receive port of {rx_ports} "
+                             f"followed by a transmit port of {tx_ports}")
+        out.append((name, rx_ports.index(name[0]), tx_ports.index(name[1])))
+    return sorted(out, key=lambda c: (c[1], c[2]))
+
+
+class RadarSystem:
+    """Platforms, antennas, waveform and receive window of a scene (see module docstring)."""
+
+    def __init__(self, scene, window: ReceiveWindow | None = None) -> None:
+        """Build the radar of a scene.
+
+        Parameters
+        ----------
+        scene : seaecho.config.Scene
+            Needs ``[radar]`` and ``[transmitter]``; ``[receiver]`` optional (monostatic).
+        window : ReceiveWindow or None
+            Overrides the window of ``[radar]`` (default: its window_start_m/window_end_m,
+            or the automatic one covering the tile and the targets, :meth:`auto_window`).
+        """
+        if scene.radar is None or scene.transmitter is None:
+            raise ValueError("the scene needs [radar] and [transmitter] sections")
+        cfg = scene.radar
+        self.scene = scene
+        self.config = cfg
+        self.seed = scene.run.seed
+        self.carrier = cfg.carrier_frequency_hz
+        self.wavelength = C0 / cfg.carrier_frequency_hz
+        self.prf = cfg.prf_hz
+        self.start_time = cfg.start_time_s
+        self.n_pulses = cfg.n_pulses
+        self.transmit_power = cfg.transmit_power_w
+        self.waveform = Waveform.from_config(cfg.waveform, cfg.sampling_rate_hz)
+        self.monostatic = scene.receiver is None
+        self.tx, self.rx = platforms_from_scene(scene)
+        rx_cfg = scene.transmitter if self.monostatic else scene.receiver
+        self.tx_antenna = Antenna.from_config(scene.transmitter.antenna, self.wavelength)
+        self.rx_antenna = Antenna.from_config(rx_cfg.antenna, self.wavelength)
+        self.tx_pointing = Pointing.from_config(scene.transmitter.antenna, self.tx,
+                                                self.start_time)
+        self.rx_pointing = Pointing.from_config(rx_cfg.antenna, self.rx, self.start_time)
+        self.channels = canonical_channels(cfg.channels, self.rx_antenna.ports,
+                                           self.tx_antenna.ports)
+        self.noise_power = noise_power(cfg.noise_figure_db,
+                                       cfg.noise_bandwidth_hz or cfg.sampling_rate_hz)
+        if window is None:
+            if cfg.window_start_m is not None:
+                window = ReceiveWindow.from_ranges(cfg.window_start_m, cfg.window_end_m,
+                                                   cfg.sampling_rate_hz,
+                                                   self.waveform.duration)
+            else:
+                window = self.auto_window()
+        self.window = window
+        self.n_fft = window.n_fft(self.waveform.n_samples)
+        self._spectrum = self.waveform.spectrum(self.n_fft)
+
+    # ------------------------------------------------------------------------ basics
+    @property
+    def channel_names(self) -> list[str]:
+        """Channel names in axis order, e.g. ['HH', 'HV', 'VH', 'VV']."""
+        return [c[0] for c in self.channels]
+
+    def emission_time(self, pulse: ArrayLike) -> NDArray[np.float64]:
+        """Emission time of pulse(s) t_p = t_start + p / PRF [s]."""
+        return self.start_time + np.asarray(pulse, dtype=float) / self.prf
+
+    def geometry(self, pulse: int) -> PulseGeometry:
+        """Platform states and antenna axes at the emission of ``pulse``."""
+        t = float(self.emission_time(pulse))
+        tx, rx = self.tx.state(t), self.rx.state(t)
+        return PulseGeometry(t, tx, rx, self.tx_pointing.axes(tx), self.rx_pointing.axes(rx))
+
+    def auto_window(self, margin_m: float | None = None) -> ReceiveWindow:
+        """Receive window covering the sea tile (and its waves) and the targets.
+
+        Ranges (r_t + r_r)/2 are evaluated on the tile's boundary and centre at z = 0 and
+        at every target, at the first and last pulse; the window adds ``margin_m``
+        (default: 5 % of the tile diagonal + 4 range resolutions + 5 m) on both sides.
+        """
+        lx, ly = self.scene.sea.size_m
+        s = np.linspace(-0.5, 0.5, 65)
+        edge = np.concatenate([np.stack([s * lx, np.full_like(s, -0.5 * ly)], -1),
+                               np.stack([s * lx, np.full_like(s, 0.5 * ly)], -1),
+                               np.stack([np.full_like(s, -0.5 * lx), s * ly], -1),
+                               np.stack([np.full_like(s, 0.5 * lx), s * ly], -1),
+                               [[0.0, 0.0]]])
+        points = np.concatenate([edge, np.zeros((edge.shape[0], 1))], axis=1)
+        ranges = []
+        for pulse in (0, self.n_pulses - 1):
+            t = float(self.emission_time(pulse))
+            pt = self.tx.state(t).position
+            pr = self.rx.state(t).position
+            pts = [points] if self.config.sea_clutter else []
+            for target in self.scene.targets:
+                pts.append(np.array(target.position_m) + t * np.array(target.velocity_m_s))
+            if not pts:
+                continue
+            p = np.vstack(pts)
+            ranges.append(0.5 * (np.linalg.norm(p - pt, axis=-1)
+                                 + np.linalg.norm(p - pr, axis=-1)))
+        if not ranges:
+            raise ValueError("nothing to receive: sea_clutter is off and there are no "
+                             "targets; give window_start_m/window_end_m")
+        r = np.concatenate(ranges)
+        if margin_m is None:
+            margin_m = (0.05 * np.hypot(lx, ly) * self.config.sea_clutter
+                        + 4 * C0 / (2 * self.waveform.bandwidth) + 5.0)
+        return ReceiveWindow.from_ranges(max(r.min() - margin_m, 0.0), r.max() + margin_m,
+                                         self.config.sampling_rate_hz,
+                                         self.waveform.duration)
+
+    # ------------------------------------------------------------------ scatterers
+    def scatterer_echo(self, geometry: PulseGeometry, positions: ArrayLike,
+                       velocities: ArrayLike, s: ArrayLike) -> ScattererEcho:
+        """Delays and per-channel amplitudes of scatterers, eqs (R1) and (R3).
+
+        Parameters
+        ----------
+        geometry : PulseGeometry
+            From :meth:`geometry`.
+        positions : array_like (K, 3)
+            Scatterer positions at the emission time [m].
+        velocities : array_like (K, 3)
+            Scatterer velocities [m/s].
+        s : array_like (K, 2, 2) complex
+            Scattering amplitudes [m] in (h, v) order on the world FSA bases of n_i and
+            n_s (``seaecho.scattering.frames.polarisation_basis`` with normal +z).
+
+        Returns
+        -------
+        ScattererEcho
+        """
+        p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
+        v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
+        s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
+        tx, rx = geometry.tx, geometry.rx
+        # Eq (R3): delays from positions and velocities at emission
+        tau_t, tau_r, p_b = time_of_flight(tx.position, p, v, rx.position, rx.velocity)
+        r_t, r_r = C0 * tau_t, C0 * tau_r
+        n_i = (p_b - tx.position) / r_t[:, None]
+        p_rx = rx.position + rx.velocity * (tau_t + tau_r)[:, None]
+        n_s = (p_rx - p_b) / r_r[:, None]
+        g_t, e_t = self.tx_antenna.response(n_i, geometry.tx_axes, receive=False,
+                                            up=tx.rotation[:, 2])
+        g_r, e_r = self.rx_antenna.response(-n_s, geometry.rx_axes, receive=True,
+                                            up=rx.rotation[:, 2])
+        h_i, v_i = polarisation_basis(n_i)
+        h_s, v_s = polarisation_basis(n_s)
+        # Ports on the FSA bases: [k, port, (h, v)]
+        t_hv = project_ports(e_t, h_i, v_i)
+        r_hv = project_ports(e_r, h_s, v_s)
+        m = channel_matrix(s, r_hv, t_hv)  # [k, rx port, tx port]
+        tau = tau_t + tau_r
+        # Eq (R1): amplitude, polarimetric factor, carrier phase exp(-j 2 pi f_c tau)
+        amp = path_amplitude(self.transmit_power, g_t, g_r, self.wavelength, r_t, r_r) \
+            * np.exp(-2j * np.pi * self.carrier * tau)
+        rows = np.stack([m[:, i, j] for _, i, j in self.channels])
+        return ScattererEcho(tau, rows * amp, r_t, r_r, g_t, g_r, n_i, n_s)
+
+    # --------------------------------------------------------------------- receive
+    def receive(self, pulse: int, echoes: list[ScattererEcho], noise: bool | None = None,
+                out: NDArray[np.complex128] | None = None) -> NDArray[np.complex128]:
+        """Raw samples of one pulse: the sum of the echoes (eq E2) plus thermal noise.
+
+        Parameters
+        ----------
+        pulse : int
+            Pulse index (selects the noise stream).
+        echoes : list of ScattererEcho
+            Scatterer sets (sea facets, targets) of this pulse.
+        noise : bool or None
+            Add k T0 F B noise; default ``[radar].thermal_noise``.
+        out : ndarray (C, n_samples) complex, optional
+            Written in place.
+
+        Returns
+        -------
+        ndarray (C, n_samples) complex [sqrt(W)]
+        """
+        n_ch = len(self.channels)
+        if out is None:
+            out = np.zeros((n_ch, self.window.n_samples), dtype=np.complex128)
+        else:
+            out[...] = 0.0
+        taus, amps = [], []
+        for e in echoes:  # a handful of scatterer sets, each one vectorised
+            keep = self.window.keep(e.tau, self.waveform.n_samples)
+            taus.append(e.tau[keep])
+            amps.append(e.amplitudes[:, keep])
+        if taus:
+            tau = np.concatenate(taus)
+            if tau.size:
+                out += accumulate(tau, np.concatenate(amps, axis=1), self._spectrum,
+                                  self.window)
+        if self.config.thermal_noise if noise is None else noise:
+            out += thermal_noise(out.shape, self.noise_power,
+                                 generator(self.seed, "noise", pulse))
+        return out
+
+    def target_echo(self, geometry: PulseGeometry) -> ScattererEcho | None:
+        """Echo of the scene's ``[[targets]]`` at one pulse (None if there are none)."""
+        targets = self.scene.targets
+        if not targets:
+            return None
+        p0 = np.array([t.position_m for t in targets], dtype=float)
+        vel = np.array([t.velocity_m_s for t in targets], dtype=float)
+        s = np.stack([t.scattering_matrix() for t in targets])
+        return self.scatterer_echo(geometry, p0 + geometry.time * vel, vel, s)
+
+
+__all__ = [
+    "Pointing",
+    "PulseGeometry",
+    "RadarSystem",
+    "ScattererEcho",
+    "canonical_channels",
+]
