@@ -46,7 +46,7 @@ def angular_frequency(
         omega >= 0 [rad/s], same shape as ``k``.
     """
     k = np.abs(np.asarray(k, dtype=np.float64))
-    omega2 = g * k + surface_tension * k**3  # Eq. 15' restoring forces
+    omega2 = k * (g + surface_tension * k * k)  # Eq. 15' restoring forces
     if depth is not None:
         if not depth > 0:
             raise ValueError(f"depth = {depth} m: must be > 0 (or None for deep water)")

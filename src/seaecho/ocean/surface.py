@@ -180,22 +180,22 @@ class SeaSurface:
         ky = 2 * np.pi * np.fft.fftfreq(ny, self.dy)
         kxg, kyg = kx[None, :], ky[:, None]
         psi = cell_averaged_spectrum(spectrum, kxg, kyg, self.dkx, self.dky)
-        resolved = np.ones((ny, nx), dtype=bool)
-        resolved[0, 0] = False  # zero mean
-        resolved[ny // 2, :] = False  # Nyquist row and column: no travelling direction
-        resolved[:, nx // 2] = False
-        psi = np.where(resolved, psi, 0.0)
+        psi[0, 0] = 0.0  # zero mean
+        psi[ny // 2, :] = 0.0  # Nyquist row and column: no travelling direction
+        psi[:, nx // 2] = 0.0
         #: expected variance of z: the integral of Psi over the resolved band [m^2]
         self.resolved_variance = float(psi.sum() * self.dkx * self.dky)
 
-        xi = (rng.standard_normal((ny, nx)) + 1j * rng.standard_normal((ny, nx))) / np.sqrt(2)
-        h0 = xi * np.sqrt(0.5 * psi * self.dkx * self.dky)  # Eq. 12'
-        h0_neg_conj = np.conj(np.roll(np.flip(h0, axis=(0, 1)), 1, axis=(0, 1)))  # h0*(-K)
+        # unit circular complex Gaussian: (N(0, 1/2) + j N(0, 1/2)), drawn as pairs
+        xi = rng.standard_normal((ny, nx, 2)).view(np.complex128)[..., 0]
+        h0 = xi * np.sqrt(0.25 * self.dkx * self.dky * psi)  # Eq. 12': sqrt(Psi dK^2 / 2) / sqrt 2
 
         # keep the half plane kx >= 0 for real inverse FFTs (axis 1 = x is the rfft axis)
         half = nx // 2 + 1
+        neg_y = (-np.arange(ny)) % ny
+        neg_x = (-np.arange(half)) % nx
         self._a = np.ascontiguousarray(h0[:, :half])
-        self._b = np.ascontiguousarray(h0_neg_conj[:, :half])
+        self._b = np.conj(h0[neg_y][:, neg_x])  # h0*(-K) on the half plane
         self._kx = kx[:half][None, :].copy()
         self._kx[0, -1] = np.pi / self.dx  # Nyquist column (zero amplitude anyway)
         self._ky = ky[:, None].copy()
@@ -203,8 +203,9 @@ class SeaSurface:
         self._omega = angular_frequency(k, depth, surface_tension)
         with np.errstate(divide="ignore", invalid="ignore"):
             coth = 1.0 if depth is None else 1.0 / np.tanh(k * depth)
-            self._ux = np.where(k > 0, self._kx / k * self._omega * coth, 0.0)
-            self._uy = np.where(k > 0, self._ky / k * self._omega * coth, 0.0)
+            speed = np.where(k > 0, self._omega * coth / k, 0.0)
+        self._ux = self._kx * speed
+        self._uy = self._ky * speed
 
     @classmethod
     def from_scene(cls, scene, rng: np.random.Generator | None = None) -> SeaSurface:
