@@ -304,11 +304,11 @@ class ObjectScene:
         for o in self.objects:
             buf = np.ascontiguousarray(o.world_vertices(t), dtype=np.float32)
             self._bufs[o.name] = buf
-            mat = _radio_material(rt, f"mat-{o.name}", o.relative_permittivity, o.conductivity,
+            mat = _radio_material(rt, f"{o.name}_material", o.relative_permittivity, o.conductivity,
                                   o.itu_type)
             scene_objects.append(rt.SceneObject(mi_mesh=_mi_mesh(mi, o.name, buf, o.faces),
                                                 name=o.name, radio_material=mat,
-                                                velocity=mi.Vector3f(*o.velocity)))
+                                                velocity=mi.Vector3f(*map(float, o.velocity))))
         self.scene = rt.load_scene()
         self.scene.edit(add=scene_objects)
         self._params = mi.traverse(self.scene.mi_scene)
