@@ -125,15 +125,18 @@ def polarisation_basis(
     n = _as_vectors(n, "n")
     nn = _as_vectors(normal, "normal")
     n, nn = np.broadcast_arrays(n, nn)
-    # Eq F1: h along N x n, with the reference-azimuth limit where it vanishes.
-    c = np.cross(nn, n)
-    norm = np.linalg.norm(c, axis=-1, keepdims=True)
-    degenerate = norm < _DEGENERATE
+    # Eq F1: h along N x n = N x t (t the tangential part of n), with the
+    # reference-azimuth limit where t vanishes; the same test as local_angles, so the
+    # bases and the local azimuths always agree on which directions are degenerate.
+    t = n - _dot(n, nn)[..., None] * nn
+    degenerate = np.linalg.norm(t, axis=-1, keepdims=True) < _DEGENERATE
     if np.any(degenerate):
-        c_ref = np.cross(nn, reference_direction(nn))
-        c = np.where(degenerate, c_ref, c)
-        norm = np.linalg.norm(c, axis=-1, keepdims=True)
-    h = c / norm
+        t = np.where(degenerate, reference_direction(nn), t)
+    c = np.cross(nn, t)
+    if np.any(degenerate):
+        # Near-degenerate n is only within 1e-9 of N: make h exactly normal to n.
+        c = c - _dot(c, n)[..., None] * n
+    h = c / np.linalg.norm(c, axis=-1, keepdims=True)
     # Eq F2: v completes the right-handed triad.
     v = np.cross(h, n)
     return h, v

@@ -51,10 +51,15 @@ def fresnel_coefficients(cos_theta: ArrayLike, eps_r: ArrayLike) -> tuple[NDArra
     eps = np.asarray(eps_r, dtype=complex)
     # Transmitted normal wavenumber over k, decaying branch.
     root = np.sqrt(eps - (1.0 - c * c))
-    # Eq R1 (TE, horizontal).
-    r_h = (c - root) / (c + root)
+    # Eq R1 (TE, horizontal); the denominators vanish only for eps_r = 1 at grazing
+    # incidence (no interface), where R = 0.
+    den_h = c + root
+    den_v = eps * c + root
+    zh = np.abs(den_h) < 1e-100
+    zv = np.abs(den_v) < 1e-100
+    r_h = np.where(zh, 0.0, (c - root) / np.where(zh, 1.0, den_h))
     # Eq R2 (TM, vertical).
-    r_v = (eps * c - root) / (eps * c + root)
+    r_v = np.where(zv, 0.0, (eps * c - root) / np.where(zv, 1.0, den_v))
     return r_h, r_v
 
 
