@@ -17,8 +17,8 @@ For a linear FM pulse of bandwidth B and large time-bandwidth product, the unwei
 output is close to sinc(B t) (Cook & Bernfeld 1967, ch. 6; Richards 2014, section 4.6):
 a 3 dB width of 0.886 / B in delay, i.e. 0.886 c / (2 B) in range, and a peak sidelobe
 of -13.26 dB. Weighting w (Hamming, Taylor) trades a wider main lobe for lower
-sidelobes (Harris 1978, Table 1: Hamming -42.7 dB, 3 dB width x 1.46 against 0.89 bins
-x ... of the rectangle; Taylor by design of its nbar and sidelobe level).
+sidelobes (Harris 1978, Table 1: Hamming -42.7 dB with a 3 dB width of 1.30 bins
+against 0.89 for the rectangle; Taylor at its design sidelobe level).
 
 References
 ----------
