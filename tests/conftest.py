@@ -1,0 +1,17 @@
+"""Test-suite configuration.
+
+Hypothesis: under CI (the ``CI`` environment variable set, as ``.ci/run`` is run) the
+examples are derandomised, so a CI run is reproducible; developers' runs keep exploring
+new examples (and keep failures in the local example database).
+"""
+
+import os
+
+from hypothesis import HealthCheck, settings
+
+settings.register_profile(
+    "ci", derandomize=True, database=None, deadline=None,
+    suppress_health_check=[HealthCheck.too_slow],
+)
+settings.register_profile("dev", deadline=None)
+settings.load_profile("ci" if os.environ.get("CI") else "dev")
