@@ -19,6 +19,7 @@ from .. import __version__
 COMMANDS = (
     "check",
     "surface",
+    "run",
 )
 
 
