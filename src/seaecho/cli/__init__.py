@@ -20,6 +20,8 @@ COMMANDS = (
     "check",
     "surface",
     "run",
+    "trace",
+    "compare",
 )
 
 

@@ -88,13 +88,15 @@ class FacetEngine:
         self._tracer = None
         self._cache: tuple[float, np.ndarray, np.ndarray] | None = None
         self._variant = variant
-        self._eps_r = eps_r
-        self._frequency_hz = frequency_hz
+        self.eps_r = eps_r
+        self.frequency_hz = frequency_hz
 
     # ------------------------------------------------------------------ construction
     @classmethod
     def from_scene(cls, scene, *, base_dir: str | os.PathLike = ".", sea=None,
-                   mode: str | None = None, variant: str | None = None) -> FacetEngine:
+                   mode: str | None = None, variant: str | None = None,
+                   tx_position: np.ndarray | None = None,
+                   rx_position: np.ndarray | None = None) -> FacetEngine:
         """Engine of a validated scene.
 
         Parameters
@@ -107,14 +109,25 @@ class FacetEngine:
             An existing sea of this scene (else ``Sea.from_scene(scene)``).
         mode, variant : str, optional
             Override ``[tracing] mode`` / ``variant``.
+        tx_position, rx_position : (3,) arrays, optional
+            Fixed positions [m] that replace the scene's ``[transmitter]`` /
+            ``[receiver]`` platforms (rx None with tx given: monostatic).
         """
         from ..radar.platforms import platforms_from_scene
         from ..sea import Sea
 
-        if scene.transmitter is None:
-            raise ValueError("the scene has no [transmitter]: facets need a transmitter")
-        tx, rx = platforms_from_scene(scene)
-        monostatic = scene.receiver is None
+        if tx_position is not None:
+            p_tx = np.asarray(tx_position, dtype=np.float64).reshape(3)
+            p_rx = None if rx_position is None else np.asarray(rx_position,
+                                                                dtype=np.float64).reshape(3)
+            tx_fn = lambda t: p_tx  # noqa: E731
+            rx_fn = None if p_rx is None else (lambda t: p_rx)
+        else:
+            if scene.transmitter is None:
+                raise ValueError("the scene has no [transmitter]: facets need a transmitter")
+            tx, rx = platforms_from_scene(scene)
+            tx_fn = lambda t: tx.state(t).position  # noqa: E731
+            rx_fn = None if scene.receiver is None else (lambda t: rx.state(t).position)
         cfg = scene.tracing
         mode = cfg.mode if mode is None else mode
         objects = []
@@ -128,9 +141,7 @@ class FacetEngine:
 
         eps_r = complex(sea_water_permittivity(freq, scene.sea.temperature_c,
                                                scene.sea.salinity_psu))
-        return cls(Sea.from_scene(scene) if sea is None else sea,
-                   lambda t: tx.state(t).position,
-                   None if monostatic else (lambda t: rx.state(t).position),
+        return cls(Sea.from_scene(scene) if sea is None else sea, tx_fn, rx_fn,
                    mode=mode, shadowing=cfg.shadowing,
                    refresh_interval_s=cfg.refresh_interval_s, objects=objects,
                    variant=cfg.variant if variant is None else variant, eps_r=eps_r,
@@ -152,7 +163,7 @@ class FacetEngine:
 
             st = self.sea.state(0.0)
             self._tracer = FacetTracer(st.x, st.y, st.elevation, objects=self.objects,
-                                       eps_r=self._eps_r, frequency_hz=self._frequency_hz,
+                                       eps_r=self.eps_r, frequency_hz=self.frequency_hz,
                                        variant=self._variant)
         return self._tracer
 
