@@ -176,7 +176,7 @@ def test_nufft_and_direct_synthesis_agree():
     assert scale > 0.05
     for name in ("elevation", "slope_x", "slope_y", "dzdt"):
         ref = getattr(b, name)
-        np.testing.assert_allclose(getattr(a, name), ref, atol=1e-7 * np.abs(ref).max())
+        np.testing.assert_allclose(getattr(a, name), ref, atol=1e-5 * np.abs(ref).max())
 
 
 def test_wake_moves_with_the_ship():
@@ -229,7 +229,7 @@ def test_nothing_ahead_of_the_bow_and_symmetric_about_the_track():
     assert np.all(f.elevation[:, x > 5.0] == 0.0)
     # y -> -y: grid y[1:] is symmetric about 0
     z = f.elevation[1:]
-    np.testing.assert_allclose(z, z[::-1], atol=1e-9 * np.abs(z).max())
+    np.testing.assert_allclose(z, z[::-1], atol=1e-6 * np.abs(z).max())  # NUFFT eps 1e-7
 
 
 def test_crest_lines_eq16_envelope_is_kelvin_angle():
