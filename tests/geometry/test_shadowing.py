@@ -31,8 +31,11 @@ def test_lambda_matches_its_definition_and_limits():
 def test_height_average_of_conditional_is_one_over_one_plus_lambda():
     """Integral of F(zeta)^Lambda over the Gaussian height pdf = 1 / (1 + Lambda) (Smith 1967)."""
     sigma_h = 0.7
+
+    def pdf(z):
+        return np.exp(-0.5 * (z / sigma_h) ** 2) / (np.sqrt(2 * np.pi) * sigma_h)
+
     for lam in (0.05, 0.4, 2.0):
-        pdf = lambda z: np.exp(-0.5 * (z / sigma_h) ** 2) / (np.sqrt(2 * np.pi) * sigma_h)  # noqa: E731
         val, _ = quad(lambda z, lam=lam: pdf(z) * smith_conditional(lam, z, sigma_h),
                       -10 * sigma_h, 10 * sigma_h)
         assert val == pytest.approx(1.0 / (1.0 + lam), rel=1e-8)

@@ -57,8 +57,8 @@ class TracingConfig(Section):
 class ObjectConfig(Section):
     """A mesh or Mitsuba/Sionna XML scene placed in the scene (ship hull, breakwater, ...)."""
 
-    name: str = Field(..., min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_.-]+$",
-                      description="unique object name (letters, digits, _ . -)")
+    name: str = Field(..., min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_-]+$",
+                      description="unique object name (letters, digits, _ -)")
     file: str = Field(..., min_length=1, max_length=1000,
                       description="mesh (.ply, .obj, .stl) or Mitsuba/Sionna scene (.xml), "
                       "relative to the scene file's folder")

@@ -185,7 +185,7 @@ def load_object(cfg, base_dir: str = ".", ship=None) -> list[ObjectGeometry]:
         for name, v, f, eps, sigma in shapes:
             mat = (dict(relative_permittivity=eps, conductivity=sigma, itu_type=None)
                    if keep_file_material else material)
-            out.append(ObjectGeometry(f"{cfg.name}.{name}", v * cfg.scale, f, position, rot,
+            out.append(ObjectGeometry(f"{cfg.name}-{name}", v * cfg.scale, f, position, rot,
                                       velocity, **mat))
         return out
     v, f = _mesh_file(path)
