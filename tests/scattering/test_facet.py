@@ -1,0 +1,166 @@
+"""Per-facet sigma and speckled amplitudes (seaecho.scattering.facet)."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from hypothesis.extra.numpy import arrays
+from scattering_helpers import gaussian_spectrum
+
+from seaecho.scattering import frames
+from seaecho.scattering.blend import blend
+from seaecho.scattering.facet import (
+    FacetTerms,
+    facet_amplitudes,
+    facet_sigma,
+    facet_terms,
+    hhvv_coherence,
+    speckle_amplitudes,
+)
+from seaecho.scattering.kirchhoff import kirchhoff_sigma
+from seaecho.scattering.spm import spm_sigma
+from seaecho.scattering.validity import SPMValidityWarning
+
+EPS = 55.9 - 37.0j
+K = 2 * np.pi * 10e9 / 299_792_458.0
+
+
+def _geometry(n=7):
+    ti = np.radians(np.linspace(5, 70, n))
+    ts = np.radians(np.linspace(60, 10, n))
+    ps = np.radians(np.linspace(0, 180, n))
+    return ti, ts, ps
+
+
+@pytest.mark.parametrize("model", ["spm", "kirchhoff", "blend"])
+def test_flat_facets_equal_mean_plane_models(model):
+    # Two code paths: facet.py (written-out rotations, its own specular matrix) and the
+    # mean-plane functions of spm.py / kirchhoff.py / blend.py.
+    ti, ts, ps = _geometry()
+    n_i, n_s = frames.directions_from_angles(ti, 0.3, ts, ps + 0.3)
+    normal = np.broadcast_to(frames.Z_HAT, n_i.shape)
+    s = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01, 0.5, model=model)
+    s_spm = spm_sigma(ti, 0.3, ts, ps + 0.3, K, EPS, gaussian_spectrum)
+    s_k = kirchhoff_sigma(ti, 0.3, ts, ps + 0.3, EPS, 0.02, 0.01, 0.5, warn=False)
+    beta = np.degrees(frames.beta_angle(n_i, n_s))
+    ref = {"spm": s_spm, "kirchhoff": s_k, "blend": blend(s_spm, s_k, beta)}[model]
+    np.testing.assert_allclose(s, ref, rtol=1e-9, atol=1e-12 * ref.max())
+
+
+def test_precomputed_local_frames_give_same_result():
+    rng = np.random.default_rng(3)
+    n = 50
+    normal = np.column_stack([rng.normal(0, 0.2, (n, 2)), np.ones(n)])
+    normal /= np.linalg.norm(normal, axis=1, keepdims=True)
+    n_i, n_s = frames.directions_from_angles(rng.uniform(0.1, 1.2, n), 0.0,
+                                             rng.uniform(0.1, 1.2, n), rng.uniform(0, 6, n))
+    th = frames.local_angles(n_i, n_s, normal)
+    rot = frames.tilt_rotation(n_i, n_s, normal)
+    local = dict(theta_i=th[0], theta_s=th[1], phi=th[2], rot_i=rot[0], rot_s=rot[1])
+    a = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.01, 0.01)
+    b = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.01, 0.01, local=local)
+    np.testing.assert_allclose(a, b, rtol=1e-12)
+
+
+def test_wake_damping_removes_bragg_part():
+    ti, ts, ps = _geometry()
+    n_i, n_s = frames.directions_from_angles(ti, 0.0, ts, ps)
+    normal = np.broadcast_to(frames.Z_HAT, n_i.shape)
+    t0 = facet_terms(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01)
+    t1 = facet_terms(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01,
+                     wake_damping=np.ones(len(ti)))
+    t_half = facet_terms(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01,
+                         wake_damping=np.full(len(ti), 0.5))
+    np.testing.assert_allclose(t1.sigma(), t0.weight * np.abs(t0.specular) ** 2)
+    np.testing.assert_allclose(np.abs(t_half.bragg) ** 2, 0.5 * np.abs(t0.bragg) ** 2)
+
+
+def test_speckle_statistics_and_hhvv_coherence():
+    # One bistatic geometry where both mechanisms matter (beta ~ 17 deg), 200 000 facets.
+    n = 200_000
+    n_i, n_s = frames.directions_from_angles(np.radians(20), 0.0, np.radians(30),
+                                             np.radians(150))
+    normal = np.array([0.05, 0.08, 1.0]) / np.linalg.norm([0.05, 0.08, 1.0])
+    nn = np.broadcast_to(normal, (n, 3))
+    terms = facet_terms(np.broadcast_to(n_i, (n, 3)), np.broadcast_to(n_s, (n, 3)), nn, K,
+                        EPS, gaussian_spectrum, 0.004, 0.003)
+    area = np.full(n, 2.0)
+    a = speckle_amplitudes(terms, area, np.random.default_rng(20261122))
+    sigma = terms.sigma()[0]
+    inten = np.abs(a) ** 2
+    mean = inten.mean(axis=0)
+    # E|a|^2 = sigma A. Sample mean of an exponential over n draws: relative sd
+    # 1/sqrt(n) = 0.22 %; 1 % is 4.5 sd.
+    np.testing.assert_allclose(mean, sigma * 2.0, rtol=0.01)
+    # Exponential intensity: variance = mean^2 (relative sd of the sample variance
+    # sqrt(8/n) = 0.63 %; 3 % is 4.7 sd).
+    np.testing.assert_allclose(inten.var(axis=0) / mean**2, 1.0, rtol=0.03)
+    # HH-VV coherence from eq P5 vs its sample estimate (sd ~ (1 - |g|^2)/sqrt(n) < 0.003).
+    gamma = hhvv_coherence(terms)[0]
+    est = np.mean(a[:, 0] * a[:, 3].conj()) / np.sqrt(mean[0] * mean[3])
+    assert abs(est - gamma) < 0.01
+    # A single mechanism is fully coherent.
+    assert np.allclose(np.abs(hhvv_coherence(facet_terms(
+        n_i[None], n_s[None], normal[None], K, EPS, gaussian_spectrum, 0.004, 0.003,
+        model="spm"))), 1.0)
+
+
+def test_speckle_covariance_matches_eq_p5_for_mixed_mechanisms():
+    # Two mechanisms with different polarimetric signatures and equal weight: the sample
+    # 4x4 covariance of the amplitudes must match eq P5, including the partial HH-VV
+    # coherence (0.5 (K_hh K_vv^* + B_hh B_vv^*) / ...) and the cross-pol terms.
+    n = 200_000
+    spec = np.array([1.0, 0.1, 0.1, 0.8j])
+    bragg = np.array([0.6, 0.2j, 0.2j, -1.0])
+    terms = FacetTerms(specular=np.tile(spec, (n, 1)), bragg=np.tile(bragg, (n, 1)),
+                       weight=np.full((n, 4), 0.5))
+    a = speckle_amplitudes(terms, np.ones(n), np.random.default_rng(7))
+    cov = a.T @ a.conj() / n
+    ref = terms.covariance()[0]
+    # Entries are means of products of Gaussians: sd <= |C_mm C_nn|^0.5 / sqrt(n) ~ 0.3 %
+    # of the diagonal; 2 % of the largest entry is > 6 sd.
+    np.testing.assert_allclose(cov, ref, atol=0.02 * np.abs(ref).max())
+    gamma = hhvv_coherence(terms)[0]
+    assert 0.2 < abs(gamma) < 0.8
+
+
+def test_amplitudes_reproducible_and_calibrated_by_area():
+    ti, ts, ps = _geometry()
+    n_i, n_s = frames.directions_from_angles(ti, 0.0, ts, ps)
+    normal = np.broadcast_to(frames.Z_HAT, n_i.shape)
+    args = (n_i, n_s, normal, np.full(len(ti), 3.0), K, EPS, gaussian_spectrum, 0.02, 0.01)
+    a1 = facet_amplitudes(*args, np.random.default_rng(5))
+    a2 = facet_amplitudes(*args, np.random.default_rng(5))
+    np.testing.assert_array_equal(a1, a2)
+    assert a1.shape == (len(ti), 4) and a1.dtype == complex
+
+
+def test_spm_validity_warning():
+    n_i, n_s = frames.directions_from_angles(0.5, 0.0, 0.5, np.pi)
+    with pytest.warns(SPMValidityWarning):
+        facet_sigma(n_i[None], n_s[None], frames.Z_HAT[None], K, EPS, gaussian_spectrum,
+                    0.01, 0.01, small_scale_height_variance=1e-2)
+
+
+unit = arrays(np.float64, (3,), elements=st.floats(-1, 1)).filter(
+    lambda v: np.linalg.norm(v) > 1e-3)
+
+
+@settings(max_examples=200, deadline=None)
+@given(unit, unit, unit, st.sampled_from(["blend", "spm", "kirchhoff"]))
+def test_no_nan_or_inf_for_any_geometry(a, b, c, model):
+    # Random directions, plus the singular ones: backscatter (Tx = Rx), forward through
+    # (n_s = n_i), nadir/zenith, facet normal along a ray, grazing.
+    n_i = a / np.linalg.norm(a)
+    n_s = b / np.linalg.norm(b)
+    nn = c / np.linalg.norm(c)
+    nn = nn if nn[2] > 0 else -nn
+    zen = np.array([0.0, 0.0, 1.0])
+    graz = np.array([1.0, 0.0, 0.0])
+    cases_i = np.array([n_i, n_i, n_i, -zen, -zen, graz, -nn, n_i])
+    cases_s = np.array([n_s, -n_i, n_i, zen, -zen, graz, nn, np.array([-1.0, 0, 0])])
+    normals = np.array([nn, nn, nn, zen, zen, zen, nn, zen])
+    with np.errstate(invalid="raise", divide="raise", over="raise"):
+        s = facet_sigma(cases_i, cases_s, normals, K, EPS, gaussian_spectrum, 0.01, 0.005,
+                        0.3, model=model)
+    assert np.all(np.isfinite(s)) and np.all(s >= 0)
