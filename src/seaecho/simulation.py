@@ -103,6 +103,10 @@ class Simulation:
         self.unresolved = unresolved_statistics(self.sea.spectrum, lx / nx, ly / ny,
                                                 self.k / 3.0)
         self.wind_direction = np.deg2rad(scene.sea.wind_direction_deg)
+        # Validity of the Bragg part, checked once here rather than at every pulse
+        from .scattering.twoscale import check_spm_validity
+
+        check_spm_validity(self.k, self.unresolved.height_variance)
 
     def surface_time(self, pulse: int) -> float:
         """Time of the sea surface used by ``pulse`` [s] (start of its block)."""
@@ -146,7 +150,6 @@ class Simulation:
             local={"theta_i": facets.theta_i[idx], "theta_s": facets.theta_s[idx],
                    "phi": facets.phi[idx], "rot_i": facets.rot_i[idx],
                    "rot_s": facets.rot_s[idx]},
-            small_scale_height_variance=un.height_variance,
         )
         block = pulse // self.block
         rng = generator(self.scene.run.seed, "speckle", block)
