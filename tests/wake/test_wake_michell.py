@@ -4,10 +4,10 @@ Normalisation chain checked here (see docs/wake.md):
 
 * eq W8 (closed form for the Wigley hull) against a direct quadrature of eq W5 over
   the hull offsets (two independent evaluations of the same integral);
-* eq W6 (Havelock's energy-flux formula, Newman 1977 eq 6.164) with the amplitude of
+* eq W6 (Havelock's energy-flux formula, Newman 1977 section 6.18) with the amplitude of
   eq W5 against Michell's integral in its classical published form
   R = 4 rho g^2 / (pi V^2) int_1^inf (P^2 + Q^2) lambda^2 / sqrt(lambda^2 - 1) dlambda
-  (Michell 1898; Wehausen 1973, eq 3.21), computed by independent quadrature;
+  (Michell 1898; Wehausen 1973), computed by independent quadrature;
 * eq W6 with the point-source amplitude of eq W9 against Havelock's (1932) closed form
   for a submerged source, R = rho m^2 k0^2 / (4 pi) exp(-k0 h) [K0(k0 h) + K1(k0 h)]
   (m the volume flux; = 4 pi rho k0^2 m'^2 ... with m' = m / 4 pi).
@@ -72,7 +72,7 @@ def test_wigley_closed_form_matches_direct_quadrature(fn):
 
 @pytest.mark.parametrize("fn", [0.3, 0.5, 1.0])
 def test_havelock_form_equals_michell_integral(fn):
-    """Michell's integral in the published lambda form (Wehausen 1973 eq 3.21)."""
+    """Michell's integral in the published lambda form (Michell 1898; Wehausen 1973)."""
     length, beam, draft = 1.0, 0.1, 0.0625  # the standard Wigley proportions
     speed = fn * np.sqrt(G * length)
     k0 = G / speed**2

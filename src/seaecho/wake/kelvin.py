@@ -122,8 +122,8 @@ def kelvin_crest_lines(
         y' = \\tfrac{A}{2} \\sin\\theta \\cos^2\\theta, \\qquad
         A = 2 n \\lambda_0 = \\frac{4 \\pi n V^2}{g}                         (16)
 
-    These are the lines of constant stationary phase 2 pi n of eq W4 (Newman 1977, eq
-    6.174; Lamb 1932, art. 256). The paper prints y = (A/2) sin(theta) cos(theta); the
+    These are the lines of constant stationary phase 2 pi n of eq W4 (Newman 1977,
+    section 6.17; Lamb 1932, art. 256). The paper prints y = (A/2) sin(theta) cos(theta); the
     extra cos(theta) is needed for the stationary-phase curves, whose envelope
     y'/x' = tan(theta)/(1 + 2 tan^2 theta) peaks at tan(theta) = 1/sqrt(2) with
     y'/x' = 1/sqrt(8), i.e. the half-angle asin(1/3) = 19.47 deg. At theta = 0 the
@@ -402,6 +402,12 @@ class KelvinWake:
             )
             return WakeFields(zero, zero.copy(), zero.copy(), zero.copy())
 
+        # the window (eq W11) is zero ahead of the bow: nothing to synthesise there
+        h = self.ship.heading
+        xs, _ = self.ship.to_ship_frame(x[None, :], y[:, None], t)
+        if np.all(xs <= -0.5 * self.ship.length):
+            return WakeFields(zero, zero.copy(), zero.copy(), zero.copy())
+
         p = self.ship.position(t)
         corners_x = np.array([x[0], x[-1], x[0], x[-1]]) - p[0]
         corners_y = np.array([y[0], y[0], y[-1], y[-1]]) - p[1]
@@ -409,7 +415,6 @@ class KelvinWake:
         theta, weights = self.plane_waves(k_cut, max(r_max, self.ship.length))
 
         # world wavevectors of eq W4: k = -k0 sec^2(theta) (h_hat cos theta + n_hat sin theta)
-        h = self.ship.heading
         kappa = self.k0 / np.cos(theta) ** 2
         kx = -kappa * (np.cos(h) * np.cos(theta) - np.sin(h) * np.sin(theta))
         ky = -kappa * (np.sin(h) * np.cos(theta) + np.cos(h) * np.sin(theta))
@@ -423,7 +428,6 @@ class KelvinWake:
             z, zx, zy = self._synth_direct(coeffs, kx, ky, x, y)
 
         # near-field window (eq W11) in the ship frame, with its gradient
-        xs, _ = self.ship.to_ship_frame(x[None, :], y[:, None], t)
         w, dw = self.near_field_window(xs)
         wx, wy = -np.cos(h) * dw, -np.sin(h) * dw  # dx'/dx = -cos h, dx'/dy = -sin h
         elevation = w * z

@@ -19,7 +19,7 @@ the ship frame, so of wavenumber k0 sec^2(theta) with k0 = g/V^2:
         \\exp\\left[-i k_0 \\sec^2\\theta\\,(x'\\cos\\theta + y'\\sin\\theta)\\right]
         d\\theta                                                            (W4)
 
-(Newman 1977, eq 6.163 form). Solving the linear free-surface problem for a unit source
+(Newman 1977, section 6.18). Solving the linear free-surface problem for a unit source
 at depth h (Fourier transform in x', y'; the pole of the free-surface condition taken with
 the radiation condition, waves only downstream) gives the contribution
 (k0 m / (pi V)) sec^3(theta) exp(-k0 h sec^2 theta) exp(i k0 sec(theta) x_s) of a source
@@ -33,7 +33,7 @@ of volume flux m [m^3/s] at (x_s, 0, -h); summing eq W3 over the centreplane:
         dx'\\,dz                                                            (W5)
 
 The wave resistance follows from the energy flux of eq W4 (Havelock 1934; Newman 1977,
-eq 6.164):
+section 6.18):
 
 .. math::
 
@@ -42,7 +42,7 @@ eq 6.164):
 
 which, with eq W5, is Michell's integral
 R_w = (4 rho g^2 / (pi V^2)) int_1^inf |P + iQ|^2 lambda^2 / sqrt(lambda^2 - 1) dlambda
-(Michell 1898; Wehausen 1973, eq 3.21), the classical published form used as a check.
+(Michell 1898; Wehausen 1973, section 3), the classical published form used as a check.
 
 Hull: the Wigley parabolic hull fitted to (L, B, T),
 
@@ -232,7 +232,7 @@ def havelock_wave_resistance(
 
     References
     ----------
-    Havelock (1934); Newman (1977) eq 6.164.
+    Havelock (1934); Newman (1977) section 6.18.
     """
     theta = np.asarray(theta, dtype=np.float64)
     amp = np.asarray(amplitude)
