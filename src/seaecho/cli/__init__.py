@@ -22,6 +22,8 @@ COMMANDS = (
     "run",
     "trace",
     "compare",
+    "sigma",
+    "permittivity",
 )
 
 

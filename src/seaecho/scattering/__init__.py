@@ -1,1 +1,15 @@
-"""seaecho.scattering stage."""
+"""seaecho.scattering: polarimetric bistatic sea scattering (paper section III).
+
+Plain arrays in, plain arrays out; nothing here knows about meshes or radars.
+
+- :mod:`.frames` polarisation bases (FSA), local bistatic angles, tilt rotation
+- :mod:`.fresnel` Fresnel coefficients of a lossy interface
+- :mod:`.kirchhoff`, :mod:`.slopes` Kirchhoff / geometric optics (eq 7), slope densities
+- :mod:`.spm` first-order small perturbation model (eqs 8-9)
+- :mod:`.twoscale` two-scale model (SPM over tilted facets)
+- :mod:`.blend` Kirchhoff / SPM blend (eqs 10-11)
+- :mod:`.facet` per-facet sigma_mn and speckled complex amplitudes for the radar stage
+- :mod:`.models` mean-plane entry point (``seaecho sigma``)
+
+Theory, equations and sources: ``docs/scattering.md``.
+"""

@@ -57,10 +57,10 @@ def check_spm_validity(k: float, small_scale_height_variance: float | None) -> N
         return
     kh = k * np.sqrt(max(small_scale_height_variance, 0.0))
     if kh > SPM_KH_MAX:
-        warnings.warn(f"SPM with k h = {kh:.2f} > {SPM_KH_MAX} (small-scale rms height "
-                      f"{np.sqrt(small_scale_height_variance):.3g} m): first-order "
-                      "perturbation theory is outside its domain", SPMValidityWarning,
-                      stacklevel=3)
+        h = np.sqrt(small_scale_height_variance)
+        warnings.warn(f"SPM with k h = {kh:.2f} > {SPM_KH_MAX} (rms height of the "
+                      f"roughness it describes {h:.3g} m): first-order perturbation theory "
+                      "is outside its domain", SPMValidityWarning, stacklevel=3)
 
 
 def slope_nodes(mss_upwind: float, mss_crosswind: float, wind_direction: float,

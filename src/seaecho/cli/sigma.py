@@ -1,0 +1,197 @@
+"""``seaecho sigma``: mean-plane bistatic sigma_mn of a wind sea for angle sweeps.
+
+Writes one CSV row per geometry (columns ``theta_i_deg, theta_s_deg, phi_i_deg,
+phi_s_deg, sigma_hh_db, sigma_hv_db, sigma_vh_db, sigma_vv_db``) and a PNG beside it.
+Each angle option takes a value or an inclusive ``start:stop:step`` range; the rows are
+the Cartesian product of the four angle lists. Monostatic: ``--phi-s-deg 180`` (with
+``--phi-i-deg 0``) and ``--theta-s-deg`` equal to ``--theta-i-deg``.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+#: sigma below this is written as this many dB (an exact 0, e.g. cross-pol in plane).
+DB_FLOOR = -300.0
+
+
+def parse_range(text: str, name: str, lo: float, hi: float):
+    """``"20"`` -> [20.0]; ``"0:180:5"`` -> 0, 5, ..., 180 (stop included on the grid)."""
+    import numpy as np
+
+    from . import UsageError
+
+    parts = text.split(":")
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        raise UsageError(f"{name} = {text!r}: expected a number or start:stop:step") from None
+    if len(values) == 1:
+        out = np.array(values)
+    elif len(values) == 3:
+        start, stop, step = values
+        if step <= 0 or stop < start:
+            raise UsageError(f"{name} = {text!r}: need step > 0 and stop >= start")
+        n = int(np.floor((stop - start) / step + 1e-9)) + 1
+        if n > 100_000:
+            raise UsageError(f"{name} = {text!r}: {n} values, at most 100000")
+        out = start + step * np.arange(n)
+    else:
+        raise UsageError(f"{name} = {text!r}: expected a number or start:stop:step")
+    if np.any(out < lo) or np.any(out > hi):
+        raise UsageError(f"{name} = {text!r}: values must lie in [{lo:g}, {hi:g}] deg")
+    return out
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    from ..ocean.seawater import PERMITTIVITY_MODELS
+    from ..scattering.models import MEAN_PLANE_MODELS, SLOPE_MODELS
+
+    p = sub.add_parser(
+        "sigma", help="bistatic polarimetric sigma_mn of the sea for angle sweeps (CSV + PNG)",
+        description="Mean-plane bistatic scattering coefficients sigma_mn of a wind sea "
+        "(paper eqs 7-11) for angle sweeps. Angles: a value or start:stop:step (inclusive). "
+        "Monostatic: --phi-s-deg 180 and --theta-s-deg equal to --theta-i-deg.")
+    p.add_argument("--model", choices=MEAN_PLANE_MODELS, default="blend",
+                   help="scattering model (default: blend, eqs 10-11)")
+    p.add_argument("--frequency-ghz", type=float, default=10.0, help="radar frequency [GHz]")
+    p.add_argument("--wind-speed", type=float, default=4.53,
+                   help="wind speed U19.5 at 19.5 m [m/s] (default 4.53, paper Fig. 3)")
+    p.add_argument("--wind-direction-deg", type=float, default=0.0,
+                   help="direction the wind blows towards, CCW from +x [deg]")
+    p.add_argument("--spectrum", default="elfouhaily",
+                   choices=("elfouhaily", "pierson-moskowitz", "jonswap"),
+                   help="omnidirectional wave spectrum (default elfouhaily)")
+    p.add_argument("--spreading", default="elfouhaily", choices=("elfouhaily",
+                                                                 "longuet-higgins"),
+                   help="directional spreading (default elfouhaily)")
+    p.add_argument("--fetch-m", type=float, default=None, help="fetch [m] (jonswap)")
+    p.add_argument("--slopes", choices=SLOPE_MODELS, default="gaussian",
+                   help="slope density of the Kirchhoff part (default gaussian)")
+    p.add_argument("--temperature-c", type=float, default=20.0, help="sea temperature [degC]")
+    p.add_argument("--salinity-psu", type=float, default=35.0, help="salinity [psu]")
+    p.add_argument("--permittivity-model", choices=sorted(PERMITTIVITY_MODELS),
+                   default="meissner-wentz", help="sea-water permittivity model")
+    p.add_argument("--theta-i-deg", default="20", help="incidence angle(s) [deg], 0..90")
+    p.add_argument("--theta-s-deg", default="30", help="scattering angle(s) [deg], 0..90")
+    p.add_argument("--phi-i-deg", default="0", help="incidence azimuth(s) [deg]")
+    p.add_argument("--phi-s-deg", default="0:180:2", help="scattering azimuth(s) [deg]")
+    p.add_argument("-o", "--output", default="sigma.csv", help="output CSV file")
+    p.add_argument("--no-figure", action="store_true", help="do not write the PNG")
+    p.set_defaults(func=run)
+
+
+def _figure(rows, varying, path, title):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    from ..io.dataset import atomic_savefig
+
+    names = ["HH", "HV", "VH", "VV"]
+    db = rows[:, 4:]
+    if len(varying) == 2:
+        (ia, a), (ib, b) = varying
+        fig, axes = plt.subplots(2, 2, figsize=(9, 7), constrained_layout=True)
+        vmax = np.max(db[db > DB_FLOOR]) if np.any(db > DB_FLOOR) else 0.0
+        for c, ax in enumerate(axes.flat):
+            grid = db[:, c].reshape(len(a), len(b))
+            im = ax.pcolormesh(b, a, grid, shading="auto", vmin=vmax - 50, vmax=vmax,
+                               cmap="viridis")
+            ax.set_title(f"sigma_{names[c]} [dB]")
+            ax.set_xlabel(_LABELS[ib])
+            ax.set_ylabel(_LABELS[ia])
+        fig.colorbar(im, ax=axes, label="sigma [dB]")
+    else:
+        fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+        col = varying[0][0] if varying else 3
+        x = rows[:, col]
+        for c in range(4):
+            ax.plot(x, np.where(db[:, c] > DB_FLOOR, db[:, c], np.nan), label=names[c],
+                    ls="-" if c in (0, 3) else "--")
+        ax.set_xlabel(_LABELS[col])
+        ax.set_ylabel("sigma [dB]")
+        ax.grid(True, alpha=0.3)
+        ax.legend()
+    fig.suptitle(title, fontsize=9)
+    atomic_savefig(fig, path, dpi=110)
+    plt.close(fig)
+
+
+_LABELS = ["theta_i [deg]", "theta_s [deg]", "phi_i [deg]", "phi_s [deg]"]
+
+
+def run(args: argparse.Namespace) -> int:
+    import sys
+    import warnings
+    from pathlib import Path
+
+    import numpy as np
+
+    from ..io.dataset import atomic_path
+    from ..ocean.seawater import sea_water_permittivity
+    from ..ocean.spectra import DirectionalSpectrum
+    from ..scattering.models import sea_sigma
+    from . import UsageError
+
+    if not 0.1 <= args.frequency_ghz <= 100.0:
+        raise UsageError(f"--frequency-ghz = {args.frequency_ghz}: must be in [0.1, 100] GHz")
+    if not 0.0 < args.wind_speed <= 40.0:
+        raise UsageError(f"--wind-speed = {args.wind_speed}: must be in (0, 40] m/s")
+    if args.spectrum == "jonswap" and args.fetch_m is None:
+        raise UsageError("--spectrum jonswap needs --fetch-m")
+    angles = [
+        parse_range(args.theta_i_deg, "--theta-i-deg", 0.0, 90.0),
+        parse_range(args.theta_s_deg, "--theta-s-deg", 0.0, 90.0),
+        parse_range(args.phi_i_deg, "--phi-i-deg", -360.0, 360.0),
+        parse_range(args.phi_s_deg, "--phi-s-deg", -360.0, 360.0),
+    ]
+    n_rows = int(np.prod([len(a) for a in angles]))
+    if n_rows > 1_000_000:
+        raise UsageError(f"{n_rows} geometries: at most 1000000")
+    out = Path(args.output)
+    if out.suffix.lower() != ".csv":
+        raise UsageError(f"-o {out}: the output must be a .csv file")
+    if not (out.parent if str(out.parent) else Path(".")).is_dir():
+        raise UsageError(f"-o {out}: directory {out.parent} does not exist")
+    try:
+        eps = complex(sea_water_permittivity(args.frequency_ghz * 1e9, args.temperature_c,
+                                             args.salinity_psu, model=args.permittivity_model))
+        spec = DirectionalSpectrum(spectrum=args.spectrum, spreading=args.spreading,
+                                   u19_5=args.wind_speed,
+                                   wind_direction=float(np.radians(args.wind_direction_deg)),
+                                   fetch=args.fetch_m)
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
+
+    grids = np.meshgrid(*angles, indexing="ij")
+    ti, ts, pi_, ps = (np.radians(g.ravel()) for g in grids)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        sigma = sea_sigma(args.model, ti, pi_, ts, ps, args.frequency_ghz * 1e9, spec, eps,
+                          slopes=args.slopes)
+    for w in {str(w.message): w for w in caught}.values():
+        print(f"seaecho sigma: warning: {w.message}", file=sys.stderr)
+    with np.errstate(divide="ignore"):
+        db = np.maximum(10.0 * np.log10(sigma), DB_FLOOR)
+    rows = np.column_stack([np.degrees(ti), np.degrees(ts), np.degrees(pi_), np.degrees(ps),
+                            db])
+    header = ("theta_i_deg,theta_s_deg,phi_i_deg,phi_s_deg,"
+              "sigma_hh_db,sigma_hv_db,sigma_vh_db,sigma_vv_db")
+    with atomic_path(out) as tmp:
+        np.savetxt(tmp, rows, delimiter=",", header=header, comments="", fmt="%.6g")
+    print(f"wrote {out} ({n_rows} geometries, model {args.model}, eps_r = "
+          f"{eps.real:.2f}{eps.imag:+.2f}j)")
+    if not args.no_figure:
+        varying = [(i, a) for i, a in enumerate(angles) if len(a) > 1]
+        png = out.with_suffix(".png")
+        if len(varying) <= 2:
+            title = (f"{args.model}, {args.frequency_ghz:g} GHz, U19.5 = {args.wind_speed:g} m/s"
+                     f" towards {args.wind_direction_deg:g} deg, {args.spectrum}")
+            _figure(rows, varying, png, title)
+            print(f"wrote {png}")
+        else:
+            print("no figure: more than two angles vary", file=sys.stderr)
+    return 0
