@@ -10,6 +10,8 @@ ship (eqs W1, W12).
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from seaecho.constants import G
 from seaecho.wake import KELVIN_HALF_ANGLE, KelvinWake, Ship, kelvin_crest_lines
@@ -263,3 +265,25 @@ def test_bad_arguments():
         wake.fields(np.arange(8.0), np.arange(8.0), 0.0, method="fft")
     with pytest.raises(ValueError, match="uniformly"):
         wake.fields(np.array([0.0, 1.0, 3.0, 4.0]), np.arange(4.0), 0.0, method="nufft")
+
+
+@settings(max_examples=15, deadline=None)
+@given(
+    heading=st.floats(-np.pi, np.pi),
+    px=st.floats(-40.0, 40.0),
+    py=st.floats(-40.0, 40.0),
+    fn=st.floats(0.3, 1.0),  # resolved on the 1 m grid: k0 = 0.1 / fn^2 < 0.7 k_c
+    t=st.floats(0.0, 10.0),
+)
+def test_fields_finite_and_zero_ahead_of_the_bow(heading, px, py, fn, t):
+    """Any heading, position, speed and time: finite fields, zero ahead of the bow (W11),
+    and dz/dt = -V . grad z (W12) exactly."""
+    ship = Ship(10.0, 1.0, 0.6, fn * np.sqrt(G * 10.0), heading, (px, py))
+    x = (np.arange(64) - 32) * 1.0
+    f = KelvinWake(ship).fields(x, x, t)
+    for a in (f.elevation, f.slope_x, f.slope_y, f.dzdt):
+        assert a.shape == (64, 64) and np.isfinite(a).all()
+    xs, _ = ship.to_ship_frame(x[None, :], x[:, None], t)
+    assert np.all(f.elevation[xs <= -5.0] == 0.0)
+    vx, vy = ship.velocity
+    np.testing.assert_allclose(f.dzdt, -(vx * f.slope_x + vy * f.slope_y), atol=1e-15)

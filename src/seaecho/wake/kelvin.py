@@ -258,12 +258,6 @@ class KelvinWake:
         self.nthreads = nthreads
         self.g = float(g)
         self.k0 = g / ship.speed**2 if ship.speed > 0 else np.inf
-        # precomputed amplitude table on a fine grid uniform in u = asinh(tan theta); used
-        # by amplitude() for the pattern, recomputed exactly at the synthesis nodes
-        if ship.speed > 0:
-            u = np.linspace(-8.0, 8.0, 4001)
-            self._theta_table = np.arctan(np.sinh(u))
-            self._amp_table = self.amplitude(self._theta_table)
 
     # -- physics --------------------------------------------------------------------
     @property
@@ -342,7 +336,7 @@ class KelvinWake:
         # quantise ds (cache key) to 1/64 octave steps downwards
         ds = float(2.0 ** (np.floor(64.0 * np.log2(ds)) / 64.0))
         theta, dtheta = _nodes(float(self.k0), float(k_cut), ds, self.taper_fraction)
-        return theta, self.amplitude(theta) * dtheta
+        return theta.copy(), self.amplitude(theta) * dtheta
 
     def fields(
         self, x: ArrayLike, y: ArrayLike, t: float = 0.0, method: str = "auto"
@@ -395,8 +389,10 @@ class KelvinWake:
         if k_cut <= self.k0 / (1.0 - self.taper_fraction):
             warnings.warn(
                 f"the grid cannot resolve the Kelvin wake: its cut-off wavenumber "
-                f"{k_cut:.3g} rad/m is below the transverse wavenumber {self.k0:.3g} rad/m "
-                f"(wavelength {self.transverse_wavelength:.3g} m); the wake is left out",
+                f"{k_cut:.3g} rad/m leaves no untapered band above the transverse "
+                f"wavenumber {self.k0:.3g} rad/m (wavelength {self.transverse_wavelength:.3g} "
+                f"m; needs > {self.k0 / (1.0 - self.taper_fraction):.3g} rad/m); the wake "
+                "is left out",
                 SamplingWarning,
                 stacklevel=2,
             )
