@@ -67,3 +67,30 @@ def test_smooth_surface_normals_match_analytic(tracer):
     np.testing.assert_allclose(ft.phi, ph)
     # smooth, gentle surface seen from above: nothing shadowed in either mode
     assert ft.visibility.min() == 1 and fa.visibility.min() == 1
+
+
+@pytest.mark.parametrize("rx", [None, RX], ids=["monostatic", "bistatic"])
+def test_drjit_frames_kernel_equals_numpy_reference(rx):
+    """The Dr.Jit kernel reproduces geometry.facets.facet_frames (scattering.frames),
+    degenerate directions included (a transmitter straight above flat facets)."""
+    from seaecho.geometry.facets import facet_frames
+    from seaecho.tracing.kernels import facet_frames_drjit
+
+    rng = np.random.default_rng(3)
+    n = rng.normal(size=(500, 3)) * 0.2
+    n[:, 2] = 1.0
+    n[:5] = (0.0, 0.0, 1.0)
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    c = rng.uniform(-100, 100, (500, 3))
+    c[:5] = (0.0, 0.0, 0.0)  # directly below the transmitter: n_i along -N
+    tx = np.array([0.0, 0.0, 500.0])
+    rr = tx if rx is None else rx
+    a = facet_frames_drjit(c, n, tx, rr)
+    b = facet_frames(c, n, tx, rr)
+    assert a.keys() == b.keys()
+    for key in a:
+        if key.startswith("phi"):  # +-pi are the same azimuth (sign of a zero in atan2)
+            np.testing.assert_allclose(np.angle(np.exp(1j * (a[key] - b[key]))), 0.0,
+                                       atol=1e-12, err_msg=key)
+        else:
+            np.testing.assert_allclose(a[key], b[key], rtol=1e-12, atol=1e-12, err_msg=key)

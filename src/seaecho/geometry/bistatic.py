@@ -78,6 +78,10 @@ def global_angles(n_i: np.ndarray, n_s: np.ndarray) -> tuple[np.ndarray, np.ndar
     """
     theta_i = np.arccos(np.clip(-n_i[:, 2], -1.0, 1.0))
     theta_s = np.arccos(np.clip(n_s[:, 2], -1.0, 1.0))
-    phi = np.arctan2(n_s[:, 1], n_s[:, 0]) - np.arctan2(n_i[:, 1], n_i[:, 0])
+    az_s = np.where(np.hypot(n_s[:, 0], n_s[:, 1]) < 1e-9, 0.0,
+                    np.arctan2(n_s[:, 1], n_s[:, 0]))
+    az_i = np.where(np.hypot(n_i[:, 0], n_i[:, 1]) < 1e-9, 0.0,
+                    np.arctan2(n_i[:, 1], n_i[:, 0]))
+    phi = az_s - az_i
     phi = np.where(phi > np.pi, phi - 2 * np.pi, np.where(phi <= -np.pi, phi + 2 * np.pi, phi))
     return theta_i, theta_s, phi

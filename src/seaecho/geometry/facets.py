@@ -17,6 +17,7 @@ transmitter *and* seen from the receiver).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field, fields
 from typing import Literal
 
@@ -197,8 +198,8 @@ def analytic_facets(x: np.ndarray, y: np.ndarray, elevation: np.ndarray,
                     slope_x: np.ndarray, slope_y: np.ndarray, velocity: np.ndarray | None,
                     tx: np.ndarray, rx: np.ndarray | None = None, *,
                     shadowing: Literal["none", "smith"] = "smith", time_s: float = 0.0,
-                    sigma_h: float | None = None, slope_cov: np.ndarray | None = None
-                    ) -> Facets:
+                    sigma_h: float | None = None, slope_cov: np.ndarray | None = None,
+                    frames: Callable[..., dict] | None = None) -> Facets:
     """Facets of the analytic mode: normals from analytic slopes, no ray tracing.
 
     The facets are the triangles of :mod:`seaecho.geometry.mesh` (same centroids, areas
@@ -231,6 +232,9 @@ def analytic_facets(x: np.ndarray, y: np.ndarray, elevation: np.ndarray,
         about its mean.
     slope_cov : (2, 2) array, optional
         Slope covariance [-]; default the sample covariance of (slope_x, slope_y).
+    frames : callable, optional
+        Replacement for :func:`facet_frames` with the same signature and outputs (the
+        tracing stage passes its Dr.Jit kernel).
 
     Returns
     -------
@@ -248,7 +252,7 @@ def analytic_facets(x: np.ndarray, y: np.ndarray, elevation: np.ndarray,
     normal /= np.sqrt(1.0 + zx * zx + zy * zy)[:, None]
     vel = (np.zeros_like(centroid) if velocity is None
            else to_facets(np.asarray(velocity, dtype=np.float64)))
-    geo = facet_frames(centroid, normal, tx, rx)
+    geo = (facet_frames if frames is None else frames)(centroid, normal, tx, rx)
     lit = (geo["theta_i"] < np.pi / 2).astype(np.float64)  # facing the transmitter
     seen = (geo["theta_s"] < np.pi / 2).astype(np.float64)  # facing the receiver
     joint = lit * seen

@@ -26,8 +26,9 @@ from collections.abc import Callable
 
 import numpy as np
 
-from ..geometry.facets import Facets, analytic_facets, facet_frames
+from ..geometry.facets import Facets, analytic_facets
 from ..geometry.mesh import facet_geometry, grid_vertices, to_facets
+from .kernels import facet_frames_drjit
 
 __all__ = ["FacetEngine", "reference_time"]
 
@@ -181,7 +182,8 @@ class FacetEngine:
         tx, rx = self.positions(t)
         if self.mode == "analytic":
             return analytic_facets(st.x, st.y, st.elevation, st.slope_x, st.slope_y,
-                                   st.velocity, tx, rx, shadowing=self.shadowing, time_s=t)
+                                   st.velocity, tx, rx, shadowing=self.shadowing, time_s=t,
+                                   frames=facet_frames_drjit)
         tracer = self.tracer
         if self.refresh_interval_s == 0.0:
             return tracer.facets(st.elevation, st.velocity, tx, rx, t=t)
@@ -199,7 +201,7 @@ class FacetEngine:
             self._cache = (t_ref, occ_tx, occ_rx)
         _, occ_tx, occ_rx = self._cache
         centroid, area, normal = facet_geometry(grid_vertices(st.x, st.y, st.elevation))
-        geo = facet_frames(centroid, normal, tx, rx)
+        geo = facet_frames_drjit(centroid, normal, tx, rx)
         lit = (geo["theta_i"] < np.pi / 2) & ~occ_tx
         seen = (geo["theta_s"] < np.pi / 2) & ~occ_rx
         return Facets(mode="raytraced", time_s=float(t), visibility_time_s=float(t_ref),

@@ -5,7 +5,9 @@ its centroid to the transmitter hits neither the sea nor any object; *seen* like
 the receiver (``n_s . N > 0``). The segments start ``eps`` above the centroid along the
 normal, ``eps = max(1e-3 * cell size, 8 float32 ulps of the largest coordinate)``, so that
 a ray does not hit its own triangle in float32. Everything else (ranges, directions,
-angles, bases) is float64 numpy (:func:`seaecho.geometry.facets.facet_frames`).
+angles, bases) is float64, computed by the Dr.Jit kernel
+:func:`seaecho.tracing.kernels.facet_frames_drjit` (identical to the numpy
+:func:`seaecho.geometry.facets.facet_frames`, faster).
 """
 
 from __future__ import annotations
@@ -14,8 +16,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ..geometry.facets import Facets, facet_frames
+from ..geometry.facets import Facets
 from ..geometry.mesh import facet_geometry, grid_vertices, to_facets
+from .kernels import facet_frames_drjit
 from .scene import ObjectGeometry, ObjectScene, SeaScene, shadow_rays
 
 __all__ = ["FacetTracer"]
@@ -143,7 +146,7 @@ class FacetTracer:
         self.set_time(t)
         z = self._elevation if elevation is None else np.asarray(elevation, dtype=np.float64)
         centroid, area, normal = facet_geometry(grid_vertices(self.x, self.y, z))
-        geo = facet_frames(centroid, normal, tx, rx)
+        geo = facet_frames_drjit(centroid, normal, tx, rx)
         facing_tx = geo["theta_i"] < np.pi / 2
         facing_rx = geo["theta_s"] < np.pi / 2
         lit = facing_tx & ~self.occluded(centroid, normal, tx, mask=facing_tx)
