@@ -103,6 +103,31 @@ def test_transverse_wavelength_measured_on_track(image):
     assert lam == pytest.approx(2 * np.pi * SPEED**2 / G, rel=5e-3)
 
 
+def test_transverse_wave_amplitude_and_phase_on_track_match_stationary_phase(image):
+    """Far behind the ship, on the track, eq W4 by stationary phase at theta = 0
+    (Kelvin 1887; Newman 1977, section 6.17):
+
+        z(x', 0) ~ Re[A(0) sqrt(2 pi / (k0 x')) exp(-i k0 x' - i pi/4)]
+
+    A least-squares fit of sqrt(2 pi / (k0 x')) (a cos k0 x' + b sin k0 x') to the
+    centreline of the image over 100-235 m must give |a - i b| = |A(0)| (1 %; the next
+    term of the expansion is O(1 / (k0 x')) ~ 0.5 %) and its phase -arg(A(0) e^{-i pi/4})
+    (0.05 rad).
+    """
+    wake, x, y, f = image
+    xs = X_SHIP - x
+    k0 = G / SPEED**2
+    prof = f.elevation[np.argmin(np.abs(y))]
+    sel = (xs > 100) & (xs < 235)
+    s = np.sqrt(2 * np.pi / (k0 * xs[sel]))
+    design = np.stack([s * np.cos(k0 * xs[sel]), s * np.sin(k0 * xs[sel])], axis=1)
+    (a, b), *_ = np.linalg.lstsq(design, prof[sel], rcond=None)
+    a0 = complex(wake.amplitude(0.0))
+    assert abs(a - 1j * b) == pytest.approx(abs(a0), rel=0.01)
+    dphi = np.angle((a - 1j * b) * (a0 * np.exp(-1j * np.pi / 4)))
+    assert abs(dphi) < 0.05
+
+
 def test_divergent_wavelength_measured_in_a_patch(image):
     """Local spectrum 15 deg off the track: a divergent wave with lambda = lambda_0 cos^2.
 
