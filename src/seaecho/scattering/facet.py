@@ -55,6 +55,7 @@ References
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -67,10 +68,22 @@ from .blend import channel_weights
 from .fresnel import fresnel_coefficients
 from .kirchhoff import kirchhoff_log_weight
 from .slopes import CoxMunkParameters
+from .spectrum_table import BraggSpectrumTable
 from .spm import HeightSpectrum, _alpha
 from .twoscale import check_spm_validity
 
 MODELS = ("blend", "kirchhoff", "spm")
+
+
+@functools.cache
+def _drjit_available() -> bool:
+    """True when the Dr.Jit LLVM backend imports and runs (checked once)."""
+    try:
+        from ._drjit_kernel import F
+
+        return bool(F(1.0).numpy()[0] == 1.0)
+    except Exception:  # noqa: BLE001 - any failure means: use numpy
+        return False
 
 
 @dataclass(frozen=True)
@@ -173,6 +186,7 @@ def facet_terms(
     wake_damping: ArrayLike | None = None,
     local: Any = None,
     small_scale_height_variance: float | None = None,
+    backend: str = "auto",
 ) -> FacetTerms:
     """Mechanism matrices ``K``, ``B`` and weights ``w`` of facets (eqs P1-P2, B1-B4).
 
@@ -210,6 +224,10 @@ def facet_terms(
     small_scale_height_variance : float, optional
         Height variance of the unresolved roughness [m^2]: warns
         (``SPMValidityWarning``) when ``k h > 0.3``.
+    backend : {"auto", "numpy", "drjit"}
+        ``"drjit"`` runs the fused Dr.Jit LLVM kernel (needs ``spectrum`` to be a
+        :class:`~seaecho.scattering.spectrum_table.BraggSpectrumTable`; ``local`` is
+        then recomputed inside the kernel); ``"auto"`` picks it when possible.
 
     Returns
     -------
@@ -228,6 +246,19 @@ def facet_terms(
     nn = np.ascontiguousarray(normal, dtype=float).reshape(-1, 3)
     n = n_i.shape[0]
     eps = complex(eps_r)
+    if backend not in ("auto", "numpy", "drjit"):
+        raise ValueError(f"backend = {backend!r}: choose from 'auto', 'numpy', 'drjit'")
+    is_table = isinstance(spectrum, BraggSpectrumTable)
+    if backend == "drjit" and not is_table:
+        raise ValueError("backend = 'drjit' needs spectrum to be a BraggSpectrumTable")
+    if backend == "drjit" or (backend == "auto" and is_table and _drjit_available()):
+        from ._drjit_kernel import facet_kernel
+
+        damp = None if wake_damping is None else np.asarray(wake_damping, float).reshape(n)
+        specular, bragg, weight = facet_kernel(n_i, n_s, nn, damp, k, eps, mss_upwind,
+                                               mss_crosswind, float(wind_direction),
+                                               spectrum, cox_munk, model)
+        return FacetTerms(specular=specular, bragg=bragg, weight=weight)
 
     if local is None:
         theta_i, theta_s, phi = frames.local_angles(n_i, n_s, nn)
@@ -250,7 +281,7 @@ def facet_terms(
 
     # Bragg part, eq P2 (S7): local SPM rotated to the global bases.
     ci, cs = np.cos(theta_i), np.cos(theta_s)
-    lit = (ci > 0.0) & (cs > 0.0)
+    lit = (ci > 1e-12) & (cs > 1e-12)
     if model != "kirchhoff":
         ci_c, cs_c = np.clip(ci, 0.0, 1.0), np.clip(cs, 0.0, 1.0)
         alpha = _alpha(ci_c, np.sin(theta_i), cs_c, np.sin(theta_s), np.cos(phi), np.sin(phi),

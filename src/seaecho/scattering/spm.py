@@ -167,7 +167,7 @@ def spm_matrix(n_i: ArrayLike, n_s: ArrayLike, k: ArrayLike, eps_r: ArrayLike,
     k = np.asarray(k, dtype=float)
     ti, ts, ph = frames.local_angles(n_i, n_s, nn)
     ci, cs = np.cos(ti), np.cos(ts)
-    lit = (ci > 0.0) & (cs > 0.0)
+    lit = (ci > 1e-12) & (cs > 1e-12)
     ci_c, cs_c = np.clip(ci, 0.0, 1.0), np.clip(cs, 0.0, 1.0)
     alpha = _alpha(ci_c, np.sin(ti), cs_c, np.sin(ts), np.cos(ph), np.sin(ph),
                    np.asarray(eps_r, dtype=complex))
