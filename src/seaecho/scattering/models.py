@@ -102,7 +102,7 @@ def sea_sigma(
 
     if model == "two-scale":
         return two_scale_sigma(theta_i, phi_i, theta_s, phi_s, k, eps_r, w, mss_u, mss_c,
-                               wind, k_cut,
+                               wind, k_cut, n_nodes=24,
                                small_scale_height_variance=height_variance(spectrum, k_cut,
                                                                            100.0 * k))
     if model == "spm":
