@@ -236,6 +236,26 @@ def port_states(basis: str, h: NDArray, v: NDArray, cross_polar_isolation_db: fl
     return np.stack([e1, e2], axis=-2)
 
 
+def port_coefficients(basis: str, cross_polar_isolation_db: float | None
+                      ) -> NDArray[np.complex128]:
+    """Port states as coefficients on (h_a, v_a): C[port, (h, v)], so e_p = C[p] . (h, v).
+
+    The same states as :func:`port_states` (which builds the vectors directly); used by
+    the fused Dr.Jit kernel (``seaecho.radar.kernels``).
+    """
+    r = _SQRT_HALF
+    table = {"hv": [[1.0, 0.0], [0.0, 1.0]],
+             "slant": [[r, r], [-r, r]],
+             "circular": [[-1j * r, r], [1j * r, r]]}
+    if basis not in table:
+        raise ValueError(f"basis = {basis!r}: unknown; allowed: {sorted(PORTS)}")
+    c = np.array(table[basis], dtype=complex)
+    if cross_polar_isolation_db is not None:
+        x = 10.0 ** (-cross_polar_isolation_db / 20.0)
+        c = np.stack([c[0] + x * c[1], c[1] + x * c[0]]) / np.sqrt(1 + x * x)
+    return c
+
+
 def wave_basis(n: NDArray, up: NDArray) -> tuple[NDArray, NDArray]:
     """Eq (A2): h = up x n / |up x n|, v = h x n, with a fallback at n parallel to up.
 
@@ -421,6 +441,7 @@ __all__ = [
     "aperture_field",
     "aperture_radiated_power",
     "builtin_gain",
+    "port_coefficients",
     "port_states",
     "project_ports",
     "register_sionna_aperture",

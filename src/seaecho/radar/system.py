@@ -128,7 +128,8 @@ def canonical_channels(channels, rx_ports: tuple[str, str], tx_ports: tuple[str,
 class RadarSystem:
     """Platforms, antennas, waveform and receive window of a scene (see module docstring)."""
 
-    def __init__(self, scene, window: ReceiveWindow | None = None) -> None:
+    def __init__(self, scene, window: ReceiveWindow | None = None,
+                 backend: str = "drjit") -> None:
         """Build the radar of a scene.
 
         Parameters
@@ -138,7 +139,12 @@ class RadarSystem:
         window : ReceiveWindow or None
             Overrides the window of ``[radar]`` (default: its window_start_m/window_end_m,
             or the automatic one covering the tile and the targets, :meth:`auto_window`).
+        backend : {'drjit', 'numpy'}
+            Per-scatterer kernel: fused Dr.Jit (float64, fast) or the numpy reference.
         """
+        if backend not in ("drjit", "numpy"):
+            raise ValueError(f"backend = {backend!r}: allowed 'drjit', 'numpy'")
+        self.backend = backend
         if scene.radar is None or scene.transmitter is None:
             raise ValueError("the scene needs [radar] and [transmitter] sections")
         cfg = scene.radar
@@ -235,6 +241,10 @@ class RadarSystem:
                        velocities: ArrayLike, s: ArrayLike) -> ScattererEcho:
         """Delays and per-channel amplitudes of scatterers, eqs (R1) and (R3).
 
+        Runs the fused Dr.Jit kernel (``seaecho.radar.kernels``) when ``self.backend`` is
+        ``"drjit"`` (default) and the numpy reference (:meth:`scatterer_echo_numpy`)
+        when it is ``"numpy"``; both give the same numbers (tests).
+
         Parameters
         ----------
         geometry : PulseGeometry
@@ -251,6 +261,20 @@ class RadarSystem:
         -------
         ScattererEcho
         """
+        if self.backend == "numpy":
+            return self.scatterer_echo_numpy(geometry, positions, velocities, s)
+        from .kernels import scatterer_echo_drjit
+
+        p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
+        v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
+        s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
+        r = scatterer_echo_drjit(self, geometry, p, v, s)
+        return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
+                             r["g_r"], r["n_i"], r["n_s"])
+
+    def scatterer_echo_numpy(self, geometry: PulseGeometry, positions: ArrayLike,
+                             velocities: ArrayLike, s: ArrayLike) -> ScattererEcho:
+        """Numpy reference of :meth:`scatterer_echo` (same parameters and result)."""
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
         s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
