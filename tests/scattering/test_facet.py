@@ -11,6 +11,7 @@ from seaecho.scattering import frames
 from seaecho.scattering.blend import blend
 from seaecho.scattering.facet import (
     FacetTerms,
+    bragg_vectors,
     facet_amplitudes,
     facet_sigma,
     facet_terms,
@@ -59,6 +60,17 @@ def test_precomputed_local_frames_give_same_result():
     local = dict(theta_i=th[0], theta_s=th[1], phi=th[2], rot_i=rot[0], rot_s=rot[1])
     a = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.01, 0.01)
     b = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.01, 0.01, local=local)
+    np.testing.assert_allclose(a, b, rtol=1e-12)
+
+
+def test_spectrum_values_at_bragg_vectors_equal_callable():
+    ti, ts, ps = _geometry()
+    n_i, n_s = frames.directions_from_angles(ti, 0.0, ts, ps)
+    normal = np.tile([0.1, 0.0, 1.0], (len(ti), 1)) / np.hypot(0.1, 1.0)
+    kb = bragg_vectors(n_i, n_s, normal, K)
+    values = gaussian_spectrum(kb[:, 0], kb[:, 1])
+    a = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01, model="spm")
+    b = facet_sigma(n_i, n_s, normal, K, EPS, values, 0.02, 0.01, model="spm")
     np.testing.assert_allclose(a, b, rtol=1e-12)
 
 

@@ -202,10 +202,11 @@ def facet_terms(
         Electromagnetic wavenumber [rad/m].
     eps_r : complex
         Sea-water permittivity ``eps' - j eps''`` [-].
-    spectrum : callable
+    spectrum : callable or array_like
         Height spectrum of the unresolved roughness ``W(kx, ky)`` [m^4], world-frame
         wavenumbers [rad/m] (``DirectionalSpectrum.height_spectrum`` or a
-        :class:`BraggSpectrumTable`).
+        :class:`BraggSpectrumTable`), or its values at the facets' Bragg vectors
+        (:func:`bragg_vectors`), shape (N,) or scalar [m^4].
     mss_upwind, mss_crosswind : float or array_like (N,)
         Unresolved (sub-facet) slope variances [-], along and across the wind.
     wind_direction : float
@@ -288,7 +289,10 @@ def facet_terms(
                        eps)
         q = k * d
         qt = q - (k * qn * cos_beta)[:, None] * nn
-        w_b = np.asarray(spectrum(qt[:, 0], qt[:, 1]), dtype=float)
+        if callable(spectrum):
+            w_b = np.asarray(spectrum(qt[:, 0], qt[:, 1]), dtype=float)
+        else:
+            w_b = np.broadcast_to(np.asarray(spectrum, dtype=float), (n,))
         amp = 4.0 * np.sqrt(np.pi) * k * k * ci_c * cs_c * np.sqrt(np.maximum(w_b, 0.0))
         if wake_damping is not None:
             amp = amp * np.sqrt(np.clip(1.0 - np.asarray(wake_damping, dtype=float).reshape(n),
@@ -313,6 +317,20 @@ def facet_terms(
     else:
         specular = np.zeros((n, 4), dtype=complex)
     return FacetTerms(specular=specular, bragg=bragg, weight=weight)
+
+
+def bragg_vectors(n_i: ArrayLike, n_s: ArrayLike, normal: ArrayLike, k: float) -> NDArray:
+    """Local Bragg wave vectors of facets (eq S7): (N, 2) world (kx, ky) [rad/m].
+
+    The horizontal components of the part of ``q = k (n_s - n_i)`` tangent to each
+    facet; evaluate the height spectrum there to pass values instead of a callable.
+    """
+    n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
+    n_s = np.asarray(n_s, dtype=float).reshape(-1, 3)
+    nn = np.asarray(normal, dtype=float).reshape(-1, 3)
+    q = k * (n_s - n_i)
+    qt = q - _dot(q, nn)[:, None] * nn
+    return qt[:, :2]
 
 
 def facet_sigma(
@@ -427,5 +445,5 @@ def hhvv_coherence(terms: FacetTerms) -> NDArray:
     return np.where(den > 0, c[:, 0, 3] / np.where(den > 0, den, 1.0), 0.0)
 
 
-__all__ = ["MODELS", "FacetTerms", "facet_amplitudes", "facet_sigma", "facet_terms",
-           "hhvv_coherence", "speckle_amplitudes"]
+__all__ = ["MODELS", "FacetTerms", "bragg_vectors", "facet_amplitudes", "facet_sigma",
+           "facet_terms", "hhvv_coherence", "speckle_amplitudes"]
