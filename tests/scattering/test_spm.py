@@ -151,3 +151,79 @@ def test_behind_plane_gives_zero_and_singular_geometries_are_finite():
                             (np.pi / 2, 0, np.pi / 2, np.pi), (0.3, 0, 0.3, 0)]:
         s = spm_sigma(ti, pi_, ts, ps, K, EPS_SEA, gaussian_spectrum)
         assert np.all(np.isfinite(s)) and np.all(s >= 0)
+
+
+def _first_order_bvp(theta_i, theta_s, phi, eps, k=1.0):
+    """alpha_mn from a numerical first-order boundary-value solution (dielectric).
+
+    Independent of spm.py: exp(-i w t) convention, plane waves exp(i k.r), H = k x E
+    (omega mu = 1). Zeroth order: the flat-interface fields, from the continuity of
+    tangential E and H (a 4x4 linear system). First order for z = F exp(i dK.rho):
+    z x [E1] = -F z x d[E0]/dz + grad(f) x [E0] (same for H), [.] the jump air minus
+    dielectric at z = 0 (Rice 1951; Tsang, Kong & Ding 2000, sec. 5.2), solved for the
+    upgoing air wave and the downgoing dielectric wave (another 4x4 system). The
+    upgoing amplitudes along h_s, v_s divided by 2j k cos(theta_i) F are alpha_mn.
+    """
+    n_i, n_s = frames.directions_from_angles(theta_i, 0.0, theta_s, phi)
+    z = np.array([0.0, 0.0, 1.0])
+
+    def down_up(kh):
+        kz0 = np.sqrt(k**2 - kh @ kh + 0j)
+        kz1 = np.sqrt(k**2 * eps - kh @ kh + 0j)
+        return np.array([kh[0], kh[1], kz0]), np.array([kh[0], kh[1], -kz1])
+
+    def transverse(kv):
+        h = np.cross(z, np.array([kv[0].real, kv[1].real, 0.0]))
+        h = h / np.linalg.norm(h) if np.linalg.norm(h) > 1e-12 else np.array([0.0, 1, 0])
+        return h.astype(complex), np.cross(h, kv)
+
+    def solve(cols, kvecs, rhs, cross_z):
+        a = np.zeros((4, 4), dtype=complex)
+        for j, (e, kv) in enumerate(zip(cols, kvecs, strict=True)):
+            ee, hh = (np.cross(z, e), np.cross(z, np.cross(kv, e))) if cross_z else (
+                e, np.cross(kv, e))
+            a[:2, j], a[2:, j] = ee[:2], hh[:2]
+        return np.linalg.solve(a, rhs)
+
+    k_inc = k * n_i.astype(complex)
+    k_ref, k_tra = down_up(k * n_i[:2])
+    h_ref, v_ref = transverse(k_ref)
+    h_tra, v_tra = transverse(k_tra)
+    k_sca, k_dif = down_up(k * n_s[:2])
+    h_s, v_s = (b.astype(complex) for b in frames.polarisation_basis(n_s))
+    h_d, v_d = transverse(k_dif)
+    grad = 1j * k * np.array([*(n_s[:2] - n_i[:2]), 0.0])
+    out = np.zeros((2, 2), dtype=complex)
+    for col, p in enumerate(frames.polarisation_basis(n_i)):
+        p = p.astype(complex)
+        a = solve([h_ref, v_ref, -h_tra, -v_tra], [k_ref, k_ref, k_tra, k_tra],
+                  -np.concatenate([p[:2], np.cross(k_inc, p)[:2]]), False)
+        air = [(p, k_inc), (a[0] * h_ref, k_ref), (a[1] * v_ref, k_ref)]
+        die = [(a[2] * h_tra, k_tra), (a[3] * v_tra, k_tra)]
+
+        def jump(fn, air=air, die=die):
+            return sum(fn(e, kv) for e, kv in air) - sum(fn(e, kv) for e, kv in die)
+
+        e0 = jump(lambda e, kv: e)
+        h0 = jump(lambda e, kv: np.cross(kv, e))
+        de0 = jump(lambda e, kv: 1j * kv[2] * e)
+        dh0 = jump(lambda e, kv: 1j * kv[2] * np.cross(kv, e))
+        r_e = -np.cross(z, de0) + np.cross(grad, e0)
+        r_h = -np.cross(z, dh0) + np.cross(grad, h0)
+        c = solve([h_s, v_s, -h_d, -v_d], [k_sca, k_sca, k_dif, k_dif],
+                  np.concatenate([r_e[:2], r_h[:2]]), True)
+        out[:, col] = c[:2]
+    return out / (2j * k * np.cos(theta_i))
+
+
+@pytest.mark.parametrize("eps", [5.0 + 0j, 20.0 + 10j, 55.9 + 37.0j])
+@pytest.mark.parametrize("ti,ts,phi", [(0.3, 0.5, 0.7), (0.8, 0.2, 2.5), (0.6, 0.6, np.pi),
+                                       (1.2, 0.9, -1.9), (0.1, 1.4, 1.0)])
+def test_alpha_equals_numerical_boundary_value_solution(eps, ti, ts, phi):
+    # S3-S6 against an independent numerical first-order solution of Maxwell's boundary
+    # conditions for a dielectric, all four channels, complex values. The solver uses
+    # exp(-i w t) (eps'' > 0); S3-S6 are analytic in eps, so the same formulas apply,
+    # and our exp(+j w t) values are their complex conjugates.
+    ref = _first_order_bvp(ti, ts, phi, eps)
+    np.testing.assert_allclose(spm_alpha(ti, ts, phi, eps), ref, atol=1e-12)
+    np.testing.assert_allclose(spm_alpha(ti, ts, phi, np.conj(eps)), ref.conj(), atol=1e-12)

@@ -36,9 +36,9 @@ alignment of :mod:`.frames`, ``phi = phi_s - phi_i``, ``r = sqrt(eps - sin^2 the
                    (\\varepsilon\\cos\\theta_s + r_s)} \\qquad \\text{(S3-S6)}
 
 (Tsang, Kong and Ding 2000, sec. 5.2 in their notation; Khenchaf 2001, eqs 9-12; Ulaby,
-Moore and Fung 1982, eqs 12.87). Their relative signs were checked against an
-independent first-order solution of the perfectly conducting boundary condition
-(``tests/scattering/test_spm.py``).
+Moore and Fung 1982, sec. 12-3). ``tests/scattering/test_spm.py`` checks them, complex
+values and relative signs included, against an independent numerical first-order
+boundary-value solution (dielectric) and the perfect-conductor expansion.
 
 References
 ----------
