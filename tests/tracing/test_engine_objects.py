@@ -175,3 +175,15 @@ def test_xml_object_occludes_the_sea(tmp_path):
     behind = (c[:, 0] > 9.0) & (c[:, 0] < 20.0) & (np.abs(c[:, 1]) < 8.0)
     before = (c[:, 0] < 0.0) & (np.abs(c[:, 1]) < 8.0)
     assert f.lit[behind].max() == 0.0 and f.lit[before].min() == 1.0
+
+
+def test_variant_is_explicit_and_cuda_needs_a_gpu():
+    from seaecho.tracing.variant import DEFAULT_VARIANT, cuda_available, set_variant
+
+    assert set_variant(None) == DEFAULT_VARIANT == "llvm_ad_mono_polarized"
+    with pytest.raises(ValueError, match="allowed"):
+        set_variant("scalar_rgb")
+    if not cuda_available():
+        with pytest.raises(ValueError, match="no CUDA GPU"):
+            set_variant("cuda_ad_mono_polarized")
+

@@ -15,10 +15,11 @@ along the source's azimuth and the rms height are the sample values of the facet
 
 Tolerance: |mean over seeds - Smith| <= 3 standard errors of the mean over 4 seeds + 0.02.
 The 0.02 allows for Smith's approximation itself: it neglects the correlation between the
-point and the surface along the ray, and Monte-Carlo comparisons (Bourlier et al. 2002,
-section 5) find it slightly *under*-estimates shadowing near grazing; here the measured
-bias is at most ~0.02 (0.2 rms slope, 10 deg: 0.710 ray-traced vs 0.726 Smith, seed
-spread 0.016).
+heights and slopes at the point and those along the ray (Smith 1967; Bourlier et al. 2002
+discuss this and compare with Monte-Carlo simulations); on these surfaces the measured
+bias is at most ~0.02, with Smith on the lit side (0.2 rms slope, 10 deg grazing: 0.710
+ray traced vs 0.726 Smith, seed spread 0.016); the discretisation (flat triangles, rays
+from centroids) adds its own small part.
 """
 
 import numpy as np

@@ -7,7 +7,7 @@ stationary Gaussian surface, assuming the heights and slopes along the ray are
 uncorrelated with those of the point; Bourlier, Berginc & Saillard (2002) extend it to the
 bistatic case (illumination by the transmitter *and* visibility from the receiver).
 
-Symbols (``docs/tracing.md``, section "Smith shadowing")::
+Symbols (``docs/tracing.md``, section "Analytic mode")::
 
     theta            angle of the ray from the mean-plane normal +z             [rad]
     mu = cot(theta)  slope of the ray                                           [-]
@@ -91,7 +91,7 @@ def smith_lambda(nu: np.ndarray) -> np.ndarray:
 
     References
     ----------
-    [Smith67]_ (definition of Lambda); [Bourlier02]_ section 2 (same function).
+    [Smith67]_ (definition of Lambda); [Bourlier02]_ (same function).
     """
     nu = np.asarray(nu, dtype=np.float64)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -139,7 +139,7 @@ def smith_conditional(lam: np.ndarray, zeta: np.ndarray, sigma_h: float) -> np.n
 
     References
     ----------
-    [Smith67]_ (shadowing given the height); [Bourlier02]_ section 4 (bistatic).
+    [Smith67]_ (shadowing given the height); [Bourlier02]_ (bistatic forms).
     """
     f = height_cdf(zeta, sigma_h)
     with np.errstate(divide="ignore"):
@@ -161,7 +161,7 @@ def smith_monostatic(theta: np.ndarray, sigma: np.ndarray) -> np.ndarray:
 
     References
     ----------
-    [Smith67]_ (average shadowing function with self-shadowing); [Bourlier02]_ section 3.
+    [Smith67]_ (average shadowing function with self-shadowing); [Bourlier02]_.
     """
     nu = smith_nu(theta, sigma)
     # facing probability P(slope along the ray < cot theta) over 1 + Lambda  (T4)
@@ -198,7 +198,7 @@ def smith_bistatic(theta_1: float, azimuth_1: float, theta_2: float, azimuth_2: 
     averaged over heights) when the azimuths differ, ``1 / (1 + max Lambda)`` (eq T6)
     when they coincide (monostatic, or Tx and Rx in one vertical half-plane). For other
     azimuths the rays cross different surface profiles, taken as independent
-    ([Sancer69]_, [Bourlier02]_ section 4), which is exact for opposite azimuths.
+    ([Sancer69]_, [Bourlier02]_), which is exact for opposite azimuths.
 
     Parameters
     ----------
@@ -212,7 +212,7 @@ def smith_bistatic(theta_1: float, azimuth_1: float, theta_2: float, azimuth_2: 
 
     References
     ----------
-    [Bourlier02]_ section 4; [Sancer69]_.
+    [Bourlier02]_; [Sancer69]_.
     """
     from scipy.stats import multivariate_normal
 
