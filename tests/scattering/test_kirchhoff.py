@@ -115,3 +115,22 @@ def test_gaussian_density_integrates_to_one():
     zu, zc = np.meshgrid(x, x, indexing="ij")
     total = gaussian_slope_pdf(zu, zc, 0.02, 0.01).sum() * (x[1] - x[0]) ** 2
     np.testing.assert_allclose(total, 1.0, rtol=1e-9)
+
+
+@settings(max_examples=100, deadline=None)
+@given(angle, azim, angle, azim)
+def test_perfect_conductor_matrix_is_the_mirror_law(ti, pi_, ts, ps):
+    # Independent of eq K2's rotations: a perfectly conducting facet of normal N reflects
+    # a field p into 2 (N . p) N - p (image theory); projected on the global scattered
+    # bases this must equal F for eps -> infinity.
+    n_i, n_s = frames.directions_from_angles(ti, pi_, ts, ps)
+    assume(np.linalg.norm(n_s - n_i) > 1e-3)
+    assume(all(t == 0.0 or np.sin(t) > 1e-7 for t in (ti, ts)))
+    nsp = (n_s - n_i) / np.linalg.norm(n_s - n_i)
+    f = kirchhoff_matrix(n_i, n_s, 1e20 + 0j)
+    h_i, v_i = frames.polarisation_basis(n_i)
+    h_s, v_s = frames.polarisation_basis(n_s)
+    for col, p in enumerate((h_i, v_i)):
+        e_r = 2 * np.dot(nsp, p) * nsp - p
+        np.testing.assert_allclose(f[:, col], [np.dot(h_s, e_r), np.dot(v_s, e_r)],
+                                   atol=1e-6)
