@@ -176,3 +176,25 @@ def test_no_nan_or_inf_for_any_geometry(a, b, c, model):
         s = facet_sigma(cases_i, cases_s, normals, K, EPS, gaussian_spectrum, 0.01, 0.005,
                         0.3, model=model)
     assert np.all(np.isfinite(s)) and np.all(s >= 0)
+
+
+def test_accepts_the_geometry_stage_facets():
+    # Integration with seaecho.geometry (issue 4): its analytic facets carry the local
+    # angles and basis rotations, which facet_sigma accepts as `local`.
+    from seaecho.geometry.facets import analytic_facets
+
+    x = np.linspace(-20, 20, 9)
+    y = np.linspace(-20, 20, 9)
+    xx, yy = np.meshgrid(x, y)
+    z = 0.3 * np.sin(0.3 * xx + 0.1 * yy)
+    zx = 0.09 * np.cos(0.3 * xx + 0.1 * yy)
+    zy = 0.03 * np.cos(0.3 * xx + 0.1 * yy)
+    fac = analytic_facets(x, y, z, zx, zy, None, np.array([-500.0, 100.0, 200.0]),
+                          np.array([300.0, -400.0, 100.0]), shadowing="none")
+    a = facet_sigma(fac.n_i, fac.n_s, fac.normal, K, EPS, gaussian_spectrum, 0.01, 0.005)
+    b = facet_sigma(fac.n_i, fac.n_s, fac.normal, K, EPS, gaussian_spectrum, 0.01, 0.005,
+                    local=fac)
+    np.testing.assert_allclose(a, b, rtol=1e-10, atol=1e-14 * a.max())
+    amp = facet_amplitudes(fac.n_i, fac.n_s, fac.normal, fac.area, K, EPS, gaussian_spectrum,
+                           0.01, 0.005, np.random.default_rng(1), local=fac)
+    assert amp.shape == (fac.n_facets, 4)
