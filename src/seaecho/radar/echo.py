@@ -111,7 +111,7 @@ class ReceiveWindow:
 
 
 def accumulate(tau: ArrayLike, amplitudes: ArrayLike, pulse_spectrum: ArrayLike,
-               window: ReceiveWindow, eps: float = 1e-10) -> NDArray[np.complex128]:
+               window: ReceiveWindow, eps: float = 1e-9) -> NDArray[np.complex128]:
     """Sum of delayed pulse copies on the window's samples, eq (E2), by finufft type 1.
 
     Parameters

@@ -1,0 +1,208 @@
+"""Benchmark of the radar stage (issue 5): run as ``python benchmarks/bench_radar.py``.
+
+1. One bistatic quad-pol pulse over a 512 x 512 sea, ray traced (the paper's Simulation 1
+   scene), broken down by stage; best of ``--repeat`` runs.
+2. Echo accumulation: NUFFT (eq E2) against the paper's per-facet pulse write (eq E1,
+   ``accumulate_pulse_write``) on the same facets, as a ratio.
+3. Peak memory (RSS) of a streamed run of 20 and of 200 pulses (``--memory-grid``):
+   bounded memory means the two peaks are about equal.
+
+Timings on a shared machine are noisy: the load average is printed with them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+SIM1 = ROOT / "scenes" / "paper_sim1_bistatic_64m.toml"
+
+
+def _best(fn, repeat):
+    times, out = [], None
+    for _ in range(repeat):
+        t = time.perf_counter()
+        out = fn()
+        times.append(time.perf_counter() - t)
+    return min(times), out
+
+
+def bench_pulse(repeat: int, mode: str) -> None:
+    from seaecho.config import load_scene
+    from seaecho.geometry.mesh import to_facets
+    from seaecho.scattering.facet import facet_terms, speckle_amplitudes
+    from seaecho.simulation import Simulation
+
+    scene = load_scene(SIM1)
+    scene = scene.model_copy(update={"tracing": scene.tracing.model_copy(
+        update={"mode": mode})})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sim = Simulation(scene, base_dir=SIM1.parent)
+    sim.pulse(0)  # JIT compilation, BVH construction: not timed
+    radar = sim.radar
+    p = 1
+    stages = {}
+    stages["platforms+pointing"], geo = _best(lambda: radar.geometry(p), repeat)
+    stages["sea state (ocean+wake)"], st = _best(lambda: sim.sea.state(geo.time), repeat)
+    stages[f"facets ({mode})"], f = _best(lambda: sim.engine.facets(geo.time, state=st),
+                                          repeat)
+    idx = np.flatnonzero(f.visibility > 0)
+    un = sim.unresolved
+    damping = to_facets(st.wake_mask).reshape(-1)
+
+    def scatter():
+        t = facet_terms(f.n_i[idx], f.n_s[idx], f.normal[idx], sim.k, sim.eps_r,
+                        sim.sea.spectrum.height_spectrum, un.mss_upwind, un.mss_crosswind,
+                        sim.wind_direction, wake_damping=damping[idx],
+                        local={"theta_i": f.theta_i[idx], "theta_s": f.theta_s[idx],
+                               "phi": f.phi[idx], "rot_i": f.rot_i[idx],
+                               "rot_s": f.rot_s[idx]})
+        return speckle_amplitudes(t, f.area[idx] * f.visibility[idx],
+                                  np.random.default_rng(0))
+
+    stages["scattering (sigma + speckle)"], amp = _best(scatter, repeat)
+    s = amp.reshape(-1, 2, 2)
+    stages["radar equation (Dr.Jit kernel)"], echo = _best(
+        lambda: radar.scatterer_echo(geo, f.centroid[idx], f.velocity[idx], s), repeat)
+    numpy_t, _ = _best(lambda: radar.scatterer_echo_numpy(geo, f.centroid[idx],
+                                                          f.velocity[idx], s), 1)
+    stages["accumulation (NUFFT, 4 ch)"], raw = _best(lambda: radar.receive(p, [echo]),
+                                                      repeat)
+    stages["range compression"], _ = _best(lambda: sim.compress(raw), repeat)
+    whole, _ = _best(lambda: sim.pulse(p), repeat)
+    print(f"\n[1] one bistatic quad-pol pulse, 512 x 512 sea ({idx.size} of {f.n_facets} "
+          f"facets visible), {mode}, best of {repeat}; load {os.getloadavg()[0]:.2f}")
+    for name, t in stages.items():
+        print(f"    {name:34s} {1e3 * t:8.1f} ms")
+    print(f"    {'sum of stages':34s} {1e3 * sum(stages.values()):8.1f} ms")
+    print(f"    {'Simulation.pulse (end to end)':34s} {1e3 * whole:8.1f} ms")
+    print(f"    {'radar stage (kernel+NUFFT+RC)':34s} "
+          f"{1e3 * (stages['radar equation (Dr.Jit kernel)'] + stages['accumulation (NUFFT, 4 ch)'] + stages['range compression']):8.1f} ms")  # noqa: E501
+    print(f"    (numpy reference of the radar-equation kernel: {1e3 * numpy_t:.1f} ms)")
+    bench_accumulation(radar, echo, repeat)
+
+
+def bench_accumulation(radar, echo, repeat: int) -> None:
+    from seaecho.radar.echo import accumulate, accumulate_pulse_write
+
+    w = radar.window
+    keep = w.keep(echo.tau, radar.waveform.n_samples)
+    tau, amps = echo.tau[keep], echo.amplitudes[:, keep]
+    spec = radar.waveform.spectrum(radar.n_fft)
+    t_nufft, r1 = _best(lambda: accumulate(tau, amps, spec, w), repeat)
+    bw, dur = radar.waveform.bandwidth, radar.waveform.duration
+
+    def env(t):
+        return np.exp(1j * np.pi * bw / dur * (t - 0.5 * dur) ** 2)
+
+    t_write, r2 = _best(lambda: accumulate_pulse_write(tau, amps, env, dur, w), 1)
+    print(f"\n[2] accumulation of {tau.size} facets x {amps.shape[0]} channels into "
+          f"{w.n_samples} samples (pulse {radar.waveform.n_samples} samples); "
+          f"load {os.getloadavg()[0]:.2f}")
+    print(f"    NUFFT (finufft type 1, eq E2)        {1e3 * t_nufft:8.1f} ms")
+    print(f"    per-facet pulse write (paper, E1)    {1e3 * t_write:8.1f} ms")
+    print(f"    ratio write / NUFFT                  {t_write / t_nufft:8.1f}")
+    rel = np.linalg.norm(r1 - r2) / np.linalg.norm(r2)
+    print(f"    relative difference (band-limited vs analytic pulse edges): {rel:.2e}")
+
+
+MEMORY_SCENE = """
+name = "bench-memory"
+[sea]
+spectrum = "pierson-moskowitz"
+wind_speed_m_s = 4.53
+size_x_m = {size}
+nx = {n}
+[run]
+seed = 1
+[tracing]
+mode = "analytic"
+[radar]
+carrier_frequency_hz = 10.0e9
+sampling_rate_hz = 180.0e6
+prf_hz = 1000.0
+n_pulses = {pulses}
+sea_update_pulses = 1
+[radar.waveform]
+kind = "lfm"
+bandwidth_hz = 150.0e6
+duration_s = 1.0e-6
+[transmitter]
+position_m = [-93.41, 0.0, 256.65]
+[transmitter.antenna]
+pattern = "rectangular"
+width_m = 0.18
+height_m = 0.14
+look_at_m = [0.0, 0.0, 0.0]
+[receiver]
+position_m = [-50.75, 0.0, 87.91]
+[receiver.antenna]
+pattern = "rectangular"
+width_m = 0.18
+height_m = 0.14
+look_at_m = [0.0, 0.0, 0.0]
+"""
+
+
+def _child_run(scene_path: str, out: str) -> None:
+    import warnings
+
+    from seaecho.config import load_scene
+    from seaecho.simulation import Simulation
+
+    warnings.simplefilter("ignore")
+    t = time.perf_counter()
+    Simulation(load_scene(scene_path)).run(out, progress=False)
+    peak_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    print(f"{peak_mb:.1f} {time.perf_counter() - t:.1f}")
+
+
+def bench_memory(grid: int) -> None:
+    print(f"\n[3] peak RSS of a streamed run, {grid} x {grid} sea (analytic facets), "
+          f"quad-pol; load {os.getloadavg()[0]:.2f}")
+    size = 64.0 * grid / 512
+    with tempfile.TemporaryDirectory() as d:
+        for pulses in (20, 200):
+            scene = Path(d) / f"m{pulses}.toml"
+            scene.write_text(MEMORY_SCENE.format(size=size, n=grid, pulses=pulses))
+            out = Path(d) / f"m{pulses}.nc"
+            res = subprocess.run([sys.executable, __file__, "--child", str(scene), str(out)],
+                                 capture_output=True, text=True, check=True)
+            peak, secs = res.stdout.split()
+            mb = out.stat().st_size / 2**20
+            print(f"    {pulses:4d} pulses: peak RSS {peak:>7s} MB, file {mb:7.1f} MB, "
+                  f"{secs} s")
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--mode", default="raytraced", choices=["raytraced", "analytic"])
+    ap.add_argument("--memory-grid", type=int, default=128)
+    ap.add_argument("--skip-pulse", action="store_true")
+    ap.add_argument("--skip-memory", action="store_true")
+    ap.add_argument("--child", nargs=2, help=argparse.SUPPRESS)
+    args = ap.parse_args()
+    if args.child:
+        _child_run(*args.child)
+        return
+    print(f"bench_radar: {os.cpu_count()} CPUs")
+    if not args.skip_pulse:
+        bench_pulse(args.repeat, args.mode)
+    if not args.skip_memory:
+        bench_memory(args.memory_grid)
+
+
+if __name__ == "__main__":
+    main()
