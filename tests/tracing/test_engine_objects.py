@@ -131,6 +131,8 @@ def test_objects_config_errors_are_readable():
                          "relative_permittivity": 3.0}])
     with pytest.raises(SceneError, match=r"\[tracing\]\.mode"):
         _scene(tracing={"mode": "magic"})
+    with pytest.raises(SceneError, match=r"orientation_deg\[0\] = 400"):
+        _scene(objects=[{"name": "b", "file": "b.ply", "orientation_deg": [400, 0, 0]}])
     with pytest.raises(SceneError, match="refresh_interval_s"):
         _scene(tracing={"refresh_interval_s": -1.0})
     scene = _scene(tracing={"mode": "analytic", "shadowing": "none"})

@@ -12,7 +12,7 @@ Paths are relative to the scene file's folder.
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
@@ -54,6 +54,14 @@ class TracingConfig(Section):
     )
 
 
+#: A coordinate within 1000 km of the origin [m].
+_Coord = Annotated[float, Field(ge=-1.0e6, le=1.0e6)]
+#: An angle in degrees within one turn either way [deg].
+_Angle = Annotated[float, Field(ge=-360.0, le=360.0)]
+#: A velocity component up to 1 km/s [m/s].
+_Speed = Annotated[float, Field(ge=-1.0e3, le=1.0e3)]
+
+
 class ObjectConfig(Section):
     """A mesh or Mitsuba/Sionna XML scene placed in the scene (ship hull, breakwater, ...)."""
 
@@ -62,15 +70,18 @@ class ObjectConfig(Section):
     file: str = Field(..., min_length=1, max_length=1000,
                       description="mesh (.ply, .obj, .stl) or Mitsuba/Sionna scene (.xml), "
                       "relative to the scene file's folder")
-    position_m: tuple[float, float, float] = Field(
-        (0.0, 0.0, 0.0), description="(x, y, z) of the object's origin at time 0 [m]")
-    orientation_deg: tuple[float, float, float] = Field(
+    position_m: tuple[_Coord, _Coord, _Coord] = Field(
+        (0.0, 0.0, 0.0),
+        description="(x, y, z) of the object's origin at time 0, each within +-1e6 [m]")
+    orientation_deg: tuple[_Angle, _Angle, _Angle] = Field(
         (0.0, 0.0, 0.0),
         description="rotation (yaw about z, pitch about y, roll about x), applied to the "
-        "file's coordinates in the order roll, pitch, yaw (Sionna's convention) [deg]",
+        "file's coordinates in the order roll, pitch, yaw (Sionna's convention), each "
+        "within +-360 [deg]",
     )
-    velocity_m_s: tuple[float, float, float] = Field(
-        (0.0, 0.0, 0.0), description="constant velocity of the object [m/s]")
+    velocity_m_s: tuple[_Speed, _Speed, _Speed] = Field(
+        (0.0, 0.0, 0.0), description="constant velocity of the object, each component "
+        "within +-1000 [m/s]")
     scale: float = Field(1.0, gt=0.0, le=1.0e4, description="scale applied to the file [-]")
     follow_ship: bool = Field(
         False,
