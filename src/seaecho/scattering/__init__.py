@@ -13,3 +13,32 @@ Plain arrays in, plain arrays out; nothing here knows about meshes or radars.
 
 Theory, equations and sources: ``docs/scattering.md``.
 """
+
+from .facet import (
+    FacetTerms,
+    bragg_vectors,
+    facet_amplitudes,
+    facet_sigma,
+    facet_terms,
+    hhvv_coherence,
+    speckle_amplitudes,
+)
+from .frames import local_angles, polarisation_basis, tilt_rotation, to_global
+from .models import sea_sigma
+from .spectrum_table import BraggSpectrumTable
+
+__all__ = [
+    "BraggSpectrumTable",
+    "FacetTerms",
+    "bragg_vectors",
+    "facet_amplitudes",
+    "facet_sigma",
+    "facet_terms",
+    "hhvv_coherence",
+    "local_angles",
+    "polarisation_basis",
+    "sea_sigma",
+    "speckle_amplitudes",
+    "tilt_rotation",
+    "to_global",
+]
