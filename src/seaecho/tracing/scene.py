@@ -192,12 +192,19 @@ def load_object(cfg, base_dir: str = ".", ship=None) -> list[ObjectGeometry]:
     return [ObjectGeometry(cfg.name, v * cfg.scale, f, position, rot, velocity, **material)]
 
 
-def _mi_mesh(mi, name: str, vertices32: np.ndarray, faces: np.ndarray):
-    """A Mitsuba mesh from numpy arrays (vertices must stay alive: Dr.Jit may alias them)."""
+def _mi_mesh(mi, name: str, vertices32: np.ndarray, faces: np.ndarray, keep: list):
+    """A Mitsuba mesh from numpy arrays.
+
+    Dr.Jit aliases numpy memory (``mi.Float(array)`` is zero-copy) and the LLVM backend
+    runs kernels asynchronously, so every array handed to Mitsuba is appended to ``keep``,
+    which the caller holds for the mesh's lifetime.
+    """
+    faces = np.ascontiguousarray(faces, dtype=np.uint32)
+    keep += [vertices32, faces]
     mesh = mi.Mesh(name, vertices32.shape[0], faces.shape[0], has_vertex_normals=False)
     params = mi.traverse(mesh)
     params["vertex_positions"] = mi.Float(vertices32.ravel())
-    params["faces"] = mi.UInt32(np.ascontiguousarray(faces, dtype=np.uint32).ravel())
+    params["faces"] = mi.UInt32(faces.ravel())
     params.update()
     return mesh
 
@@ -245,8 +252,8 @@ class SeaScene:
         self.y = np.asarray(y, dtype=np.float64)
         eps_r = complex(60.0 - 35.0j) if eps_r is None else complex(eps_r)
         self._vbuf = grid_vertices(self.x, self.y, elevation, dtype=np.float32)
-        faces = grid_faces(self.x.size, self.y.size)
-        mesh = _mi_mesh(mi, "sea", self._vbuf, faces)
+        self._keep: list = []
+        mesh = _mi_mesh(mi, "sea", self._vbuf, grid_faces(self.x.size, self.y.size), self._keep)
         sigma = -eps_r.imag * 2.0 * np.pi * frequency_hz * _EPS0  # eps'' = sigma/(omega eps0)
         material = rt.RadioMaterial(name="sea-water", relative_permittivity=eps_r.real,
                                     conductivity=sigma)
@@ -300,13 +307,15 @@ class ObjectScene:
         self._mi = mi
         self.objects = list(objects)
         self._bufs = {}
+        self._keep: list = []  # arrays aliased by Dr.Jit (faces, initial vertices)
         scene_objects = []
         for o in self.objects:
             buf = np.ascontiguousarray(o.world_vertices(t), dtype=np.float32)
             self._bufs[o.name] = buf
             mat = _radio_material(rt, f"{o.name}_material", o.relative_permittivity, o.conductivity,
                                   o.itu_type)
-            scene_objects.append(rt.SceneObject(mi_mesh=_mi_mesh(mi, o.name, buf, o.faces),
+            scene_objects.append(rt.SceneObject(mi_mesh=_mi_mesh(mi, o.name, buf, o.faces,
+                                                                 self._keep),
                                                 name=o.name, radio_material=mat,
                                                 velocity=mi.Vector3f(*map(float, o.velocity))))
         self.scene = rt.load_scene()
