@@ -35,6 +35,12 @@ def signal_figure(ds: xr.Dataset, path: str | os.PathLike, variable: str = "raw"
     power = _db(np.abs(sig.values) ** 2 / p_t)
     vmax = float(np.max(power))
     rng = ds["range"].values
+    if variable == "compressed":
+        # beyond the last range of the window the compressed samples only hold pulse tails
+        from ..constants import C0
+
+        keep = rng <= rng[-1] - 0.5 * C0 * float(ds.attrs.get("waveform_duration_s", 0.0))
+        rng, power = rng[keep], power[..., keep]
     for i, ax in enumerate(axes[0]):
         if sig.sizes["pulse"] == 1:
             ax.plot(rng, power[0, i])
