@@ -20,7 +20,7 @@ MODELS = sorted(PERMITTIVITY_MODELS)
 @pytest.mark.parametrize("model", MODELS)
 @pytest.mark.parametrize("t,ref", [(0.0, 87.74), (20.0, 80.10), (25.0, 78.30)])
 def test_static_permittivity_of_pure_water(model, t, ref):
-    # Malmberg & Maryott (1956), J. Res. NBS 56(1), 1-8, eq 3:
+    # Malmberg & Maryott (1956), J. Res. NBS 56(1), 1-8, their fit:
     # eps = 87.740 - 0.40008 t + 9.398e-4 t^2 - 1.410e-6 t^3 -> 87.74, 80.10, 78.30.
     # Both models were fitted to other data sets; they agree within 0.7 %.
     eps = sea_water_permittivity(1e6, t, 0.0, model=model)

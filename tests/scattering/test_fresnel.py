@@ -8,12 +8,12 @@ from seaecho.scattering.fresnel import fresnel_coefficients
 
 
 def test_brewster_angle_real_permittivity():
-    # Born & Wolf (1999) eq 1.5.(26): R_v = 0 at tan(theta_B) = n = sqrt(eps).
+    # Brewster's law (Born & Wolf 1999, sec. 1.5.3): R_v = 0 at tan(theta_B) = sqrt(eps).
     eps = 2.25
     theta_b = np.arctan(np.sqrt(eps))
     r_h, r_v = fresnel_coefficients(np.cos(theta_b), eps)
     assert abs(r_v) < 1e-14
-    # R_h = -sin(ti - tt) / sin(ti + tt) (Born & Wolf 1.5.(21a)) with tt = 90 deg - ti
+    # R_h = -sin(ti - tt) / sin(ti + tt) (Fresnel, Born & Wolf sec. 1.5.2) with tt = 90 deg - ti
     # there gives cos(2 theta_B).
     np.testing.assert_allclose(r_h, np.cos(2 * theta_b), atol=1e-14)
 

@@ -20,7 +20,7 @@ EPS = 55.9 - 37.0j
 
 
 def test_nadir_backscatter_equals_fresnel_over_mss():
-    # Classic GO result (Barrick 1968; Valenzuela 1978, eq 21): at nadir backscatter
+    # Classic GO result (Barrick 1968; Valenzuela 1978): at nadir backscatter
     # sigma0 = |R(0)|^2 / mss for isotropic Gaussian slopes of total mss = 2 s^2.
     s2 = 0.012
     sig = kirchhoff_sigma(0.0, 0.0, 0.0, np.pi, EPS, s2, s2)
@@ -30,7 +30,7 @@ def test_nadir_backscatter_equals_fresnel_over_mss():
 
 
 def test_monostatic_go_closed_form():
-    # Monostatic GO (Valenzuela 1978, eq 21): sigma0 = |R(0)|^2 sec^4(t) / mss
+    # Monostatic GO (Barrick 1968; Valenzuela 1978): sigma0 = |R(0)|^2 sec^4(t) / mss
     # exp(-tan^2(t) / mss) for isotropic slopes; at backscatter the specular facet is
     # normal to the ray, so R is taken at normal incidence.
     s2 = 0.01

@@ -60,7 +60,7 @@ def test_backscatter_reduces_to_classic_gaussian_closed_form():
     # Classic monostatic SPM for a Gaussian correlation s^2 exp(-r^2/l^2) (Ulaby, Moore &
     # Fung 1982, Vol. II, sec. 12-3; Fung 1994, ch. 2):
     #   sigma0_pp = 4 k^4 s^2 l^2 cos^4(t) |g_pp|^2 exp(-k^2 l^2 sin^2 t),
-    # with g_HH, g_VV of Valenzuela (1978), eqs 10-11. This checks the 16 pi prefactor of
+    # with g_HH, g_VV as in Valenzuela (1978). This checks the 16 pi prefactor of
     # eq S1 for a spectrum normalised to <z^2>.
     s2, ell = 1e-4, 0.05
 
@@ -82,7 +82,7 @@ def test_backscatter_reduces_to_classic_gaussian_closed_form():
 
 def test_bragg_ratio_perfect_conductor():
     # Perfect conductor: sigma_VV / sigma_HH = ((1 + sin^2 t) / cos^2 t)^2 (Wright 1966;
-    # Valenzuela 1978, eq 11 with eps -> infinity).
+    # Valenzuela 1978, g_VV / g_HH with eps -> infinity).
     th = np.radians(np.array([20.0, 40.0, 60.0]))
     s = spm_sigma(th, 0.0, th, np.pi, K, 1e12 + 0j, gaussian_spectrum)
     np.testing.assert_allclose(s[:, 3] / s[:, 0], ((1 + np.sin(th) ** 2) / np.cos(th) ** 2) ** 2,

@@ -6,7 +6,7 @@ Two empirical models, selectable by name in :data:`PERMITTIVITY_MODELS`:
   (1977), fitted to L- and S-band measurements; the classic choice below X band.
 - ``"meissner-wentz"``: double Debye relaxation plus conductivity, Meissner & Wentz
   (2004), fitted to laboratory data and SSM/I brightness temperatures up to 90 GHz
-  (coefficients of their Tables III and VI, as printed in 2004).
+  (their 2004 coefficients; RSS's later update of two of them is not applied).
 
 Both return ``eps_r = eps' - j eps''`` (``eps'' >= 0``), the sign that goes with the
 project's ``exp(+j omega t)`` time convention.
@@ -67,8 +67,8 @@ def klein_swift(frequency: ArrayLike, temperature_c: ArrayLike,
         \\varepsilon_r = \\varepsilon_\\infty + \\frac{\\varepsilon_s - \\varepsilon_\\infty}
         {1 + j\\omega\\tau} - j\\frac{\\sigma}{\\omega\\varepsilon_0} \\qquad \\text{(W1)}
 
-    with ``eps_inf = 4.9``, ``eps_s(t, s)`` from their eqs 13-15, ``tau(t, s)`` from
-    eqs 16-18 and ``sigma(t, s)`` from eqs 19-20 (Weyl's conductivity law).
+    with ``eps_inf = 4.9`` and their regressions for ``eps_s(t, s)``, ``tau(t, s)`` and
+    ``sigma(t, s)`` (the latter after Weyl's conductivity law).
 
     Parameters
     ----------
@@ -86,7 +86,7 @@ def klein_swift(frequency: ArrayLike, temperature_c: ArrayLike,
 
     References
     ----------
-    .. [1] Klein and Swift (1977), eqs 4-5, 13-20.
+    .. [1] Klein and Swift (1977), sec. II-III.
     """
     f = np.asarray(frequency, dtype=float)
     t = np.asarray(temperature_c, dtype=float)
@@ -94,15 +94,15 @@ def klein_swift(frequency: ArrayLike, temperature_c: ArrayLike,
     _check(f, t, s, "klein-swift", 40e9, (-2.0, 30.0))
     omega = 2.0 * np.pi * f
     eps_inf = 4.9
-    # Eqs 13-15: static permittivity, pure water times a salinity factor.
+    # Static permittivity: pure water times a salinity factor.
     eps_s_t = 87.134 - 1.949e-1 * t - 1.276e-2 * t**2 + 2.491e-4 * t**3
     a = 1.0 + 1.613e-5 * s * t - 3.656e-3 * s + 3.210e-5 * s**2 - 4.232e-7 * s**3
     eps_s = eps_s_t * a
-    # Eqs 16-18: relaxation time [s].
+    # Relaxation time [s], pure water times a salinity factor.
     tau_t = 1.768e-11 - 6.086e-13 * t + 1.104e-14 * t**2 - 8.111e-17 * t**3
     b = 1.0 + 2.282e-5 * s * t - 7.638e-4 * s - 7.760e-6 * s**2 + 1.105e-8 * s**3
     tau = tau_t * b
-    # Eqs 19-20: ionic conductivity [S/m] at 25 degC, then its temperature law.
+    # Ionic conductivity [S/m] at 25 degC, then its temperature law.
     sigma_25 = s * (0.182521 - 1.46192e-3 * s + 2.09324e-5 * s**2 - 1.28205e-7 * s**3)
     delta = 25.0 - t
     beta = (2.033e-2 + 1.266e-4 * delta + 2.464e-6 * delta**2
@@ -112,10 +112,10 @@ def klein_swift(frequency: ArrayLike, temperature_c: ArrayLike,
     return eps_inf + (eps_s - eps_inf) / (1.0 + 1j * omega * tau) - 1j * sigma / (omega * EPS0)
 
 
-#: Meissner & Wentz (2004) Table III: pure-water fit coefficients a_1..a_11.
+#: Meissner & Wentz (2004): pure-water fit coefficients a_1..a_11.
 _MW_A = (5.7230e00, 2.2379e-02, -7.1237e-04, 5.0478e00, -7.0315e-02, 6.0059e-04,
          3.6143e00, 2.8841e-02, 1.3652e-01, 1.4825e-03, 2.4166e-04)
-#: Meissner & Wentz (2004) Table VI: salinity coefficients b_0..b_12.
+#: Meissner & Wentz (2004): salinity coefficients b_0..b_12.
 _MW_B = (-3.56417e-03, 4.74868e-06, 1.15574e-05, 2.39357e-03, -3.13530e-05, 2.52477e-07,
          -6.28908e-03, 1.76032e-04, -9.22144e-05, -1.99723e-02, 1.81176e-04, -2.04265e-03,
          1.57883e-04)
@@ -130,9 +130,9 @@ def meissner_wentz(frequency: ArrayLike, temperature_c: ArrayLike,
         + \\frac{\\varepsilon_1 - \\varepsilon_\\infty}{1 + j f/\\nu_2}
         + \\varepsilon_\\infty - j\\frac{\\sigma}{2\\pi\\varepsilon_0 f} \\qquad \\text{(W2)}
 
-    Pure-water parameters from their eqs 15-16 (Table III), salinity dependence from
-    eq 17 (Table VI), static permittivity and conductivity of Stogryn et al. (1995)
-    (their eqs 12-14).
+    Pure-water relaxation parameters and their salinity dependence from Meissner &
+    Wentz's fits (2004 coefficients), static permittivity and conductivity of Stogryn
+    et al. (1995) as they use them.
 
     Parameters
     ----------
@@ -150,7 +150,7 @@ def meissner_wentz(frequency: ArrayLike, temperature_c: ArrayLike,
 
     References
     ----------
-    .. [1] Meissner and Wentz (2004), eqs 6, 12-17, Tables III and VI.
+    .. [1] Meissner and Wentz (2004), sec. IV (double Debye model and fit coefficients).
     """
     f = np.asarray(frequency, dtype=float)
     t = np.asarray(temperature_c, dtype=float)
@@ -159,20 +159,20 @@ def meissner_wentz(frequency: ArrayLike, temperature_c: ArrayLike,
     a = _MW_A
     b = _MW_B
     f_ghz = f * 1e-9
-    # Eq 12 (Stogryn et al. 1995): static permittivity of pure water.
+    # Stogryn et al. (1995): static permittivity of pure water.
     eps_s0 = (3.70886e4 - 8.2168e1 * t) / (4.21854e2 + t)
-    # Eq 16 / Table III: pure-water relaxation parameters (nu in GHz).
+    # Pure-water relaxation parameters (nu in GHz).
     eps_10 = a[0] + a[1] * t + a[2] * t**2
     nu_10 = (45.0 + t) / (a[3] + a[4] * t + a[5] * t**2)
     eps_inf0 = a[6] + a[7] * t
     nu_20 = (45.0 + t) / (a[8] + a[9] * t + a[10] * t**2)
-    # Eq 17 / Table VI: salinity dependence.
+    # Salinity dependence.
     eps_s = eps_s0 * np.exp(b[0] * s + b[1] * s**2 + b[2] * t * s)
     nu_1 = nu_10 * (1.0 + s * (b[3] + b[4] * t + b[5] * t**2))
     eps_1 = eps_10 * np.exp(b[6] * s + b[7] * s**2 + b[8] * t * s)
     nu_2 = nu_20 * (1.0 + s * (b[9] + b[10] * t))
     eps_inf = eps_inf0 * (1.0 + s * (b[11] + b[12] * t))
-    # Eqs 13-14 (Stogryn et al. 1995): conductivity [S/m].
+    # Stogryn et al. (1995): conductivity [S/m].
     sigma35 = (2.903602 + 8.607e-2 * t + 4.738817e-4 * t**2 - 2.991e-6 * t**3
                + 4.3047e-9 * t**4)
     r15 = s * (37.5109 + 5.45216 * s + 1.4409e-2 * s**2) / (1004.75 + 182.283 * s + s**2)

@@ -264,7 +264,7 @@ def basis_rotation(
 
     References
     ----------
-    .. [1] Valenzuela (1968), eqs 6-8; Ulaby, Moore and Fung (1982), sec. 12-6.
+    .. [1] Valenzuela (1968); Ulaby, Moore and Fung (1982), ch. 12 (two-scale model).
     """
     h0, v0 = polarisation_basis(n, normal_from)
     h1, v1 = polarisation_basis(n, normal_to)

@@ -35,7 +35,7 @@ alignment of :mod:`.frames`, ``phi = phi_s - phi_i``, ``r = sqrt(eps - sin^2 the
                    - r_i r_s\\cos\\phi)}{(\\varepsilon\\cos\\theta_i + r_i)
                    (\\varepsilon\\cos\\theta_s + r_s)} \\qquad \\text{(S3-S6)}
 
-(Tsang, Kong and Ding 2000, sec. 5.2 in their notation; Khenchaf 2001, eqs 9-12; Ulaby,
+(Tsang, Kong and Ding 2000, sec. 5.2 in their notation; Khenchaf 2001, sec. 2; Ulaby,
 Moore and Fung 1982, sec. 12-3). ``tests/scattering/test_spm.py`` checks them, complex
 values and relative signs included, against an independent numerical first-order
 boundary-value solution (dielectric) and the perfect-conductor expansion.
@@ -90,7 +90,7 @@ def spm_alpha(theta_i: ArrayLike, theta_s: ArrayLike, phi: ArrayLike,
 
     References
     ----------
-    .. [1] Tsang, Kong and Ding (2000), sec. 5.2; Khenchaf (2001), eqs 9-12.
+    .. [1] Tsang, Kong and Ding (2000), sec. 5.2; Khenchaf (2001), sec. 2.
     """
     ti = np.asarray(theta_i, dtype=float)
     ts = np.asarray(theta_s, dtype=float)
