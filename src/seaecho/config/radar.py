@@ -113,7 +113,8 @@ class AntennaConfig(Section):
     track_look_at: bool = Field(
         False,
         description="keep the boresight on look_at_m at every pulse (spotlight); default: "
-        "aim at t = 0 and stay fixed to the platform (stripmap)",
+        "aim at the first pulse ([radar] start_time_s) and stay fixed to the platform "
+        "(stripmap)",
     )
     azimuth_deg: float | None = Field(
         None, ge=-360.0, le=360.0,
@@ -277,7 +278,7 @@ class RadarConfig(Section):
         35.0, gt=0.0, le=150.0, description="Taylor window peak sidelobe level below peak [dB]"
     )
     sigma_map_pulse: int = Field(
-        0, ge=0, description="pulse whose per-facet sigma maps are saved [-]"
+        0, ge=0, le=10_000_000, description="pulse whose per-facet sigma maps are saved [-]"
     )
 
     @model_validator(mode="after")
@@ -343,6 +344,10 @@ class TargetConfig(Section):
             if any(abs(c) > bound for c in v):
                 raise ValueError(f"{name} = {list(v)}: each component must be within "
                                  f"+-{bound:g}")
+        for name in ("s_hh", "s_hv", "s_vh", "s_vv"):
+            v = getattr(self, name)
+            if v is not None and any(abs(c) > 1.0e5 for c in v):
+                raise ValueError(f"{name} = {list(v)}: each part must be within +-1e5 m")
         return self
 
     def scattering_matrix(self):
