@@ -62,6 +62,7 @@ def test_sigma_two_angles_map(tmp_path):
     ["--spectrum", "jonswap"],
     ["-o", "/nonexistent/dir/x.csv"],
     ["-o", "x.txt"],
+    ["--cut-ratio", "0"],
 ])
 def test_sigma_bad_input_exits_2_without_file(argv, tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(tmp_path)

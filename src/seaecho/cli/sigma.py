@@ -68,6 +68,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--fetch-m", type=float, default=None, help="fetch [m] (jonswap)")
     p.add_argument("--slopes", choices=SLOPE_MODELS, default="gaussian",
                    help="slope density of the Kirchhoff part (default gaussian)")
+    p.add_argument("--cut-ratio", type=float, default=1.0 / 3.0,
+                   help="two-scale split k_cut / k [-] (default 1/3): slopes of the longer "
+                   "waves for Kirchhoff and two-scale tilts")
     p.add_argument("--temperature-c", type=float, default=20.0, help="sea temperature [degC]")
     p.add_argument("--salinity-psu", type=float, default=35.0, help="salinity [psu]")
     p.add_argument("--permittivity-model", choices=sorted(PERMITTIVITY_MODELS),
@@ -140,6 +143,8 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"--frequency-ghz = {args.frequency_ghz}: must be in [0.1, 100] GHz")
     if not 0.0 < args.wind_speed <= 40.0:
         raise UsageError(f"--wind-speed = {args.wind_speed}: must be in (0, 40] m/s")
+    if not 0.0 < args.cut_ratio <= 1.0:
+        raise UsageError(f"--cut-ratio = {args.cut_ratio}: must be in (0, 1]")
     if args.spectrum == "jonswap" and args.fetch_m is None:
         raise UsageError("--spectrum jonswap needs --fetch-m")
     angles = [
@@ -171,7 +176,7 @@ def run(args: argparse.Namespace) -> int:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         sigma = sea_sigma(args.model, ti, pi_, ts, ps, args.frequency_ghz * 1e9, spec, eps,
-                          slopes=args.slopes)
+                          slopes=args.slopes, cut_ratio=args.cut_ratio)
     for w in {str(w.message): w for w in caught}.values():
         print(f"seaecho sigma: warning: {w.message}", file=sys.stderr)
     with np.errstate(divide="ignore"):

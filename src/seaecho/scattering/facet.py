@@ -38,7 +38,9 @@ so that, per facet,
     + \\sqrt{(1-w_{mn})(1-w_{pq})}B_{mn}B_{pq}^*\\right) \\qquad \\text{(P5)}
 
 and ``E|a_mn|^2 = sigma_mn A``: ``|a_mn|^2`` is the facet's radar cross section [m^2]
-for the radar equation (``P_r = P_t G_t G_r lambda^2 |a|^2 / ((4 pi)^3 r_t^2 r_r^2)``).
+for the radar equation (``P_r = P_t G_t G_r lambda^2 |a|^2 / ((4 pi)^3 r_t^2 r_r^2)``);
+in the normalisation of the paper's eq 2 (``<|S|^2> = A sigma / (4 pi)``),
+``S_mn = a_mn / sqrt(4 pi)``.
 Within one mechanism the channels are fully coherent (``|gamma_HHVV| = 1``, phase
 ``arg K_hh K_vv^*`` or ``arg B_hh B_vv^*``); the mix of mechanisms lowers the HH-VV
 coherence to ``|E a_hh a_vv^*| / sqrt(E|a_hh|^2 E|a_vv|^2)`` from P5
