@@ -78,3 +78,34 @@ def test_directional_slope_and_cdf():
     assert height_cdf(0.0, 1.0) == pytest.approx(0.5)
     with pytest.raises(ValueError, match="sigma"):
         smith_nu(1.0, 0.0)
+
+
+def _flat_facets(tx, rx):
+    from seaecho.geometry.facets import analytic_facets
+
+    x = np.arange(4.0)
+    z = np.zeros((4, 4))
+    return analytic_facets(x, x, z, z, z, None, tx, rx, shadowing="none")
+
+
+def test_subfacet_shadowing_closed_forms():
+    """Eq T7 on a flat sea: backscatter 1/(1 + Lambda), forward 1/(1 + L_i + L_s)
+    (Smith 1967; Sancer 1969), isotropic sub-facet slopes."""
+    from seaecho.geometry.facets import subfacet_shadowing
+
+    mss = 0.02
+    tx = np.array([-1000.0, 1.5, 100.0])
+    f = _flat_facets(tx, tx)
+    s = subfacet_shadowing(f, mss, mss, 0.3)
+    lam = smith_lambda(smith_nu(f.theta_i, np.sqrt(mss)))
+    np.testing.assert_allclose(s, 1 / (1 + lam), rtol=1e-12)
+    rx = np.array([1000.0, 1.5, 300.0])
+    f = _flat_facets(tx, rx)
+    s = subfacet_shadowing(f, mss, mss, 0.3)
+    lam_s = smith_lambda(smith_nu(f.theta_s, np.sqrt(mss)))
+    np.testing.assert_allclose(s, 1 / (1 + lam + lam_s), rtol=1e-12)
+    # nadir: no shadowing; transmitter below the horizon of the facet: fully shadowed
+    assert subfacet_shadowing(_flat_facets([1.5, 1.5, 500.0], [1.5, 1.5, 500.0]),
+                              mss, mss, 0.0) == pytest.approx(1.0)
+    with pytest.raises(ValueError, match="mss_upwind"):
+        subfacet_shadowing(f, 0.0, mss, 0.0)

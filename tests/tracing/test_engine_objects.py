@@ -189,3 +189,17 @@ def test_variant_is_explicit_and_cuda_needs_a_gpu():
         with pytest.raises(ValueError, match="no CUDA GPU"):
             set_variant("cuda_ad_mono_polarized")
 
+
+
+def test_subfacet_shadowing_from_scene_lowers_visibility():
+    scene = _scene(tracing={"mode": "analytic", "subfacet_shadowing": True})
+    tx = np.array([-600.0, 0.0, 30.0])
+    on = FacetEngine.from_scene(scene, tx_position=tx)
+    off = FacetEngine.from_scene(_scene(tracing={"mode": "analytic"}), sea=on.sea,
+                                 tx_position=tx)
+    assert on.subfacet is not None and off.subfacet is None
+    f_on, f_off = on.facets(0.0), off.facets(0.0)
+    s = f_on.extra["subfacet_shadowing"]
+    assert np.all((s >= 0) & (s <= 1)) and s.mean() < 1
+    np.testing.assert_allclose(f_on.visibility, f_off.visibility * s)
+    np.testing.assert_array_equal(f_on.lit, f_off.lit)

@@ -46,6 +46,12 @@ class TracingConfig(Section):
         description="analytic mode only: weight facets by Smith's statistical shadowing "
         "(Smith 1967; bistatic: Bourlier et al. 2002) or by the facing test alone",
     )
+    subfacet_shadowing: bool = Field(
+        False,
+        description="both modes: multiply visibility by Smith's bistatic shadowing of the "
+        "unresolved slopes, 1 / (1 + Lambda_i + Lambda_s) at the local angles (Sancer 1969;"
+        " Bourlier et al. 2002), sub-grid slopes of the band up to k/3",
+    )
     refresh_interval_s: float = Field(
         0.0, ge=0.0, le=3600.0,
         description="visibility (BVH rebuild + shadow rays) is computed on the surface at "

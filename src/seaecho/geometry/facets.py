@@ -28,7 +28,9 @@ from .bistatic import global_angles, ranges_directions
 from .mesh import facet_geometry, grid_vertices, to_facets
 from .shadowing import directional_slope_std, height_cdf, smith_lambda, smith_nu
 
-__all__ = ["Facets", "analytic_facets", "facet_frames", "smith_weights"]
+_BACKSCATTER_TOL = 1e-9
+
+__all__ = ["Facets", "analytic_facets", "facet_frames", "smith_weights", "subfacet_shadowing"]
 
 
 @dataclass(frozen=True)
@@ -192,6 +194,59 @@ def smith_weights(height: np.ndarray, n_i: np.ndarray, n_s: np.ndarray, sigma_h:
         out = [np.where(lam == 0.0, 1.0, np.where(np.isinf(lam), 0.0, f ** lam))  # (T3)
                for lam in (lam_tx, lam_rx, lam_joint)]
     return out[0], out[1], out[2]
+
+
+def subfacet_shadowing(facets: Facets, mss_upwind: float, mss_crosswind: float,
+                       wind_direction: float) -> np.ndarray:
+    """Smith's bistatic shadowing of the unresolved (sub-facet) slopes, per facet [-].
+
+    The factor, averaged over the sub-facet heights and without facing test (the
+    specular points and Bragg waves that scatter face both ends by construction),
+
+    .. math:: S = \\frac{1}{1 + \\Lambda(\\nu_i) + \\Lambda(\\nu_s)}
+              \\quad\\text{or}\\quad \\frac{1}{1 + \\max(\\Lambda_i, \\Lambda_s)}
+              \\ \\text{(backscatter, } \\phi = \\pi)                 \\qquad (T7)
+
+    with ``nu = cot(theta) / (sqrt(2) sigma)`` at the *local* angles theta_i, theta_s and
+    sigma the sub-facet rms slope along each ray's horizontal azimuth, from the wind-aligned
+    slope variances (eqs T1, T5-T6 averaged over heights).
+
+    Parameters
+    ----------
+    facets : Facets
+        Facets with local angles and directions.
+    mss_upwind, mss_crosswind : float
+        Sub-facet slope variances along / across the wind [-] (``ocean.twoscale``).
+    wind_direction : float
+        Direction the wind blows towards, CCW from +x [rad].
+
+    Returns
+    -------
+    (N,) array
+        In [0, 1]; 0 where the transmitter or the receiver is behind the facet.
+
+    References
+    ----------
+    M. I. Sancer (1969); Bourlier, Berginc & Saillard (2002): see
+    :mod:`seaecho.geometry.shadowing`.
+    """
+    if not (mss_upwind > 0 and mss_crosswind > 0):
+        raise ValueError(f"mss_upwind = {mss_upwind}, mss_crosswind = {mss_crosswind}: "
+                         "sub-facet slope variances must be > 0 [-]")
+    cw, sw = np.cos(wind_direction), np.sin(wind_direction)
+    cov = np.array([[mss_upwind * cw * cw + mss_crosswind * sw * sw,
+                     (mss_upwind - mss_crosswind) * cw * sw],
+                    [(mss_upwind - mss_crosswind) * cw * sw,
+                     mss_upwind * sw * sw + mss_crosswind * cw * cw]])
+    lams = []
+    for theta, d in ((facets.theta_i, -facets.n_i), (facets.theta_s, facets.n_s)):
+        sigma = directional_slope_std(cov, np.arctan2(d[:, 1], d[:, 0]))
+        behind = theta >= np.pi / 2
+        lam = smith_lambda(smith_nu(np.where(behind, np.pi / 2, theta), sigma))  # (T1)
+        lams.append(np.where(behind, np.inf, lam))
+    back = np.abs(np.abs(facets.phi) - np.pi) < _BACKSCATTER_TOL
+    lam = np.where(back, np.maximum(lams[0], lams[1]), lams[0] + lams[1])
+    return 1.0 / (1.0 + lam)  # (T7)
 
 
 def analytic_facets(x: np.ndarray, y: np.ndarray, elevation: np.ndarray,

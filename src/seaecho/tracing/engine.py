@@ -20,13 +20,14 @@ evaluates at ``t``.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 from collections.abc import Callable
 
 import numpy as np
 
-from ..geometry.facets import Facets, analytic_facets
+from ..geometry.facets import Facets, analytic_facets, subfacet_shadowing
 from ..geometry.mesh import facet_geometry, grid_vertices, to_facets
 from .kernels import facet_frames_drjit
 
@@ -68,13 +69,19 @@ class FacetEngine:
         Sea-water permittivity for the Sionna material [-].
     frequency_hz : float
         Carrier frequency [Hz].
+    subfacet : (float, float, float), optional
+        ``(mss_upwind, mss_crosswind, wind_direction [rad])`` of the unresolved slopes: if
+        given, ``visibility`` is multiplied by their Smith shadowing (eq T7,
+        :func:`seaecho.geometry.facets.subfacet_shadowing`), also stored in
+        ``facets.extra["subfacet_shadowing"]``.
     """
 
     def __init__(self, sea, tx_position: Callable[[float], np.ndarray],
                  rx_position: Callable[[float], np.ndarray] | None = None, *,
                  mode: str = "raytraced", shadowing: str = "smith",
                  refresh_interval_s: float = 0.0, objects=(), variant: str | None = None,
-                 eps_r: complex | None = None, frequency_hz: float = 10.0e9) -> None:
+                 eps_r: complex | None = None, frequency_hz: float = 10.0e9,
+                 subfacet: tuple[float, float, float] | None = None) -> None:
         if mode not in ("raytraced", "analytic"):
             raise ValueError(f"mode = {mode!r}: allowed 'raytraced', 'analytic'")
         if refresh_interval_s < 0:
@@ -91,6 +98,7 @@ class FacetEngine:
         self._variant = variant
         self.eps_r = eps_r
         self.frequency_hz = frequency_hz
+        self.subfacet = subfacet
 
     # ------------------------------------------------------------------ construction
     @classmethod
@@ -142,7 +150,18 @@ class FacetEngine:
 
         eps_r = complex(sea_water_permittivity(freq, scene.sea.temperature_c,
                                                scene.sea.salinity_psu))
-        return cls(Sea.from_scene(scene) if sea is None else sea, tx_fn, rx_fn,
+        sea = Sea.from_scene(scene) if sea is None else sea
+        subfacet = None
+        if cfg.subfacet_shadowing:
+            from ..constants import C0
+            from ..ocean.twoscale import unresolved_statistics
+
+            dx, dy = float(sea.x[1] - sea.x[0]), float(sea.y[1] - sea.y[0])
+            stats = unresolved_statistics(sea.spectrum, dx, dy, 2.0 * np.pi * freq / C0 / 3.0)
+            if stats.mss_upwind > 0 and stats.mss_crosswind > 0:
+                subfacet = (stats.mss_upwind, stats.mss_crosswind,
+                            float(np.deg2rad(scene.sea.wind_direction_deg)))
+        return cls(sea, tx_fn, rx_fn, subfacet=subfacet,
                    mode=mode, shadowing=cfg.shadowing,
                    refresh_interval_s=cfg.refresh_interval_s, objects=objects,
                    variant=cfg.variant if variant is None else variant, eps_r=eps_r,
@@ -170,6 +189,23 @@ class FacetEngine:
 
     def facets(self, t: float, state=None) -> Facets:
         """Facets at time ``t`` [s] in the engine's mode.
+
+        Parameters
+        ----------
+        t : float
+            Time [s] (surface, objects, platforms).
+        state : seaecho.sea.SurfaceState, optional
+            ``sea.state(t)`` if already computed.
+        """
+        f = self._facets(t, state)
+        if self.subfacet is None:
+            return f
+        s = subfacet_shadowing(f, *self.subfacet)
+        return dataclasses.replace(f, visibility=f.visibility * s,
+                                   extra={**f.extra, "subfacet_shadowing": s})
+
+    def _facets(self, t: float, state=None) -> Facets:
+        """Facets at time ``t`` [s] in the engine's mode, without sub-facet shadowing.
 
         Parameters
         ----------
