@@ -157,3 +157,14 @@ def test_mean_clutter_power_is_clutter_radar_equation():
         ratios.append(measured / _expected_clutter_energy(sim, 0))
     mean = np.mean(ratios, axis=0)
     np.testing.assert_allclose(mean, 1.0, atol=0.12)  # HH, HV, VH, VV
+
+
+def test_speckle_and_surface_held_within_a_block():
+    # With the surface held for the block and fixed platforms, two pulses of one block are
+    # identical (same surface, same speckle draw); the next block draws new speckle.
+    sc = _scene(sea=True, n_pulses=4, sea_update_pulses=2)
+    sim = Simulation(sc.model_copy(update={"targets": ()}))
+    r0, r1, r2 = sim.pulse(0), sim.pulse(1), sim.pulse(2)
+    np.testing.assert_array_equal(r0, r1)
+    assert not np.allclose(r0, r2)
+    assert sim.surface_time(3) == sim.surface_time(2) == pytest.approx(2e-3)

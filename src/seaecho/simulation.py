@@ -140,27 +140,23 @@ class Simulation:
         st = self.surface_state(pulse)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility
-        idx = np.flatnonzero(vis > 0)
         damping = to_facets(st.wake_mask).reshape(-1)
         un = self.unresolved
+        # All facets, so that facet j always gets the j-th speckle draw of its block
+        # (visibility may change from pulse to pulse within a block)
         terms = facet_terms(
-            facets.n_i[idx], facets.n_s[idx], facets.normal[idx], self.k, self.eps_r,
+            facets.n_i, facets.n_s, facets.normal, self.k, self.eps_r,
             self.sea.spectrum.height_spectrum, un.mss_upwind, un.mss_crosswind,
-            self.wind_direction, wake_damping=damping[idx],
-            local={"theta_i": facets.theta_i[idx], "theta_s": facets.theta_s[idx],
-                   "phi": facets.phi[idx], "rot_i": facets.rot_i[idx],
-                   "rot_s": facets.rot_s[idx]},
+            self.wind_direction, wake_damping=damping, local=facets,
         )
         block = pulse // self.block
         rng = generator(self.scene.run.seed, "speckle", block)
         # Eq P4 of scattering.facet: |a|^2 is the facet's RCS [m^2]; visibility weights it
-        amp = speckle_amplitudes(terms, facets.area[idx] * vis[idx], rng)
+        amp = speckle_amplitudes(terms, facets.area * vis, rng)
+        idx = np.flatnonzero(vis > 0)
         echo = self.radar.scatterer_echo(geo, facets.centroid[idx], facets.velocity[idx],
-                                         amp.reshape(-1, 2, 2))
-        sig = None
-        if sigma:
-            sig = np.zeros((facets.n_facets, 4))
-            sig[idx] = terms.sigma() * vis[idx, None]
+                                         amp[idx].reshape(-1, 2, 2))
+        sig = terms.sigma() * vis[:, None] if sigma else None
         return SeaEcho(echo, sig, facets)
 
     # ------------------------------------------------------------------- one pulse

@@ -261,7 +261,7 @@ class RadarSystem:
         -------
         ScattererEcho
         """
-        if self.backend == "numpy":
+        if self.backend == "numpy" or np.size(positions) == 0:
             return self.scatterer_echo_numpy(geometry, positions, velocities, s)
         from .kernels import scatterer_echo_drjit
 
