@@ -25,7 +25,7 @@ from centroids) adds its own small part.
 import numpy as np
 import pytest
 
-from seaecho.geometry.facets import smith_weights
+from seaecho.geometry.facets import analytic_facets
 from seaecho.geometry.shadowing import smith_bistatic, smith_monostatic
 from seaecho.tracing.tracer import FacetTracer
 
@@ -76,10 +76,14 @@ def _run(tracer, gaussian_surface, rms_slope, geometry):
         cov = np.cov(grad[:, keep])
         (g1, a1), (g2, a2) = geometry[0], geometry[-1]
         smith = smith_bistatic(np.deg2rad(90 - g1), a1, np.deg2rad(90 - g2), a2, cov)
-        # analytic mode, Smith-weighted, on the same facets (facing x F(zeta)^Lambda)
-        _, _, s_joint = smith_weights(zc, f.n_i, f.n_s, zc.std(), cov)
-        facing = (f.theta_i < np.pi / 2) & (f.theta_s < np.pi / 2)
-        rows.append((f.visibility[keep].mean(), smith, (facing * s_joint)[keep].mean()))
+        # the analytic mode, Smith-weighted, on the same surface: normals from spectral
+        # (analytic) slopes, facing x F(zeta)^Lambda with the surface's own statistics
+        k = 2 * np.pi * np.fft.fftfreq(N, DX)
+        zf = np.fft.fft2(z)
+        sx = np.real(np.fft.ifft2(1j * k[None, :] * zf))
+        sy = np.real(np.fft.ifft2(1j * k[:, None] * zf))
+        fa = analytic_facets(X, X, z, sx, sy, None, tx, rx, shadowing="smith")
+        rows.append((f.visibility[keep].mean(), smith, fa.visibility[keep].mean()))
     rows = np.array(rows)
     return rows.mean(axis=0), rows[:, 0].std(ddof=1) / np.sqrt(len(rows))
 

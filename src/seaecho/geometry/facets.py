@@ -72,6 +72,8 @@ class Facets:
         Illuminated by the transmitter / visible from the receiver, in [0, 1] [-].
     visibility : (N,)
         Lit and seen (jointly) [-]: the weight of the facet's echo.
+    extra : dict
+        Optional per-facet arrays (e.g. ``"subfacet_shadowing"``, eq T7).
     """
 
     mode: str

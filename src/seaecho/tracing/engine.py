@@ -178,10 +178,13 @@ class FacetEngine:
     @property
     def tracer(self):
         """The :class:`~seaecho.tracing.tracer.FacetTracer` (built on first use)."""
+        return self._get_tracer(None)
+
+    def _get_tracer(self, st):
         if self._tracer is None:
             from .tracer import FacetTracer
 
-            st = self.sea.state(0.0)
+            st = self.sea.state(0.0) if st is None else st
             self._tracer = FacetTracer(st.x, st.y, st.elevation, objects=self.objects,
                                        eps_r=self.eps_r, frequency_hz=self.frequency_hz,
                                        variant=self._variant)
@@ -220,7 +223,7 @@ class FacetEngine:
             return analytic_facets(st.x, st.y, st.elevation, st.slope_x, st.slope_y,
                                    st.velocity, tx, rx, shadowing=self.shadowing, time_s=t,
                                    frames=facet_frames_drjit)
-        tracer = self.tracer
+        tracer = self._get_tracer(st)
         if self.refresh_interval_s == 0.0:
             return tracer.facets(st.elevation, st.velocity, tx, rx, t=t)
         t_ref = reference_time(t, self.refresh_interval_s)
