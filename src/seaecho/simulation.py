@@ -22,7 +22,6 @@ an exception or an interrupt removes it (``seaecho.io.dataset.atomic_path``).
 from __future__ import annotations
 
 import contextlib
-import json
 import os
 import warnings
 from dataclasses import dataclass
@@ -233,6 +232,10 @@ class Simulation:
             coords.update(x_cell=("x_cell", self.sea.x[:-1] + 0.5 * dx, {"units": "m"}),
                           y_cell=("y_cell", self.sea.y[:-1] + 0.5 * dy, {"units": "m"}))
         coords["polarisation"] = ("polarisation", np.array(POLARISATIONS))
+        data["transmitted_pulse"] = (
+            ("pulse_sample",), radar.waveform.samples,
+            {"units": "1", "long_name": "transmitted pulse samples s[n] (unit amplitude), "
+             "the matched filter's reference"})
         attrs = scene_attrs(scene)
         attrs.update({
             "carrier_frequency_hz": radar.carrier,
@@ -241,8 +244,6 @@ class Simulation:
             "prf_hz": radar.prf,
             "transmit_power_w": radar.transmit_power,
             "window_t0_s": radar.window.t0,
-            "pulse_samples": json.dumps([radar.waveform.samples.real.tolist(),
-                                         radar.waveform.samples.imag.tolist()]),
             "waveform_bandwidth_hz": radar.waveform.bandwidth,
             "waveform_duration_s": radar.waveform.duration,
             "monostatic": int(radar.monostatic),
