@@ -33,7 +33,9 @@ def find_libllvm() -> str | None:
         for directory in _SEARCH_DIRS:
             candidates += glob.glob(os.path.join(directory, f"libLLVM-{version}.so*"))
             candidates += glob.glob(os.path.join(directory, f"libLLVM.so.{version}*"))
-            candidates += glob.glob(os.path.join(directory, f"llvm-{version}", "lib", "libLLVM*.so*"))
+            candidates += glob.glob(
+                os.path.join(directory, f"llvm-{version}", "lib", "libLLVM*.so*")
+            )
             candidates += glob.glob(os.path.join(directory, f"libLLVM-{version}.dylib"))
         candidates += glob.glob(f"/usr/lib/llvm-{version}/lib/libLLVM*.so*")
         if candidates:
