@@ -227,3 +227,31 @@ def test_alpha_equals_numerical_boundary_value_solution(eps, ti, ts, phi):
     ref = _first_order_bvp(ti, ts, phi, eps)
     np.testing.assert_allclose(spm_alpha(ti, ts, phi, eps), ref, atol=1e-12)
     np.testing.assert_allclose(spm_alpha(ti, ts, phi, np.conj(eps)), ref.conj(), atol=1e-12)
+
+
+@pytest.mark.parametrize("theta,delta,psi", [(0.6, 0.1, 0.2), (0.9, -0.15, 0.3),
+                                             (0.4, 0.0, -0.25), (1.2, 0.2, 0.1)])
+def test_tilted_facet_backscatter_equals_valenzuela_closed_form(theta, delta, psi):
+    # Backscatter from a slightly rough plane tilted by delta in the plane of incidence
+    # and psi across it (Valenzuela 1968, Radio Science 3(11); restated in Valenzuela
+    # 1978 and Plant 1990): with cos(ti) = cos(theta + delta) cos(psi),
+    #   S_HH ~ (sin(theta+delta) cos(psi) / sin ti)^2 g_HH(ti) + (sin psi / sin ti)^2 g_VV(ti)
+    #   S_VV ~ (sin(theta+delta) cos(psi) / sin ti)^2 g_VV(ti) + (sin psi / sin ti)^2 g_HH(ti)
+    #   S_HV ~ sin(theta+delta) cos(psi) sin(psi) / sin^2 ti (g_VV - g_HH)
+    # times 4 sqrt(pi) k^2 cos^2 ti. This checks the local angles, the tilt rotation
+    # (eq F4) and the relative signs of alpha_hh, alpha_vv (tilt-induced cross-pol).
+    eps = EPS_SEA
+    n_i = np.array([np.sin(theta), 0.0, -np.cos(theta)])
+    normal = np.array([np.sin(delta) * np.cos(psi), -np.sin(psi),
+                       np.cos(delta) * np.cos(psi)])
+    b, _ = spm_matrix(n_i, -n_i, K, eps, normal)
+    ci = np.cos(theta + delta) * np.cos(psi)
+    si = np.sqrt(1 - ci**2)
+    root = np.sqrt(eps - si**2)
+    g_hh = (eps - 1) / (ci + root) ** 2
+    g_vv = (eps - 1) * ((eps - 1) * si**2 + eps) / (eps * ci + root) ** 2
+    a, c = (np.sin(theta + delta) * np.cos(psi) / si) ** 2, (np.sin(psi) / si) ** 2
+    x = np.sin(theta + delta) * np.cos(psi) * np.sin(psi) / si**2 * (g_vv - g_hh)
+    ref = 16 * np.pi * K**4 * ci**4 * np.abs(
+        np.array([a * g_hh + c * g_vv, x, x, a * g_vv + c * g_hh])) ** 2
+    np.testing.assert_allclose(np.abs(b.reshape(4)) ** 2, ref, rtol=1e-10)
