@@ -134,3 +134,19 @@ def test_perfect_conductor_matrix_is_the_mirror_law(ti, pi_, ts, ps):
         e_r = 2 * np.dot(nsp, p) * nsp - p
         np.testing.assert_allclose(f[:, col], [np.dot(h_s, e_r), np.dot(v_s, e_r)],
                                    atol=1e-6)
+
+
+def test_cox_munk_most_probable_slope_ascends_downwind():
+    # Cox & Munk (1954), abstract: "the most probable slope at high winds is not zero but
+    # a few degrees, with the azimuth of ascent pointing downwind". With z_u = dz/du
+    # (u downwind) the mode of the density along the wind must be a positive slope of a
+    # few degrees (2.3 deg at 14 m/s), and the crosswind section is symmetric.
+    p = cox_munk_parameters(14.0)
+    z = np.linspace(-0.5, 0.5, 100_001)
+    mode = z[np.argmax(cox_munk_pdf(z, 0.0 * z, p))]
+    assert 1.0 < np.degrees(np.arctan(mode)) < 5.0
+    np.testing.assert_allclose(cox_munk_pdf(0.0 * z, z, p), cox_munk_pdf(0.0 * z, -z, p))
+    # A weak wind is nearly Gaussian: mode within 0.3 deg of zero.
+    p1 = cox_munk_parameters(1.0)
+    mode1 = z[np.argmax(cox_munk_pdf(z, 0.0 * z, p1))]
+    assert abs(np.degrees(np.arctan(mode1))) < 0.3
