@@ -3,7 +3,7 @@
 A facet is *lit* when it faces the transmitter (``-n_i . N > 0``) and the segment from
 its centroid to the transmitter hits neither the sea nor any object; *seen* likewise for
 the receiver (``n_s . N > 0``). The segments start ``eps`` above the centroid along the
-normal, ``eps = max(1e-3 * cell size, 8 float32 ulps of the largest coordinate)``, so that
+normal, ``eps = max(1e-3 * cell size, 8 float32 ulps of the largest facet coordinate)``, so that
 a ray does not hit its own triangle in float32. Everything else (ranges, directions,
 angles, bases) is float64, computed by the Dr.Jit kernel
 :func:`seaecho.tracing.kernels.facet_frames_drjit` (identical to the numpy
@@ -101,7 +101,8 @@ class FacetTracer:
         idx = None if mask is None else np.flatnonzero(mask)
         c = centroid if idx is None else centroid[idx]
         nrm = normal if idx is None else normal[idx]
-        scale = max(float(np.max(np.abs(c))) if c.size else 0.0, float(np.max(np.abs(p))))
+        # float32 resolution at the ray origins (the facets), not at the far end
+        scale = float(np.max(np.abs(c))) if c.size else 0.0
         eps = max(1e-3 * self._cell, 8.0 * np.finfo(np.float32).eps * scale)
         origin = c + eps * nrm
         d = p - origin
