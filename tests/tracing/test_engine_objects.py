@@ -203,3 +203,16 @@ def test_subfacet_shadowing_from_scene_lowers_visibility():
     assert np.all((s >= 0) & (s <= 1)) and s.mean() < 1
     np.testing.assert_allclose(f_on.visibility, f_off.visibility * s)
     np.testing.assert_array_equal(f_on.lit, f_off.lit)
+
+
+def test_held_surface_does_not_rebuild_the_bvh():
+    from seaecho.tracing.tracer import FacetTracer
+
+    z = MovingSinusoidSea().state(0.0).elevation
+    tr = FacetTracer(X, X, z)
+    assert tr.set_surface(z.copy()) is False  # same heights: no rebuild
+    assert tr.set_surface(1.5 * z) is True
+    # the BVH follows: same visibility as a tracer built on the new surface
+    f = tr.facets(1.5 * z, None, TX)
+    np.testing.assert_array_equal(f.lit, FacetTracer(X, X, 1.5 * z).facets(None, None, TX).lit)
+    assert not np.array_equal(f.lit, tr.facets(z, None, TX).lit)

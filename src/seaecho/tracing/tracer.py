@@ -70,10 +70,18 @@ class FacetTracer:
         out += [s.mi_scene for s in (self.static_objects, self.moving_objects) if s is not None]
         return out
 
-    def set_surface(self, elevation: np.ndarray) -> None:
-        """New sea elevation (ny, nx) [m]: vertex update and BVH rebuild of the sea scene."""
-        self.sea.update(elevation)
-        self._elevation = np.array(elevation, dtype=np.float64)
+    def set_surface(self, elevation: np.ndarray) -> bool:
+        """New sea elevation (ny, nx) [m]: vertex update and BVH rebuild of the sea scene.
+
+        Returns False (and rebuilds nothing) when the elevation equals the current one, as
+        when the surface is held between pulses (paper section V-B).
+        """
+        z = np.asarray(elevation, dtype=np.float64)
+        if z is self._elevation or np.array_equal(z, self._elevation):
+            return False
+        self.sea.update(z)
+        self._elevation = np.array(z)
+        return True
 
     def set_time(self, t: float) -> None:
         """Move the moving objects to their positions at time ``t`` [s]."""
