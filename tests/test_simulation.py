@@ -125,8 +125,8 @@ def _expected_clutter_energy(sim, pulse):
     f = sim.engine.facets(geo.time, state=st)
     un = sim.unresolved
     sig = facet_sigma(f.n_i, f.n_s, f.normal, sim.k, sim.eps_r,
-                      sim.sea.spectrum.height_spectrum, un.mss_upwind, un.mss_crosswind,
-                      sim.wind_direction)
+                      sim.bragg_spectrum, un.mss_upwind, un.mss_crosswind,
+                      sim.wind_direction, backend="numpy")
     c = f.centroid
     r_t = np.linalg.norm(c - geo.tx.position, axis=-1)
     r_r = np.linalg.norm(c - geo.rx.position, axis=-1)

@@ -102,6 +102,13 @@ class Simulation:
         self.unresolved = unresolved_statistics(self.sea.spectrum, lx / nx, ly / ny,
                                                 self.k / 3.0)
         self.wind_direction = np.deg2rad(scene.sea.wind_direction_deg)
+        # Bragg roughness: the height spectrum of the waves the grid does not resolve,
+        # tabulated once (it enables the scattering stage's Dr.Jit kernel)
+        from .scattering.spectrum_table import BraggSpectrumTable
+
+        self.bragg_spectrum = BraggSpectrumTable(self.sea.spectrum.height_spectrum,
+                                                 k_min=self.unresolved.k_cut,
+                                                 k_max=20.0 * self.k)
         # Validity of the Bragg part, checked once here rather than at every pulse
         from .scattering.twoscale import check_spm_validity
 
@@ -145,16 +152,19 @@ class Simulation:
         # (visibility may change from pulse to pulse within a block)
         terms = facet_terms(
             facets.n_i, facets.n_s, facets.normal, self.k, self.eps_r,
-            self.sea.spectrum.height_spectrum, un.mss_upwind, un.mss_crosswind,
+            self.bragg_spectrum, un.mss_upwind, un.mss_crosswind,
             self.wind_direction, wake_damping=damping, local=facets,
         )
         block = pulse // self.block
         rng = generator(self.scene.run.seed, "speckle", block)
         # Eq P4 of scattering.facet: |a|^2 is the facet's RCS [m^2]; visibility weights it
         amp = speckle_amplitudes(terms, facets.area * vis, rng)
-        idx = np.flatnonzero(vis > 0)
-        echo = self.radar.scatterer_echo(geo, facets.centroid[idx], facets.velocity[idx],
-                                         amp[idx].reshape(-1, 2, 2))
+        visible = vis > 0
+        if visible.all():  # the usual case: no copies
+            pos, vel = facets.centroid, facets.velocity
+        else:
+            pos, vel, amp = facets.centroid[visible], facets.velocity[visible], amp[visible]
+        echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2))
         sig = terms.sigma() * vis[:, None] if sigma else None
         return SeaEcho(echo, sig, facets)
 

@@ -51,10 +51,12 @@ def test_drjit_kernel_matches_numpy(tx_ant, rx_ant, channels, roll):
     s = rng.normal(size=(k, 2, 2)) + 1j * rng.normal(size=(k, 2, 2))
     for pulse in (0, 7):
         geo = fast.geometry(pulse)
-        a = fast.scatterer_echo(geo, p, v, s)
+        a = fast.scatterer_echo(geo, p, v, s, directions=True)
         b = ref.scatterer_echo(geo, p, v, s)
         np.testing.assert_allclose(a.tau, b.tau, rtol=1e-14)
         np.testing.assert_allclose(a.r_t, b.r_t, rtol=1e-13)
+        np.testing.assert_allclose(a.n_i, b.n_i, atol=1e-13)
+        np.testing.assert_allclose(a.n_s, b.n_s, atol=1e-13)
         np.testing.assert_allclose(a.g_t, b.g_t, rtol=1e-9, atol=1e-12)
         np.testing.assert_allclose(a.g_r, b.g_r, rtol=1e-9, atol=1e-12)
         scale = np.abs(b.amplitudes).max()

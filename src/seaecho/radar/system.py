@@ -95,7 +95,7 @@ class ScattererEcho:
     amplitudes : (C, K) complex amplitude per channel [sqrt(W)], carrier phase included
     r_t, r_r : (K,) ranges [m]
     g_t, g_r : (K,) antenna power gains [-]
-    n_i, n_s : (K, 3) unit propagation directions [-]
+    n_i, n_s : (K, 3) unit propagation directions [-], or None when not asked for
     """
 
     tau: NDArray[np.float64]
@@ -104,8 +104,8 @@ class ScattererEcho:
     r_r: NDArray[np.float64]
     g_t: NDArray[np.float64]
     g_r: NDArray[np.float64]
-    n_i: NDArray[np.float64]
-    n_s: NDArray[np.float64]
+    n_i: NDArray[np.float64] | None
+    n_s: NDArray[np.float64] | None
 
 
 def canonical_channels(channels, rx_ports: tuple[str, str], tx_ports: tuple[str, str]
@@ -238,7 +238,8 @@ class RadarSystem:
 
     # ------------------------------------------------------------------ scatterers
     def scatterer_echo(self, geometry: PulseGeometry, positions: ArrayLike,
-                       velocities: ArrayLike, s: ArrayLike) -> ScattererEcho:
+                       velocities: ArrayLike, s: ArrayLike, directions: bool = False
+                       ) -> ScattererEcho:
         """Delays and per-channel amplitudes of scatterers, eqs (R1) and (R3).
 
         Runs the fused Dr.Jit kernel (``seaecho.radar.kernels``) when ``self.backend`` is
@@ -256,6 +257,9 @@ class RadarSystem:
         s : array_like (K, 2, 2) complex
             Scattering amplitudes [m] in (h, v) order on the world FSA bases of n_i and
             n_s (``seaecho.scattering.frames.polarisation_basis`` with normal +z).
+        directions : bool
+            Also return the unit directions n_i, n_s (the Dr.Jit path leaves them None
+            otherwise, to save memory traffic; the numpy path always returns them).
 
         Returns
         -------
@@ -268,9 +272,9 @@ class RadarSystem:
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
         s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
-        r = scatterer_echo_drjit(self, geometry, p, v, s)
+        r = scatterer_echo_drjit(self, geometry, p, v, s, directions=directions)
         return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
-                             r["g_r"], r["n_i"], r["n_s"])
+                             r["g_r"], r.get("n_i"), r.get("n_s"))
 
     def scatterer_echo_numpy(self, geometry: PulseGeometry, positions: ArrayLike,
                              velocities: ArrayLike, s: ArrayLike) -> ScattererEcho:
