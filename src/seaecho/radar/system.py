@@ -334,13 +334,17 @@ class RadarSystem:
         taus, amps = [], []
         for e in echoes:  # a handful of scatterer sets, each one vectorised
             keep = self.window.keep(e.tau, self.waveform.n_samples)
-            taus.append(e.tau[keep])
-            amps.append(e.amplitudes[:, keep])
+            if keep.all():  # no copies
+                taus.append(e.tau)
+                amps.append(e.amplitudes)
+            else:
+                taus.append(e.tau[keep])
+                amps.append(e.amplitudes[:, keep])
         if taus:
-            tau = np.concatenate(taus)
+            tau = taus[0] if len(taus) == 1 else np.concatenate(taus)
             if tau.size:
-                out += accumulate(tau, np.concatenate(amps, axis=1), self._spectrum,
-                                  self.window)
+                amp = amps[0] if len(amps) == 1 else np.concatenate(amps, axis=1)
+                out += accumulate(tau, amp, self._spectrum, self.window)
         if self.config.thermal_noise if noise is None else noise:
             out += thermal_noise(out.shape, self.noise_power,
                                  generator(self.seed, "noise", pulse))
