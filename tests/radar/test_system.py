@@ -177,3 +177,33 @@ def test_time_of_flight_closed_form():
 def test_bad_channel_names_rejected():
     with pytest.raises(ValueError, match="channel"):
         RadarSystem(_scene([{"position_m": (0, 0, 0), "rcs_m2": 1.0}], channels=["HR"]))
+
+
+def test_circular_ports_on_a_monostatic_sphere():
+    # A sphere in backscatter is s_hh = -s_vv in the FSA bases (h_s = -h_i, v_s = v_i)
+    # and reverses the handedness of a circular wave: same-sense channels (RR, LL) see
+    # nothing, opposite-sense ones (RL, LR) the whole RCS (Ulaby & Elachi, Radar
+    # Polarimetry for Geoscience Applications, 1990, ch. 1).
+    ant = {**RECT_T, "basis": "circular"}
+    sc = _scene([{"position_m": (0.0, 0.0, 0.0), "s_hh": (1.0, 0.0), "s_vv": (-1.0, 0.0)}],
+                tx={"position_m": (-500, 0, 300), "antenna": ant}, rx=False,
+                channels=["RR", "RL", "LR", "LL"])
+    radar = RadarSystem(sc)
+    a = np.abs(radar.target_echo(radar.geometry(0)).amplitudes[:, 0])
+    assert a[0] < 1e-12 * a[1] and a[3] < 1e-12 * a[1]
+    assert a[1] == pytest.approx(a[2], rel=1e-12)
+
+
+def test_cross_polar_isolation_two_way():
+    # Ports with isolation X dB: an H-only radar sees a V-only scatterer through the
+    # leakage of both antennas, x^2 in amplitude, i.e. -2X dB in power (to first order)
+    x_db = 30.0
+    ant_t = {**RECT_T, "cross_polar_isolation_db": x_db}
+    ant_r = {**RECT_R, "cross_polar_isolation_db": x_db}
+    sc = _scene([{"position_m": (0.0, 0.0, 0.0), "s_vv": (1.0, 0.0)}],
+                tx={"position_m": (-500, 0, 300), "antenna": ant_t},
+                rx={"position_m": (200, 100, 80), "antenna": ant_r}, channels=["HH", "VV"])
+    radar = RadarSystem(sc)
+    a = np.abs(radar.target_echo(radar.geometry(0)).amplitudes[:, 0])
+    x2 = 10 ** (-x_db / 10)
+    assert 20 * np.log10(a[0] / a[1]) == pytest.approx(20 * np.log10(x2), abs=0.01)
