@@ -207,3 +207,22 @@ def test_cross_polar_isolation_two_way():
     a = np.abs(radar.target_echo(radar.geometry(0)).amplitudes[:, 0])
     x2 = 10 ** (-x_db / 10)
     assert 20 * np.log10(a[0] / a[1]) == pytest.approx(20 * np.log10(x2), abs=0.01)
+
+
+def test_true_track_drives_the_echo():
+    # With a Gauss-Markov perturbation the echo's range is that of the true (perturbed)
+    # transmitter, not of the nominal one
+    tx = {"position_m": (-500, 0, 300), "antenna": RECT_T,
+          "perturbation": {"position_sigma_m": (2.0, 2.0, 2.0), "position_tau_s": 1.0,
+                           "attitude_sigma_deg": (0.5, 0.5, 0.5)}}
+    sc = _scene([{"position_m": (0.0, 0.0, 0.0), "rcs_m2": 1.0}], tx=tx)
+    radar = RadarSystem(sc)
+    geo = radar.geometry(2)
+    echo = radar.target_echo(geo)
+    true = radar.tx.state(geo.time).position
+    nominal = radar.tx.nominal_state(geo.time).position
+    assert np.linalg.norm(true - nominal) > 0.01
+    assert echo.r_t[0] == pytest.approx(np.linalg.norm(true), rel=1e-12)
+    # the attitude error moves the (platform-fixed) beam: the gain is not the nominal one
+    axes_nominal = radar.tx_pointing.axes(radar.tx.nominal_state(geo.time))
+    assert not np.allclose(geo.tx_axes, axes_nominal)
