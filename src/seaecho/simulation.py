@@ -78,6 +78,10 @@ class Simulation:
         self.sea = None
         self.engine = None
         self._state_cache: tuple[float, object] | None = None
+        # Per-sea-state quantities, computed once per block of held pulses and reused by
+        # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
+        # depends only on (scene, pulse): the cache holds what the block index determines.
+        self._block_cache: tuple[int, dict] | None = None
         if self.config.sea_clutter:
             self._init_sea(base_dir)
 
@@ -91,6 +95,8 @@ class Simulation:
         scene = self.scene
         self.sea = Sea.from_scene(scene)
         self.engine = FacetEngine.from_scene(scene, base_dir=base_dir, sea=self.sea)
+        # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
+        self.engine.surface_state = self.surface_state_at
         self.k = 2.0 * np.pi / self.radar.wavelength
         self.eps_r = complex(sea_water_permittivity(self.radar.carrier,
                                                     scene.sea.temperature_c,
@@ -125,6 +131,30 @@ class Simulation:
             self._state_cache = (t, self.sea.state(t))
         return self._state_cache[1]
 
+    def surface_state_at(self, t: float):
+        """Sea state held at time ``t`` [s]: that of the pulse emitted at or before t
+        (the first pulse before the start, the last after the end)."""
+        p = int(np.floor((t - self.radar.start_time) * self.radar.prf + 1e-9))
+        return self.surface_state(min(max(p, 0), self.radar.n_pulses - 1))
+
+    def _block_quantities(self, pulse: int, state, n_facets: int) -> dict:
+        """Wake damping per facet and speckle draws of ``pulse``'s block (memoised).
+
+        The speckle draws come from the ``"speckle"`` stream of the block index, one pair
+        (g_K, g_B) per facet, so that facet j gets the same draw at every pulse of its
+        block whatever order the pulses are computed in.
+        """
+        from .geometry.mesh import to_facets
+        from .scattering.facet import speckle_draws
+
+        block = pulse // self.block
+        if self._block_cache is None or self._block_cache[0] != block:
+            rng = generator(self.scene.run.seed, "speckle", block)
+            q = {"damping": to_facets(state.wake_mask).reshape(-1),
+                 "draws": speckle_draws(n_facets, rng)}
+            self._block_cache = (block, q)
+        return self._block_cache[1]
+
     def sea_echo(self, pulse: int, geometry=None, sigma: bool = False) -> SeaEcho:
         """Echo of the sea facets for one pulse.
 
@@ -139,14 +169,14 @@ class Simulation:
         """
         if self.sea is None:
             raise ValueError("sea clutter is off in this scene ([radar] sea_clutter)")
-        from .geometry.mesh import to_facets
         from .scattering.facet import facet_terms, speckle_amplitudes
 
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility
-        damping = to_facets(st.wake_mask).reshape(-1)
+        held = self._block_quantities(pulse, st, vis.size)
+        damping = held["damping"]
         un = self.unresolved
         # All facets, so that facet j always gets the j-th speckle draw of its block
         # (visibility may change from pulse to pulse within a block)
@@ -155,10 +185,9 @@ class Simulation:
             self.bragg_spectrum, un.mss_upwind, un.mss_crosswind,
             self.wind_direction, wake_damping=damping, local=facets,
         )
-        block = pulse // self.block
-        rng = generator(self.scene.run.seed, "speckle", block)
-        # Eq P4 of scattering.facet: |a|^2 is the facet's RCS [m^2]; visibility weights it
-        amp = speckle_amplitudes(terms, facets.area * vis, rng)
+        # Eq P4 of scattering.facet: |a|^2 is the facet's RCS [m^2]; visibility weights it.
+        # The draws are the block's (drawn once per held surface)
+        amp = speckle_amplitudes(terms, facets.area * vis, draws=held["draws"])
         visible = vis > 0
         if visible.all():  # the usual case: no copies
             pos, vel = facets.centroid, facets.velocity
@@ -259,6 +288,9 @@ class Simulation:
             "monostatic": int(radar.monostatic),
             "sea_clutter": int(self.sea is not None),
             "sea_update_pulses": self.block,
+            "sea_update_interval_s": self.block / radar.prf,
+            "tracing_mode": scene.tracing.mode,
+            "tracing_refresh_interval_s": scene.tracing.refresh_interval_s,
             "sigma_map_pulse": self.config.sigma_map_pulse,
             "range_weighting": self.config.range_weighting,
             "raw_units": "sqrt(W): |raw|^2 is the received power [W]",

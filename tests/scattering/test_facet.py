@@ -17,6 +17,7 @@ from seaecho.scattering.facet import (
     facet_terms,
     hhvv_coherence,
     speckle_amplitudes,
+    speckle_draws,
 )
 from seaecho.scattering.kirchhoff import kirchhoff_sigma
 from seaecho.scattering.spm import spm_sigma
@@ -198,3 +199,26 @@ def test_accepts_the_geometry_stage_facets():
     amp = facet_amplitudes(fac.n_i, fac.n_s, fac.normal, fac.area, K, EPS, gaussian_spectrum,
                            0.01, 0.005, np.random.default_rng(1), local=fac)
     assert amp.shape == (fac.n_facets, 4)
+
+
+def test_speckle_draws_reused_give_the_plain_eq_p4_bytes():
+    # Precomputed draws (held sea: drawn once per sea state) give the same bytes as drawing
+    # from the same generator, and both equal eq P4 written out plainly.
+    rng = np.random.default_rng(3)
+    n = 1000
+    terms = FacetTerms(specular=rng.normal(size=(n, 4)) + 1j * rng.normal(size=(n, 4)),
+                       bragg=rng.normal(size=(n, 4)) + 1j * rng.normal(size=(n, 4)),
+                       weight=rng.uniform(size=(n, 4)))
+    area = rng.uniform(0.1, 2.0, n)
+    a = speckle_amplitudes(terms, area, np.random.default_rng(11))
+    g_k, g_b = speckle_draws(n, np.random.default_rng(11))
+    b = speckle_amplitudes(terms, area, draws=(g_k, g_b))
+    assert a.tobytes() == b.tobytes()
+    plain = np.sqrt(area)[:, None] * (np.sqrt(terms.weight) * terms.specular * g_k[:, None]
+                                      + np.sqrt(1.0 - terms.weight) * terms.bragg
+                                      * g_b[:, None])
+    assert a.tobytes() == plain.tobytes()
+    with pytest.raises(ValueError, match="draws of shape"):
+        speckle_amplitudes(terms, area, draws=(g_k[:-1], g_b[:-1]))
+    with pytest.raises(ValueError, match="rng or draws"):
+        speckle_amplitudes(terms, area)

@@ -57,10 +57,22 @@ def _delay(dr, d, v):
     return (dv + dr.sqrt(dv * dv + a * _dot(d, d))) / a
 
 
+def _opaque3(dr, Array3f64, a):
+    """A constant 3-vector as opaque Dr.Jit scalars: kernel parameters, not literals.
+
+    Literals are baked into the kernel's code, so a per-pulse value (platform position,
+    antenna axes) would change the kernel's hash and recompile it at every pulse (about
+    0.13 s of LLVM compilation here); opaque values keep one compiled kernel for a run.
+    """
+    from drjit.llvm import Float64
+
+    return Array3f64(*(dr.opaque(Float64, float(c)) for c in a))
+
+
 def _basis(dr, Array3f64, n, up):
     """Eq (A2) / eq F1 basis (h, v) of direction n about axis `up` (a 3-tuple), with the
     fallback of ``antennas.wave_basis`` where n is parallel to up."""
-    u = Array3f64(*(float(c) for c in up))
+    u = _opaque3(dr, Array3f64, up)
     h = dr.cross(u, n)
     norm = dr.norm(h)
     upv = np.asarray(up, dtype=float)
@@ -70,8 +82,8 @@ def _basis(dr, Array3f64, n, up):
     h_ref = np.cross(upv, ref)
     h_ref = h_ref / np.linalg.norm(h_ref)
     degenerate = norm < _DEGENERATE
-    h = Array3f64(*(dr.select(degenerate, float(h_ref[k]), h[k] / dr.select(degenerate, 1.0,
-                                                                               norm))
+    h_ref = _opaque3(dr, Array3f64, h_ref)
+    h = Array3f64(*(dr.select(degenerate, h_ref[k], h[k] / dr.select(degenerate, 1.0, norm))
                     for k in range(3)))
     return h, dr.cross(h, n)
 
@@ -149,8 +161,8 @@ def scatterer_echo_drjit(radar, geometry, p: NDArray, v: NDArray, s: NDArray,
     dr, Float64, Array3f64 = _modules()
     keep = []  # numpy buffers aliased by Dr.Jit: alive until evaluation
 
-    def _vec(a):
-        return Array3f64(*(float(c) for c in a))
+    def _vec(a):  # per-pulse constants: opaque, one compiled kernel per run
+        return _opaque3(dr, Array3f64, a)
 
     def arr(a):
         a = np.ascontiguousarray(a, dtype=np.float64)

@@ -358,20 +358,36 @@ def facet_sigma(
                        wind_direction, **kwargs).sigma()
 
 
+def speckle_draws(n: int, rng: np.random.Generator) -> tuple[NDArray, NDArray]:
+    """The circular complex Gaussians ``g_K, g_B`` (unit variance) of eq P4, shape (n,) each.
+
+    ``rng.standard_normal((n, 4))`` once, scaled by sqrt(1/2): columns Re g_K, Im g_K,
+    Re g_B, Im g_B. Draw them once per sea state and pass them to
+    :func:`speckle_amplitudes` (``draws=``) to reuse them while the surface is held.
+    """
+    g = rng.standard_normal((n, 4)) * np.sqrt(0.5)
+    return g[:, 0] + 1j * g[:, 1], g[:, 2] + 1j * g[:, 3]
+
+
 def speckle_amplitudes(terms: FacetTerms, area: ArrayLike,
-                       rng: np.random.Generator) -> NDArray:
+                       rng: np.random.Generator | None = None, *,
+                       draws: tuple[NDArray, NDArray] | None = None) -> NDArray:
     """Eq P4: speckled complex amplitudes ``a_mn`` [m] of facets, shape (N, 4).
 
     Draws two circular complex Gaussians (unit variance) per facet, ``g_K`` then
-    ``g_B``, from ``rng`` (``standard_normal((N, 4))`` once: columns are Re g_K, Im g_K,
-    Re g_B, Im g_B), so a given generator state gives the same amplitudes.
+    ``g_B``, from ``rng`` (:func:`speckle_draws`: ``standard_normal((N, 4))`` once), so a
+    given generator state gives the same amplitudes; or takes them from ``draws``.
 
     Parameters
     ----------
     terms : FacetTerms
     area : array_like (N,)
         Facet areas [m^2].
-    rng : numpy.random.Generator
+    rng : numpy.random.Generator, optional
+        Source of the draws (needed when ``draws`` is not given).
+    draws : (g_K, g_B), optional
+        Precomputed :func:`speckle_draws` (N,) complex each; same result as drawing them
+        from the generator that made them.
 
     Returns
     -------
@@ -379,12 +395,26 @@ def speckle_amplitudes(terms: FacetTerms, area: ArrayLike,
         ``E|a_mn|^2 = sigma_mn * area`` [m^2]; covariance eq P5.
     """
     n = terms.weight.shape[0]
-    g = rng.standard_normal((n, 4)) * np.sqrt(0.5)
-    g_k = g[:, 0] + 1j * g[:, 1]
-    g_b = g[:, 2] + 1j * g[:, 3]
+    if draws is None:
+        if rng is None:
+            raise ValueError("speckle_amplitudes needs rng or draws")
+        draws = speckle_draws(n, rng)
+    g_k, g_b = draws
+    if g_k.shape != (n,) or g_b.shape != (n,):
+        raise ValueError(f"draws of shape {g_k.shape}, {g_b.shape}: need ({n},) each")
     sa = np.sqrt(np.asarray(area, dtype=float).reshape(-1))
-    return sa[:, None] * (np.sqrt(terms.weight) * terms.specular * g_k[:, None]
-                          + np.sqrt(1.0 - terms.weight) * terms.bragg * g_b[:, None])
+    # Eq P4, in place (same operations and results as the plain expression
+    # sa (sqrt(w) K g_K + sqrt(1 - w) B g_B), fewer temporaries)
+    w = terms.weight
+    out = np.sqrt(w) * terms.specular
+    out *= g_k[:, None]
+    wb = 1.0 - w
+    np.sqrt(wb, out=wb)
+    b = wb * terms.bragg
+    b *= g_b[:, None]
+    out += b
+    out *= sa[:, None]
+    return out
 
 
 def facet_amplitudes(
@@ -448,4 +478,4 @@ def hhvv_coherence(terms: FacetTerms) -> NDArray:
 
 
 __all__ = ["MODELS", "FacetTerms", "bragg_vectors", "facet_amplitudes", "facet_sigma",
-           "facet_terms", "hhvv_coherence", "speckle_amplitudes"]
+           "facet_terms", "hhvv_coherence", "speckle_amplitudes", "speckle_draws"]

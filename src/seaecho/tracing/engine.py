@@ -11,11 +11,12 @@ Ray tracing costs a BVH rebuild and two shadow rays per facet. With
 ``[tracing] refresh_interval_s = dt > 0`` the *occlusion* (whether the segment from a facet
 to the transmitter / receiver is blocked) is computed on the surface, objects and platform
 positions of ``t_ref = floor(t / dt) * dt`` and reused for every time in
-``[t_ref, t_ref + dt)``; the facing tests, normals, ranges, angles and velocities are
-always those of time ``t``. ``t_ref`` depends on ``t`` only, so a pulse's facets do not
-depend on which pulses were computed before (pulses may be computed in any order or in
-parallel, DESIGN.md). ``dt = 0`` traces every call. The analytic mode is cheap and always
-evaluates at ``t``.
+``[t_ref, t_ref + dt)`` (the surface of t_ref is ``FacetEngine.surface_state(t_ref)``:
+the sea at t_ref, or the surface a simulation holds at t_ref); the facing tests, normals,
+ranges, angles and velocities are always those of time ``t``. ``t_ref`` depends on ``t``
+only, so a pulse's facets do not depend on which pulses were computed before (pulses may
+be computed in any order or in parallel, DESIGN.md). ``dt = 0`` traces every call. The
+analytic mode is cheap and always evaluates at ``t``.
 """
 
 from __future__ import annotations
@@ -87,6 +88,10 @@ class FacetEngine:
         if refresh_interval_s < 0:
             raise ValueError(f"refresh_interval_s = {refresh_interval_s}: must be >= 0 [s]")
         self.sea = sea
+        #: ``t [s] -> SurfaceState``: the surface at a time, ``sea.state`` by default; a
+        #: simulation that holds its surface over blocks of pulses replaces it by its own
+        #: map, so that the occlusion of ``t_ref`` is traced on the surface held at t_ref.
+        self.surface_state = sea.state
         self.tx_position = tx_position
         self.rx_position = rx_position
         self.mode = mode
@@ -95,6 +100,7 @@ class FacetEngine:
         self.objects = list(objects)
         self._tracer = None
         self._cache: tuple[float, np.ndarray, np.ndarray] | None = None
+        self._geometry: tuple | None = None  # (state, (centroid, area, normal, velocity))
         self._variant = variant
         self.eps_r = eps_r
         self.frequency_hz = frequency_hz
@@ -190,6 +196,24 @@ class FacetEngine:
                                        variant=self._variant)
         return self._tracer
 
+    def geometry(self, state) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """Centroids [m], areas [m^2], unit normals [-] and velocities [m/s] of the facets of
+        a sea state (:func:`seaecho.geometry.mesh.facet_geometry`, ``to_facets``).
+
+        Memoised on the state object: a surface held over several pulses (the same
+        :class:`~seaecho.sea.SurfaceState`) is meshed once. The arrays are read-only, as
+        they are shared by the facets of those pulses.
+        """
+        if self._geometry is None or self._geometry[0] is not state:
+            centroid, area, normal = facet_geometry(grid_vertices(state.x, state.y,
+                                                                  state.elevation))
+            velocity = to_facets(np.asarray(state.velocity, dtype=np.float64))
+            arrays = (centroid, area, normal, velocity)
+            for a in arrays:
+                a.setflags(write=False)
+            self._geometry = (state, arrays)
+        return self._geometry[1]
+
     def facets(self, t: float, state=None) -> Facets:
         """Facets at time ``t`` [s] in the engine's mode.
 
@@ -225,26 +249,30 @@ class FacetEngine:
                                    frames=facet_frames_drjit)
         tracer = self._get_tracer(st)
         if self.refresh_interval_s == 0.0:
-            return tracer.facets(st.elevation, st.velocity, tx, rx, t=t)
+            return tracer.facets(st.elevation, st.velocity, tx, rx, t=t,
+                                 geometry=self.geometry(st))
         t_ref = reference_time(t, self.refresh_interval_s)
         if self._cache is None or self._cache[0] != t_ref:
-            st_ref = st if t_ref == t else self.sea.state(t_ref)
+            st_ref = st if t_ref == t else self.surface_state(t_ref)
             tx_ref, rx_ref = self.positions(t_ref)
             tracer.set_surface(st_ref.elevation)
             tracer.set_time(t_ref)
-            c_ref, _, n_ref = facet_geometry(grid_vertices(st_ref.x, st_ref.y,
-                                                           st_ref.elevation))
+            if st_ref is st:  # the usual held surface: meshed once
+                c_ref, _, n_ref, _ = self.geometry(st)
+            else:
+                c_ref, _, n_ref = facet_geometry(grid_vertices(st_ref.x, st_ref.y,
+                                                               st_ref.elevation))
             occ_tx = tracer.occluded(c_ref, n_ref, tx_ref)
             occ_rx = occ_tx if np.array_equal(tx_ref, rx_ref) else tracer.occluded(
                 c_ref, n_ref, rx_ref)
             self._cache = (t_ref, occ_tx, occ_rx)
         _, occ_tx, occ_rx = self._cache
-        centroid, area, normal = facet_geometry(grid_vertices(st.x, st.y, st.elevation))
+        centroid, area, normal, velocity = self.geometry(st)
         geo = facet_frames_drjit(centroid, normal, tx, rx)
         lit = (geo["theta_i"] < np.pi / 2) & ~occ_tx
         seen = (geo["theta_s"] < np.pi / 2) & ~occ_rx
         return Facets(mode="raytraced", time_s=float(t), visibility_time_s=float(t_ref),
                       grid_shape=(st.y.size - 1, st.x.size - 1, 2), centroid=centroid,
-                      area=area, normal=normal, velocity=to_facets(st.velocity),
+                      area=area, normal=normal, velocity=velocity,
                       lit=lit.astype(np.float64), seen=seen.astype(np.float64),
                       visibility=(lit & seen).astype(np.float64), **geo)

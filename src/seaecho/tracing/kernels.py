@@ -64,7 +64,9 @@ def facet_frames_drjit(centroid: np.ndarray, normal: np.ndarray, tx: np.ndarray,
     nn = vec(np.asarray(normal))
     tx = np.asarray(tx, dtype=np.float64).reshape(3)
     rx = np.asarray(rx, dtype=np.float64).reshape(3)
-    p_tx = Array3f64(*map(float, tx))
+    # Platform positions as opaque scalars (kernel parameters): literals would change the
+    # kernel's code, hence recompile it, at every pulse
+    p_tx = Array3f64(*(dr.opaque(Float64, float(v)) for v in tx))
     # (G1) ranges and unit directions, float64
     d = c - p_tx
     r_tx = dr.norm(d)
@@ -72,7 +74,7 @@ def facet_frames_drjit(centroid: np.ndarray, normal: np.ndarray, tx: np.ndarray,
     if np.array_equal(tx, rx):
         r_rx, n_s = r_tx, -n_i
     else:
-        d2 = Array3f64(*map(float, rx)) - c
+        d2 = Array3f64(*(dr.opaque(Float64, float(v)) for v in rx)) - c
         r_rx = dr.norm(d2)
         n_s = d2 / r_rx
 

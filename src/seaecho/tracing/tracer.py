@@ -125,7 +125,7 @@ class FacetTracer:
 
     def facets(self, elevation: np.ndarray | None, velocity: np.ndarray | None,
                tx: np.ndarray, rx: np.ndarray | None = None, *, t: float = 0.0,
-               update: bool = True) -> Facets:
+               update: bool = True, geometry: tuple | None = None) -> Facets:
         """Ray-traced facets of a surface seen from a transmitter and a receiver.
 
         Parameters
@@ -142,6 +142,10 @@ class FacetTracer:
             Time [s]: moving objects are placed at their time-``t`` positions.
         update : bool
             Push ``elevation`` to the sea scene (rebuild its BVH) before tracing.
+        geometry : (centroid, area, normal, facet_velocity), optional
+            The facets' geometry of ``elevation`` and their velocities, if already known
+            (:meth:`seaecho.tracing.engine.FacetEngine.geometry`: computed once per held
+            surface); ``velocity`` is then ignored.
 
         Returns
         -------
@@ -154,7 +158,12 @@ class FacetTracer:
             self.set_surface(elevation)
         self.set_time(t)
         z = self._elevation if elevation is None else np.asarray(elevation, dtype=np.float64)
-        centroid, area, normal = facet_geometry(grid_vertices(self.x, self.y, z))
+        if geometry is None:
+            centroid, area, normal = facet_geometry(grid_vertices(self.x, self.y, z))
+            vel = (np.zeros_like(centroid) if velocity is None
+                   else to_facets(np.asarray(velocity, dtype=np.float64)))
+        else:
+            centroid, area, normal, vel = geometry
         geo = facet_frames_drjit(centroid, normal, tx, rx)
         facing_tx = geo["theta_i"] < np.pi / 2
         facing_rx = geo["theta_s"] < np.pi / 2
@@ -163,8 +172,6 @@ class FacetTracer:
             seen = lit.copy()
         else:
             seen = facing_rx & ~self.occluded(centroid, normal, rx, mask=facing_rx)
-        vel = (np.zeros_like(centroid) if velocity is None
-               else to_facets(np.asarray(velocity, dtype=np.float64)))
         return Facets(mode="raytraced", time_s=float(t), visibility_time_s=float(t),
                       grid_shape=(self.y.size - 1, self.x.size - 1, 2), centroid=centroid,
                       area=area, normal=normal, velocity=vel, lit=lit.astype(np.float64),
