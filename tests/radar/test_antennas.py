@@ -118,27 +118,3 @@ def test_normalisation_depends_on_size_in_wavelengths_only():
     a, b = 0.18, 0.14
     base = aperture_radiated_power(a, b, LAM)
     assert aperture_radiated_power(2 * a, 2 * b, 2 * LAM) == pytest.approx(base, rel=1e-12)
-
-
-def test_sionna_registration_matches_numpy():
-    pytest.importorskip("sionna.rt")
-    from seaecho._llvm import configure_llvm
-
-    configure_llvm()
-    import mitsuba as mi
-
-    if mi.variant() is None:
-        mi.set_variant("llvm_ad_mono_polarized")
-    from sionna.rt.antenna_pattern import antenna_pattern_registry
-
-    from seaecho.radar.antennas import register_sionna_aperture
-
-    name = register_sionna_aperture(0.18, 0.14, LAM)
-    pattern = antenna_pattern_registry.get(name)(polarization="V")
-    theta = np.array([np.pi / 2, np.pi / 2 - 0.1, np.pi / 2, 1.3])
-    phi = np.array([0.0, 0.0, 0.15, -0.2])
-    c_theta, c_phi = pattern.patterns[0](mi.Float(theta), mi.Float(phi))
-    g_sionna = np.abs(np.array(c_theta.real)) ** 2 + np.abs(np.array(c_phi.real)) ** 2
-    d = np.stack([np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), np.cos(theta)], -1)
-    g_numpy = Antenna("rectangular", LAM, 0.18, 0.14).gain_local(d)
-    np.testing.assert_allclose(g_sionna, g_numpy, rtol=1e-4)  # float32 in Sionna

@@ -384,57 +384,6 @@ def project_ports(ports: NDArray[np.complex128], h: NDArray, v: NDArray
                      np.einsum("...pi,...i->...p", ports, v)], axis=-1)
 
 
-# ------------------------------------------------------------------- Sionna RT pattern
-def sionna_aperture_v_pattern(width: float, height: float, wavelength: float):
-    """A Dr.Jit-traceable vertically polarised pattern ``f(theta, phi) -> C_theta`` of eq (A1).
-
-    For ``sionna.rt.antenna_pattern.PolarizedAntennaPattern(v_pattern=...)``: Sionna's
-    antenna frame has its boresight on +x, theta from +z, phi from +x, which is the frame
-    of this module. The amplitude is sqrt(G), G normalised as eq (A1).
-    """
-    import drjit as dr  # local: only this helper needs Dr.Jit
-
-    scale = float(np.sqrt(4.0 * np.pi / aperture_radiated_power(width, height, wavelength)))
-    ka = float(np.pi * width / wavelength)
-    kb = float(np.pi * height / wavelength)
-
-    def sinc(x):
-        return dr.select(dr.abs(x) < 1e-6, 1.0, dr.sin(x) / dr.select(dr.abs(x) < 1e-6, 1.0, x))
-
-    def v_pattern(theta, phi):
-        import mitsuba as mi  # the variant is chosen by the caller (seaecho.tracing)
-
-        st, ct = dr.sin(theta), dr.cos(theta)
-        sp, cp = dr.sin(phi), dr.cos(phi)
-        cos_b = st * cp  # cosine from the boresight (+x)
-        # Eq (A1) in Sionna's angles: u = sin(theta) sin(phi), v = cos(theta)
-        amp = scale * 0.5 * (1.0 + cos_b) * sinc(ka * st * sp) * sinc(kb * ct)
-        return mi.Complex2f(dr.abs(amp), 0)
-
-    return v_pattern
-
-
-def register_sionna_aperture(width: float, height: float, wavelength: float,
-                             name: str | None = None) -> str:
-    """Register eq (A1) as a Sionna RT antenna pattern; returns its registered name.
-
-    Use the name as ``PlanarArray(pattern=name, polarization="VH", ...)``. This helper
-    imports ``sionna.rt`` lazily (the tracing stage is the only user).
-    """
-    from sionna.rt.antenna_pattern import PolarizedAntennaPattern, register_antenna_pattern
-
-    if name is None:
-        name = f"seaecho_rect_{width:g}x{height:g}m_{wavelength:g}m"
-    v_pattern = sionna_aperture_v_pattern(width, height, wavelength)
-
-    def factory(*, polarization: str, polarization_model: str = "tr38901_2"):
-        return PolarizedAntennaPattern(v_pattern=v_pattern, polarization=polarization,
-                                       polarization_model=polarization_model)
-
-    register_antenna_pattern(name, factory)
-    return name
-
-
 __all__ = [
     "Antenna",
     "antenna_axes",
@@ -444,7 +393,5 @@ __all__ = [
     "port_coefficients",
     "port_states",
     "project_ports",
-    "register_sionna_aperture",
-    "sionna_aperture_v_pattern",
     "wave_basis",
 ]
