@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..constants import C0
+from ..geometry.buffers import aligned
 
 _DEGENERATE = 1e-9
 
@@ -165,7 +166,7 @@ def scatterer_echo_drjit(radar, geometry, p: NDArray, v: NDArray, s: NDArray,
         return _opaque3(dr, Array3f64, a)
 
     def arr(a):
-        a = np.ascontiguousarray(a, dtype=np.float64)
+        a = aligned(a)  # 64-byte aligned: one compiled kernel (geometry.buffers)
         keep.append(a)
         return Float64(a)
 

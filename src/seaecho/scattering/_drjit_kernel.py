@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from .._llvm import configure_llvm
+from ..geometry.buffers import aligned
 
 configure_llvm()
 import drjit as dr  # noqa: E402
@@ -96,16 +97,23 @@ def facet_kernel(n_i, n_s, nn, damping, k, eps, mss_u, mss_c, wind, table, cox_m
     ``nn`` are (N, 3) numpy arrays, ``damping`` (N,) or None, ``table`` a
     BraggSpectrumTable, ``cox_munk`` CoxMunkParameters or None.
     """
-    ni = tuple(F(np.ascontiguousarray(n_i[:, j])) for j in range(3))
-    ns = tuple(F(np.ascontiguousarray(n_s[:, j])) for j in range(3))
-    nv = tuple(F(np.ascontiguousarray(nn[:, j])) for j in range(3))
+    keep = []  # input buffers (64-byte aligned: one compiled kernel, geometry.buffers)
+
+    def col(a):
+        a = aligned(a)
+        keep.append(a)
+        return F(a)
+
+    ni = tuple(col(n_i[:, j]) for j in range(3))
+    ns = tuple(col(n_s[:, j]) for j in range(3))
+    nv = tuple(col(nn[:, j]) for j in range(3))
     kk = dr.opaque(F, float(k))
     er = dr.opaque(F, float(np.real(eps)))
     ei = dr.opaque(F, float(np.imag(eps)))
     epsc = (er, ei)
-    mu = F(np.ascontiguousarray(np.broadcast_to(mss_u, (n_i.shape[0],)))) if np.ndim(
+    mu = col(np.broadcast_to(mss_u, (n_i.shape[0],))) if np.ndim(
         mss_u) else dr.opaque(F, float(mss_u))
-    mc = F(np.ascontiguousarray(np.broadcast_to(mss_c, (n_i.shape[0],)))) if np.ndim(
+    mc = col(np.broadcast_to(mss_c, (n_i.shape[0],))) if np.ndim(
         mss_c) else dr.opaque(F, float(mss_c))
     mu = dr.maximum(mu, 1e-12)
     mc = dr.maximum(mc, 1e-12)
@@ -185,7 +193,7 @@ def facet_kernel(n_i, n_s, nn, damping, k, eps, mss_u, mss_c, wind, table, cox_m
         w_b = table.lookup_drjit(qtx, qty)
         amp = (4.0 * math.sqrt(math.pi)) * kk * kk * ci_c * cs_c * dr.sqrt(w_b)
         if damping is not None:
-            amp = amp * dr.sqrt(dr.clip(1.0 - F(np.ascontiguousarray(damping)), 0.0, 1.0))
+            amp = amp * dr.sqrt(dr.clip(1.0 - col(damping), 0.0, 1.0))
         amp = dr.select(lit, amp, 0.0)
         out["bragg"] = [_creal(c, amp) for c in b]
 

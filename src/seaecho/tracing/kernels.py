@@ -13,6 +13,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..geometry.buffers import aligned
+
 __all__ = ["facet_frames_drjit"]
 
 #: Same threshold as seaecho.scattering.frames._DEGENERATE.
@@ -56,7 +58,8 @@ def facet_frames_drjit(centroid: np.ndarray, normal: np.ndarray, tx: np.ndarray,
     keep = []  # numpy buffers aliased by Dr.Jit: alive until evaluation
 
     def vec(a):
-        cols = [np.ascontiguousarray(a[:, k], dtype=np.float64) for k in range(3)]
+        # 64-byte aligned: one compiled kernel whatever numpy's allocator returns
+        cols = [aligned(a[:, k]) for k in range(3)]
         keep.extend(cols)
         return Array3f64(*(Float64(c) for c in cols))
 
