@@ -4,7 +4,10 @@
    scene), broken down by stage; best of ``--repeat`` runs.
 2. Echo accumulation: NUFFT (eq E2) against the paper's per-facet pulse write (eq E1,
    ``accumulate_pulse_write``) on the same facets, as a ratio.
-3. Peak memory (RSS) of a streamed run of 20 and of 200 pulses (``--memory-grid``):
+3. The SAR case: one monostatic quad-pol pulse of Simulation 2 (512 x 512 sea, ray traced,
+   sea held for all pulses) with the shadowing re-traced every pulse, every
+   ``--refresh`` seconds, and with a new sea every pulse; stage breakdown, best / mean.
+4. Peak memory (RSS) of a streamed run of 20 and of 200 pulses (``--memory-grid``):
    bounded memory means the two peaks are about equal.
 
 Timings on a shared machine are noisy: the load average is printed with them.
@@ -26,6 +29,7 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 SIM1 = ROOT / "scenes" / "paper_sim1_bistatic_64m.toml"
+SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
 
 
 def _best(fn, repeat):
@@ -133,6 +137,69 @@ def bench_accumulation(radar, echo, repeat: int) -> None:
     print(f"    relative difference (band-limited vs analytic pulse edges): {rel:.2e}")
 
 
+def bench_sar(repeat: int, refresh: float, update: int, label: str) -> None:
+    """Per-pulse time of Simulation 2 with a refresh interval and a sea-update block."""
+    from seaecho.config import load_scene
+    from seaecho.scattering.facet import facet_terms, speckle_amplitudes
+    from seaecho.simulation import Simulation
+
+    scene = load_scene(SIM2)
+    scene = scene.model_copy(update={
+        "tracing": scene.tracing.model_copy(update={"refresh_interval_s": refresh}),
+        "radar": scene.radar.model_copy(update={"sea_update_pulses": update})})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sim = Simulation(scene, base_dir=SIM2.parent)
+        first = 40
+        for p in (first, first + 1):  # JIT compilation, BVH, lazy imports: not timed
+            sim.compress(sim.pulse(p))
+        radar, un = sim.radar, sim.unresolved
+        names = ["platforms+pointing", "sea state (ocean+wake)", "facets (raytraced)",
+                 "scattering terms (Dr.Jit)", "speckle (eq P4)",
+                 "radar equation (Dr.Jit kernel)", "accumulation (NUFFT, 4 ch)",
+                 "range compression"]
+        table = {n: [] for n in names}
+        whole = []
+        for r in range(repeat):
+            p = first + 2 + 2 * r
+            clock = [time.perf_counter()]
+            geo = radar.geometry(p)
+            clock.append(time.perf_counter())
+            st = sim.surface_state(p)
+            clock.append(time.perf_counter())
+            f = sim.engine.facets(geo.time, state=st)
+            clock.append(time.perf_counter())
+            held = sim._block_quantities(p, st, f.visibility.size)
+            t = facet_terms(f.n_i, f.n_s, f.normal, sim.k, sim.eps_r, sim.bragg_spectrum,
+                            un.mss_upwind, un.mss_crosswind, sim.wind_direction,
+                            wake_damping=held["damping"], local=f)
+            clock.append(time.perf_counter())
+            amp = speckle_amplitudes(t, f.area * f.visibility, draws=held["draws"])
+            clock.append(time.perf_counter())
+            vis = f.visibility > 0
+            echo = radar.scatterer_echo(geo, f.centroid[vis], f.velocity[vis],
+                                        amp[vis].reshape(-1, 2, 2))
+            clock.append(time.perf_counter())
+            raw = radar.receive(p, [echo])
+            clock.append(time.perf_counter())
+            sim.compress(raw)
+            clock.append(time.perf_counter())
+            for n, a, b in zip(names, clock[:-1], clock[1:], strict=True):
+                table[n].append(b - a)
+            t0 = time.perf_counter()
+            sim.compress(sim.pulse(p + 1))  # end to end, as in a run
+            whole.append(time.perf_counter() - t0)
+    print(f"\n[3] Simulation 2 (SAR, monostatic quad-pol, 512 x 512, ray traced), {label}: "
+          f"refresh_interval_s = {refresh:g}, sea_update_pulses = {update}; {repeat} pulses, "
+          f"best / mean; load {os.getloadavg()[0]:.2f}")
+    for n in names:
+        v = np.array(table[n])
+        print(f"    {n:34s} {1e3 * v.min():8.1f} / {1e3 * v.mean():8.1f} ms")
+    w = np.array(whole)
+    print(f"    {'pulse + compression (end to end)':34s} {1e3 * w.min():8.1f} / "
+          f"{1e3 * w.mean():8.1f} ms")
+
+
 MEMORY_SCENE = """
 name = "bench-memory"
 [sea]
@@ -185,7 +252,7 @@ def _child_run(scene_path: str, out: str) -> None:
 
 
 def bench_memory(grid: int) -> None:
-    print(f"\n[3] peak RSS of a streamed run, {grid} x {grid} sea (analytic facets), "
+    print(f"\n[4] peak RSS of a streamed run, {grid} x {grid} sea (analytic facets), "
           f"quad-pol; load {os.getloadavg()[0]:.2f}")
     size = 64.0 * grid / 512
     with tempfile.TemporaryDirectory() as d:
@@ -206,7 +273,10 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--mode", default="raytraced", choices=["raytraced", "analytic"])
     ap.add_argument("--memory-grid", type=int, default=128)
+    ap.add_argument("--refresh", type=float, default=0.1,
+                    help="shadowing refresh interval of the SAR case [s]")
     ap.add_argument("--skip-pulse", action="store_true")
+    ap.add_argument("--skip-sar", action="store_true")
     ap.add_argument("--skip-memory", action="store_true")
     ap.add_argument("--child", nargs=2, help=argparse.SUPPRESS)
     args = ap.parse_args()
@@ -216,6 +286,10 @@ def main() -> None:
     print(f"bench_radar: {os.cpu_count()} CPUs")
     if not args.skip_pulse:
         bench_pulse(args.repeat, args.mode)
+    if not args.skip_sar:
+        bench_sar(args.repeat, 0.0, 160, "held sea, shadowing re-traced every pulse")
+        bench_sar(args.repeat, args.refresh, 160, "held sea, shadowing refreshed")
+        bench_sar(args.repeat, args.refresh, 1, "new sea every pulse")
     if not args.skip_memory:
         bench_memory(args.memory_grid)
 
