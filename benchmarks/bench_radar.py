@@ -140,7 +140,7 @@ def bench_accumulation(radar, echo, repeat: int) -> None:
 def bench_sar(repeat: int, refresh: float, update: int, label: str) -> None:
     """Per-pulse time of Simulation 2 with a refresh interval and a sea-update block."""
     from seaecho.config import load_scene
-    from seaecho.scattering.facet import facet_terms, speckle_amplitudes
+    from seaecho.scattering.facet import speckled_facet_amplitudes
     from seaecho.simulation import Simulation
 
     scene = load_scene(SIM2)
@@ -155,7 +155,7 @@ def bench_sar(repeat: int, refresh: float, update: int, label: str) -> None:
             sim.compress(sim.pulse(p))
         radar, un = sim.radar, sim.unresolved
         names = ["platforms+pointing", "sea state (ocean+wake)", "facets (raytraced)",
-                 "scattering terms (Dr.Jit)", "speckle (eq P4)",
+                 "speckle draws + wake (per sea)", "scattering P1-P4 (fused Dr.Jit)",
                  "radar equation (Dr.Jit kernel)", "accumulation (NUFFT, 4 ch)",
                  "range compression"]
         table = {n: [] for n in names}
@@ -170,11 +170,11 @@ def bench_sar(repeat: int, refresh: float, update: int, label: str) -> None:
             f = sim.engine.facets(geo.time, state=st)
             clock.append(time.perf_counter())
             held = sim._block_quantities(p, st, f.visibility.size)
-            t = facet_terms(f.n_i, f.n_s, f.normal, sim.k, sim.eps_r, sim.bragg_spectrum,
-                            un.mss_upwind, un.mss_crosswind, sim.wind_direction,
-                            wake_damping=held["damping"], local=f)
             clock.append(time.perf_counter())
-            amp = speckle_amplitudes(t, f.area * f.visibility, draws=held["draws"])
+            amp = speckled_facet_amplitudes(
+                f.n_i, f.n_s, f.normal, f.area * f.visibility, sim.k, sim.eps_r,
+                sim.bragg_spectrum, un.mss_upwind, un.mss_crosswind, sim.wind_direction,
+                draws=held["draws"], wake_damping=held["damping"], local=f)
             clock.append(time.perf_counter())
             vis = f.visibility > 0
             echo = radar.scatterer_echo(geo, f.centroid[vis], f.velocity[vis],

@@ -169,7 +169,7 @@ class Simulation:
         """
         if self.sea is None:
             raise ValueError("sea clutter is off in this scene ([radar] sea_clutter)")
-        from .scattering.facet import facet_terms, speckle_amplitudes
+        from .scattering.facet import facet_terms, speckled_facet_amplitudes
 
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
@@ -179,22 +179,25 @@ class Simulation:
         damping = held["damping"]
         un = self.unresolved
         # All facets, so that facet j always gets the j-th speckle draw of its block
-        # (visibility may change from pulse to pulse within a block)
-        terms = facet_terms(
-            facets.n_i, facets.n_s, facets.normal, self.k, self.eps_r,
-            self.bragg_spectrum, un.mss_upwind, un.mss_crosswind,
-            self.wind_direction, wake_damping=damping, local=facets,
-        )
-        # Eq P4 of scattering.facet: |a|^2 is the facet's RCS [m^2]; visibility weights it.
-        # The draws are the block's (drawn once per held surface)
-        amp = speckle_amplitudes(terms, facets.area * vis, draws=held["draws"])
+        # (visibility may change from pulse to pulse within a block). Eq P4 of
+        # scattering.facet: |a|^2 is the facet's RCS [m^2]; visibility weights it. The
+        # draws are the block's (drawn once per held surface); eqs P1-P4 run in one kernel
+        args = (facets.n_i, facets.n_s, facets.normal)
+        model = (self.k, self.eps_r, self.bragg_spectrum, un.mss_upwind, un.mss_crosswind,
+                 self.wind_direction)
+        amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,
+                                        draws=held["draws"], wake_damping=damping,
+                                        local=facets)
         visible = vis > 0
         if visible.all():  # the usual case: no copies
             pos, vel = facets.centroid, facets.velocity
         else:
             pos, vel, amp = facets.centroid[visible], facets.velocity[visible], amp[visible]
         echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2))
-        sig = terms.sigma() * vis[:, None] if sigma else None
+        sig = None
+        if sigma:
+            sig = facet_terms(*args, *model, wake_damping=damping,
+                              local=facets).sigma() * vis[:, None]
         return SeaEcho(echo, sig, facets)
 
     # ------------------------------------------------------------------- one pulse

@@ -90,12 +90,18 @@ def _global_basis(n):
     return h, _cross(h, n)
 
 
-def facet_kernel(n_i, n_s, nn, damping, k, eps, mss_u, mss_c, wind, table, cox_munk, model):
+def facet_kernel(n_i, n_s, nn, damping, k, eps, mss_u, mss_c, wind, table, cox_munk, model,
+                 speckle=None):
     """Evaluate eqs P1-P3 for all facets; returns numpy arrays (K (N,4), B (N,4), w (N,4)).
 
     Parameters mirror :func:`seaecho.scattering.facet.facet_terms`; ``n_i``, ``n_s``,
     ``nn`` are (N, 3) numpy arrays, ``damping`` (N,) or None, ``table`` a
     BraggSpectrumTable, ``cox_munk`` CoxMunkParameters or None.
+
+    With ``speckle = (g_K, g_B, area)`` ((N,) complex draws of eq P4 and (N,) areas [m^2])
+    the kernel goes on to eq P4 and returns only the speckled amplitudes a (N, 4) complex
+    [m]: K, B and w never leave the kernel (fewer passes over memory than
+    ``speckle_amplitudes`` on the returned terms; same values within rounding).
     """
     keep = []  # input buffers (64-byte aligned: one compiled kernel, geometry.buffers)
 
@@ -249,6 +255,29 @@ def facet_kernel(n_i, n_s, nn, damping, k, eps, mss_u, mss_c, wind, table, cox_m
         log_w = dr.minimum(math.log(math.pi) - 4.0 * dr.log(cn) + log_p, 700.0)
         sk = dr.select(lit & valid, dr.sqrt(gc) * dr.exp(0.5 * log_w), 0.0)
         out["specular"] = [_creal(c_, sk) for c_ in f]
+
+    if speckle is not None:
+        # Eq P4: a = sqrt(A) (sqrt(w) K g_K + sqrt(1 - w) B g_B), per channel
+        g_k, g_b, area = speckle
+        gk = (col(np.real(g_k)), col(np.imag(g_k)))
+        gb = (col(np.real(g_b)), col(np.imag(g_b)))
+        sa = dr.sqrt(col(area))
+        ws = (w1, w2, w2, w1)
+        amps = []
+        for j in range(4):
+            acc = None
+            for key, g, wj in (("specular", gk, ws[j]), ("bragg", gb, 1.0 - ws[j])):
+                if key not in out:  # kirchhoff / spm: that mechanism's weight is 0
+                    continue
+                t = _creal(_cmul(out[key][j], g), dr.sqrt(wj) * sa)
+                acc = t if acc is None else _cadd(acc, t)
+            amps.append(acc)
+        dr.eval(*[c_ for a in amps for c_ in a])
+        res = np.empty((n_i.shape[0], 4), dtype=complex)
+        for j, a in enumerate(amps):
+            res[:, j].real = a[0].numpy()
+            res[:, j].imag = a[1].numpy()
+        return res
 
     flat = [w1, w2]
     for key in ("specular", "bragg"):

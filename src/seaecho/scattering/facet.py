@@ -417,6 +417,65 @@ def speckle_amplitudes(terms: FacetTerms, area: ArrayLike,
     return out
 
 
+def speckled_facet_amplitudes(
+    n_i: ArrayLike,
+    n_s: ArrayLike,
+    normal: ArrayLike,
+    area: ArrayLike,
+    k: float,
+    eps_r: complex,
+    spectrum: HeightSpectrum,
+    mss_upwind: ArrayLike,
+    mss_crosswind: ArrayLike,
+    wind_direction: float = 0.0,
+    *,
+    draws: tuple[NDArray, NDArray],
+    model: str = "blend",
+    cox_munk: CoxMunkParameters | None = None,
+    wake_damping: ArrayLike | None = None,
+    local: Any = None,
+    backend: str = "auto",
+) -> NDArray:
+    """Eqs P1-P4 in one pass: speckled amplitudes ``a_mn`` [m] of facets, shape (N, 4).
+
+    ``speckle_amplitudes(facet_terms(...), area, draws=draws)`` (same parameters as
+    :func:`facet_terms`, ``area`` (N,) [m^2], ``draws`` from :func:`speckle_draws`), the
+    Dr.Jit backend going on to eq P4 inside the scattering kernel, so that ``K``, ``B``
+    and ``w`` never come back to numpy (the per-pulse path of a simulation). The two
+    backends agree within rounding (tests).
+
+    References
+    ----------
+    .. [1] Paper eqs 7-11; module docstring (eqs P1-P4).
+    """
+    n = np.shape(n_i)[0] if np.ndim(n_i) > 1 else 1
+    is_table = isinstance(spectrum, BraggSpectrumTable)
+    if backend not in ("auto", "numpy", "drjit"):
+        raise ValueError(f"backend = {backend!r}: choose from 'auto', 'numpy', 'drjit'")
+    if backend == "drjit" and not is_table:
+        raise ValueError("backend = 'drjit' needs spectrum to be a BraggSpectrumTable")
+    if model not in MODELS:
+        raise ValueError(f"model = {model!r}: choose from {MODELS}")
+    if not (backend == "drjit" or (backend == "auto" and is_table and _drjit_available())):
+        terms = facet_terms(n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
+                            wind_direction, model=model, cox_munk=cox_munk,
+                            wake_damping=wake_damping, local=local, backend="numpy")
+        return speckle_amplitudes(terms, area, draws=draws)
+    from ._drjit_kernel import facet_kernel
+
+    g_k, g_b = draws
+    if g_k.shape != (n,) or g_b.shape != (n,):
+        raise ValueError(f"draws of shape {g_k.shape}, {g_b.shape}: need ({n},) each")
+    n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
+    n_s = np.asarray(n_s, dtype=float).reshape(-1, 3)
+    nn = np.asarray(normal, dtype=float).reshape(-1, 3)
+    damp = None if wake_damping is None else np.asarray(wake_damping, float).reshape(n)
+    a = np.asarray(area, dtype=float).reshape(n)
+    return facet_kernel(n_i, n_s, nn, damp, k, complex(eps_r), mss_upwind, mss_crosswind,
+                        float(wind_direction), spectrum, cox_munk, model,
+                        speckle=(g_k, g_b, a))
+
+
 def facet_amplitudes(
     n_i: ArrayLike,
     n_s: ArrayLike,
@@ -478,4 +537,5 @@ def hhvv_coherence(terms: FacetTerms) -> NDArray:
 
 
 __all__ = ["MODELS", "FacetTerms", "bragg_vectors", "facet_amplitudes", "facet_sigma",
-           "facet_terms", "hhvv_coherence", "speckle_amplitudes", "speckle_draws"]
+           "facet_terms", "hhvv_coherence", "speckle_amplitudes", "speckle_draws",
+           "speckled_facet_amplitudes"]

@@ -107,6 +107,8 @@ class FacetTracer:
         """
         p = np.asarray(position, dtype=np.float64)
         idx = None if mask is None else np.flatnonzero(mask)
+        if idx is not None and idx.size == centroid.shape[0]:
+            idx = None  # every facet traced: no gather, no scatter
         c = centroid if idx is None else centroid[idx]
         nrm = normal if idx is None else normal[idx]
         # float32 resolution at the ray origins (the facets), not at the far end
