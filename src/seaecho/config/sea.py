@@ -23,7 +23,7 @@ class SeaConfig(Section):
     spreading: SpreadingName = Field(
         "longuet-higgins",
         description="directional spreading function: 'longuet-higgins' cos^2s(psi/2) "
-        "(paper eq 6) or 'elfouhaily' (Elfouhaily et al. 1997, eq 49)",
+        "(paper eq 6) or 'elfouhaily' (Elfouhaily et al. 1997)",
     )
     spreading_s: float = Field(
         1.0,

@@ -26,7 +26,7 @@ Omnidirectional spectra (registry :data:`OMNI_SPECTRA`, selectable by name):
 
 Spreading functions (registry :data:`SPREADINGS`): ``"longuet-higgins"`` cos^2s(psi/2)
 (paper eq 6, normalised to unit integral: N(1) = 1/pi), and ``"elfouhaily"`` (Elfouhaily
-et al. 1997, eq 49).
+et al. 1997).
 
 References
 ----------
@@ -66,7 +66,7 @@ PM_A0 = 8.1e-3
 PM_B0 = 0.74
 #: von Karman constant [-].
 KAPPA = 0.41
-#: Wavenumber of the minimum phase speed [rad/m] and that speed [m/s] (Elfouhaily eq 29).
+#: Wavenumber of the minimum phase speed [rad/m] and that speed [m/s] (Elfouhaily et al.).
 K_M = 370.0
 C_M = 0.23
 
@@ -255,12 +255,12 @@ class ElfouhailyParameters:
     """Wind-dependent parameters of the Elfouhaily et al. (1997) spectrum (SI)."""
 
     u10: float  #: wind speed at 10 m [m/s]
-    omega_c: float  #: inverse wave age U10 / c_p [-] (eq 37)
+    omega_c: float  #: inverse wave age U10 / c_p [-]
     k_p: float  #: peak wavenumber [rad/m] (eq 3: k_p = k_0 Omega_c^2)
     c_p: float  #: phase speed at the peak [m/s]
-    u_star: float  #: friction velocity [m/s] (eqs 60-61)
-    alpha_p: float  #: long-wave generalised Phillips-Kitaigorodskii parameter (eq 34)
-    alpha_m: float  #: short-wave generalised Phillips-Kitaigorodskii parameter (eq 44)
+    u_star: float  #: friction velocity [m/s]
+    alpha_p: float  #: long-wave generalised Phillips-Kitaigorodskii parameter
+    alpha_m: float  #: short-wave generalised Phillips-Kitaigorodskii parameter
     gamma: float  #: peak enhancement factor (eq 3)
     delta: float  #: peak width (eq 3)
 
@@ -269,36 +269,39 @@ def elfouhaily_parameters(u19_5: float, fetch: float | None = None) -> Elfouhail
     """Parameters of the Elfouhaily unified spectrum for a wind and a fetch.
 
     Inverse wave age Omega_c = 0.84 tanh[(X / X0)^0.4]^-0.75 with X = g F / U10^2,
-    X0 = 2.2e4 (eq 37), 0.84 for a fully developed sea (fetch None). Peak wavenumber
+    X0 = 2.2e4, 0.84 for a fully developed sea (fetch None). Peak wavenumber
     k_p = g Omega_c^2 / U10^2; gamma = 1.7 (Omega_c < 1) or 1.7 + 6 ln Omega_c, and
-    delta = 0.08 (1 + 4 Omega_c^-3) (eq 3); alpha_p = 6e-3 sqrt(Omega_c) (eq 34); friction
-    velocity from the roughness length z0 = 3.7e-5 (U10^2 / g) Omega_c^0.9 and
-    u* = kappa U10 / ln(10 / z0) (eqs 60-61); alpha_m = 1e-2 (1 + ln(u*/c_m)) for
-    u* < c_m, else 1e-2 (1 + 3 ln(u*/c_m)) (eq 44).
+    delta = 0.08 (1 + 4 Omega_c^-3) (eq 3); alpha_p = 6e-3 Omega_c^0.55; friction velocity
+    from the roughness length z0 = 3.7e-5 (U10^2 / g) Omega_c^0.9 (Donelan et al. 1993) and
+    u* = kappa U10 / ln(10 / z0) (other implementations take u* = sqrt(1.44e-3) U10, 4 %
+    lower at 10 m/s); alpha_m = 1e-2 (1 + ln(u*/c_m)) for u* < c_m, else
+    1e-2 (1 + 3 ln(u*/c_m)), floored at 0 with a :class:`~seaecho.warnings.ValidityWarning`
+    for very light winds where it goes negative. Equation numbers other than 2-3 are not
+    given: we could not check them against the paper's text.
     """
     u10 = float(u10_from_u19_5(u19_5))
     if fetch is None:
-        omega_c = 0.84  # fully developed (eq 37 for X -> infinity)
+        omega_c = 0.84  # fully developed (fetch law for X -> infinity)
     else:
         x = G * fetch / u10**2
-        omega_c = 0.84 * np.tanh((x / 2.2e4) ** 0.4) ** -0.75  # Eq. 37
+        omega_c = 0.84 * np.tanh((x / 2.2e4) ** 0.4) ** -0.75  # fetch law
     k_p = G * omega_c**2 / u10**2  # k_0 Omega_c^2, k_0 = g / U10^2
     c_p = float(np.sqrt(G / k_p))  # deep-water phase speed at the peak (c_p = U10/Omega_c)
     gamma = 1.7 if omega_c < 1.0 else 1.7 + 6.0 * np.log(omega_c)  # Eq. 3
     delta = 0.08 * (1.0 + 4.0 * omega_c**-3)  # Eq. 3
-    alpha_p = 6e-3 * np.sqrt(omega_c)  # Eq. 34
-    z0 = 3.7e-5 * u10**2 / G * omega_c**0.9  # Eq. 61 (Donelan et al. 1993)
-    u_star = KAPPA * u10 / np.log(10.0 / z0)  # Eq. 60 log profile
+    alpha_p = 6e-3 * omega_c**0.55  # long-wave Phillips-Kitaigorodskii parameter
+    z0 = 3.7e-5 * u10**2 / G * omega_c**0.9  # roughness length (Donelan et al. 1993)
+    u_star = KAPPA * u10 / np.log(10.0 / z0)  # neutral log profile
     if u_star < C_M:
-        alpha_m = 1e-2 * (1.0 + np.log(u_star / C_M))  # Eq. 44
+        alpha_m = 1e-2 * (1.0 + np.log(u_star / C_M))  # short-wave parameter
     else:
-        alpha_m = 1e-2 * (1.0 + 3.0 * np.log(u_star / C_M))  # Eq. 44
+        alpha_m = 1e-2 * (1.0 + 3.0 * np.log(u_star / C_M))
     if alpha_m < 0:
-        # eq 44 turns negative for u* < c_m / e (U10 below about 2 m/s): outside the
+        # alpha_m turns negative for u* < c_m / e (U10 below about 2 m/s): outside the
         # winds the spectrum was fitted to; no short-wave (capillary) part is left
         warnings.warn(
             f"Elfouhaily spectrum at U10 = {u10:.2f} m/s: friction velocity {u_star:.3f} m/s "
-            f"< c_m / e, eq 44 gives alpha_m < 0; the capillary part is set to 0",
+            f"< c_m / e gives alpha_m < 0; the capillary part is set to 0",
             ValidityWarning, stacklevel=2,
         )
         alpha_m = 0.0
@@ -310,7 +313,7 @@ def elfouhaily_parameters(u19_5: float, fetch: float | None = None) -> Elfouhail
 
 
 def _elfouhaily_phase_speed(k: NDArray[np.float64]) -> NDArray[np.float64]:
-    """c(k) = sqrt(g / k (1 + (k / k_m)^2)) [m/s] (Elfouhaily eq 29, deep water)."""
+    """c(k) = sqrt(g / k (1 + (k / k_m)^2)) [m/s] (Elfouhaily et al. 1997, deep water)."""
     return np.sqrt(G / k * (1.0 + (k / K_M) ** 2))
 
 
@@ -324,10 +327,11 @@ def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArra
         B_l = \\frac{\\alpha_p}{2}\\frac{c_p}{c} F_p,\\quad
         B_h = \\frac{\\alpha_m}{2}\\frac{c_m}{c} F_m
 
-    with F_p = L_PM J_p exp[-(Omega_c / sqrt(10)) (sqrt(k / k_p) - 1)] (eq 32),
+    with F_p = L_PM J_p exp[-(Omega_c / sqrt(10)) (sqrt(k / k_p) - 1)],
     L_PM = exp[-(5/4) (k_p / k)^2] (eq 2), J_p = gamma^Gamma,
     Gamma = exp[-(sqrt(k / k_p) - 1)^2 / (2 delta^2)] (eq 3) and
-    F_m = L_PM J_p exp[-(1/4) (k / k_m - 1)^2] (eq 41).
+    F_m = L_PM J_p exp[-(1/4) (k / k_m - 1)^2]. Equation numbers other than 2-3 are not
+    given: we could not check them against the paper's text.
 
     Parameters
     ----------
@@ -345,19 +349,21 @@ def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArra
 
     References
     ----------
-    Elfouhaily et al. (1997), eqs 2-3, 29, 32-34, 40-44, 60-61.
+    Elfouhaily et al. (1997), eqs 2-3 and the long- and short-wave curvature spectra;
+    parameters cross-checked with independent implementations (Laxague, UNH; Fois, TU Delft).
     """
     p = elfouhaily_parameters(u19_5, fetch)
     k, pos, ks = _positive(k)
-    c = _elfouhaily_phase_speed(ks)  # Eq. 29
+    c = _elfouhaily_phase_speed(ks)  # phase speed with capillarity
     l_pm = np.exp(-1.25 * (p.k_p / ks) ** 2)  # Eq. 2
     big_gamma = np.exp(-((np.sqrt(ks / p.k_p) - 1.0) ** 2) / (2.0 * p.delta**2))  # Eq. 3
     j_p = p.gamma**big_gamma  # Eq. 3
-    f_p = l_pm * j_p * np.exp(-p.omega_c / np.sqrt(10.0) * (np.sqrt(ks / p.k_p) - 1.0))  # Eq. 32
-    b_l = 0.5 * p.alpha_p * (p.c_p / c) * f_p  # Eq. 31
-    f_m = l_pm * j_p * np.exp(-0.25 * (ks / K_M - 1.0) ** 2)  # Eq. 41
-    b_h = 0.5 * p.alpha_m * (C_M / c) * f_m  # Eq. 40
-    return np.where(pos, (b_l + b_h) / ks**3, 0.0)  # Eq. 30: S = k^-3 (B_l + B_h)
+    # long-wave side effect
+    f_p = l_pm * j_p * np.exp(-p.omega_c / np.sqrt(10.0) * (np.sqrt(ks / p.k_p) - 1.0))
+    b_l = 0.5 * p.alpha_p * (p.c_p / c) * f_p  # long-wave curvature
+    f_m = l_pm * j_p * np.exp(-0.25 * (ks / K_M - 1.0) ** 2)  # short-wave side effect
+    b_h = 0.5 * p.alpha_m * (C_M / c) * f_m  # short-wave curvature
+    return np.where(pos, (b_l + b_h) / ks**3, 0.0)  # S = k^-3 (B_l + B_h)
 
 
 # --------------------------------------------------------------------------------------
@@ -407,10 +413,10 @@ def longuet_higgins(
 def elfouhaily_spreading(
     k: ArrayLike, psi: ArrayLike, u19_5: float, fetch: float | None = None, s: float = 1.0
 ) -> NDArray[np.float64]:
-    """Elfouhaily et al. (1997) spreading (1 / 2 pi) [1 + Delta(k) cos 2 psi] (eq 49).
+    """Elfouhaily et al. (1997) spreading (1 / 2 pi) [1 + Delta(k) cos 2 psi].
 
     Delta(k) = tanh[a0 + a_p (c / c_p)^2.5 + a_m (c_m / c)^2.5] with a0 = ln 2 / 4,
-    a_p = 4, a_m = 0.13 u* / c_m (eqs 57-59). Centro-symmetric: it does not tell
+    a_p = 4, a_m = 0.13 u* / c_m. Centro-symmetric: it does not tell
     upwind from downwind travel.
 
     Parameters
@@ -434,8 +440,8 @@ def elfouhaily_spreading(
     ks = np.maximum(k, K_FLOOR)
     c = _elfouhaily_phase_speed(ks)
     a0 = np.log(2.0) / 4.0
-    a_m = 0.13 * p.u_star / C_M  # Eq. 59
-    delta = np.tanh(a0 + 4.0 * (c / p.c_p) ** 2.5 + a_m * (C_M / c) ** 2.5)  # Eq. 57
+    a_m = 0.13 * p.u_star / C_M
+    delta = np.tanh(a0 + 4.0 * (c / p.c_p) ** 2.5 + a_m * (C_M / c) ** 2.5)  # Delta(k)
     return (1.0 + delta * np.cos(2.0 * np.asarray(psi, dtype=np.float64))) / (2.0 * np.pi)
 
 

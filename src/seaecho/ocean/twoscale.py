@@ -14,7 +14,7 @@ k_min < K < k_max of the directional spectrum Psi (paper eq 4):
     s_c^2 = \\int\\!\\!\\int K^2\\sin^2\\psi\\; S_{1d} D\\,d\\psi\\,dK
 
 the height variance and the upwind / crosswind slope variances (Cox & Munk 1954
-definitions; e.g. Elfouhaily et al. 1997, eq 63).
+definitions; e.g. Elfouhaily et al. 1997).
 
 References
 ----------
