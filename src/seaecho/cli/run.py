@@ -27,6 +27,7 @@ def run(args: argparse.Namespace) -> int:
     import xarray as xr
 
     from ..config import SceneError, load_scene
+    from ..ocean.sampling import check_sampling
     from ..radar.figures import run_figures
     from ..simulation import Simulation
     from . import UsageError
@@ -50,6 +51,8 @@ def run(args: argparse.Namespace) -> int:
         out = Path(Path(args.scene).stem + ".nc")
     if str(out.parent) and not out.parent.is_dir():
         raise UsageError(f"output directory {out.parent} does not exist")
+    if scene.radar.sea_clutter:
+        check_sampling(scene)  # SamplingWarning on stderr if the tile / grid is too coarse
     try:
         sim = Simulation(scene, base_dir=Path(args.scene).parent)
     except ValueError as exc:

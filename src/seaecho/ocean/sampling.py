@@ -109,9 +109,12 @@ def check_sampling(scene, frequency: float | None = None) -> None:
     """Warn (:class:`~seaecho.warnings.SamplingWarning`) if a scene's sea is under-sampled.
 
     The tile must hold the peak wavelength and its wavenumber step must resolve the -3 dB
-    band of the peak; with a radar ``frequency`` [Hz], the unresolved waves must satisfy
+    band of the peak; with a radar ``frequency`` [Hz] (by default the carrier of the
+    scene's ``[radar]`` section, if it has one), the unresolved waves must satisfy
     k_radar h_res <= 0.3 (see module docstring).
     """
+    if frequency is None and getattr(scene, "radar", None) is not None:
+        frequency = scene.radar.carrier_frequency_hz
     sea = scene.sea
     spectrum = DirectionalSpectrum.from_sea_config(sea)
     k_p = spectrum.peak_wavenumber()
