@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+import warnings
 
 from .. import __version__
 
@@ -45,10 +46,24 @@ class UsageError(ValueError):
     """Bad command-line or scene input: reported in one line, exit status 2."""
 
 
+def _show_warning(message, category, filename, lineno, file=None, line=None):
+    """One line per seaecho warning on stderr; others as Python shows them."""
+    from ..warnings import SeaechoWarning
+
+    if issubclass(category, SeaechoWarning):
+        print(f"seaecho: {category.__name__}: {message}", file=file or sys.stderr)
+    else:
+        _python_showwarning(message, category, filename, lineno, file, line)
+
+
+_python_showwarning = warnings.showwarning
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``seaecho`` console script."""
     from ..config import SceneError
 
+    warnings.showwarning = _show_warning
     parser = build_parser()
     args = parser.parse_args(argv)
     try:
