@@ -111,6 +111,6 @@ def test_large_order_bessel_expansion_parity():
 
     from seaecho.processing.statistics import _log_kv
 
-    x = np.array([0.5, 5.0, 40.0, 150.0, 600.0])
+    x = np.array([2.0, 5.0, 40.0, 150.0, 600.0])
     for v in (50.0, 75.0, 140.0):
         np.testing.assert_allclose(_log_kv(v, x), np.log(special.kve(v, x)) - x, rtol=1e-6)
