@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Literal
+
 from pydantic import Field, model_validator
 
 from ..constants import KNOT
@@ -36,6 +38,14 @@ class ShipConfig(Section):
         le=1.0e5,
         description="length of the turbulent (damped) wake strip behind the stern [m]; "
         "default 20 ship lengths",
+    )
+    wake_amplitude: Literal["kriebel-seelig", "michell"] = Field(
+        "kriebel-seelig",
+        description="Kelvin-wake heights: Michell's thin-ship theory scaled to the empirical "
+        "maximum height of Kriebel & Seelig (2005), or as Michell's theory gives them",
+    )
+    wake_breaking_limit: bool = Field(
+        True, description="cap the Kelvin wake's waves at the breaking steepness H/L = 0.1412"
     )
 
     @model_validator(mode="after")
