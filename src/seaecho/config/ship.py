@@ -47,6 +47,11 @@ class ShipConfig(Section):
     wake_breaking_limit: bool = Field(
         True, description="cap the Kelvin wake's waves at the breaking steepness H/L = 0.1412"
     )
+    turbulent_wake_film_contrast_db: float = Field(
+        -3.0, ge=-30.0, le=0.0,
+        description="persistent Bragg contrast of the turbulent wake's surfactant film [dB]; "
+        "the turbulence adds complete damping at the stern decaying as (1 + xi/B)^-3/5",
+    )
 
     @model_validator(mode="after")
     def _one_speed(self) -> ShipConfig:

@@ -67,6 +67,8 @@ class Ship:
         Heights of the Kelvin wake (:class:`seaecho.wake.KelvinWake`).
     wake_breaking_limit : bool
         Cap the Kelvin wake's waves at the breaking steepness.
+    turbulent_wake_film_contrast_db : float
+        Persistent Bragg contrast of the wake's surfactant film [dB] (<= 0; eq W15).
     """
 
     length: float
@@ -78,6 +80,7 @@ class Ship:
     turbulent_wake_length: float | None = None
     wake_amplitude: str = "kriebel-seelig"
     wake_breaking_limit: bool = True
+    turbulent_wake_film_contrast_db: float = -3.0
     _p0: NDArray[np.float64] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -105,6 +108,10 @@ class Ship:
         if self.wake_amplitude not in WAKE_AMPLITUDE_MODELS:
             raise ValueError(f"Ship.wake_amplitude = {self.wake_amplitude!r}: choose from "
                              f"{WAKE_AMPLITUDE_MODELS}")
+        if not (np.isfinite(self.turbulent_wake_film_contrast_db)
+                and self.turbulent_wake_film_contrast_db <= 0.0):
+            raise ValueError(f"Ship.turbulent_wake_film_contrast_db = "
+                             f"{self.turbulent_wake_film_contrast_db!r} dB: must be <= 0")
         object.__setattr__(self, "position0", (float(p0[0]), float(p0[1])))
         object.__setattr__(self, "_p0", p0)
 
@@ -129,6 +136,7 @@ class Ship:
             ),
             wake_amplitude=cfg.wake_amplitude,
             wake_breaking_limit=cfg.wake_breaking_limit,
+            turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db,
         )
 
     @property
