@@ -57,7 +57,8 @@ def cmod5n(u10, phi_deg, theta_deg):
     s0 = c[12] + c[13] * x
     s = a2 * v
     a3 = 1.0 / (1.0 + np.exp(-np.maximum(s, s0)))
-    a3 = np.where(s < s0, a3 * (s / s0) ** (s0 * (1.0 - a3)), a3)
+    with np.errstate(divide="ignore", invalid="ignore"):  # branch unused where s0 <= 0
+        a3 = np.where(s < s0, a3 * (s / s0) ** (s0 * (1.0 - a3)), a3)
     b0 = a3**gam * 10.0 ** (a0 + a1 * v)
     b1 = c[15] * v * (0.5 + x - np.tanh(4.0 * (x + c[16] + c[17] * v)))
     b1 = (c[14] * (1.0 + x) - b1) / (np.exp(0.34 * (v - c[18])) + 1.0)
