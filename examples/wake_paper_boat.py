@@ -75,7 +75,8 @@ def wake_map(outdir: Path) -> Path:
     ax.set_xlabel("x (east) [m]")
     ax.set_ylabel("y (north) [m]")
     ax.set_title(
-        "Kelvin wake, L 10 m, B 4 m, T 1.5 m, 10 kt, heading 35 deg (Michell/Wigley)\n"
+        "Kelvin wake, L 10 m, B 4 m, T 1.5 m, 10 kt, heading 35 deg "
+        "(Michell pattern, Kriebel-Seelig heights)\n"
         "thin lines: crests of eq 16 from the bow; dotted: cusp lines 19.47 deg; "
         "dashed: turbulent wake",
         fontsize=8,

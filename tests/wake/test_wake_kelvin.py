@@ -25,9 +25,10 @@ N = 512
 
 @pytest.fixture(scope="module")
 def image():
-    """A thin ship (B/L = 0.1) sailing towards +x; wake over 240 m behind it."""
+    """A thin ship (B/L = 0.1) sailing towards +x; wake over 240 m behind it (Michell's
+    heights as they are: these tests check the linear theory)."""
     ship = Ship(length=10.0, beam=1.0, draft=0.6, speed=SPEED, heading=0.0, position0=(X_SHIP, 0))
-    wake = KelvinWake(ship)
+    wake = KelvinWake(ship, amplitude="michell", breaking_limit=False)
     x = (np.arange(N) - N / 2) * DX
     y = x.copy()
     f = wake.fields(x, y, 0.0)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Literal
+
 from pydantic import Field, model_validator
 
 from ..constants import KNOT
@@ -36,6 +38,19 @@ class ShipConfig(Section):
         le=1.0e5,
         description="length of the turbulent (damped) wake strip behind the stern [m]; "
         "default 20 ship lengths",
+    )
+    wake_amplitude: Literal["kriebel-seelig", "michell"] = Field(
+        "kriebel-seelig",
+        description="Kelvin-wake heights: Michell's thin-ship theory scaled to the empirical "
+        "maximum height of Kriebel & Seelig (2005), or as Michell's theory gives them",
+    )
+    wake_breaking_limit: bool = Field(
+        True, description="cap the Kelvin wake's waves at the breaking steepness H/L = 0.1412"
+    )
+    turbulent_wake_film_contrast_db: float = Field(
+        -3.0, ge=-30.0, le=0.0,
+        description="persistent Bragg contrast of the turbulent wake's surfactant film [dB]; "
+        "the turbulence adds complete damping at the stern decaying as (1 + xi/B)^-3/5",
     )
 
     @model_validator(mode="after")

@@ -13,6 +13,8 @@ kirchhoff     eq 7 (GO), slopes of K < k_cut (Gaussian) or Cox & Munk
 spm           eqs 8-9 with the full height spectrum at the Bragg vector
 two-scale     SPM averaged over the slopes of K < k_cut (Khenchaf & Airiau)
 blend         eqs 10-11 with the ``kirchhoff`` and ``spm`` rows above
+X+breaking    ``two-scale`` or ``blend`` plus breaking zones (Kudryavtsev et
+              al. 2003; :mod:`.breaking`, eq BR1), wind U10 = U19.5 / 1.026
 ============  ===========================================================
 
 References
@@ -36,7 +38,8 @@ from .spm import spm_sigma
 from .twoscale import check_spm_validity, two_scale_sigma
 from .validity import KirchhoffValidityWarning
 
-MEAN_PLANE_MODELS = ("kirchhoff", "spm", "two-scale", "blend")
+MEAN_PLANE_MODELS = ("kirchhoff", "spm", "two-scale", "blend", "two-scale+breaking",
+                     "blend+breaking")
 SLOPE_MODELS = ("gaussian", "cox-munk")
 
 
@@ -56,7 +59,7 @@ def sea_sigma(
 
     Parameters
     ----------
-    model : {"kirchhoff", "spm", "two-scale", "blend"}
+    model : {"kirchhoff", "spm", "two-scale", "blend", "two-scale+breaking", "blend+breaking"}
     theta_i, phi_i, theta_s, phi_s : array_like
         Mean-plane angles [rad] (broadcast together).
     frequency : float
@@ -92,6 +95,17 @@ def sea_sigma(
         raise ValueError(f"slopes = {slopes!r}: choose from {SLOPE_MODELS}")
     if not 0.0 < cut_ratio <= 1.0:
         raise ValueError(f"cut_ratio = {cut_ratio}: must be in (0, 1]")
+    if model.endswith("+breaking"):
+        from ..ocean.spectra import u10_from_u19_5
+        from .breaking import add_breaking, breaking_sigma_mean_plane
+
+        regular = sea_sigma(model.removesuffix("+breaking"), theta_i, phi_i, theta_s, phi_s,
+                            frequency, spectrum, eps_r, slopes, cut_ratio)
+        s_wb, q = breaking_sigma_mean_plane(theta_i, phi_i, theta_s, phi_s,
+                                            float(u10_from_u19_5(spectrum.u19_5)),
+                                            2.0 * np.pi * frequency / C0,
+                                            float(spectrum.wind_direction))
+        return add_breaking(regular, s_wb, q)
     k = 2.0 * np.pi * frequency / C0
     k_cut = cut_ratio * k
     wind = float(spectrum.wind_direction)

@@ -17,7 +17,12 @@ from .michell import (
     wigley_wetted_surface,
 )
 from .ship import Ship
-from .turbulent import turbulent_wake_mask, turbulent_wake_width
+from .turbulent import (
+    turbulent_damping_profile,
+    turbulent_wake_mask,
+    turbulent_wake_strip,
+    turbulent_wake_width,
+)
 
 __all__ = [
     "KELVIN_HALF_ANGLE",
@@ -27,7 +32,9 @@ __all__ = [
     "havelock_wave_resistance",
     "kelvin_crest_lines",
     "submerged_source_amplitude",
+    "turbulent_damping_profile",
     "turbulent_wake_mask",
+    "turbulent_wake_strip",
     "turbulent_wake_width",
     "wigley_amplitude",
     "wigley_wave_resistance",

@@ -36,8 +36,10 @@ from ..constants import G
 if TYPE_CHECKING:  # pragma: no cover
     from ..config.ship import ShipConfig
 
-#: Default length of the turbulent wake strip, in ship lengths (issue 2).
+#: Default length of the turbulent wake strip, in ship lengths.
 DEFAULT_TURBULENT_WAKE_SHIP_LENGTHS = 20.0
+#: Kelvin-wake height models: empirical (Kriebel & Seelig 2005) or Michell's theory.
+WAKE_AMPLITUDE_MODELS = ("kriebel-seelig", "michell")
 
 
 @dataclass(frozen=True)
@@ -61,6 +63,12 @@ class Ship:
     turbulent_wake_length : float or None
         Length of the turbulent (damped) wake strip behind the stern [m]; None for the
         default of 20 ship lengths.
+    wake_amplitude : {"kriebel-seelig", "michell"}
+        Heights of the Kelvin wake (:class:`seaecho.wake.KelvinWake`).
+    wake_breaking_limit : bool
+        Cap the Kelvin wake's waves at the breaking steepness.
+    turbulent_wake_film_contrast_db : float
+        Persistent Bragg contrast of the wake's surfactant film [dB] (<= 0; eq W15).
     """
 
     length: float
@@ -70,6 +78,9 @@ class Ship:
     heading: float = 0.0
     position0: tuple[float, float] = (0.0, 0.0)
     turbulent_wake_length: float | None = None
+    wake_amplitude: str = "kriebel-seelig"
+    wake_breaking_limit: bool = True
+    turbulent_wake_film_contrast_db: float = -3.0
     _p0: NDArray[np.float64] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -94,6 +105,13 @@ class Ship:
             raise ValueError(
                 f"Ship.turbulent_wake_length = {self.turbulent_wake_length!r} m: must be >= 0"
             )
+        if self.wake_amplitude not in WAKE_AMPLITUDE_MODELS:
+            raise ValueError(f"Ship.wake_amplitude = {self.wake_amplitude!r}: choose from "
+                             f"{WAKE_AMPLITUDE_MODELS}")
+        if not (np.isfinite(self.turbulent_wake_film_contrast_db)
+                and self.turbulent_wake_film_contrast_db <= 0.0):
+            raise ValueError(f"Ship.turbulent_wake_film_contrast_db = "
+                             f"{self.turbulent_wake_film_contrast_db!r} dB: must be <= 0")
         object.__setattr__(self, "position0", (float(p0[0]), float(p0[1])))
         object.__setattr__(self, "_p0", p0)
 
@@ -116,6 +134,9 @@ class Ship:
             turbulent_wake_length=(
                 None if cfg.turbulent_wake_length_m is None else float(cfg.turbulent_wake_length_m)
             ),
+            wake_amplitude=cfg.wake_amplitude,
+            wake_breaking_limit=cfg.wake_breaking_limit,
+            turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db,
         )
 
     @property
@@ -170,4 +191,4 @@ class Ship:
         return xs, ys
 
 
-__all__ = ["DEFAULT_TURBULENT_WAKE_SHIP_LENGTHS", "Ship"]
+__all__ = ["DEFAULT_TURBULENT_WAKE_SHIP_LENGTHS", "WAKE_AMPLITUDE_MODELS", "Ship"]
