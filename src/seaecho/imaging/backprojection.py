@@ -23,11 +23,11 @@ processed Doppler band:
 
 .. math::
 
-    w_p(x) = W\!\left(\frac{f_p(x) - f_{c,p}}{B_a}\right),\quad
-    f_p(x) = \frac{\mathbf v_{t,p}\cdot\hat{\mathbf u}_{t,p}(x)
-                   + \mathbf v_{r,p}\cdot\hat{\mathbf u}_{r,p}(x)}{\lambda},\quad
-    f_{c,p} = \frac{\mathbf v_{t,p}\cdot\hat{\mathbf b}_{t,p}
-                   + \mathbf v_{r,p}\cdot\hat{\mathbf b}_{r,p}}{\lambda}         (B4)
+    w_p(x) = W\\left(\\frac{f_p(x) - f_{c,p}}{B_a}\\right),\\quad
+    f_p(x) = \\frac{\\mathbf v_{t,p}\\cdot\\hat{\\mathbf u}_{t,p}(x)
+                   + \\mathbf v_{r,p}\\cdot\\hat{\\mathbf u}_{r,p}(x)}{\\lambda},\\quad
+    f_{c,p} = \\frac{\\mathbf v_{t,p}\\cdot\\hat{\\mathbf b}_{t,p}
+                   + \\mathbf v_{r,p}\\cdot\\hat{\\mathbf b}_{r,p}}{\\lambda}          (B4)
 
 f_p(x) is the bistatic Doppler frequency of a static scatterer at x,
 -(1/lambda) d(r_t + r_r)/dt (Willis 2005, eq 3.23; u the unit vectors from the platforms
@@ -38,13 +38,14 @@ Taylor: ``imaging.windows``). The band plays the part of the azimuth processing 
 of a frequency-domain stripmap processor (Cumming & Wong 2005, section 4.5 and eq 4.37):
 without it, backprojection adds every pulse at every pixel and a scatterer reappears at
 its azimuth ambiguities (PRF lambda R / (2 v) away, 64 m in the paper's SAR scenes) with
-its full strength, whereas with it those are left with the antenna's sidelobes. The echo model carries
-exp(-j 2 pi f_c tau) (time convention exp(+j omega t)), so eq (B2) brings every pulse of a
-static scatterer at x back in phase: its image peak is real and positive times the
-scatterer's S_mn (times the antenna and range factors that ``imaging.calibration``
-divides out). y_p(tau) between samples is the band-limited interpolation of the samples
-(the compressed pulse is band-limited to |f| <= B/2 <= f_s/2), approximated by FFT
-upsampling by a factor U followed by linear interpolation:
+its full strength, whereas with it those are left with the antenna's sidelobes.
+
+The echo model carries exp(-j 2 pi f_c tau) (time convention exp(+j omega t)), so eq (B2)
+brings every pulse of a static scatterer at x back in phase: its image peak is real and
+positive times the scatterer's S_mn (times the antenna and range factors that
+``imaging.calibration`` divides out). y_p(tau) between samples is the band-limited
+interpolation of the samples (the compressed pulse is band-limited to |f| <= B/2 <=
+f_s/2), approximated by FFT upsampling by a factor U followed by linear interpolation:
 
 .. math::
 
@@ -337,7 +338,7 @@ def backproject_drjit(pixels: ArrayLike, block: PulseBlock, carrier: float,
     ndarray (C, P) complex128
     """
     dr, llvm = _drjit()
-    Float64, Float32, UInt32, Int32 = llvm.Float64, llvm.Float, llvm.UInt32, llvm.Int32
+    Float64, Float32 = llvm.Float64, llvm.Float
     x = np.asarray(pixels, dtype=np.float64).reshape(-1, 3)
     n_b, n_c, n_u = block.samples.shape
     out = np.zeros((n_c, x.shape[0]), dtype=np.complex128)
@@ -349,82 +350,92 @@ def backproject_drjit(pixels: ArrayLike, block: PulseBlock, carrier: float,
     cols = [Float64(aligned(a)) for a in (
         *block.tx.T, *block.rx.T, *block.tx_velocity.T, *block.rx_velocity.T,
         block.doppler_centroid, block.weight)]
-    n_pulses = dr.opaque(UInt32, n_b)
-    t0 = dr.opaque(Float64, block.t0)
-    rate = dr.opaque(Float64, block.rate)
-    fc = dr.opaque(Float64, carrier)
-    inv_lb = dr.opaque(Float64, carrier / (C0 * window.bandwidth))  # 1 / (lambda B_a)
-    inv_b = dr.opaque(Float64, 1.0 / window.bandwidth)
-    n_up = dr.opaque(Int32, n_u)
-    coef = [dr.opaque(Float32, c) for c in window.normalised]
-    c2 = C0 * C0
-    two_pi = float(2.0 * np.pi)
-    stride = 2 * n_c
+    # Per-run values as opaque parameters: one compiled kernel for every block
+    par = {"n_pulses": dr.opaque(llvm.UInt32, n_b), "t0": dr.opaque(Float64, block.t0),
+           "rate": dr.opaque(Float64, block.rate), "fc": dr.opaque(Float64, carrier),
+           "inv_lb": dr.opaque(Float64, carrier / (C0 * window.bandwidth)),
+           "inv_b": dr.opaque(Float64, 1.0 / window.bandwidth),
+           "n_up": dr.opaque(llvm.Int32, n_u),
+           "coef": [dr.opaque(Float32, c) for c in window.normalised]}
     for s in range(0, x.shape[0], max_pixels):  # tiles of pixels, one kernel each
-        px, py, pz = (Float64(aligned(x[s:s + max_pixels, k])) for k in range(3))
-        n_pix = dr.width(px)
-        acc = [dr.zeros(Float32, n_pix) for _ in range(stride)]
-        i = dr.zeros(UInt32, n_pix)
-
-        def cond(i, *acc):
-            return i < n_pulses
-
-        def body(i, *acc):
-            (tx, ty, tz, rx, ry, rz, ux, uy, uz, vx, vy, vz, fdc, wp) = (
-                dr.gather(Float64, col, i) for col in cols)
-            # Eq (B1): outbound leg, then the receiver's leg with its motion
-            ax, ay, az = px - tx, py - ty, pz - tz
-            r_t = dr.sqrt(ax * ax + ay * ay + az * az)
-            tau_t = r_t / C0
-            dx = rx + vx * tau_t - px
-            dy = ry + vy * tau_t - py
-            dz = rz + vz * tau_t - pz
-            dv = dx * vx + dy * vy + dz * vz
-            a = c2 - (vx * vx + vy * vy + vz * vz)
-            tau = tau_t + (dv + dr.sqrt(dv * dv + a * (dx * dx + dy * dy + dz * dz))) / a
-            # Eq (B4): Doppler offset from the centroid, normalised by B_a, and W
-            bx, by, bz = px - rx, py - ry, pz - rz
-            r_r = dr.sqrt(bx * bx + by * by + bz * bz)
-            f = (ax * ux + ay * uy + az * uz) / r_t + (bx * vx + by * vy + bz * vz) / r_r
-            xi = Float32(f * inv_lb - fdc * inv_b)
-            cos1 = dr.cos(two_pi * xi)
-            w = coef[0]
-            if len(coef) > 1:
-                prev, cur = dr.ones(Float32, n_pix), cos1
-                w = w + coef[1] * cur
-                for m in range(2, len(coef)):  # cos(m t) by the Chebyshev recurrence
-                    prev, cur = cur, 2.0 * cos1 * cur - prev
-                    w = w + coef[m] * cur
-            # Eq (B3): linear interpolation of the upsampled samples
-            u = (tau - t0) * rate
-            fl = dr.floor(u)
-            i0 = Int32(fl)
-            eps = Float32(u - fl)
-            ok = (i0 >= 0) & (i0 + 1 < n_up) & (dr.abs(xi) <= 0.5)
-            w = dr.select(ok, w * Float32(wp), 0.0)
-            # Eq (B2): carrier phase, reduced modulo one cycle in float64
-            cyc = fc * tau
-            sn, cs = dr.sincos(Float32(cyc - dr.floor(cyc)) * two_pi)
-            cs, sn = cs * w, sn * w
-            base = UInt32((Int32(i) * n_up + dr.select(ok, i0, 0)) * stride)
-            new = []
-            for c in range(n_c):
-                k = base + 2 * c
-                re0 = dr.gather(Float32, data, k, ok)
-                im0 = dr.gather(Float32, data, k + 1, ok)
-                re1 = dr.gather(Float32, data, k + stride, ok)
-                im1 = dr.gather(Float32, data, k + stride + 1, ok)
-                yr = dr.fma(eps, re1 - re0, re0)
-                yi = dr.fma(eps, im1 - im0, im0)
-                new.append(acc[2 * c] + (yr * cs - yi * sn))
-                new.append(acc[2 * c + 1] + (yr * sn + yi * cs))
-            return (i + 1, *new)
-
-        i, *acc = dr.while_loop(state=(i, *acc), cond=cond, body=body)
-        dr.eval(*acc)
+        pix = [Float64(aligned(x[s:s + max_pixels, k])) for k in range(3)]
+        acc = _kernel(dr, llvm, pix, data, cols, par, n_c)
         vals = np.stack([np.asarray(a, dtype=np.float64) for a in acc])
         out[:, s:s + max_pixels] = vals[0::2] + 1j * vals[1::2]
     return out
+
+
+def _kernel(dr, llvm, pix, data, cols, par, n_c):
+    """The symbolic loop over pulses of :func:`backproject_drjit` for one tile of pixels;
+    returns the 2 C accumulators (re, im per channel), evaluated."""
+    Float64, Float32, UInt32, Int32 = llvm.Float64, llvm.Float, llvm.UInt32, llvm.Int32
+    px, py, pz = pix
+    n_pix = dr.width(px)
+    t0, rate, fc, n_up = par["t0"], par["rate"], par["fc"], par["n_up"]
+    inv_lb, inv_b, coef = par["inv_lb"], par["inv_b"], par["coef"]
+    c2 = C0 * C0
+    two_pi = float(2.0 * np.pi)
+    stride = 2 * n_c
+    acc = [dr.zeros(Float32, n_pix) for _ in range(stride)]
+    i = dr.zeros(UInt32, n_pix)
+
+    def cond(i, *acc):
+        return i < par["n_pulses"]
+
+    def body(i, *acc):
+        (tx, ty, tz, rx, ry, rz, ux, uy, uz, vx, vy, vz, fdc, wp) = (
+            dr.gather(Float64, col, i) for col in cols)
+        # Eq (B1): outbound leg, then the receiver's leg with its motion
+        ax, ay, az = px - tx, py - ty, pz - tz
+        r_t = dr.sqrt(ax * ax + ay * ay + az * az)
+        tau_t = r_t / C0
+        dx = rx + vx * tau_t - px
+        dy = ry + vy * tau_t - py
+        dz = rz + vz * tau_t - pz
+        dv = dx * vx + dy * vy + dz * vz
+        a = c2 - (vx * vx + vy * vy + vz * vz)
+        tau = tau_t + (dv + dr.sqrt(dv * dv + a * (dx * dx + dy * dy + dz * dz))) / a
+        # Eq (B4): Doppler offset from the centroid, normalised by B_a, and W
+        bx, by, bz = px - rx, py - ry, pz - rz
+        r_r = dr.sqrt(bx * bx + by * by + bz * bz)
+        f = (ax * ux + ay * uy + az * uz) / r_t + (bx * vx + by * vy + bz * vz) / r_r
+        xi = Float32(f * inv_lb - fdc * inv_b)
+        cos1 = dr.cos(two_pi * xi)
+        w = coef[0]
+        if len(coef) > 1:
+            prev, cur = dr.ones(Float32, n_pix), cos1
+            w = w + coef[1] * cur
+            for m in range(2, len(coef)):  # cos(m t) by the Chebyshev recurrence
+                prev, cur = cur, 2.0 * cos1 * cur - prev
+                w = w + coef[m] * cur
+        # Eq (B3): linear interpolation of the upsampled samples
+        u = (tau - t0) * rate
+        fl = dr.floor(u)
+        i0 = Int32(fl)
+        eps = Float32(u - fl)
+        ok = (i0 >= 0) & (i0 + 1 < n_up) & (dr.abs(xi) <= 0.5)
+        w = dr.select(ok, w * Float32(wp), 0.0)
+        # Eq (B2): carrier phase, reduced modulo one cycle in float64
+        cyc = fc * tau
+        sn, cs = dr.sincos(Float32(cyc - dr.floor(cyc)) * two_pi)
+        cs, sn = cs * w, sn * w
+        base = UInt32((Int32(i) * n_up + dr.select(ok, i0, 0)) * stride)
+        new = []
+        for c in range(n_c):
+            k = base + 2 * c
+            re0 = dr.gather(Float32, data, k, ok)
+            im0 = dr.gather(Float32, data, k + 1, ok)
+            re1 = dr.gather(Float32, data, k + stride, ok)
+            im1 = dr.gather(Float32, data, k + stride + 1, ok)
+            yr = dr.fma(eps, re1 - re0, re0)
+            yi = dr.fma(eps, im1 - im0, im0)
+            new.append(acc[2 * c] + (yr * cs - yi * sn))
+            new.append(acc[2 * c + 1] + (yr * sn + yi * cs))
+        return (i + 1, *new)
+
+    i, *acc = dr.while_loop(state=(i, *acc), cond=cond, body=body)
+    dr.eval(*acc)
+    return acc
 
 
 def backproject(pixels: ArrayLike, block: PulseBlock, carrier: float,

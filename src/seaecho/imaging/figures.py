@@ -6,8 +6,9 @@
   wake arms outlined when the dataset has them;
 - ``*_sigma0_filtered.png``: the same for the speckle-filtered intensities, when present;
 - ``*_pauli.png``: the Pauli RGB composite (R = |HH - VV|^2/2, G = |HV + VH|^2/2,
-  B = |HH + VV|^2/2, back-scattering alignment), the three on one dB scale 30 dB deep (filtered when present), so
-  that a colour says which mechanism dominates by how much.
+  B = |HH + VV|^2/2 in the back-scattering alignment, ``imaging.speckle``), the three on
+  one dB scale 30 dB deep (filtered when present), so that a colour says which mechanism
+  dominates by how much.
 """
 
 from __future__ import annotations

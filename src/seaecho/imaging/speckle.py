@@ -11,7 +11,7 @@ S_hv = S_vh and a sphere S_hh = S_vv. Our channels are in the forward-scattering
 
 .. math::
 
-    S^{BSA} = \begin{pmatrix} -1 & 0 \\ 0 & 1 \end{pmatrix} S^{FSA}                  (S0)
+    S^{BSA} = \\begin{pmatrix} -1 & 0 \\\\ 0 & 1 \\end{pmatrix} S^{FSA}                  (S0)
 
 (Ulaby & Elachi 1990, section 1.7; Lee & Pottier 2009, section 3.1), so in FSA a
 backscattering sphere has S_hh = -S_vv and a reciprocal target S_hv = -S_vh. The Pauli
