@@ -39,7 +39,7 @@ from .backprojection import PulseBlock, backproject, upsample
 from .calibration import Track, calibration_at, compressed_pulse_energy
 from .windows import AzimuthWindow
 
-__all__ = ["ImageGrid", "RawData", "focus"]
+__all__ = ["ImageGrid", "RawData", "focus", "focus_points"]
 
 #: Coverage (K / max K, amplitude) below which a pixel is flagged invalid (-20 dB).
 MIN_COVERAGE = 0.1
@@ -240,8 +240,6 @@ def focus(source: str | os.PathLike | object, config: ImageConfig | None = None,
     import xarray as xr
 
     cfg = ImageConfig() if config is None else config
-    if block_pulses < 1:
-        raise ValueError(f"block_pulses = {block_pulses}: must be >= 1")
     own = not isinstance(source, xr.Dataset)
     ds = xr.open_dataset(source, engine="h5netcdf") if own else source
     try:
@@ -253,58 +251,127 @@ def focus(source: str | os.PathLike | object, config: ImageConfig | None = None,
             ds.close()
 
 
+class _Processor:
+    """What one image needs from a raw dataset and a configuration: track, window,
+    weighting, and the streamed backprojection (eqs B1-B4) onto any points."""
+
+    def __init__(self, raw: RawData, cfg: ImageConfig, backend: str) -> None:
+        if backend not in ("drjit", "numpy"):
+            raise ValueError(f"backend = {backend!r}: allowed 'drjit', 'numpy'")
+        self.raw, self.cfg, self.backend = raw, cfg, backend
+        self.track = raw.track(cfg.track)
+        self.window = AzimuthWindow.named(cfg.azimuth_window,
+                                          cfg.doppler_bandwidth_hz or raw.prf,
+                                          cfg.taylor_nbar, cfg.taylor_sidelobe_db)
+        self.weighting = (cfg.range_weighting if cfg.range_weighting is not None
+                          else raw.range_weighting)
+
+    def backproject(self, points: NDArray, block_pulses: int = 32, timings: dict | None = None,
+                    progress: bool = False) -> NDArray[np.complex128]:
+        """I(x) of eq (B2) at points (P, 3): (C, P) complex [sqrt(W)], pulses streamed."""
+        from tqdm import tqdm
+
+        if block_pulses < 1:
+            raise ValueError(f"block_pulses = {block_pulses}: must be >= 1")
+        raw, cfg, track = self.raw, self.cfg, self.track
+        fdc = track.doppler_centroid(raw.wavelength)
+        rate = raw.sampling_rate * cfg.upsample
+        acc = np.zeros((len(raw.channels), points.shape[0]), dtype=np.complex128)
+        t_read = t_bp = 0.0
+        bar = tqdm(total=raw.n_pulses, unit="pulse", disable=not progress,
+                   desc="seaecho image")
+        try:
+            for start in range(0, raw.n_pulses, block_pulses):  # pulses streamed in blocks
+                stop = min(start + block_pulses, raw.n_pulses)
+                t = time.perf_counter()
+                y = raw.compressed(start, stop, cfg.range_weighting, cfg.taylor_nbar,
+                                   cfg.taylor_sidelobe_db)
+                up = upsample(y, cfg.upsample)
+                t_read += time.perf_counter() - t
+                sl = slice(start, stop)
+                block = PulseBlock(up, raw.t0, rate, track.tx[sl], track.rx[sl],
+                                   track.tx_velocity[sl], track.rx_velocity[sl], fdc[sl],
+                                   np.ones(stop - start))
+                t = time.perf_counter()
+                acc += backproject(points, block, raw.carrier, self.window, self.backend)
+                t_bp += time.perf_counter() - t
+                bar.update(stop - start)
+        finally:
+            bar.close()
+        if timings is not None:
+            timings.update(read_upsample=t_read, backprojection=t_bp)
+        return acc
+
+    def calibration(self, points: NDArray):
+        """K and A_eff (eqs K2-K3) at points (P, 3), and E_chi [s]."""
+        raw, cfg = self.raw, self.cfg
+        tx_ant, rx_ant = raw.antennas()
+        e_chi = compressed_pulse_energy(raw.pulse, raw.sampling_rate, self.weighting,
+                                        cfg.taylor_nbar, cfg.taylor_sidelobe_db)
+        t_last = raw.t0 + (raw.fast_time.size - 1) / raw.sampling_rate
+        cal = calibration_at(points, self.track, tx_ant, rx_ant, raw.transmit_power,
+                             raw.carrier, self.window, e_chi, delay_window=(raw.t0, t_last))
+        return cal, e_chi
+
+
+def focus_points(source, points, config: ImageConfig | None = None, *,
+                 backend: str = "drjit") -> tuple[NDArray[np.complex128], NDArray[np.float64]]:
+    """Calibrated image values at arbitrary points (impulse-response cuts, checks).
+
+    Parameters
+    ----------
+    source : path or xarray.Dataset
+        The raw dataset.
+    points : array_like (P, 3)
+        Positions [m].
+    config : ImageConfig, optional
+        Processing parameters (its grid fields are ignored).
+    backend : {'drjit', 'numpy'}
+
+    Returns
+    -------
+    image : ndarray (C, P) complex
+        s = I / K [m] (eqs B2, K2), calibration evaluated at each point (no interpolation).
+    area : ndarray (P,)
+        A_eff [m^2] (eq K3): sigma0 = |s|^2 / A_eff.
+    """
+    import xarray as xr
+
+    cfg = ImageConfig() if config is None else config
+    own = not isinstance(source, xr.Dataset)
+    ds = xr.open_dataset(source, engine="h5netcdf") if own else source
+    try:
+        proc = _Processor(RawData(ds), cfg, backend)
+        pts = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+        acc = proc.backproject(pts)
+        cal, _ = proc.calibration(pts)
+    finally:
+        if own:
+            ds.close()
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(cal.gain > 0, acc / cal.gain, np.nan + 0j), cal.area
+
+
 def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timings: dict,
            progress: bool, source: str):
     import xarray as xr
-    from tqdm import tqdm
 
     from .. import __version__
     from .speckle import PAULI_NAMES, multilook, pauli_powers, speckle_filter
     from .truth import truth_on_grid
 
-    if backend not in ("drjit", "numpy"):
-        raise ValueError(f"backend = {backend!r}: allowed 'drjit', 'numpy'")
+    proc = _Processor(raw, cfg, backend)
     pixel = cfg.pixel_m if cfg.pixel_m is not None else C0 / (8.0 * raw.bandwidth)
     extent = cfg.extent_m if cfg.extent_m is not None else raw.default_extent()
     grid = ImageGrid.from_extent(extent, pixel, cfg.height_m)
-    track = raw.track(cfg.track)
-    window = AzimuthWindow.named(cfg.azimuth_window, cfg.doppler_bandwidth_hz or raw.prf,
-                                 cfg.taylor_nbar, cfg.taylor_sidelobe_db)
-    weighting = cfg.range_weighting if cfg.range_weighting is not None else raw.range_weighting
-    fdc = track.doppler_centroid(raw.wavelength)
-    rate = raw.sampling_rate * cfg.upsample
+    track, window, weighting = proc.track, proc.window, proc.weighting
     points = grid.points()
     n_c = len(raw.channels)
-    acc = np.zeros((n_c, points.shape[0]), dtype=np.complex128)
-    t_read = t_bp = 0.0
-    bar = tqdm(total=raw.n_pulses, unit="pulse", disable=not progress, desc="seaecho image")
-    try:
-        for start in range(0, raw.n_pulses, block_pulses):  # pulses streamed in blocks
-            stop = min(start + block_pulses, raw.n_pulses)
-            t = time.perf_counter()
-            y = raw.compressed(start, stop, cfg.range_weighting, cfg.taylor_nbar,
-                               cfg.taylor_sidelobe_db)
-            up = upsample(y, cfg.upsample)
-            t_read += time.perf_counter() - t
-            sl = slice(start, stop)
-            block = PulseBlock(up, raw.t0, rate, track.tx[sl], track.rx[sl],
-                               track.tx_velocity[sl], track.rx_velocity[sl], fdc[sl],
-                               np.ones(stop - start))
-            t = time.perf_counter()
-            acc += backproject(points, block, raw.carrier, window, backend)
-            t_bp += time.perf_counter() - t
-            bar.update(stop - start)
-    finally:
-        bar.close()
+    acc = proc.backproject(points, block_pulses, timings, progress)
     # Calibration (eqs K1-K3) on the node grid, interpolated to the pixels
     t = time.perf_counter()
-    tx_ant, rx_ant = raw.antennas()
-    e_chi = compressed_pulse_energy(raw.pulse, raw.sampling_rate, weighting,
-                                    cfg.taylor_nbar, cfg.taylor_sidelobe_db)
     nodes = grid.nodes()
-    t_last = raw.t0 + (raw.fast_time.size - 1) / raw.sampling_rate
-    cal = calibration_at(nodes.points(), track, tx_ant, rx_ant, raw.transmit_power,
-                         raw.carrier, window, e_chi, delay_window=(raw.t0, t_last))
+    cal, e_chi = proc.calibration(nodes.points())
     q_nodes = np.nan_to_num(cal.area * cal.gain**2, nan=0.0)  # K^2 A_eff, smooth
     gain = np.maximum(_interpolate(nodes, cal.gain, grid), 0.0)
     q = np.maximum(_interpolate(nodes, q_nodes, grid), 0.0)
@@ -414,7 +481,8 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
     out = xr.Dataset(data, coords=coords, attrs=attrs)
     t_prod = time.perf_counter() - t
     n_pp = points.shape[0] * raw.n_pulses
-    timings.update(read_upsample=t_read, backprojection=t_bp, calibration=t_cal,
-                   products=t_prod, pixels=points.shape[0], pulses=raw.n_pulses,
-                   channels=n_c, pixel_pulses_per_s=n_pp / t_bp if t_bp > 0 else np.inf)
+    t_bp = timings["backprojection"]
+    timings.update(calibration=t_cal, products=t_prod, pixels=points.shape[0],
+                   pulses=raw.n_pulses, channels=n_c,
+                   pixel_pulses_per_s=n_pp / t_bp if t_bp > 0 else np.inf)
     return out
