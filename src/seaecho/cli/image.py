@@ -66,8 +66,11 @@ def image_config(scene_image: dict | None, args: argparse.Namespace | None = Non
         return ImageConfig.model_validate(values)
     except ValidationError as exc:
         err = exc.errors()[0]
-        loc = ".".join(str(p) for p in err["loc"]) or "image"
-        raise UsageError(f"[image].{loc} = {err.get('input')!r}: {err['msg']}") from None
+        msg = err["msg"].removeprefix("Value error, ")
+        if not err["loc"]:  # a check across fields: its message names them
+            raise UsageError(f"[image]: {msg}") from None
+        loc = ".".join(str(p) for p in err["loc"])
+        raise UsageError(f"[image].{loc} = {err.get('input')!r}: {msg}") from None
 
 
 def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
