@@ -27,7 +27,7 @@ def test_image_writes_dataset_and_figures_reproducibly(raw, tmp_path, capsys):
     assert main(args) == 0
     printed = capsys.readouterr().out
     assert "wrote" in printed and "pixel-pulses/s" in printed
-    for suffix in ("_sigma0.png", "_pauli.png"):
+    for suffix in ("_rcs.png", "_pauli.png"):
         assert (tmp_path / f"img{suffix}").stat().st_size > 1000
     with xr.open_dataset(out, engine="h5netcdf") as img:
         assert img["image"].dims == ("channel", "y", "x")

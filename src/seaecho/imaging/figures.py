@@ -1,14 +1,15 @@
 """Figures of an image dataset, after the paper's Figs. 7-9 (made from the file only).
 
-- ``*_sigma0.png``: sigma0 [dB] per channel on one common dB scale (the largest
+- ``*_sigma0.png``: sigma0 [dB] per channel on one common dB scale (``*_rcs.png``:
+  |image|^2 [dBm^2] instead when there is no sea, for point targets) (the largest
   99.9th percentile of the valid pixels of all channels, rounded up to 5 dB, down to
   ``dynamic_range_db`` below it), with the tile outline, the ship's position and the
   wake arms outlined when the dataset has them;
 - ``*_sigma0_filtered.png``: the same for the speckle-filtered intensities, when present;
-- ``*_pauli.png``: the Pauli RGB composite (R = |HH - VV|^2/2, G = |HV + VH|^2/2,
-  B = |HH + VV|^2/2 in the back-scattering alignment, ``imaging.speckle``), the three on
-  one dB scale 30 dB deep (filtered when present), so that a colour says which mechanism
-  dominates by how much.
+- ``*_pauli.png``: the Pauli RGB composite (R = |HH - VV|/sqrt 2, G = |HV + VH|/sqrt 2,
+  B = |HH + VV|/sqrt 2 in the back-scattering alignment, ``imaging.speckle``), the three
+  amplitudes on one linear scale (filtered when present), so that a colour says which
+  mechanism dominates.
 """
 
 from __future__ import annotations
@@ -25,10 +26,6 @@ import numpy as np  # noqa: E402
 from ..io.dataset import atomic_savefig  # noqa: E402
 
 __all__ = ["common_db_scale", "image_figures", "pauli_figure", "sigma0_figure"]
-
-#: Depth of the Pauli composite's dB scale [dB].
-PAULI_RANGE_DB = 30.0
-
 
 def _db(x: np.ndarray) -> np.ndarray:
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -67,8 +64,12 @@ def _overlay(ax, img) -> None:
 
 def sigma0_figure(img, path: str | os.PathLike, variable: str = "sigma0",
                   dynamic_range_db: float = 50.0) -> Path:
-    """sigma0 [dB] per channel on a common scale (Figs. 7-9 of the paper)."""
-    vals = _db(img[variable].values)
+    """sigma0 [dB] per channel on a common scale (Figs. 7-9 of the paper); ``variable =
+    "rcs"`` shows |image|^2 [dBm^2] instead (point targets: the peak is the RCS)."""
+    if variable == "rcs":
+        vals = _db(np.abs(img["image"].values) ** 2)
+    else:
+        vals = _db(img[variable].values)
     valid = img["valid"].values.astype(bool)
     vmin, vmax = common_db_scale(vals, valid, dynamic_range_db)
     n = vals.shape[0]
@@ -90,20 +91,22 @@ def sigma0_figure(img, path: str | os.PathLike, variable: str = "sigma0",
                      f"{img.attrs.get('track', '?')})", fontsize=9)
         ax.set_xlabel("x (east) [m]")
         ax.set_ylabel("y (north) [m]")
-    fig.colorbar(im, ax=axes, shrink=0.85, label=f"{variable} [dB]")
+    label = "|image|^2 [dBm^2]" if variable == "rcs" else f"{variable} [dB]"
+    fig.colorbar(im, ax=axes, shrink=0.85, label=label)
     out = atomic_savefig(fig, path, dpi=110)
     plt.close(fig)
     return out
 
 
 def pauli_figure(img, path: str | os.PathLike, variable: str = "pauli") -> Path:
-    """Pauli RGB composite on one dB scale, ``PAULI_RANGE_DB`` deep."""
-    p = _db(img[variable].values)
+    """Pauli RGB composite: amplitudes sqrt(power) on one linear scale (the 99th
+    percentile of the three over the valid pixels is full brightness)."""
+    amp = np.sqrt(np.nan_to_num(img[variable].values))
     valid = img["valid"].values.astype(bool)
-    sel = p[:, valid]
-    vmax = float(np.nanpercentile(sel, 99.5)) if np.isfinite(sel).any() else 0.0
-    rgb = np.clip((p - (vmax - PAULI_RANGE_DB)) / PAULI_RANGE_DB, 0.0, 1.0)
-    rgb = np.nan_to_num(np.moveaxis(rgb, 0, -1)) * valid[..., None]
+    sel = amp[:, valid]
+    top = float(np.percentile(sel, 99.0)) if sel.size else 1.0
+    rgb = np.clip(amp / (top if top > 0 else 1.0), 0.0, 1.0)
+    rgb = np.moveaxis(rgb, 0, -1) * valid[..., None]
     x, y = img["x"].values, img["y"].values
     fig, ax = plt.subplots(figsize=(6.0, 5.4), constrained_layout=True)
     ax.imshow(rgb, origin="lower", extent=(x[0] - 0.5 * (x[1] - x[0]),
@@ -112,8 +115,8 @@ def pauli_figure(img, path: str | os.PathLike, variable: str = "pauli") -> Path:
                                            y[-1] + 0.5 * (y[1] - y[0])),
               interpolation="nearest")
     _overlay(ax, img)
-    ax.set_title(f"Pauli RGB: R |HH-VV|^2, G |HV+VH|^2, B |HH+VV|^2 "
-                 f"({vmax - PAULI_RANGE_DB:.0f} to {vmax:.0f} dB)", fontsize=8)
+    ax.set_title(f"Pauli RGB (BSA): R |HH-VV|, G |HV+VH|, B |HH+VV|; full scale "
+                 f"{10 * np.log10(top * top) if top > 0 else 0:.0f} dB", fontsize=8)
     ax.set_xlabel("x (east) [m]")
     ax.set_ylabel("y (north) [m]")
     out = atomic_savefig(fig, path, dpi=110)
@@ -125,7 +128,10 @@ def image_figures(img, stem: str | os.PathLike, dynamic_range_db: float = 50.0
                   ) -> list[Path]:
     """Every figure of an image dataset, written as ``<stem>_<name>.png``."""
     stem = str(stem)
-    out = [sigma0_figure(img, f"{stem}_sigma0.png", dynamic_range_db=dynamic_range_db)]
+    if "tile" not in img:  # no sea: point targets, shown in RCS
+        out = [sigma0_figure(img, f"{stem}_rcs.png", "rcs", dynamic_range_db)]
+    else:
+        out = [sigma0_figure(img, f"{stem}_sigma0.png", dynamic_range_db=dynamic_range_db)]
     if "sigma0_filtered" in img:
         out.append(sigma0_figure(img, f"{stem}_sigma0_filtered.png", "sigma0_filtered",
                                  dynamic_range_db))

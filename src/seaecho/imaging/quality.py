@@ -15,7 +15,8 @@ image and the ground-truth masks of ``imaging.truth``:
 
 - sea level per channel: mean sigma0 over the open sea (valid pixels) [dB];
 - wake-to-sea contrast per channel: mean sigma0 over the wake arms over the sea level
-  [dB] ("cross-polarized channels HV and VH offer a better contrast");
+  [dB] ("cross-polarized channels HV and VH offer a better contrast"), and the same with
+  medians (robust to the few near-specular facets that dominate a mean);
 - secondary peaks: the highest sigma0 in the valid image outside the sea tile (farther
   than ``margin`` from it, where nothing scatters: only sidelobes and ambiguities put
   energy there) relative to the highest sigma0 of the wake arms [dB] ("the spurious
@@ -142,9 +143,9 @@ def paper_metrics(img, variable: str = "sigma0", margin: float = 4.0, block_m: f
     Returns
     -------
     dict
-        {channel: {"sea_db", "wake_db", "contrast_db", "wake_peak_db",
-        "secondary_peak_db", "secondary_to_wake_db", "modulation"}} (keys present when
-        the masks exist).
+        {channel: {"sea_db", "wake_db", "contrast_db", "contrast_median_db",
+        "wake_peak_db", "secondary_peak_db", "secondary_to_wake_db", "modulation"}} (keys
+        present when the masks exist).
     """
     from scipy.ndimage import distance_transform_edt
 
@@ -175,6 +176,8 @@ def paper_metrics(img, variable: str = "sigma0", margin: float = 4.0, block_m: f
             m["wake_peak_db"] = _db(float(s[c][wake].max()))
             if "sea_db" in m:
                 m["contrast_db"] = m["wake_db"] - m["sea_db"]
+                m["contrast_median_db"] = _db(float(np.median(s[c][wake]))) - _db(
+                    float(np.median(s[c][sea])))
             if outside is not None and outside.any():
                 m["secondary_peak_db"] = _db(float(s[c][outside].max()))
                 m["secondary_to_wake_db"] = m["secondary_peak_db"] - m["wake_peak_db"]
