@@ -91,3 +91,27 @@ def test_bistatic_calibration_is_the_rcs(bistatic):
     a, b = _gradients(bistatic)
     assert area[0] == pytest.approx(1.0 / abs(a[0] * b[1] - a[1] * b[0]), rel=0.03)
 
+
+
+def test_fixed_bistatic_radar_is_calibrated_but_has_no_sigma0(tmp_path):
+    # The repository's calibration scene: transmitter and receiver at rest, 10 m^2 sphere
+    # at (0, 0, 1), noise 50 dB below. Without motion there is no azimuth compression,
+    # yet eq K2 still gives |s|^2 = RCS (2 pulses summed coherently); eq K3 has no
+    # aperture rotation to work with, which the processor says with a warning.
+    from pathlib import Path
+
+    from seaecho.config import load_scene
+    from seaecho.config.image import ImageConfig
+    from seaecho.imaging.focus import focus
+    from seaecho.warnings import SamplingWarning
+
+    scene = load_scene(Path(__file__).resolve().parents[2] / "scenes"
+                       / "calibration_point_target.toml")
+    scene = scene.model_copy(update={"radar": scene.radar.model_copy(
+        update={"n_pulses": 2})})
+    path = simulate(scene, tmp_path / "fixed.nc")
+    img, area = focus_points(path, np.array([[0.0, 0.0, 1.0]]))
+    assert 20 * np.log10(abs(img[0, 0])) == pytest.approx(10.0, abs=0.2)
+    assert np.isnan(area[0])
+    with pytest.warns(SamplingWarning, match="aperture does not turn"):
+        focus(path, ImageConfig(pixel_m=1.0, extent_m=(-4.0, 4.0, -4.0, 4.0)))

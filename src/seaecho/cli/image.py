@@ -83,10 +83,14 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
     from ..imaging.quality import paper_metrics
     from ..io.dataset import write_dataset_atomic
     from ..simulation import _quiet_invalid_netcdf
+    from . import UsageError
 
     timings: dict = {}
     t = time.perf_counter()
-    img = focus(raw_path, cfg, backend=backend, timings=timings, progress=progress)
+    try:
+        img = focus(raw_path, cfg, backend=backend, timings=timings, progress=progress)
+    except ValueError as exc:  # bad grid, window, or a file that is not a raw dataset
+        raise UsageError(f"{raw_path}: {exc}") from None
     with _quiet_invalid_netcdf():
         write_dataset_atomic(img, out)
     wrote = [out]
@@ -128,9 +132,6 @@ def run(args: argparse.Namespace) -> int:
     except (OSError, ValueError) as exc:
         raise UsageError(f"{raw}: not a readable netCDF dataset ({exc})") from None
     cfg = image_config(scene.get("image"), args)
-    try:
-        focus_to_files(raw, out, cfg, backend=args.backend, progress=not args.quiet,
-                       figures=not args.no_figures)
-    except ValueError as exc:
-        raise UsageError(f"{raw}: {exc}") from None
+    focus_to_files(raw, out, cfg, backend=args.backend, progress=not args.quiet,
+                   figures=not args.no_figures)
     return 0

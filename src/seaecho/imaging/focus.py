@@ -43,8 +43,8 @@ __all__ = ["ImageGrid", "RawData", "focus", "focus_points"]
 
 #: Coverage (K / max K, amplitude) below which a pixel is flagged invalid (-20 dB).
 MIN_COVERAGE = 0.1
-#: Most pixels an image may have.
-MAX_PIXELS = 50_000_000
+#: Most pixels an image may have (4096 x 4096: about 2.5 GB of arrays for 4 channels).
+MAX_PIXELS = 4096 * 4096
 #: Calibration nodes per axis at most (K and A_eff are smooth; cubic interpolation).
 CALIBRATION_NODES = 65
 
@@ -372,6 +372,15 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
     t = time.perf_counter()
     nodes = grid.nodes()
     cal, e_chi = proc.calibration(nodes.points())
+    if not np.isfinite(cal.area).any():
+        import warnings
+
+        from ..warnings import SamplingWarning
+
+        warnings.warn("the aperture does not turn over the image (platforms at rest or "
+                      "one pulse): no azimuth resolution, so sigma0 (eq K3) is undefined; "
+                      "the calibrated image (RCS) is still given", SamplingWarning,
+                      stacklevel=3)
     q_nodes = np.nan_to_num(cal.area * cal.gain**2, nan=0.0)  # K^2 A_eff, smooth
     gain = np.maximum(_interpolate(nodes, cal.gain, grid), 0.0)
     q = np.maximum(_interpolate(nodes, q_nodes, grid), 0.0)
