@@ -126,7 +126,7 @@ def test_uncalibrated_peak_is_the_coherent_sum_of_the_radar_equation(raw_ds):
 
     raw = RawData(raw_ds)
     proc = _Processor(raw, ImageConfig(), "drjit")
-    acc = proc.backproject(TARGET[None, :])[3, 0]
+    acc = proc.backproject(TARGET[None, :])[0][3, 0]
     tx = raw_ds["tx_position"].values
     r = np.linalg.norm(tx - TARGET, axis=1)
     p_t = raw_ds.attrs["transmit_power_w"]

@@ -265,12 +265,16 @@ def backproject_numpy(pixels: ArrayLike, block: PulseBlock, carrier: float,
 
     Returns
     -------
-    ndarray (C, P) complex128
+    image : ndarray (C, P) complex128
         The block's contribution to I(x) [sqrt(W)].
+    weights : ndarray (2, P)
+        sum_p w_p(x), and the same over the pulses whose echo of x is inside the receive
+        window [-] (their ratio says whether the window covers the pixel).
     """
     x = np.asarray(pixels, dtype=np.float64).reshape(-1, 3)
     n_b, n_c, n_u = block.samples.shape
     out = np.zeros((n_c, x.shape[0]), dtype=np.complex128)
+    wsum = np.zeros((2, x.shape[0]))
     flat = block.samples.reshape(n_b * n_c, n_u)
     step = max(1, max_elements // max(n_b, 1))
     wavelength = C0 / carrier
@@ -287,6 +291,8 @@ def backproject_numpy(pixels: ArrayLike, block: PulseBlock, carrier: float,
         i0 = np.floor(u).astype(np.int64)
         eps = (u - i0).astype(np.float32)
         ok = (i0 >= 0) & (i0 + 1 < n_u)
+        wsum[0, s:s + step] = np.sum(w, axis=1)
+        wsum[1, s:s + step] = np.sum(w * ok, axis=1)
         i0 = np.where(ok, i0, 0)
         # Eq (B2): carrier phase exp(+j 2 pi f_c tau), reduced modulo one cycle
         cyc = carrier * tau
@@ -297,7 +303,7 @@ def backproject_numpy(pixels: ArrayLike, block: PulseBlock, carrier: float,
             row = pulse * n_c + c
             y = (1.0 - eps) * flat[row, i0] + eps * flat[row, i0 + 1]
             out[c, s:s + step] = np.sum(y * rot, axis=1)
-    return out
+    return out, wsum
 
 
 def _drjit():
@@ -335,15 +341,18 @@ def backproject_drjit(pixels: ArrayLike, block: PulseBlock, carrier: float,
 
     Returns
     -------
-    ndarray (C, P) complex128
+    image : ndarray (C, P) complex128
+    weights : ndarray (2, P)
+        As :func:`backproject_numpy`.
     """
     dr, llvm = _drjit()
     Float64, Float32 = llvm.Float64, llvm.Float
     x = np.asarray(pixels, dtype=np.float64).reshape(-1, 3)
     n_b, n_c, n_u = block.samples.shape
     out = np.zeros((n_c, x.shape[0]), dtype=np.complex128)
+    wsum = np.zeros((2, x.shape[0]))
     if n_b == 0 or x.shape[0] == 0:
-        return out
+        return out, wsum
     # Samples as float32 [pulse, i, channel, re/im]: one pixel's gathers are contiguous
     data = Float32(aligned(np.ascontiguousarray(block.samples.transpose(0, 2, 1))
                            .view(np.float32).reshape(-1), np.float32))
@@ -361,13 +370,15 @@ def backproject_drjit(pixels: ArrayLike, block: PulseBlock, carrier: float,
         pix = [Float64(aligned(x[s:s + max_pixels, k])) for k in range(3)]
         acc = _kernel(dr, llvm, pix, data, cols, par, n_c)
         vals = np.stack([np.asarray(a, dtype=np.float64) for a in acc])
-        out[:, s:s + max_pixels] = vals[0::2] + 1j * vals[1::2]
-    return out
+        out[:, s:s + max_pixels] = vals[0:2 * n_c:2] + 1j * vals[1:2 * n_c:2]
+        wsum[:, s:s + max_pixels] = vals[2 * n_c:]
+    return out, wsum
 
 
 def _kernel(dr, llvm, pix, data, cols, par, n_c):
     """The symbolic loop over pulses of :func:`backproject_drjit` for one tile of pixels;
-    returns the 2 C accumulators (re, im per channel), evaluated."""
+    returns the 2 C + 2 accumulators (re, im per channel; sum of w, sum of w inside the
+    window), evaluated."""
     Float64, Float32, UInt32, Int32 = llvm.Float64, llvm.Float, llvm.UInt32, llvm.Int32
     px, py, pz = pix
     n_pix = dr.width(px)
@@ -376,7 +387,7 @@ def _kernel(dr, llvm, pix, data, cols, par, n_c):
     c2 = C0 * C0
     two_pi = float(2.0 * np.pi)
     stride = 2 * n_c
-    acc = [dr.zeros(Float32, n_pix) for _ in range(stride)]
+    acc = [dr.zeros(Float32, n_pix) for _ in range(stride + 2)]
     i = dr.zeros(UInt32, n_pix)
 
     def cond(i, *acc):
@@ -413,8 +424,10 @@ def _kernel(dr, llvm, pix, data, cols, par, n_c):
         fl = dr.floor(u)
         i0 = Int32(fl)
         eps = Float32(u - fl)
-        ok = (i0 >= 0) & (i0 + 1 < n_up) & (dr.abs(xi) <= 0.5)
-        w = dr.select(ok, w * Float32(wp), 0.0)
+        band = dr.abs(xi) <= 0.5
+        ok = (i0 >= 0) & (i0 + 1 < n_up) & band
+        w_band = dr.select(band, w * Float32(wp), 0.0)
+        w = dr.select(ok, w_band, 0.0)
         # Eq (B2): carrier phase, reduced modulo one cycle in float64
         cyc = fc * tau
         sn, cs = dr.sincos(Float32(cyc - dr.floor(cyc)) * two_pi)
@@ -431,6 +444,8 @@ def _kernel(dr, llvm, pix, data, cols, par, n_c):
             yi = dr.fma(eps, im1 - im0, im0)
             new.append(acc[2 * c] + (yr * cs - yi * sn))
             new.append(acc[2 * c + 1] + (yr * sn + yi * cs))
+        new.append(acc[stride] + w_band)
+        new.append(acc[stride + 1] + w)
         return (i + 1, *new)
 
     i, *acc = dr.while_loop(state=(i, *acc), cond=cond, body=body)
@@ -439,8 +454,10 @@ def _kernel(dr, llvm, pix, data, cols, par, n_c):
 
 
 def backproject(pixels: ArrayLike, block: PulseBlock, carrier: float,
-                window: AzimuthWindow, backend: str = "drjit") -> NDArray[np.complex128]:
-    """Eqs (B1)-(B4) by ``backend`` ('drjit' or 'numpy'): (C, P) complex [sqrt(W)]."""
+                window: AzimuthWindow, backend: str = "drjit"
+                ) -> tuple[NDArray[np.complex128], NDArray[np.float64]]:
+    """Eqs (B1)-(B4) by ``backend`` ('drjit' or 'numpy'): the (C, P) image [sqrt(W)] and
+    the (2, P) weight sums of :func:`backproject_numpy`."""
     if backend == "drjit":
         return backproject_drjit(pixels, block, carrier, window)
     if backend == "numpy":

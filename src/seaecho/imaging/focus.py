@@ -43,6 +43,8 @@ __all__ = ["ImageGrid", "RawData", "focus", "focus_points"]
 
 #: Coverage (K / max K, amplitude) below which a pixel is flagged invalid (-20 dB).
 MIN_COVERAGE = 0.1
+#: Fraction of a pixel's weight whose echo must fall inside the receive window (valid).
+MIN_INSIDE = 0.99
 #: Most pixels an image may have (4096 x 4096: about 2.5 GB of arrays for 4 channels).
 MAX_PIXELS = 4096 * 4096
 #: Calibration nodes per axis at most (K and A_eff are smooth; cubic interpolation).
@@ -267,8 +269,10 @@ class _Processor:
                           else raw.range_weighting)
 
     def backproject(self, points: NDArray, block_pulses: int = 32, timings: dict | None = None,
-                    progress: bool = False) -> NDArray[np.complex128]:
-        """I(x) of eq (B2) at points (P, 3): (C, P) complex [sqrt(W)], pulses streamed."""
+                    progress: bool = False
+                    ) -> tuple[NDArray[np.complex128], NDArray[np.float64]]:
+        """I(x) of eq (B2) at points (P, 3): (C, P) complex [sqrt(W)], pulses streamed;
+        and the (2, P) sums of the weights w_p(x), all and inside the receive window."""
         from tqdm import tqdm
 
         if block_pulses < 1:
@@ -277,6 +281,7 @@ class _Processor:
         fdc = track.doppler_centroid(raw.wavelength)
         rate = raw.sampling_rate * cfg.upsample
         acc = np.zeros((len(raw.channels), points.shape[0]), dtype=np.complex128)
+        wsum = np.zeros((2, points.shape[0]))
         t_read = t_bp = 0.0
         bar = tqdm(total=raw.n_pulses, unit="pulse", disable=not progress,
                    desc="seaecho image")
@@ -293,24 +298,28 @@ class _Processor:
                                    track.tx_velocity[sl], track.rx_velocity[sl], fdc[sl],
                                    np.ones(stop - start))
                 t = time.perf_counter()
-                acc += backproject(points, block, raw.carrier, self.window, self.backend)
+                img, w = backproject(points, block, raw.carrier, self.window, self.backend)
+                acc += img
+                wsum += w
                 t_bp += time.perf_counter() - t
                 bar.update(stop - start)
         finally:
             bar.close()
         if timings is not None:
             timings.update(read_upsample=t_read, backprojection=t_bp)
-        return acc
+        return acc, wsum
 
-    def calibration(self, points: NDArray):
-        """K and A_eff (eqs K2-K3) at points (P, 3), and E_chi [s]."""
+    def calibration(self, points: NDArray, window_cut: bool = True):
+        """K and A_eff (eqs K2-K3) at points (P, 3), and E_chi [s]; ``window_cut``: leave
+        out the pulses whose echo of a point falls outside the receive window."""
         raw, cfg = self.raw, self.cfg
         tx_ant, rx_ant = raw.antennas()
         e_chi = compressed_pulse_energy(raw.pulse, raw.sampling_rate, self.weighting,
                                         cfg.taylor_nbar, cfg.taylor_sidelobe_db)
         t_last = raw.t0 + (raw.fast_time.size - 1) / raw.sampling_rate
         cal = calibration_at(points, self.track, tx_ant, rx_ant, raw.transmit_power,
-                             raw.carrier, self.window, e_chi, delay_window=(raw.t0, t_last))
+                             raw.carrier, self.window, e_chi,
+                             delay_window=(raw.t0, t_last) if window_cut else None)
         return cal, e_chi
 
 
@@ -343,7 +352,7 @@ def focus_points(source, points, config: ImageConfig | None = None, *,
     try:
         proc = _Processor(RawData(ds), cfg, backend)
         pts = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-        acc = proc.backproject(pts)
+        acc, _ = proc.backproject(pts)
         cal, _ = proc.calibration(pts)
     finally:
         if own:
@@ -367,11 +376,14 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
     track, window, weighting = proc.track, proc.window, proc.weighting
     points = grid.points()
     n_c = len(raw.channels)
-    acc = proc.backproject(points, block_pulses, timings, progress)
-    # Calibration (eqs K1-K3) on the node grid, interpolated to the pixels
+    acc, wsum = proc.backproject(points, block_pulses, timings, progress)
+    # Calibration (eqs K1-K3) on the node grid, interpolated to the pixels. The receive
+    # window cuts K sharply, which no interpolation follows: the nodes ignore it and each
+    # pixel's K is scaled by the fraction of its weight inside the window (exact where the
+    # window covers the pixel's whole aperture, the valid pixels)
     t = time.perf_counter()
     nodes = grid.nodes()
-    cal, e_chi = proc.calibration(nodes.points())
+    cal, e_chi = proc.calibration(nodes.points(), window_cut=False)
     if not np.isfinite(cal.area).any():
         import warnings
 
@@ -382,14 +394,16 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
                       "the calibrated image (RCS) is still given", SamplingWarning,
                       stacklevel=3)
     q_nodes = np.nan_to_num(cal.area * cal.gain**2, nan=0.0)  # K^2 A_eff, smooth
-    gain = np.maximum(_interpolate(nodes, cal.gain, grid), 0.0)
-    q = np.maximum(_interpolate(nodes, q_nodes, grid), 0.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inside = np.where(wsum[0] > 0, wsum[1] / wsum[0], 0.0).reshape(grid.shape)
+    gain = np.maximum(_interpolate(nodes, cal.gain, grid), 0.0) * inside
+    q = np.maximum(_interpolate(nodes, q_nodes, grid), 0.0) * inside
     t_cal = time.perf_counter() - t
     # Products
     t = time.perf_counter()
     k_max = float(gain.max()) if gain.size else 0.0
     coverage = gain / k_max if k_max > 0 else np.zeros_like(gain)
-    valid = coverage >= MIN_COVERAGE
+    valid = (coverage >= MIN_COVERAGE) & (inside >= MIN_INSIDE)
     img = acc.reshape((n_c,) + grid.shape)
     with np.errstate(divide="ignore", invalid="ignore"):
         s = np.where(gain > 0, img / gain, np.nan + 0j)
@@ -416,8 +430,12 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
                              "squared normalised impulse response"}),
         "coverage": (("y", "x"), coverage.astype(np.float32),
                      {"units": "1", "long_name": "K / max K"}),
+        "inside_window": (("y", "x"), inside.astype(np.float32),
+                          {"units": "1", "long_name": "fraction of the weight sum_p w_p "
+                           "whose echo is inside the receive window"}),
         "valid": (("y", "x"), valid.astype(np.uint8),
-                  {"units": "1", "long_name": f"coverage >= {MIN_COVERAGE}"}),
+                  {"units": "1", "long_name": f"coverage >= {MIN_COVERAGE} and "
+                   f"inside_window >= {MIN_INSIDE}"}),
     }
     chans = dict(zip(raw.channels, s, strict=True))
     pauli = pauli_powers(chans)
