@@ -253,7 +253,14 @@ class Simulation:
                 data[f"{name}_attitude{kind}"] = (
                     ("pulse", "angle"), st.attitude,
                     {"units": "rad", "long_name": "yaw, pitch, roll"})
+                # Antenna axes in the world (image calibration: gains towards each pixel)
+                pointing = radar.tx_pointing if name == "tx" else radar.rx_pointing
+                data[f"{name}_antenna_axes{kind}"] = (
+                    ("pulse", "xyz", "antenna_axis"), pointing.axes(st),
+                    {"units": "1", "long_name": "antenna axes (columns boresight, width, "
+                     "height) in the world; d_local = axes^T d_world"})
         coords["angle"] = ("angle", np.array(["yaw", "pitch", "roll"]))
+        coords["antenna_axis"] = ("antenna_axis", np.array(["boresight", "width", "height"]))
         if scene.targets:
             data["target_position"] = (
                 ("target", "xyz"), np.array([g.position_m for g in scene.targets]),

@@ -21,6 +21,7 @@ COMMANDS = (
     "check",
     "surface",
     "run",
+    "image",
     "trace",
     "compare",
     "sigma",

@@ -65,4 +65,9 @@ def run(args: argparse.Namespace) -> int:
         with xr.open_dataset(out, engine="h5netcdf") as ds:
             for png in run_figures(ds, out.with_suffix("")):
                 print(f"wrote {png}")
+    if scene.image is not None:  # [image]: focus the raw data just written (seaecho image)
+        from .image import focus_to_files
+
+        focus_to_files(out, out.with_name(out.stem + "_image.nc"), scene.image,
+                       progress=not args.quiet, figures=not args.no_figures)
     return 0
