@@ -123,10 +123,7 @@ def _expected_clutter_energy(sim, pulse):
     geo = radar.geometry(pulse)
     st = sim.surface_state(pulse)
     f = sim.engine.facets(geo.time, state=st)
-    un = sim.unresolved
-    sig = facet_sigma(f.n_i, f.n_s, f.normal, sim.k, sim.eps_r,
-                      sim.bragg_spectrum, un.mss_upwind, un.mss_crosswind,
-                      sim.wind_direction, backend="numpy")
+    sig = facet_sigma(f.n_i, f.n_s, f.normal, *sim.sea_model.facet_model, backend="numpy")
     c = f.centroid
     r_t = np.linalg.norm(c - geo.tx.position, axis=-1)
     r_r = np.linalg.norm(c - geo.rx.position, axis=-1)
@@ -183,7 +180,7 @@ def _raytraced_scene(refresh_interval_s=0.0, moving=True, n_pulses=5, **radar):
 
 @pytest.mark.parametrize("refresh", [0.0, 2e-3])
 def test_pulses_in_any_order_give_the_same_bytes(refresh):
-    # DESIGN.md: a pulse is a pure function of (scene, pulse). The per-sea-state caches
+    # docs/conventions.md: a pulse is a pure function of (scene, pulse). The per-sea-state caches
     # (facet geometry, speckle draws, occlusion of the refresh time) must not make a pulse
     # depend on which pulses were computed before it: in order, reversed, and each pulse
     # alone in a fresh Simulation must agree to the byte.

@@ -26,9 +26,9 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     import xarray as xr
 
+    from ..build import build_simulation, check_scene
     from ..config import SceneError, load_scene
-    from ..ocean.sampling import check_sampling
-    from ..radar.figures import run_figures
+    from ..io.figures import run_figures
     from ..simulation import Simulation
     from . import UsageError
 
@@ -52,9 +52,9 @@ def run(args: argparse.Namespace) -> int:
     if str(out.parent) and not out.parent.is_dir():
         raise UsageError(f"output directory {out.parent} does not exist")
     if scene.radar.sea_clutter:
-        check_sampling(scene)  # SamplingWarning on stderr if the tile / grid is too coarse
+        check_scene(scene)  # SamplingWarning on stderr if the tile / grid is too coarse
     try:
-        sim = Simulation(scene, base_dir=Path(args.scene).parent)
+        sim = Simulation.from_models(build_simulation(scene, base_dir=Path(args.scene).parent))
     except ValueError as exc:
         raise SceneError(f"{args.scene}: {exc}") from None
     sim.run(out, progress=not args.quiet)

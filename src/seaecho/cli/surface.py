@@ -25,11 +25,11 @@ def run(args: argparse.Namespace) -> int:
     import math
     import warnings
 
+    from ..build import build_sea, check_scene, scene_attrs
     from ..config import load_scene
     from ..io.dataset import write_dataset_atomic
     from ..io.figures import elevation_map
     from ..io.surface import surface_dataset
-    from ..ocean.sampling import check_sampling
     from . import UsageError
 
     scene = load_scene(args.scene)
@@ -46,8 +46,8 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"--time {times}: times must be finite numbers of seconds")
     with warnings.catch_warnings():
         warnings.simplefilter("always")
-        check_sampling(scene)
-    ds = surface_dataset(scene, times)
+        check_scene(scene)
+    ds = surface_dataset(build_sea(scene), times, attrs=scene_attrs(scene), name=scene.name)
     write_dataset_atomic(ds, out)
     print(f"wrote {out} ({len(times)} time(s), {ds.sizes['y']} x {ds.sizes['x']} grid, "
           f"Hs of resolved band {ds.attrs['expected_hs_resolved_m']:.3f} m)")

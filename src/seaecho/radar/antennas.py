@@ -32,7 +32,7 @@ towards the scatterer, n = -d arriving at a receiving one) the antenna's own bas
     \\hat h_a = \\frac{\\hat z_a \\times \\hat n}{|\\hat z_a \\times \\hat n|},\\quad
     \\hat v_a = \\hat h_a \\times \\hat n                                               (A2)
 
-(the forward scattering alignment of ``shared/DESIGN.md`` with the platform's vertical
+(the forward scattering alignment of docs/conventions.md with the platform's vertical
 z_a, body z in the world, in place of the world z: on a level platform a port H excites
 exactly the world basis h of eq F1 in every direction; roll and attitude errors mix the
 ports). Port states: H = h_a, V = v_a, P = (v_a + h_a)/sqrt 2 (+45 deg),
@@ -57,7 +57,7 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..config.radar import PORTS, AntennaConfig
+from ..conventions import PORTS
 
 _SQRT_HALF = np.sqrt(0.5)
 _DEGENERATE = 1e-12
@@ -305,12 +305,6 @@ class Antenna:
     height: float | None = None
     basis: str = "hv"
     cross_polar_isolation_db: float | None = None
-
-    @classmethod
-    def from_config(cls, cfg: AntennaConfig, wavelength: float) -> Antenna:
-        """Antenna of a ``[<platform>.antenna]`` section at carrier wavelength [m]."""
-        return cls(cfg.pattern, wavelength, cfg.width_m, cfg.height_m, cfg.basis,
-                   cfg.cross_polar_isolation_db)
 
     @property
     def ports(self) -> tuple[str, str]:

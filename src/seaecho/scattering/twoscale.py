@@ -35,12 +35,10 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..ocean.twoscale import SPM_KH_MAX
 from . import frames
 from .spm import HeightSpectrum, spm_matrix
 from .validity import SPMValidityWarning
-
-#: SPM validity bound on k h (rms height h of the small-scale roughness).
-SPM_KH_MAX = 0.3
 
 
 def check_spm_validity(k: float, small_scale_height_variance: float | None) -> None:

@@ -87,7 +87,7 @@ from .michell import wigley_amplitude, wigley_wave_resistance
 from .ship import Ship
 
 #: Kelvin half-angle asin(1/3) [rad] (19.47 deg; the paper's 38.54 deg full cone is a typo
-#: for 38.94 deg, see DESIGN.md).
+#: for 38.94 deg, see docs/wake.md).
 KELVIN_HALF_ANGLE = float(np.arcsin(1.0 / 3.0))
 
 
