@@ -72,8 +72,8 @@ def _point_model(tmp_path, scene, model):
 def test_scene_nrcs_lies_between_the_mean_plane_spm_and_two_scale_models(tmp_path, capsys):
     # The run's sigma0 (NRCS per unit horizontal area of each cell, its facets summed),
     # averaged over the tile, against `seaecho sigma` for the same sea and carrier
-    # (paper eqs 8-9; Valenzuela 1968 for the tilts). At 40 deg the echo is Bragg
-    # scattering (Kirchhoff weight 10^-((40/18.85)^1.5) < 1e-3) on facets tilted by the
+    # (paper eqs 8-9; Valenzuela 1968 for the tilts). At 40 deg the co-pol echo is Bragg
+    # scattering (Kirchhoff weight 10^-((40/18.85)^8), eq 10, is nil) on facets tilted by the
     # resolved waves: the scene value must lie between the untilted SPM and the two-scale
     # model that tilts by every wave longer than k/3 (the facets carry only the waves
     # the grid resolves, low-passed by the triangles). Measured: VV -18.60 dB within
@@ -208,8 +208,8 @@ def test_turbulent_wake_darkens_the_bragg_echo(tmp_path):
     # Behind a ship the short (Bragg) waves are damped (Milgram, Peltzer & Griffin 1993):
     # cells fully inside the strip (mask 1) keep only the Kirchhoff part of the echo
     # (eq P1-P3 with d = 1), which at this low-grazing, far-from-specular geometry is
-    # orders of magnitude below the Bragg echo of the undamped cells (weight
-    # 10^-((beta/18.85)^1.5) with beta ~ 90 deg). The run's sigma0 map shows it.
+    # orders of magnitude below the Bragg echo of the undamped cells (co-pol weight
+    # 10^-((beta/18.85)^8), eq 10, with beta ~ 90 deg). The run's sigma0 map shows it.
     sim = Simulation(_wake_scene(0, shadowing="none"))
     out = sim.run(tmp_path / "w.nc", progress=False)
     with xr.open_dataset(out, engine="h5netcdf") as ds:

@@ -30,7 +30,7 @@ def test_blend_weights_at_stated_angles():
 
 def test_blend_channels_use_their_weights():
     # Paper eqs 10-11 at beta = 6 pi deg = 18.85 deg, written out: co-pol (HH, VV) take
-    # w1 = 10^-((beta / 6 pi)^1.5) = 0.1, cross-pol (HV, VH) w2 = 10^-((beta / 20 pi)^1.5)
+    # w1 = 10^-((beta / 6 pi)^8) = 0.1, cross-pol (HV, VH) w2 = 10^-((beta / 20 pi)^1.5)
     # = 10^-(0.3^1.5) = 0.6846; sigma = (1 - w) sigma_SPM + w sigma_K per channel.
     s_spm = np.array([1.0, 2.0, 3.0, 4.0])
     s_k = np.array([10.0, 20.0, 30.0, 40.0])
