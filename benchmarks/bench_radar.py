@@ -1,4 +1,4 @@
-"""Benchmark of the radar stage (issue 5): run as ``python benchmarks/bench_radar.py``.
+"""Benchmark of the radar stage: run as ``python benchmarks/bench_radar.py``.
 
 1. One bistatic quad-pol pulse over a 512 x 512 sea, ray traced (the paper's Simulation 1
    scene), broken down by stage; best of ``--repeat`` runs.

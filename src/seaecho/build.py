@@ -26,6 +26,10 @@ perturbation bound ``k h <= 0.3`` in :mod:`seaecho.ocean.twoscale`; the wind-hei
 conversions in :mod:`seaecho.ocean.wind`; the physical constants in
 :mod:`seaecho.constants`. A scene without ``[radar]`` has no carrier: the functions that
 need one take it explicitly (``frequency``) and raise a ``ValueError`` otherwise.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

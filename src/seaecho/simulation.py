@@ -20,6 +20,10 @@ noise is drawn per pulse (``"noise"`` stream, pulse index).
 :meth:`Simulation.run` writes pulses to a temporary file beside the destination as they
 are computed (memory bounded by one block of pulses) and renames it into place at the end;
 an exception or an interrupt removes it (``seaecho.io.dataset.atomic_path``).
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

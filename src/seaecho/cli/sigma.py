@@ -5,6 +5,10 @@ phi_s_deg, sigma_hh_db, sigma_hv_db, sigma_vh_db, sigma_vv_db``) and a PNG besid
 Each angle option takes a value or an inclusive ``start:stop:step`` range; the rows are
 the Cartesian product of the four angle lists. Monostatic: ``--phi-s-deg 180`` (with
 ``--phi-i-deg 0``) and ``--theta-s-deg`` equal to ``--theta-i-deg``.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

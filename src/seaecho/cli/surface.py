@@ -1,4 +1,9 @@
-"""``seaecho surface SCENE.toml -o OUT.nc``: the sea (+ wake) at one or several times."""
+"""``seaecho surface SCENE.toml -o OUT.nc``: the sea (+ wake) at one or several times.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 

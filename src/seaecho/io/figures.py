@@ -6,6 +6,10 @@
   |received signal| per channel over pulse and range (Fig. 6b), for a unit-amplitude
   transmitted signal as in the paper (|raw| / sqrt(P_t)), in dB; ``*_sigma.png`` the NRCS
   sigma0 per unit horizontal area of each cell in dB for HH, HV, VH, VV (Figs. 6c-6f).
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

@@ -18,6 +18,10 @@ h_res of the unresolved waves, using the asymptote of eq 13 for K >> K_p:
 h_res^2 = int_{k_c}^inf (a0/2) K^-3 dK = a0 / (4 k_c^2), so k_c = sqrt(a0) k_radar / (2 x 0.3)
 and dx = pi / k_c.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] E. I. Thorsos and D. R. Jackson, "The validity of the perturbation approximation

@@ -28,6 +28,10 @@ Spreading functions (registry :data:`SPREADINGS`): ``"longuet-higgins"`` cos^2s(
 (paper eq 6, normalised to unit integral: N(1) = 1/pi), and ``"elfouhaily"`` (Elfouhaily
 et al. 1997).
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] W. J. Pierson and L. Moskowitz, "A proposed spectral form for fully developed wind

@@ -26,6 +26,10 @@ u = (K / K) omega coth(K d) z for a wave travelling along K (Lamb 1932, art. 228
 
 The tessellated FFT approach is that of Tessendorf (2001) and Mastin et al. (1987).
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] G. A. Mastin, P. A. Watterberg and J. F. Mareda, "Fourier synthesis of ocean

@@ -33,6 +33,10 @@ The bands every stage uses are fixed here, once (with k the radar wavenumber):
 - the small-perturbation validity bound k h <= :data:`SPM_KH_MAX` = 0.3 on the rms
   height h of the Bragg roughness (Thorsos & Jackson 1989; Ulaby, Moore & Fung 1982).
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] C. Cox and W. Munk, "Measurement of the roughness of the sea surface from

@@ -22,6 +22,10 @@ Stewart's printed ratio U19.5 = 1.026 U10 (his eq 16.29) does not follow from th
 coefficient he states with it; seaecho uses the profile, so that the three heights agree
 with each other.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] R. H. Stewart, *Introduction to Physical Oceanography*, Texas A&M University,

@@ -40,6 +40,10 @@ M = (v_a - h_a)/sqrt 2 (-45 deg), R = (v_a - j h_a)/sqrt 2, L = (v_a + j h_a)/sq
 (IEEE handedness for exp(+j omega t), (v, h, n) right-handed). A cross-polar isolation
 X [dB] mixes in x = 10^(-X/20) of the other port: e_1' = (e_1 + x e_2)/sqrt(1 + x^2).
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] C. A. Balanis, *Antenna Theory: Analysis and Design*, 4th ed., Wiley, 2016,

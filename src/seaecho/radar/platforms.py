@@ -17,6 +17,10 @@ yaw counter-clockwise from +x, pitch positive nose up, roll positive right wing 
 
 Everything is vectorised over time: ``state(t)`` takes any array of times.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] A. Gelb (ed.), *Applied Optimal Estimation*, MIT Press, 1974, section 3.8

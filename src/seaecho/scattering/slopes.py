@@ -14,6 +14,10 @@ Cox and Munk's normalised slopes are ``xi = z_c / sigma_c`` and ``eta`` the slop
 ``c03 < 0`` the downwind component ``z_u`` then has skewness ``c03 < 0``: the long tail
 is on the steep leeward (downwind-facing) wave faces.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] Cox, C. and Munk, W. (1954). Measurement of the roughness of the sea surface from

@@ -59,6 +59,10 @@ where W = 1.
 
     \\frac{\\partial z}{\\partial t} = -\\mathbf{V}\\cdot\\nabla z            (W12)
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] W. Thomson (Lord Kelvin), "On ship waves", Proc. Inst. Mech. Eng. 38, 409-434
