@@ -3,7 +3,7 @@
 Run: ``python examples/sigma0_vs_grazing.py [OUTDIR]`` (default ``docs/figures``).
 Writes ``scattering_sigma0_vs_grazing.png``, four panels, sigma0 averaged over the looks
 upwind, crosswind (x2) and downwind, sea water at 20 degC and 35 psu, Elfouhaily spectrum,
-U19.5 = 1.026 U10:
+U19.5 from U10 by the log profile of seaecho.ocean.wind:
 
 * (a), (b) X band (9.3 GHz), HH and VV against grazing angle for sea states 3 and 5
   (U10 7 and 12.5 m/s): blend, two-scale and two-scale + breaking (Kudryavtsev et al.
@@ -38,6 +38,7 @@ from reference_models import (  # noqa: E402
 )
 from seaecho.ocean.seawater import sea_water_permittivity  # noqa: E402
 from seaecho.ocean.spectra import DirectionalSpectrum  # noqa: E402
+from seaecho.ocean.wind import u19_5_from_u10
 from seaecho.scattering.models import sea_sigma  # noqa: E402
 from seaecho.warnings import ValidityWarning  # noqa: E402
 
@@ -48,7 +49,7 @@ MODELS = (("blend", ":"), ("two-scale", "--"), ("two-scale+breaking", "-"))
 def look_averaged(model: str, f_hz: float, u10: float, inc_deg) -> np.ndarray:
     """Monostatic sigma0 (n, 4) averaged over the four looks; wind towards +x."""
     eps = sea_water_permittivity(f_hz, 20.0, 35.0)
-    spec = DirectionalSpectrum(u19_5=1.026 * u10)
+    spec = DirectionalSpectrum(u19_5=float(u19_5_from_u10(u10)))
     th = np.radians(np.asarray(inc_deg, dtype=float))[:, None]
     phi_i = np.pi + np.radians(LOOKS_DEG)[None, :]
     with warnings.catch_warnings():

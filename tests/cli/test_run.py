@@ -38,7 +38,7 @@ def test_run_calibration_scene(tmp_path, capsys):
         gains = []
         for name, pos in (("transmitter", tx), ("receiver", rx)):
             a = getattr(scene, name).antenna
-            ant = Antenna.from_config(a, lam)
+            ant = Antenna(a.pattern, lam, a.width_m, a.height_m)
             b = np.array(a.look_at_m) - pos
             b /= np.linalg.norm(b)
             w = np.cross([0, 0, 1.0], b)

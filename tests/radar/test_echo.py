@@ -26,7 +26,7 @@ def _setup():
 
 
 def test_nufft_equals_direct_sum():
-    # Eq (E2) by finufft type 1 against the explicit O(K N) sum: 1e-6 relative (issue 5)
+    # Eq (E2) by finufft type 1 against the explicit O(K N) sum: 1e-6 relative (docs/radar.md)
     s, w, spec = _setup()
     rng = np.random.default_rng(0)
     k = 2000

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from seaecho.build import build_radar
 from seaecho.config import parse_scene
 from seaecho.radar.system import RadarSystem
 
@@ -40,8 +41,8 @@ CASES = [
 @pytest.mark.parametrize("tx_ant,rx_ant,channels,roll", CASES)
 def test_drjit_kernel_matches_numpy(tx_ant, rx_ant, channels, roll):
     sc = _scene(tx_ant, rx_ant, channels, roll)
-    fast = RadarSystem(sc, backend="drjit")
-    ref = RadarSystem(sc, backend="numpy")
+    fast = RadarSystem(build_radar(sc), backend="drjit")
+    ref = RadarSystem(build_radar(sc), backend="numpy")
     rng = np.random.default_rng(4)
     k = 5000
     p = np.column_stack([rng.uniform(-40, 40, k), rng.uniform(-40, 40, k),

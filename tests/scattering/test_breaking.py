@@ -9,6 +9,7 @@ import pytest
 
 from seaecho.constants import C0
 from seaecho.ocean.spectra import DirectionalSpectrum
+from seaecho.ocean.wind import u10_from_u19_5, u19_5_from_u10
 from seaecho.scattering import frames
 from seaecho.scattering.breaking import (
     EPS_WB,
@@ -136,7 +137,7 @@ def test_breaking_share_grows_with_wind_and_towards_grazing_hh():
     inc = np.radians(np.array([30.0, 45.0, 60.0, 75.0, 85.0]))
     shares = []
     for u10 in (5.0, 10.0, 15.0):
-        spec = DirectionalSpectrum(u19_5=1.026 * u10)
+        spec = DirectionalSpectrum(u19_5=float(u19_5_from_u10(u10)))
         reg = sea_sigma("two-scale", inc, np.pi, inc, 0.0, 9.3e9, spec, 55 - 37j)
         tot = sea_sigma("two-scale+breaking", inc, np.pi, inc, 0.0, 9.3e9, spec, 55 - 37j)
         share = (tot - (1.0 - breaking_statistics(u10, K_X).q) * reg) / tot
@@ -154,7 +155,7 @@ def test_sea_sigma_breaking_is_eq1_combination():
     th = np.radians([20.0, 50.0, 80.0])
     reg = sea_sigma("blend", th, 0.0, th, np.pi, 10e9, spec, 55 - 37j)
     tot = sea_sigma("blend+breaking", th, 0.0, th, np.pi, 10e9, spec, 55 - 37j)
-    st = breaking_statistics(8.0 / 1.026, 2 * np.pi * 10e9 / C0)
+    st = breaking_statistics(float(u10_from_u19_5(8.0)), 2 * np.pi * 10e9 / C0)
     n_i, n_s = _mono(th, 0.0)
     wb = breaking_sigma(n_i, n_s, wind_direction=0.4, mean_direction=st.mean_direction)
     np.testing.assert_allclose(tot, add_breaking(reg, wb, st.q), rtol=1e-12)

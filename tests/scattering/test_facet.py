@@ -180,7 +180,7 @@ def test_no_nan_or_inf_for_any_geometry(a, b, c, model):
 
 
 def test_accepts_the_geometry_stage_facets():
-    # Integration with seaecho.geometry (issue 4): its analytic facets carry the local
+    # Integration with seaecho.geometry (analytic facets): its analytic facets carry the local
     # angles and basis rotations, which facet_sigma accepts as `local`.
     from seaecho.geometry.facets import analytic_facets
 

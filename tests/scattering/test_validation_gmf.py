@@ -12,8 +12,8 @@ References (implemented in ``tests/reference_models.py`` with provenance notes):
 
 Monostatic, sigma0 averaged over the four looks upwind, crosswind (2) and downwind
 (the references are azimuth averages or are averaged the same way), sea water at 20 degC
-and 35 psu, Elfouhaily spectrum, U19.5 = 1.026 U10. The tolerances are what the models
-reach; the disagreements that remain are asserted as such so that they stay visible.
+and 35 psu, Elfouhaily spectrum, U19.5 from U10 by seaecho.ocean.wind. The tolerances are
+what the models reach; the disagreements that remain are asserted as such so that they stay visible.
 """
 
 import numpy as np
@@ -29,6 +29,7 @@ from reference_models import (
 )
 from seaecho.ocean.seawater import sea_water_permittivity
 from seaecho.ocean.spectra import DirectionalSpectrum
+from seaecho.ocean.wind import u19_5_from_u10
 from seaecho.scattering.models import sea_sigma
 
 LOOKS_DEG = (0.0, 90.0, 180.0, 270.0)  # relative to upwind
@@ -41,7 +42,7 @@ def _db(x):
 def _seaecho(model, f_hz, u10, inc_deg):
     """Look-averaged monostatic sigma0 (..., 4) of a seaecho mean-plane model."""
     eps = sea_water_permittivity(f_hz, 20.0, 35.0)
-    spec = DirectionalSpectrum(u19_5=1.026 * u10)  # wind blows towards +x
+    spec = DirectionalSpectrum(u19_5=float(u19_5_from_u10(u10)))  # wind blows towards +x
     th = np.radians(np.atleast_1d(np.asarray(inc_deg, dtype=float)))[:, None]
     # A look at angle a from upwind: the radar looks towards pi + a (against the wind).
     phi_i = np.pi + np.radians(LOOKS_DEG)[None, :]

@@ -1,4 +1,4 @@
-"""Aligned buffers for the Dr.Jit kernels (seaecho.geometry.buffers)."""
+"""Aligned buffers for the Dr.Jit kernels (seaecho.drjit_buffers)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from seaecho.geometry.buffers import ALIGNMENT, aligned
+from seaecho.drjit_buffers import ALIGNMENT, aligned
 
 
 @settings(max_examples=30, deadline=None)

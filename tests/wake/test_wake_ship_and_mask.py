@@ -5,8 +5,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from seaecho.config.ship import ShipConfig
-from seaecho.constants import KNOT
+from seaecho.build import build_sea
+from seaecho.config import parse_scene
 from seaecho.wake import Ship, turbulent_wake_mask, turbulent_wake_strip, turbulent_wake_width
 
 
@@ -17,22 +17,19 @@ def test_straight_track_and_velocity():
     np.testing.assert_allclose(ship.position(4.0), [1.0, -2.0] + 20.0 * ship.direction)
 
 
-def test_from_config_converts_knots_and_degrees():
-    cfg = ShipConfig(
-        length_m=10.0,
-        beam_m=4.0,
-        draft_m=1.5,
-        speed_kn=10.0,
-        heading_deg=35.0,
-        position_m=(3.0, 4.0),
-        turbulent_wake_length_m=150.0,
-    )
-    ship = Ship.from_config(cfg)
-    assert ship.speed == pytest.approx(10.0 * KNOT)
+def test_builder_converts_knots_and_degrees():
+    # [ship] in knots and degrees -> the wake stage's SI Ship (seaecho.build)
+    ship_cfg = {"length_m": 10.0, "beam_m": 4.0, "draft_m": 1.5, "speed_kn": 10.0,
+                "heading_deg": 35.0, "position_m": [3.0, 4.0],
+                "turbulent_wake_length_m": 150.0}
+    sea = {"wind_speed_m_s": 5.0, "size_x_m": 16.0, "nx": 16}
+    ship = build_sea(parse_scene({"sea": sea, "ship": ship_cfg})).ship
+    assert ship.speed == pytest.approx(10.0 * 1852.0 / 3600.0)  # 1 kn = 1852 m / h
     assert ship.heading == pytest.approx(np.deg2rad(35.0))
     assert ship.position0 == (3.0, 4.0)
     assert ship.wake_length == 150.0
-    default = Ship.from_config(cfg.model_copy(update={"turbulent_wake_length_m": None}))
+    del ship_cfg["turbulent_wake_length_m"]
+    default = build_sea(parse_scene({"sea": sea, "ship": ship_cfg})).ship
     assert default.wake_length == pytest.approx(200.0)
 
 

@@ -14,15 +14,15 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from ..build import check_scene
     from ..config import load_scene
-    from ..ocean.sampling import check_sampling
 
     scene = load_scene(args.scene)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        check_sampling(scene)
+        check_scene(scene)
     lx, ly = scene.sea.size_m
-    nx, ny = scene.sea.grid_shape
+    ny, nx = scene.sea.shape
     print(f"{args.scene}: valid scene '{scene.name}'")
     print(f"  sea: {scene.sea.spectrum} spectrum, U19.5 = {scene.sea.wind_speed_m_s} m/s "
           f"towards {scene.sea.wind_direction_deg} deg, tile {lx} x {ly} m on {nx} x {ny}")

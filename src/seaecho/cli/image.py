@@ -82,7 +82,7 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
     from ..imaging.focus import focus
     from ..imaging.quality import paper_metrics
     from ..io.dataset import write_dataset_atomic
-    from ..simulation import _quiet_invalid_netcdf
+    from ..io.run import quiet_invalid_netcdf
     from . import UsageError
 
     timings: dict = {}
@@ -91,7 +91,7 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
         img = focus(raw_path, cfg, backend=backend, timings=timings, progress=progress)
     except ValueError as exc:  # bad grid, window, or a file that is not a raw dataset
         raise UsageError(f"{raw_path}: {exc}") from None
-    with _quiet_invalid_netcdf():
+    with quiet_invalid_netcdf():
         write_dataset_atomic(img, out)
     wrote = [out]
     ny, nx = img.sizes["y"], img.sizes["x"]

@@ -1,4 +1,9 @@
-"""``seaecho run SCENE.toml -o OUT.nc``: simulate the radar echoes of a scene."""
+"""``seaecho run SCENE.toml -o OUT.nc``: simulate the radar echoes of a scene.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 
@@ -26,9 +31,9 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     import xarray as xr
 
+    from ..build import build_simulation, check_scene
     from ..config import SceneError, load_scene
-    from ..ocean.sampling import check_sampling
-    from ..radar.figures import run_figures
+    from ..io.figures import run_figures
     from ..simulation import Simulation
     from . import UsageError
 
@@ -52,9 +57,9 @@ def run(args: argparse.Namespace) -> int:
     if str(out.parent) and not out.parent.is_dir():
         raise UsageError(f"output directory {out.parent} does not exist")
     if scene.radar.sea_clutter:
-        check_sampling(scene)  # SamplingWarning on stderr if the tile / grid is too coarse
+        check_scene(scene)  # SamplingWarning on stderr if the tile / grid is too coarse
     try:
-        sim = Simulation(scene, base_dir=Path(args.scene).parent)
+        sim = Simulation.from_models(build_simulation(scene, base_dir=Path(args.scene).parent))
     except ValueError as exc:
         raise SceneError(f"{args.scene}: {exc}") from None
     sim.run(out, progress=not args.quiet)

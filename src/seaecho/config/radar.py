@@ -12,7 +12,7 @@ Sections (TOML tables):
 - ``[[targets]]``             point targets: position, velocity, RCS or a 2x2 scattering
   matrix.
 
-Conventions (``shared/DESIGN.md``): SI inside, degrees and dB only in names ending
+Conventions (docs/conventions.md): SI inside, degrees and dB only in names ending
 ``_deg``/``_db``; world frame x east, y north, z up. A platform's body frame is x forward,
 y left, z up; its attitude (yaw, pitch, roll) turns the body frame into the world frame
 as R = Rz(yaw) Ry(-pitch) Rx(roll): yaw counter-clockwise from +x (east), pitch positive
@@ -30,12 +30,11 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
+from ..conventions import PORTS
 from .base import Section
 
 Vec3 = tuple[float, float, float]
 
-#: Port letters of each antenna polarisation basis (first letter, second letter).
-PORTS: dict[str, tuple[str, str]] = {"hv": ("H", "V"), "slant": ("P", "M"), "circular": ("R", "L")}
 
 PatternName = Literal["rectangular", "isotropic", "dipole", "hw_dipole", "tr38901"]
 BasisName = Literal["hv", "slant", "circular"]
@@ -315,7 +314,7 @@ class TargetConfig(Section):
     """A point target: position, velocity and its RCS or 2x2 scattering matrix.
 
     The scattering amplitudes s_mn are in metres, |s_mn|^2 = sigma_mn [m^2], in the
-    forward-scattering-alignment bases of ``shared/DESIGN.md`` (m received, n transmitted),
+    forward-scattering-alignment bases of docs/conventions.md (m received, n transmitted),
     given as (real, imaginary) pairs.
     """
 

@@ -81,9 +81,9 @@ class SeaConfig(Section):
         return self
 
     @property
-    def grid_shape(self) -> tuple[int, int]:
-        """(nx, ny) grid points."""
-        return self.nx, self.ny if self.ny is not None else self.nx
+    def shape(self) -> tuple[int, int]:
+        """Grid nodes (ny, nx) in array order, the shape of every gridded field."""
+        return self.ny if self.ny is not None else self.nx, self.nx
 
     @property
     def size_m(self) -> tuple[float, float]:

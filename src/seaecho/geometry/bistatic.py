@@ -1,6 +1,6 @@
 r"""Bistatic geometry of facets: ranges and directions (float64), angles and bases.
 
-Conventions (``DESIGN.md``): ``n_i`` points from the transmitter towards the facet,
+Conventions (docs/conventions.md): ``n_i`` points from the transmitter towards the facet,
 ``n_s`` from the facet towards the receiver. The local angles and the polarisation-basis
 rotations come from :mod:`seaecho.scattering.frames` (eqs F1-F4 there): this module only
 adds the ranges and directions, and the global angles (about +z)::

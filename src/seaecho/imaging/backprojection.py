@@ -87,7 +87,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.fft import next_fast_len
 
 from ..constants import C0
-from ..geometry.buffers import aligned
+from ..drjit_buffers import aligned
 from .windows import AzimuthWindow
 
 __all__ = [

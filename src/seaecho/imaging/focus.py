@@ -158,15 +158,11 @@ class RawData:
         return Track(*arrays)
 
     def antennas(self):
-        """(transmit, receive) antenna patterns of the file's scene."""
-        from ..config.radar import AntennaConfig
-        from ..radar.antennas import Antenna
+        """(transmit, receive) antenna patterns of the file's scene (through the builder)."""
+        from ..build import build_antennas
+        from ..config import parse_scene
 
-        tx_cfg = self.scene["transmitter"]["antenna"]
-        rx = self.scene.get("receiver")
-        rx_cfg = tx_cfg if rx is None else rx["antenna"]
-        return tuple(Antenna.from_config(AntennaConfig.model_validate(c), self.wavelength)
-                     for c in (tx_cfg, rx_cfg))
+        return build_antennas(parse_scene(self.scene, source="the dataset's scene_json"))
 
     def compressed(self, start: int, stop: int, weighting: str | None, nbar: int = 5,
                    sidelobe_db: float = 35.0) -> NDArray[np.complex128]:

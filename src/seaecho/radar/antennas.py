@@ -32,13 +32,17 @@ towards the scatterer, n = -d arriving at a receiving one) the antenna's own bas
     \\hat h_a = \\frac{\\hat z_a \\times \\hat n}{|\\hat z_a \\times \\hat n|},\\quad
     \\hat v_a = \\hat h_a \\times \\hat n                                               (A2)
 
-(the forward scattering alignment of ``shared/DESIGN.md`` with the platform's vertical
+(the forward scattering alignment of docs/conventions.md with the platform's vertical
 z_a, body z in the world, in place of the world z: on a level platform a port H excites
 exactly the world basis h of eq F1 in every direction; roll and attitude errors mix the
 ports). Port states: H = h_a, V = v_a, P = (v_a + h_a)/sqrt 2 (+45 deg),
 M = (v_a - h_a)/sqrt 2 (-45 deg), R = (v_a - j h_a)/sqrt 2, L = (v_a + j h_a)/sqrt 2
 (IEEE handedness for exp(+j omega t), (v, h, n) right-handed). A cross-polar isolation
 X [dB] mixes in x = 10^(-X/20) of the other port: e_1' = (e_1 + x e_2)/sqrt(1 + x^2).
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 
 References
 ----------
@@ -57,7 +61,7 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..config.radar import PORTS, AntennaConfig
+from ..conventions import PORTS
 
 _SQRT_HALF = np.sqrt(0.5)
 _DEGENERATE = 1e-12
@@ -305,12 +309,6 @@ class Antenna:
     height: float | None = None
     basis: str = "hv"
     cross_polar_isolation_db: float | None = None
-
-    @classmethod
-    def from_config(cls, cfg: AntennaConfig, wavelength: float) -> Antenna:
-        """Antenna of a ``[<platform>.antenna]`` section at carrier wavelength [m]."""
-        return cls(cfg.pattern, wavelength, cfg.width_m, cfg.height_m, cfg.basis,
-                   cfg.cross_polar_isolation_db)
 
     @property
     def ports(self) -> tuple[str, str]:

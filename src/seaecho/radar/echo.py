@@ -27,6 +27,10 @@ Scatterers whose echo cannot reach the window (tau outside
 [t_0 - T - guard, t_0 + T_w + guard]) are dropped before the sum; the period N leaves
 ``guard`` samples on both sides so that no kept echo wraps around into the window.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] A. Dutt and V. Rokhlin, "Fast Fourier transforms for nonequispaced data",

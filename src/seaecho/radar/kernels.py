@@ -15,7 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..constants import C0
-from ..geometry.buffers import aligned
+from ..drjit_buffers import aligned
 
 _DEGENERATE = 1e-9
 
@@ -166,7 +166,7 @@ def scatterer_echo_drjit(radar, geometry, p: NDArray, v: NDArray, s: NDArray,
         return _opaque3(dr, Array3f64, a)
 
     def arr(a):
-        a = aligned(a)  # 64-byte aligned: one compiled kernel (geometry.buffers)
+        a = aligned(a)  # 64-byte aligned: one compiled kernel (seaecho.drjit_buffers)
         keep.append(a)
         return Float64(a)
 

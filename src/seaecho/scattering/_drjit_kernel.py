@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from .._llvm import configure_llvm
-from ..geometry.buffers import aligned
+from ..drjit_buffers import aligned
 
 configure_llvm()
 import drjit as dr  # noqa: E402
@@ -103,7 +103,7 @@ def facet_kernel(n_i, n_s, nn, damping, k, eps, mss_u, mss_c, wind, table, cox_m
     [m]: K, B and w never leave the kernel (fewer passes over memory than
     ``speckle_amplitudes`` on the returned terms; same values within rounding).
     """
-    keep = []  # input buffers (64-byte aligned: one compiled kernel, geometry.buffers)
+    keep = []  # input buffers (64-byte aligned: one compiled kernel, seaecho.drjit_buffers)
 
     def col(a):
         a = aligned(a)

@@ -9,7 +9,7 @@
     \\log_{10} w_2(\\beta) = -\\left(\\frac{\\beta}{20\\pi}\\right)^{1.5} \\qquad \\text{(B3, B4)}
 
 ``beta`` is the angle between the (local) surface normal and ``q = k (n_s - n_i)``, **in
-degrees** (``../shared/DESIGN.md``): ``w1 = 0.1`` at ``beta = 6 pi = 18.85 deg``, the
+degrees** (docs/conventions.md): ``w1 = 0.1`` at ``beta = 6 pi = 18.85 deg``, the
 paper's "Kirchhoff valid within +-20 deg of specular"; ``w2 = 0.1`` at
 ``beta = 20 pi = 62.8 deg``. Co-polarised channels (HH, VV) use ``w1``, cross-polarised
 (HV, VH) ``w2``.

@@ -1,7 +1,7 @@
 """Per-facet polarimetric scattering: sigma_mn and speckled complex amplitudes.
 
-This is the interface between the surface (ray-traced or analytic facets, issue 4) and
-the radar equation (issue 5). A facet of area ``A`` and unit normal ``N`` carries the
+This is the interface between the surface (ray-traced or analytic facets, tracing) and
+the radar equation (radar). A facet of area ``A`` and unit normal ``N`` carries the
 unresolved (sub-facet) roughness of the ocean stage: slope variances for the specular
 (Kirchhoff/GO) part, the height spectrum at the local Bragg vector for the Bragg (SPM)
 part. For each facet the model gives two complex 2x2 *mechanism matrices* in the global

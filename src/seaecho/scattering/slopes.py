@@ -14,6 +14,10 @@ Cox and Munk's normalised slopes are ``xi = z_c / sigma_c`` and ``eta`` the slop
 ``c03 < 0`` the downwind component ``z_u`` then has skewness ``c03 < 0``: the long tail
 is on the steep leeward (downwind-facing) wave faces.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] Cox, C. and Munk, W. (1954). Measurement of the roughness of the sea surface from
@@ -27,6 +31,8 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+
+from ..ocean.wind import u12_5_from_u19_5
 
 
 @dataclass(frozen=True)
@@ -75,26 +81,6 @@ def cox_munk_parameters(u12_5: float) -> CoxMunkParameters:
         c21=0.01 - 0.0086 * u12_5,
         c03=0.04 - 0.033 * u12_5,
     )
-
-
-def u12_5_from_u19_5(u19_5: ArrayLike, z0: float = 1.5e-4) -> NDArray:
-    """Wind speed at 12.5 m from that at 19.5 m with a neutral logarithmic profile.
-
-    ``U(z) = (u*/kappa) ln(z/z0)``, so ``U12.5 = U19.5 ln(12.5/z0) / ln(19.5/z0)``.
-
-    Parameters
-    ----------
-    u19_5 : array_like
-        Wind speed at 19.5 m [m/s].
-    z0 : float
-        Aerodynamic roughness length [m]; 1.5e-4 m is typical of moderate winds.
-
-    Returns
-    -------
-    ndarray
-        Wind speed at 12.5 m [m/s].
-    """
-    return np.asarray(u19_5, dtype=float) * np.log(12.5 / z0) / np.log(19.5 / z0)
 
 
 def gaussian_log_pdf(z_u: ArrayLike, z_c: ArrayLike, mss_upwind: ArrayLike,

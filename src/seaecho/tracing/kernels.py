@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..geometry.buffers import aligned
+from ..drjit_buffers import aligned
 
 __all__ = ["facet_frames_drjit"]
 

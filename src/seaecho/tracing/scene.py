@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..constants import C0
-from ..geometry.buffers import aligned
+from ..drjit_buffers import aligned
 from ..geometry.mesh import grid_faces, grid_vertices
 from .variant import mitsuba_modules
 
@@ -374,7 +374,7 @@ def shadow_rays(mi_scenes: Sequence, origins: np.ndarray, directions: np.ndarray
     if n == 0 or not mi_scenes:
         return hit
     # Contiguous float32 copies that stay referenced until the results are read back.
-    # 64-byte aligned (geometry.buffers): one compiled ray-test kernel per scene
+    # 64-byte aligned (seaecho.drjit_buffers): one compiled ray-test kernel per scene
     o = [aligned(origins[:, k], np.float32) for k in range(3)]
     d = [aligned(directions[:, k], np.float32) for k in range(3)]
     t = aligned(maxt, np.float32)

@@ -6,6 +6,10 @@
 - :func:`turbulent_wake_mask`: the damped strip behind the stern (eqs W13-W14).
 
 Theory and sources: ``docs/wake.md``.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from .kelvin import KELVIN_HALF_ANGLE, KelvinWake, WakeFields, kelvin_crest_lines

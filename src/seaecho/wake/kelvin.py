@@ -79,6 +79,10 @@ phase of eq W4, and its Airy form at the cusp, ``Ai_max = 0.5357``).
 
     \\frac{\\partial z}{\\partial t} = -\\mathbf{V}\\cdot\\nabla z            (W12)
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] W. Thomson (Lord Kelvin), "On ship waves", Proc. Inst. Mech. Eng. 38, 409-434
@@ -108,7 +112,7 @@ from .michell import wigley_amplitude, wigley_wave_resistance
 from .ship import WAKE_AMPLITUDE_MODELS, Ship
 
 #: Kelvin half-angle asin(1/3) [rad] (19.47 deg; the paper's 38.54 deg full cone is a typo
-#: for 38.94 deg, see DESIGN.md).
+#: for 38.94 deg, see docs/wake.md).
 KELVIN_HALF_ANGLE = float(np.arcsin(1.0 / 3.0))
 #: Maximum of the Airy function Ai [-] (at x = -1.0188).
 _AI_MAX = 0.5357

@@ -2,7 +2,7 @@
 
 Frames
 ------
-World frame: x east, y north, z up (DESIGN.md). The ship sails towards the azimuth
+World frame: x east, y north, z up (docs/conventions.md). The ship sails towards the azimuth
 ``heading`` (counter-clockwise from +x) at speed ``V``; its hull centre (midship) is at
 
 .. math::
@@ -26,17 +26,14 @@ The bow is at x' = -L/2 and the stern at x' = +L/2.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..constants import G
 
-if TYPE_CHECKING:  # pragma: no cover
-    from ..config.ship import ShipConfig
-
-#: Default length of the turbulent wake strip, in ship lengths.
+#: Default length of the turbulent wake strip, in ship lengths (a modelling choice,
+#: docs/wake.md).
 DEFAULT_TURBULENT_WAKE_SHIP_LENGTHS = 20.0
 #: Kelvin-wake height models: empirical (Kriebel & Seelig 2005) or Michell's theory.
 WAKE_AMPLITUDE_MODELS = ("kriebel-seelig", "michell")
@@ -114,30 +111,6 @@ class Ship:
                              f"{self.turbulent_wake_film_contrast_db!r} dB: must be <= 0")
         object.__setattr__(self, "position0", (float(p0[0]), float(p0[1])))
         object.__setattr__(self, "_p0", p0)
-
-    @classmethod
-    def from_config(cls, cfg: ShipConfig) -> Ship:
-        """Build a :class:`Ship` from the scene file's ``[ship]`` section.
-
-        Parameters
-        ----------
-        cfg : seaecho.config.ship.ShipConfig
-            Validated ship section (speed in kn or m/s, heading in degrees).
-        """
-        return cls(
-            length=float(cfg.length_m),
-            beam=float(cfg.beam_m),
-            draft=float(cfg.draft_m),
-            speed=float(cfg.speed),
-            heading=float(np.deg2rad(cfg.heading_deg)),
-            position0=(float(cfg.position_m[0]), float(cfg.position_m[1])),
-            turbulent_wake_length=(
-                None if cfg.turbulent_wake_length_m is None else float(cfg.turbulent_wake_length_m)
-            ),
-            wake_amplitude=cfg.wake_amplitude,
-            wake_breaking_limit=cfg.wake_breaking_limit,
-            turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db,
-        )
 
     @property
     def direction(self) -> NDArray[np.float64]:

@@ -14,7 +14,7 @@ Reed & Milgram 2002, section 5). The strip is modelled by its full width
 
 with xi the distance behind the stern along the track and w_0 the width at the stern
 (default: the beam B; the virtual origin one stern width behind the stern keeps w finite
-and smooth there), over a length L_t (default 20 ship lengths, issue 2). The mask is 1 in
+and smooth there), over a length L_t (default 20 ship lengths, a modelling choice). The mask is 1 in
 the core of the strip (fully damped) and falls smoothly to 0 across its edges and at its
 two ends:
 
