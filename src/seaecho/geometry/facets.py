@@ -23,7 +23,7 @@ from typing import Literal
 
 import numpy as np
 
-from ..scattering.frames import local_angles, tilt_rotation
+from .frames import local_angles, tilt_rotation
 from .bistatic import global_angles, ranges_directions
 from .mesh import facet_geometry, grid_vertices, to_facets
 from .shadowing import directional_slope_std, height_cdf, smith_lambda, smith_nu
