@@ -560,40 +560,48 @@ class Boundary:
         """Evaluate ``outs`` together (one kernel) and return them as numpy arrays.
 
         Each output is an array, a :class:`Vec3`/``Array3f64`` (returned (N, 3)) or a
-        :class:`Mat2` (returned (N, 2, 2)).
+        :class:`Mat2` (returned (N, 2, 2)). Entries are written into one preallocated
+        array per output (real and imaginary parts separately: no packing kernel).
         """
-        flat: list = []
+        groups = []
         for o in outs:
             if isinstance(o, Mat2):
-                flat.extend(o.flat())
+                groups.append((list(o.flat()), (2, 2)))
             elif isinstance(o, Vec3) or (not self.xp.is_numpy
                                          and isinstance(o, self.xp.Array3)):
-                flat.extend((o.x, o.y, o.z))
+                groups.append(([o.x, o.y, o.z], (3,)))
             else:
-                flat.append(o)
-        self.xp.eval(*[f for f in flat if not isinstance(f, int | float | complex)])
+                groups.append(([o], None))
+        self.xp.eval(*[e for g, _ in groups for e in g if not _is_constant(e)])
         self._keep.clear()
-        res = []
-        for o in outs:
-            if isinstance(o, Mat2):
-                res.append(self._stack([self._host(c) for c in o.flat()], (2, 2)))
-            elif isinstance(o, Vec3) or (not self.xp.is_numpy
-                                         and isinstance(o, self.xp.Array3)):
-                res.append(self._stack([self._host(c) for c in (o.x, o.y, o.z)], (3,)))
+        return [self._assemble(entries, tail) for entries, tail in groups]
+
+    def _parts(self, a: Any) -> tuple[NDArray, NDArray | None]:
+        """Host real part and imaginary part (None for a real entry) of one entry."""
+        if _is_constant(a) or self.xp.is_numpy:
+            a = np.asarray(a)
+            return (a.real, a.imag) if np.iscomplexobj(a) else (a, None)
+        if isinstance(a, self.xp.Complex):
+            return np.asarray(a.real.numpy()), np.asarray(a.imag.numpy())
+        return np.asarray(a.numpy()), None
+
+    def _assemble(self, entries: list, tail: tuple[int, ...] | None) -> NDArray:
+        parts = [self._parts(e) for e in entries]
+        shape = np.broadcast_shapes(*(p[0].shape for p in parts))
+        if self.n is not None and shape in ((), (1,)):
+            shape = (self.n,)  # constants broadcast to the entries
+        complex_ = any(im is not None for _, im in parts)
+        out = np.empty(shape + (len(entries),), dtype=np.complex128 if complex_ else np.float64)
+        for j, (re, im) in enumerate(parts):
+            if complex_:
+                out[..., j].real = re
+                out[..., j].imag = 0.0 if im is None else im
             else:
-                res.append(self._host(o))
-        return res
+                out[..., j] = re
+        if tail is None:
+            return out[..., 0]
+        return out.reshape(shape + tail)
 
-    def _host(self, a: Any) -> NDArray:
-        if isinstance(a, int | float | complex) or self.xp.is_numpy:
-            out = np.asarray(a)
-        else:
-            out = np.asarray(a.numpy())
-        if self.n is not None and out.shape != (self.n,) and out.size <= 1:
-            out = np.full((self.n,), out.reshape(()), dtype=out.dtype)  # a constant
-        return out
 
-    @staticmethod
-    def _stack(entries: list[NDArray], tail: tuple[int, ...]) -> NDArray:
-        entries = np.broadcast_arrays(*entries)
-        return np.stack(entries, axis=-1).reshape(entries[0].shape + tail)
+def _is_constant(a: Any) -> bool:
+    return isinstance(a, int | float | complex)
