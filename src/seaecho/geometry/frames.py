@@ -1,7 +1,13 @@
 """Bistatic geometry and polarisation frames (paper section II, Fig. 2).
 
-Every function takes vectors on the last axis, shape ``(..., 3)``, broadcasts its inputs
-and returns plain numpy arrays. World frame: x east, y north, z up.
+Each formula is written once, over an array namespace ``xp`` (:mod:`seaecho.backend`):
+:func:`reference_tangent`, :func:`fsa_basis` (eqs F1-F2), :func:`local_geometry` and
+:func:`bistatic_angles`, :func:`basis_change` (eq F3), :func:`tilt` and
+:func:`global_matrix` (eq F4), :func:`cos_beta`. The numpy reference path and the fused
+Dr.Jit kernels (scattering, tracing, radar) call these same functions. The numpy API
+(:func:`polarisation_basis`, :func:`local_angles`, :func:`tilt_rotation`, ...) takes
+vectors on the last axis, shape ``(..., 3)``, broadcasts its inputs and returns plain
+numpy arrays. World frame: x east, y north, z up.
 
 Symbols (paper Fig. 2 -> code):
 
@@ -44,31 +50,189 @@ References
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..backend import NUMPY, Boundary, Mat2
+
 #: Below this norm a cross product is treated as zero (the direction is along the normal).
-_DEGENERATE = 1e-9
+DEGENERATE = 1e-9
+_DEGENERATE = DEGENERATE  # former name
 
 Z_HAT = np.array([0.0, 0.0, 1.0])
 X_HAT = np.array([1.0, 0.0, 0.0])
 Y_HAT = np.array([0.0, 1.0, 0.0])
 
 
-def _dot(a: NDArray, b: NDArray) -> NDArray:
-    """Dot product over the last axis."""
-    return np.einsum("...i,...i->...", a, b)
+# ------------------------------------------------------------- formulas (any namespace)
+def reference_tangent(xp, N: Any) -> Any:
+    """Unit reference direction of the plane of unit normal ``N`` (degenerate directions).
+
+    World x projected on the plane, ``x - (x . N) N = (1 - N_x^2, -N_x N_y, -N_x N_z)``,
+    normalised; world y projected when ``N`` is within 60 deg of x (the projection of x
+    is then shorter than 0.5).
+    """
+    rx = xp.vec(1.0 - N.x * N.x, -N.x * N.y, -N.x * N.z)
+    ry = xp.vec(-N.y * N.x, 1.0 - N.y * N.y, -N.y * N.z)
+    return xp.normalize(xp.select(xp.norm(rx) < 0.5, ry, rx))
 
 
-def _normalise(a: NDArray) -> NDArray:
-    return a / np.linalg.norm(a, axis=-1, keepdims=True)
+def tangential_part(xp, n: Any, N: Any) -> tuple[Any, Any]:
+    """``t = n - (n . N) N``, or the reference direction where it vanishes; and that mask.
+
+    The tangential part of ``n`` has the length of ``N x n``: one test decides, for the
+    bases and for the local azimuths alike, which directions are degenerate.
+    """
+    t = n - xp.dot(n, N) * N
+    degenerate = xp.norm(t) < DEGENERATE
+    return xp.select(degenerate, reference_tangent(xp, N), t), degenerate
 
 
+def fsa_basis(xp, n: Any, N: Any) -> tuple[Any, Any]:
+    r"""Forward-scattering-alignment basis ``(h, v)`` of direction ``n`` about ``N``.
+
+    .. math::
+        \hat h = \frac{\hat N \times \hat n}{|\hat N \times \hat n|}, \qquad
+        \hat v = \hat h \times \hat n \qquad \text{(F1, F2)}
+
+    computed as ``h = N x t / |t|`` (``t`` from :func:`tangential_part`, normal to
+    ``N``, so that ``|N x n| = |t|``) and, where ``t`` vanishes, the limit from the
+    reference azimuth, made exactly normal to ``n`` (a change below 1e-9 there, below
+    rounding elsewhere).
+
+    Parameters
+    ----------
+    xp : array namespace
+    n, N : vectors of the namespace
+        Unit propagation direction and unit normal of the reference plane [-].
+
+    Returns
+    -------
+    h, v : vectors [-]
+
+    References
+    ----------
+    .. [1] Ulaby, Moore and Fung (1982), Vol. II, sec. 12-2; paper Fig. 2.
+    """
+    t, _ = tangential_part(xp, n, N)
+    h = xp.cross(N, xp.normalize(t))  # eq F1
+    # A degenerate n is within 1e-9 of N, not along it: make h exactly normal to n.
+    h = h - xp.dot(h, n) * n
+    return h, xp.cross(h, n)  # eq F2
+
+
+def local_geometry(xp, n_i: Any, n_s: Any, N: Any) -> tuple[Any, Any, Any, Any]:
+    r"""Cosines of the local angles and the local azimuth of ``n_s`` about a plane.
+
+    .. math::
+        \cos\theta_i = -\hat n_i\cdot\hat N, \quad \cos\theta_s = \hat n_s\cdot\hat N,
+        \quad (x_s, y_s) = (\mathbf t_s\cdot\hat e_1,\ \mathbf t_s\cdot(\hat N\times\hat e_1))
+
+    with ``t`` the tangential parts (:func:`tangential_part`) and ``e1 = t_i / |t_i|``
+    (the local incidence azimuth is 0): ``phi = atan2(y_s, x_s)``.
+
+    Returns
+    -------
+    cos_i, cos_s, x_s, y_s
+        [-], [-], [-], [-].
+    """
+    cos_i = -xp.dot(n_i, N)
+    cos_s = xp.dot(n_s, N)
+    t_i, _ = tangential_part(xp, n_i, N)
+    t_s, _ = tangential_part(xp, n_s, N)
+    e1 = xp.normalize(t_i)
+    return cos_i, cos_s, xp.dot(t_s, e1), xp.dot(t_s, xp.cross(N, e1))
+
+
+def bistatic_angles(xp, n_i: Any, n_s: Any, N: Any) -> tuple[Any, Any, Any]:
+    """``theta_i, theta_s`` [rad] in [0, pi] and ``phi = phi_s - phi_i`` [rad] in (-pi, pi].
+
+    From :func:`local_geometry`; values of ``theta`` above pi/2 mean the transmitter
+    (receiver) is behind the plane.
+
+    References
+    ----------
+    .. [1] Khenchaf and Airiau (2000), sec. 3 (local bistatic angles of a tilted facet).
+    """
+    cos_i, cos_s, x_s, y_s = local_geometry(xp, n_i, n_s, N)
+    return (xp.acos(xp.clip(cos_i, -1.0, 1.0)), xp.acos(xp.clip(cos_s, -1.0, 1.0)),
+            xp.atan2(y_s, x_s))
+
+
+def basis_change(xp, basis_from: tuple[Any, Any], basis_to: tuple[Any, Any]) -> Mat2:
+    r"""Rotation between two polarisation bases of one direction (eq F3).
+
+    .. math::
+        \mathbf e_{to} = \mathsf A\, \mathbf e_{from}, \qquad
+        \mathsf A = \begin{pmatrix} \hat h'\cdot\hat h & \hat h'\cdot\hat v \\
+        \hat v'\cdot\hat h & \hat v'\cdot\hat v \end{pmatrix} \qquad \text{(F3)}
+
+    (primes: ``basis_to``), for bases ``(h, v)`` of :func:`fsa_basis`.
+
+    References
+    ----------
+    .. [1] Valenzuela (1968); Ulaby, Moore and Fung (1982), ch. 12 (two-scale model).
+    """
+    h0, v0 = basis_from
+    h1, v1 = basis_to
+    return Mat2(xp.dot(h1, h0), xp.dot(h1, v0), xp.dot(v1, h0), xp.dot(v1, v0))
+
+
+def tilt(xp, n_i: Any, n_s: Any, N_local: Any, N_global: Any) -> tuple[Mat2, Mat2]:
+    """``A_i, A_s``: eq F3 from the global (``N_global``) to the local (``N_local``) bases.
+
+    References
+    ----------
+    .. [1] Valenzuela (1968); Khenchaf and Airiau (2000), sec. 3.
+    """
+    a_i = basis_change(xp, fsa_basis(xp, n_i, N_global), fsa_basis(xp, n_i, N_local))
+    a_s = basis_change(xp, fsa_basis(xp, n_s, N_global), fsa_basis(xp, n_s, N_local))
+    return a_i, a_s
+
+
+def global_matrix(s_local: Mat2, a_i: Mat2, a_s: Mat2) -> Mat2:
+    r"""Eq F4: a matrix of the local bases in the global ones, ``A_s^T S_loc A_i``.
+
+    .. math::
+        \mathsf S_{glob} = \mathsf A_s^{T}\, \mathsf S_{loc}\, \mathsf A_i
+        \qquad \text{(F4)}
+    """
+    return a_s.T @ s_local @ a_i
+
+
+def cos_beta(xp, n_i: Any, n_s: Any, N: Any) -> Any:
+    """Cosine of the angle between ``N`` and ``q = k (n_s - n_i)`` (paper eqs 10-11) [-].
+
+    0 (beta = pi/2) where ``n_s = n_i`` (no scattering vector).
+    """
+    d = n_s - n_i
+    qn = xp.norm(d)
+    ok = qn > DEGENERATE
+    return xp.select(ok, xp.dot(d, N) / xp.select(ok, qn, 1.0), 0.0)
+
+
+# ---------------------------------------------------------------------- numpy API
 def _as_vectors(a: ArrayLike, name: str) -> NDArray:
     a = np.asarray(a, dtype=float)
     if a.shape[-1:] != (3,):
         raise ValueError(f"{name} must have shape (..., 3), got {a.shape}")
     return a
+
+
+def _vectors(*named: tuple[ArrayLike, str]) -> list:
+    io = Boundary(NUMPY)
+    return [io.vec3(_as_vectors(a, name)) for a, name in named]
+
+
+def _np_vec(v: Any) -> NDArray:
+    return np.stack(np.broadcast_arrays(v.x, v.y, v.z), axis=-1)
+
+
+def _np_mat(m: Mat2) -> NDArray:
+    e = np.broadcast_arrays(*(np.asarray(c) for c in m.flat()))
+    return np.stack(e, axis=-1).reshape(e[0].shape + (2, 2))
 
 
 def reference_direction(normal: ArrayLike) -> NDArray:
@@ -83,15 +247,10 @@ def reference_direction(normal: ArrayLike) -> NDArray:
     -------
     ndarray, shape (..., 3)
         World x projected on the plane and normalised, or world y projected when ``N``
-        is (nearly) along x [-].
+        is (nearly) along x [-] (:func:`reference_tangent`).
     """
-    n = _as_vectors(normal, "normal")
-    # Project x on the plane; fall back on y when x is (nearly) along the normal.
-    rx = X_HAT - _dot(n, X_HAT)[..., None] * n
-    ry = Y_HAT - _dot(n, Y_HAT)[..., None] * n
-    bad = np.linalg.norm(rx, axis=-1) < 0.5
-    r = np.where(bad[..., None], ry, rx)
-    return _normalise(r)
+    (nn,) = _vectors((normal, "normal"))
+    return _np_vec(reference_tangent(NUMPY, nn))
 
 
 def polarisation_basis(
@@ -116,30 +275,15 @@ def polarisation_basis(
     h, v : ndarray, shape (..., 3)
         Orthonormal, both perpendicular to ``n``; ``(h, v, n)`` satisfies
         ``h x v = -n``. At ``n`` parallel to ``normal`` the limit from the reference
-        azimuth is returned (module docstring).
+        azimuth is returned (module docstring). Formula: :func:`fsa_basis`.
 
     References
     ----------
     .. [1] Ulaby, Moore and Fung (1982), Vol. II, sec. 12-2; paper Fig. 2.
     """
-    n = _as_vectors(n, "n")
-    nn = _as_vectors(normal, "normal")
-    n, nn = np.broadcast_arrays(n, nn)
-    # Eq F1: h along N x n = N x t (t the tangential part of n), with the
-    # reference-azimuth limit where t vanishes; the same test as local_angles, so the
-    # bases and the local azimuths always agree on which directions are degenerate.
-    t = n - _dot(n, nn)[..., None] * nn
-    degenerate = np.linalg.norm(t, axis=-1, keepdims=True) < _DEGENERATE
-    if np.any(degenerate):
-        t = np.where(degenerate, reference_direction(nn), t)
-    c = np.cross(nn, t)
-    if np.any(degenerate):
-        # Near-degenerate n is only within 1e-9 of N: make h exactly normal to n.
-        c = c - _dot(c, n)[..., None] * n
-    h = c / np.linalg.norm(c, axis=-1, keepdims=True)
-    # Eq F2: v completes the right-handed triad.
-    v = np.cross(h, n)
-    return h, v
+    nv, nn = _vectors((n, "n"), (normal, "normal"))
+    h, v = fsa_basis(NUMPY, nv, nn)
+    return _np_vec(h), _np_vec(v)
 
 
 def directions_from_angles(
@@ -189,7 +333,7 @@ def local_angles(
     with ``t = n - (n . N) N`` the tangential parts and ``e1 = t_i / |t_i|`` (the local
     incidence azimuth is 0). Where a tangential part vanishes the reference direction
     (:func:`reference_direction`) replaces it, consistently with
-    :func:`polarisation_basis`.
+    :func:`polarisation_basis`. Formula: :func:`bistatic_angles`.
 
     Parameters
     ----------
@@ -210,27 +354,9 @@ def local_angles(
     ----------
     .. [1] Khenchaf and Airiau (2000), sec. 3 (local bistatic angles of a tilted facet).
     """
-    n_i = _as_vectors(n_i, "n_i")
-    n_s = _as_vectors(n_s, "n_s")
-    nn = _as_vectors(normal, "normal")
-    n_i, n_s, nn = np.broadcast_arrays(n_i, n_s, nn)
-    ci = -_dot(n_i, nn)
-    cs = _dot(n_s, nn)
-    theta_i = np.arccos(np.clip(ci, -1.0, 1.0))
-    theta_s = np.arccos(np.clip(cs, -1.0, 1.0))
-    t_i = n_i + ci[..., None] * nn
-    t_s = n_s - cs[..., None] * nn
-    ref = None
-    ni_norm = np.linalg.norm(t_i, axis=-1, keepdims=True)
-    ns_norm = np.linalg.norm(t_s, axis=-1, keepdims=True)
-    if np.any(ni_norm < _DEGENERATE) or np.any(ns_norm < _DEGENERATE):
-        ref = reference_direction(nn)
-        t_i = np.where(ni_norm < _DEGENERATE, ref, t_i)
-        t_s = np.where(ns_norm < _DEGENERATE, ref, t_s)
-    e1 = _normalise(t_i)
-    e2 = np.cross(nn, e1)
-    phi = np.arctan2(_dot(t_s, e2), _dot(t_s, e1))
-    return theta_i, theta_s, phi
+    vi, vs, nn = _vectors((n_i, "n_i"), (n_s, "n_s"), (normal, "normal"))
+    out = bistatic_angles(NUMPY, vi, vs, nn)
+    return tuple(np.asarray(a) for a in np.broadcast_arrays(*out))
 
 
 def basis_rotation(
@@ -248,7 +374,8 @@ def basis_rotation(
         \\hat v'\\cdot\\hat h & \\hat v'\\cdot\\hat v \\end{pmatrix} \\qquad \\text{(F3)}
 
     (primes: ``normal_to``). Both bases span the plane normal to ``n`` with the same
-    handedness, so ``A`` is a rotation (``A^T = A^-1``, det 1).
+    handedness, so ``A`` is a rotation (``A^T = A^-1``, det 1). Formula:
+    :func:`basis_change`.
 
     Parameters
     ----------
@@ -266,15 +393,8 @@ def basis_rotation(
     ----------
     .. [1] Valenzuela (1968); Ulaby, Moore and Fung (1982), ch. 12 (two-scale model).
     """
-    h0, v0 = polarisation_basis(n, normal_from)
-    h1, v1 = polarisation_basis(n, normal_to)
-    a = np.empty(np.broadcast_shapes(h0.shape, h1.shape)[:-1] + (2, 2))
-    # Eq F3: projections of the old basis vectors on the new ones.
-    a[..., 0, 0] = _dot(h1, h0)
-    a[..., 0, 1] = _dot(h1, v0)
-    a[..., 1, 0] = _dot(v1, h0)
-    a[..., 1, 1] = _dot(v1, v0)
-    return a
+    nv, n0, n1 = _vectors((n, "n"), (normal_from, "normal_from"), (normal_to, "normal_to"))
+    return _np_mat(basis_change(NUMPY, fsa_basis(NUMPY, nv, n0), fsa_basis(NUMPY, nv, n1)))
 
 
 def tilt_rotation(
@@ -290,7 +410,7 @@ def tilt_rotation(
         \\mathsf S_{glob} = \\mathsf A_s^{T}\\, \\mathsf S_{loc}\\, \\mathsf A_i
         \\qquad \\text{(F4)}
 
-    the polarisation rotation of two-scale models.
+    the polarisation rotation of two-scale models. Formula: :func:`tilt`.
 
     Parameters
     ----------
@@ -309,9 +429,15 @@ def tilt_rotation(
     ----------
     .. [1] Valenzuela (1968); Khenchaf and Airiau (2000), sec. 3.
     """
-    a_i = basis_rotation(n_i, normal_global, normal_local)
-    a_s = basis_rotation(n_s, normal_global, normal_local)
-    return a_i, a_s
+    vi, vs, nl, ng = _vectors((n_i, "n_i"), (n_s, "n_s"), (normal_local, "normal_local"),
+                              (normal_global, "normal_global"))
+    a_i, a_s = tilt(NUMPY, vi, vs, nl, ng)
+    return _np_mat(a_i), _np_mat(a_s)
+
+
+def _mat(a: ArrayLike) -> Mat2:
+    a = np.asarray(a)
+    return Mat2(a[..., 0, 0], a[..., 0, 1], a[..., 1, 0], a[..., 1, 1])
 
 
 def to_global(s_local: ArrayLike, a_i: NDArray, a_s: NDArray) -> NDArray:
@@ -327,9 +453,9 @@ def to_global(s_local: ArrayLike, a_i: NDArray, a_s: NDArray) -> NDArray:
     Returns
     -------
     ndarray, shape (..., 2, 2)
+        Formula: :func:`global_matrix`.
     """
-    s = np.asarray(s_local)
-    return np.einsum("...ji,...jk,...kl->...il", a_s, s, a_i)
+    return _np_mat(global_matrix(_mat(s_local), _mat(a_i), _mat(a_s)))
 
 
 def scattering_vector(n_i: ArrayLike, n_s: ArrayLike, k: ArrayLike = 1.0) -> NDArray:
@@ -355,7 +481,7 @@ def beta_angle(n_i: ArrayLike, n_s: ArrayLike, normal: ArrayLike = Z_HAT) -> NDA
     """Angle between a surface normal and ``q = k (n_s - n_i)`` [rad] (paper eqs 10-11).
 
     It is 0 in the specular direction of the plane of normal ``normal``, where the
-    Kirchhoff approximation holds, and grows away from it.
+    Kirchhoff approximation holds, and grows away from it. Formula: :func:`cos_beta`.
 
     Parameters
     ----------
@@ -369,26 +495,31 @@ def beta_angle(n_i: ArrayLike, n_s: ArrayLike, normal: ArrayLike = Z_HAT) -> NDA
     ndarray
         beta [rad] in [0, pi]. Where ``n_s = n_i`` (no scattering vector) it is pi/2.
     """
-    n_i = _as_vectors(n_i, "n_i")
-    n_s = _as_vectors(n_s, "n_s")
-    nn = _as_vectors(normal, "normal")
-    d = n_s - n_i
-    qn = np.linalg.norm(d, axis=-1)
-    cos_b = np.where(qn > _DEGENERATE, _dot(d, nn) / np.maximum(qn, _DEGENERATE), 0.0)
-    return np.arccos(np.clip(cos_b, -1.0, 1.0))
+    vi, vs, nn = _vectors((n_i, "n_i"), (n_s, "n_s"), (normal, "normal"))
+    return np.arccos(np.clip(cos_beta(NUMPY, vi, vs, nn), -1.0, 1.0))
 
 
 __all__ = [
+    "DEGENERATE",
     "X_HAT",
     "Y_HAT",
     "Z_HAT",
+    "basis_change",
     "basis_rotation",
     "beta_angle",
+    "bistatic_angles",
+    "cos_beta",
     "directions_from_angles",
+    "fsa_basis",
+    "global_matrix",
     "local_angles",
+    "local_geometry",
     "polarisation_basis",
     "reference_direction",
+    "reference_tangent",
     "scattering_vector",
+    "tangential_part",
+    "tilt",
     "tilt_rotation",
     "to_global",
 ]
