@@ -365,8 +365,6 @@ class DrJitNamespace:
         self.imag = dr.imag
         self.conj = dr.conj
         self.abs2 = dr.squared_norm
-        self.dot = dr.dot
-        self.cross = dr.cross
         self.eval = dr.eval
 
     def clip(self, x: Any, lo: float, hi: float) -> Any:
@@ -381,8 +379,18 @@ class DrJitNamespace:
     def vec(self, x: Any, y: Any, z: Any) -> Any:
         return self.Array3(x, y, z)
 
+    # dot and cross as numpy rounds them (products, then sums; no fused multiply-add):
+    # the two paths then agree to the last bit on these, and exact zeros stay exact
+    # (an ideal H port has no component on v: HH of a VV-only target is exactly 0).
+    @staticmethod
+    def dot(a: Any, b: Any) -> Any:
+        return a.x * b.x + a.y * b.y + a.z * b.z
+
+    def cross(self, a: Any, b: Any) -> Any:
+        return self.Array3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x)
+
     def norm(self, a: Any) -> Any:
-        return self.dr.sqrt(self.dr.dot(a, a))
+        return self.dr.sqrt(self.dot(a, a))
 
     def normalize(self, a: Any) -> Any:
         return a * (1.0 / self.norm(a))
