@@ -446,33 +446,44 @@ def cuda_available() -> bool:
         return False
 
 
-def check_variant(variant: str | None) -> str:
-    """Validate a Mitsuba variant name for the kernels; returns it (default if None).
+def _mitsuba_variant() -> str | None:
+    """The variant Mitsuba runs in this process (None if Mitsuba is not imported or unset).
 
-    Call it where a run starts, so that a wrong variant is a clear error there, never a
-    failure in the middle of a run.
+    Read only: this module never imports Mitsuba.
+    """
+    mi = sys.modules.get("mitsuba")
+    if mi is None:
+        return None
+    try:
+        return mi.variant()
+    except Exception:  # noqa: BLE001 - an unusable Mitsuba has no variant to clash with
+        return None
+
+
+def check_variant(variant: str | None) -> str:
+    """Validate the Mitsuba variant of the kernels and return it.
+
+    ``None`` means the variant Mitsuba already runs in this process (set explicitly by
+    the tracer from the scene's ``[tracing] variant``), or the default
+    ``llvm_ad_mono_polarized`` when none is set. Call it where a run starts, so that a
+    wrong variant is a clear error there, never a failure in the middle of a run.
 
     Raises
     ------
     ValueError
-        An unknown variant; a CUDA variant without a CUDA device; or a variant whose back
+        An unknown variant; a CUDA variant without a CUDA GPU; or a variant whose back
         end differs from the one Mitsuba already runs in this process (the tracer's
         scenes and the kernels must share one back end).
     """
-    variant = DEFAULT_VARIANT if variant is None else variant
+    current = _mitsuba_variant()
+    if variant is None:
+        variant = current if current in VARIANTS else DEFAULT_VARIANT
     if variant not in VARIANTS:
         raise ValueError(f"variant = {variant!r}: allowed {', '.join(map(repr, VARIANTS))}")
     backend = variant.split("_", 1)[0]
     if backend == "cuda" and not cuda_available():
-        raise ValueError(f"variant = {variant!r}: no CUDA device is available to Dr.Jit "
-                         f"here; use {DEFAULT_VARIANT!r} (CPU)")
-    mi = sys.modules.get("mitsuba")
-    current = None
-    if mi is not None:
-        try:
-            current = mi.variant()
-        except Exception:  # noqa: BLE001 - an unusable Mitsuba has no variant to clash with
-            current = None
+        raise ValueError(f"variant = {variant!r}: no CUDA GPU available here (Dr.Jit "
+                         f"finds no CUDA device); use {DEFAULT_VARIANT!r} (CPU)")
     if current and current.split("_", 1)[0] in ("llvm", "cuda") and (
             current.split("_", 1)[0] != backend):
         raise ValueError(f"variant = {variant!r}: Mitsuba already runs {current!r} in this "
@@ -483,6 +494,8 @@ def check_variant(variant: str | None) -> str:
 
 def drjit_namespace(variant: str | None = None) -> DrJitNamespace:
     """The Dr.Jit namespace of a Mitsuba variant (``llvm_*`` CPU, default; ``cuda_*`` GPU).
+
+    ``variant`` None: the one Mitsuba runs, else the default (:func:`check_variant`).
 
     Raises
     ------
