@@ -91,7 +91,8 @@ class BraggSpectrumTable:
         fv = v - j0
         b0 = xp.index(i0) * self.n_psi
         b1 = b0 + self.n_psi
-        j0 = xp.index(xp.clip(j0, 0.0, self.n_psi - 1.0))
+        # periodic in psi: psi = +pi (v = n_psi) is node 0, as psi = -pi
+        j0 = xp.index(xp.select(j0 >= self.n_psi, j0 - self.n_psi, xp.maximum(j0, 0.0)))
         j1 = j0 + 1
         j1 = xp.select(j1 >= self.n_psi, j1 - self.n_psi, j1)
         t = self._values(xp)
