@@ -70,6 +70,7 @@ __all__ = [
     "DrJitNamespace",
     "Mat2",
     "NumpyNamespace",
+    "Rows",
     "Vec3",
     "aligned",
     "check_variant",
@@ -580,13 +581,16 @@ class Boundary:
     def numpy(self, *outs: Any) -> list:
         """Evaluate ``outs`` together (one kernel) and return them as numpy arrays.
 
-        Each output is an array, a :class:`Vec3`/``Array3f64`` (returned (N, 3)) or a
-        :class:`Mat2` (returned (N, 2, 2)). Entries are written into one preallocated
-        array per output (real and imaginary parts separately: no packing kernel).
+        Each output is an array, a :class:`Vec3`/``Array3f64`` (returned (N, 3)), a
+        :class:`Mat2` (returned (N, 2, 2)) or :class:`Rows` (returned (M, N)). Entries
+        are written into one preallocated array per output (real and imaginary parts
+        separately: no packing kernel).
         """
         groups = []
         for o in outs:
-            if isinstance(o, Mat2):
+            if isinstance(o, Rows):
+                groups.append((list(o.entries), "rows"))
+            elif isinstance(o, Mat2):
                 groups.append((list(o.flat()), (2, 2)))
             elif isinstance(o, Vec3) or (not self.xp.is_numpy
                                          and isinstance(o, self.xp.Array3)):
@@ -612,16 +616,33 @@ class Boundary:
         if self.n is not None and shape in ((), (1,)):
             shape = (self.n,)  # constants broadcast to the entries
         complex_ = any(im is not None for _, im in parts)
-        out = np.empty(shape + (len(entries),), dtype=np.complex128 if complex_ else np.float64)
-        for j, (re, im) in enumerate(parts):
+        dtype = np.complex128 if complex_ else np.float64
+        if tail == "rows":
+            out = np.empty((len(entries),) + shape, dtype=dtype)
+            columns = [out[j] for j in range(len(entries))]
+        else:
+            out = np.empty(shape + (len(entries),), dtype=dtype)
+            columns = [out[..., j] for j in range(len(entries))]
+        for col, (re, im) in zip(columns, parts, strict=True):
             if complex_:
-                out[..., j].real = re
-                out[..., j].imag = 0.0 if im is None else im
+                col.real = re
+                col.imag = 0.0 if im is None else im
             else:
-                out[..., j] = re
+                col[...] = re
+        if tail == "rows":
+            return out
         if tail is None:
             return out[..., 0]
         return out.reshape(shape + tail)
+
+
+class Rows:
+    """Outputs of one kernel stacked as the rows of one (M, N) array (:meth:`Boundary.numpy`)."""
+
+    __slots__ = ("entries",)
+
+    def __init__(self, entries: list) -> None:
+        self.entries = list(entries)
 
 
 def _is_constant(a: Any) -> bool:

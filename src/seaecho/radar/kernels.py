@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..backend import Boundary, Mat2
+from ..backend import Boundary, Mat2, Rows
 from ..constants import C0
 from ..geometry.frames import basis_change, fsa_basis
 from .antennas import port_coefficients
@@ -148,13 +148,9 @@ def scatterer_echo(xp, radar, geometry, p: NDArray, v: NDArray, s: NDArray,
     sm = Mat2(*(io.complex(s[:, a, b]) for a in range(2) for b in range(2)))
     t = echo_terms(xp, radar, geometry, io.vec3(p), io.vec3(v), sm)
     names = ["tau", "r_t", "r_r", "g_t", "g_r"] + (["n_i", "n_s"] if directions else [])
-    amps = t["amplitudes"]
-    res = io.numpy(*(t[n] for n in names), *amps)
-    out = dict(zip(names, res[:len(names)], strict=True))
-    amplitudes = np.empty((len(amps), k), dtype=np.complex128)
-    for j, a in enumerate(res[len(names):]):
-        amplitudes[j] = a
-    out["amplitudes"] = amplitudes
+    res = io.numpy(*(t[n] for n in names), Rows(t["amplitudes"]))
+    out = dict(zip(names, res[:-1], strict=True))
+    out["amplitudes"] = res[-1].astype(np.complex128, copy=False)
     return out
 
 
