@@ -243,29 +243,23 @@ def port_states(basis: str, h: NDArray, v: NDArray, cross_polar_isolation_db: fl
     Returns
     -------
     ndarray (..., 2, 3) complex
-        Port 1 and port 2 unit polarisation vectors, in the order of ``PORTS[basis]``.
+        Port 1 and port 2 unit polarisation vectors, in the order of ``PORTS[basis]``:
+        ``e_p = C[p, 0] h + C[p, 1] v`` with ``C`` of :func:`port_coefficients`.
     """
-    if basis == "hv":
-        e1, e2 = h.astype(complex), v.astype(complex)
-    elif basis == "slant":
-        e1, e2 = _SQRT_HALF * (v + h) + 0j, _SQRT_HALF * (v - h) + 0j
-    elif basis == "circular":
-        # IEEE right-hand circular for exp(+j omega t) with (v, h, n) right-handed
-        e1, e2 = _SQRT_HALF * (v - 1j * h), _SQRT_HALF * (v + 1j * h)
-    else:
-        raise ValueError(f"basis = {basis!r}: unknown; allowed: {sorted(PORTS)}")
-    if cross_polar_isolation_db is not None:
-        x = 10.0 ** (-cross_polar_isolation_db / 20.0)
-        e1, e2 = (e1 + x * e2) / np.sqrt(1 + x * x), (e2 + x * e1) / np.sqrt(1 + x * x)
-    return np.stack([e1, e2], axis=-2)
+    c = port_coefficients(basis, cross_polar_isolation_db)
+    h = np.asarray(h, dtype=float)[..., None, :]
+    v = np.asarray(v, dtype=float)[..., None, :]
+    return c[:, 0, None] * h + c[:, 1, None] * v
 
 
 def port_coefficients(basis: str, cross_polar_isolation_db: float | None
                       ) -> NDArray[np.complex128]:
     """Port states as coefficients on (h_a, v_a): C[port, (h, v)], so e_p = C[p] . (h, v).
 
-    The same states as :func:`port_states` (which builds the vectors directly); used by
-    the fused Dr.Jit kernel (``seaecho.radar.kernels``).
+    H = h_a, V = v_a, P = (v_a + h_a)/sqrt 2, M = (v_a - h_a)/sqrt 2,
+    R = (v_a - j h_a)/sqrt 2, L = (v_a + j h_a)/sqrt 2 (module docstring), then the
+    cross-polar mixing. :func:`port_states` and the radar kernel
+    (``seaecho.radar.kernels``) both build the states from these.
     """
     r = _SQRT_HALF
     table = {"hv": [[1.0, 0.0], [0.0, 1.0]],
@@ -283,6 +277,10 @@ def port_coefficients(basis: str, cross_polar_isolation_db: float | None
 def wave_basis(n: NDArray, up: NDArray) -> tuple[NDArray, NDArray]:
     """Eq (A2): h = up x n / |up x n|, v = h x n, with a fallback at n parallel to up.
 
+    Eqs F1-F2 with the antenna's reference axis as the normal
+    (:func:`seaecho.geometry.frames.polarisation_basis`, the same formula as the world
+    bases; at ``n`` along ``up``, the limit from the reference azimuth).
+
     Parameters
     ----------
     n : ndarray (..., 3)
@@ -290,18 +288,9 @@ def wave_basis(n: NDArray, up: NDArray) -> tuple[NDArray, NDArray]:
     up : ndarray (..., 3) or (3,)
         Reference (antenna height) axis [-].
     """
-    up = np.broadcast_to(up, n.shape)
-    h = np.cross(up, n)
-    norm = np.linalg.norm(h, axis=-1, keepdims=True)
-    if np.any(norm < 1e-9):
-        # Limit along the reference azimuth (the antenna's boresight side)
-        ref = np.cross(up, np.cross(np.broadcast_to([1.0, 0.0, 0.0], n.shape), up))
-        ref = np.where(np.linalg.norm(ref, axis=-1, keepdims=True) < 1e-9,
-                       np.broadcast_to([0.0, 1.0, 0.0], n.shape), ref)
-        h = np.where(norm < 1e-9, np.cross(up, ref), h)
-        norm = np.linalg.norm(h, axis=-1, keepdims=True)
-    h = h / norm
-    return h, np.cross(h, n)
+    from ..geometry.frames import polarisation_basis
+
+    return polarisation_basis(n, up)
 
 
 # ---------------------------------------------------------------------------- antenna
