@@ -17,7 +17,8 @@ whatever the namespace, with complex arithmetic through real complex types (nump
 What a namespace provides
 -------------------------
 - real functions ``sqrt exp log sin cos acos atan2 floor abs clip maximum minimum``,
-  ``select(condition, a, b)`` (also for vectors and :class:`Mat2`);
+  ``select(condition, a, b)`` (also for vectors and :class:`Mat2`) and
+  ``select_lazy(condition, fn, b)`` for rare cases (numpy calls ``fn`` only when needed);
 - 3-vectors: ``vec(x, y, z)``, components ``.x .y .z``, ``+ - *`` by a scalar array,
   ``dot cross norm normalize`` (numpy: :class:`Vec3` of component arrays, so that
   ``s * v`` broadcasts as in Dr.Jit);
@@ -53,7 +54,6 @@ from __future__ import annotations
 
 import functools
 import importlib
-import math
 import sys
 from collections.abc import Callable
 from typing import Any
@@ -231,7 +231,6 @@ class NumpyNamespace:
 
     name = "numpy"
     is_numpy = True
-    pi = math.pi
 
     sqrt = staticmethod(np.sqrt)
     exp = staticmethod(np.exp)
@@ -261,6 +260,10 @@ class NumpyNamespace:
                                                                  strict=True)))
         return np.where(c, a, b)
 
+    def select_lazy(self, c: Any, fn: Callable[[], Any], b: Any) -> Any:
+        """``select(c, fn(), b)``, calling ``fn`` only if some ``c`` holds (rare cases)."""
+        return self.select(c, fn(), b) if np.any(c) else b
+
     # vectors
     @staticmethod
     def vec(x: Any, y: Any, z: Any) -> Vec3:
@@ -283,7 +286,11 @@ class NumpyNamespace:
     # complex numbers
     @staticmethod
     def complex(re: Any, im: Any) -> Any:
-        return np.asarray(re) + 1j * np.asarray(im)
+        re, im = np.broadcast_arrays(np.asarray(re, dtype=np.float64),
+                                     np.asarray(im, dtype=np.float64))
+        out = np.empty(re.shape, dtype=np.complex128)
+        out.real, out.imag = re, im  # (keeps the sign of a zero imaginary part)
+        return out
 
     @staticmethod
     def abs2(z: Any) -> Any:
@@ -332,7 +339,6 @@ class DrJitNamespace:
     """
 
     is_numpy = False
-    pi = math.pi
 
     def __init__(self, backend: str) -> None:
         if backend not in ("llvm", "cuda"):
@@ -376,6 +382,10 @@ class DrJitNamespace:
             return Mat2(*(self.dr.select(c, ai, bi) for ai, bi in zip(a.flat(), b.flat(),
                                                                        strict=True)))
         return self.dr.select(c, a, b)
+
+    def select_lazy(self, c: Any, fn: Callable[[], Any], b: Any) -> Any:
+        """``select(c, fn(), b)`` (a kernel evaluates both sides anyway)."""
+        return self.select(c, fn(), b)
 
     def vec(self, x: Any, y: Any, z: Any) -> Any:
         return self.Array3(x, y, z)
@@ -599,7 +609,13 @@ class Boundary:
                 groups.append(([o], None))
         self.xp.eval(*[e for g, _ in groups for e in g if not _is_constant(e)])
         self._keep.clear()
-        return [self._assemble(entries, tail) for entries, tail in groups]
+        out: list[NDArray] = []
+        for entries, tail in groups:
+            a = self._assemble(entries, tail)
+            if any(a is b for b in out):  # one array returned twice (r_rx = r_tx)
+                a = a.copy()
+            out.append(a)
+        return out
 
     def _parts(self, a: Any) -> tuple[NDArray, NDArray | None]:
         """Host real part and imaginary part (None for a real entry) of one entry."""
@@ -610,11 +626,13 @@ class Boundary:
             return np.asarray(a.real.numpy()), np.asarray(a.imag.numpy())
         return np.asarray(a.numpy()), None
 
-    def _assemble(self, entries: list, tail: tuple[int, ...] | None) -> NDArray:
+    def _assemble(self, entries: list, tail: tuple[int, ...] | str | None) -> NDArray:
         parts = [self._parts(e) for e in entries]
         shape = np.broadcast_shapes(*(p[0].shape for p in parts))
         if self.n is not None and shape in ((), (1,)):
             shape = (self.n,)  # constants broadcast to the entries
+        if tail is None and parts[0][1] is None and parts[0][0].shape == shape:
+            return parts[0][0]  # a real array as computed: no copy
         complex_ = any(im is not None for _, im in parts)
         dtype = np.complex128 if complex_ else np.float64
         if tail == "rows":

@@ -87,7 +87,7 @@ def tangential_part(xp, n: Any, N: Any) -> tuple[Any, Any]:
     """
     t = n - xp.dot(n, N) * N
     degenerate = xp.norm(t) < DEGENERATE
-    return xp.select(degenerate, reference_tangent(xp, N), t), degenerate
+    return xp.select_lazy(degenerate, lambda: reference_tangent(xp, N), t), degenerate
 
 
 def fsa_basis(xp, n: Any, N: Any) -> tuple[Any, Any]:
