@@ -262,9 +262,14 @@ def speckle(xp, mech: Mapping[str, tuple[Any, Any]], draws: Mapping[str, Any],
     """
     total = None
     for name, (m, w) in mech.items():
-        term = _each(xp.sqrt, w) * m * draws[name]
-        total = term if total is None else total + term
-    return total * xp.sqrt(area)
+        term = _each(xp.sqrt, w) * m  # a new array: scaled in place below (numpy)
+        term *= draws[name]
+        if total is None:
+            total = term
+        else:
+            total += term
+    total *= xp.sqrt(area)
+    return total
 
 
 # ----------------------------------------------------------------- the numpy boundary
