@@ -388,6 +388,9 @@ def shadow_rays(mi_scenes: Sequence, origins: np.ndarray, directions: np.ndarray
     t = aligned(maxt, np.float32)
     ray = mi.Ray3f(mi.Point3f(*(mi.Float(a) for a in o)), mi.Vector3f(*(mi.Float(a) for a in d)))
     ray.maxt = mi.Float(t)
-    for sc in mi_scenes:
-        hit |= np.asarray(sc.ray_test(ray).numpy(), dtype=bool)
+    blocked = None
+    for sc in mi_scenes:  # combined on the device, read back once
+        t = sc.ray_test(ray)
+        blocked = t if blocked is None else blocked | t
+    hit[:] = np.asarray(blocked.numpy(), dtype=bool)
     return hit
