@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import sys
 import types
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -170,3 +171,42 @@ def test_each_kernel_is_one_fused_launch_compiled_once():
         runs.append(kernels)
     assert [len(r) for r in runs] == [2, 2]  # frames, then scattering P1-P4
     assert runs[0] == runs[1]  # same compiled kernels at the second pulse
+
+
+def _cuda_parity() -> None:
+    """The per-pulse kernels on drjit.cuda against numpy (run in its own process)."""
+    from seaecho.geometry.facets import facet_frames
+    from seaecho.ocean.spectra import DirectionalSpectrum
+    from seaecho.scattering.facet import speckle_draws, speckled_facet_amplitudes
+    from seaecho.scattering.spectrum_table import BraggSpectrumTable
+    from seaecho.tracing.kernels import facet_frames_drjit
+
+    variant = "cuda_ad_mono_polarized"
+    c, nn = _facet_inputs(2000, 3)
+    tx, rx = np.array([-900.0, 10.0, 300.0]), np.array([400.0, -300.0, 120.0])
+    a = facet_frames_drjit(c, nn, tx, rx, variant=variant)
+    b = facet_frames(c, nn, tx, rx)
+    for key in ("r_tx", "n_i", "theta_i", "rot_i"):
+        np.testing.assert_allclose(a[key], b[key], rtol=1e-12, atol=1e-12, err_msg=key)
+    k = 200.0
+    table = BraggSpectrumTable(DirectionalSpectrum(u19_5=6.0).height_spectrum, k / 3, 20 * k)
+    draws = speckle_draws(c.shape[0], np.random.default_rng(0))
+    args = (b["n_i"], b["n_s"], nn, np.ones(c.shape[0]), k, 50 - 30j, table, 0.01, 0.006)
+    x = speckled_facet_amplitudes(*args, draws=draws, backend="drjit", variant=variant)
+    y = speckled_facet_amplitudes(*args, draws=draws, backend="numpy")
+    scale = np.abs(y).max(axis=1, keepdims=True) + 1e-300
+    assert np.all(np.abs(x - y) / scale < 1e-8)
+
+
+@pytest.mark.gpu
+@pytest.mark.skipif(not backend.cuda_available(), reason="needs a CUDA GPU")
+def test_cuda_kernels_equal_numpy():
+    # On a GPU machine: the frames and scattering kernels on drjit.cuda against numpy
+    # (same formulas), at the parity tests' tolerances. In a process of its own: one
+    # Mitsuba variant per process, and the other tests run the LLVM one.
+    import subprocess
+
+    res = subprocess.run([sys.executable, "-c", "import test_backend; "
+                          "test_backend._cuda_parity()"], cwd=str(Path(__file__).parent),
+                         capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr[-3000:]
