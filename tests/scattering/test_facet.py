@@ -266,6 +266,24 @@ def test_nadir_specular_is_barrick_closed_form(backend, cm, gaussian_table):
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("theta_deg", [8.0, 15.0, 25.0])
+def test_upwind_backscatter_is_the_geometric_optics_closed_form(backend, theta_deg,
+                                                                 gaussian_table):
+    # Monostatic GO looking upwind (Barrick 1968; Valenzuela 1978):
+    # sigma0 = |R(0)|^2 sec^4(theta) / (2 s_u s_c) exp(-tan^2(theta) / (2 s_u^2)),
+    # the specular facets being tilted by theta towards the radar (local incidence 0).
+    th = np.radians(theta_deg)
+    n_i, n_s, nn = _backscatter(th)
+    mu, mc = 0.02, 0.012
+    t = facet_terms(n_i, n_s, nn, K, EPS, gaussian_table, mu, mc, 0.0, model="kirchhoff",
+                    backend=backend)
+    r0 = abs((1 - np.sqrt(EPS)) / (1 + np.sqrt(EPS))) ** 2
+    expected = r0 / (2 * np.sqrt(mu * mc) * np.cos(th) ** 4) * np.exp(-np.tan(th) ** 2
+                                                                    / (2 * mu))
+    np.testing.assert_allclose(t.sigma()[:, [0, 3]], expected, rtol=1e-12)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
 @pytest.mark.parametrize("theta_deg", [25.0, 40.0, 60.0])
 def test_bragg_backscatter_is_the_classic_small_perturbation_formula(backend, theta_deg,
                                                                       gaussian_table):
