@@ -17,16 +17,16 @@ import pytest
 SRC = Path(__file__).resolve().parents[1] / "src" / "seaecho"
 
 #: Layers, earliest first: a package (or top-level module) imports itself and earlier
-#: layers only. ``scattering`` (per-facet formulas on plain arrays) comes before
-#: ``geometry``, whose facets carry the local scattering frames.
+#: layers only. ``geometry`` (frames and polarisation bases, facets) comes before
+#: ``scattering``, whose per-facet formulas use those frames.
 LAYERS = [
-    {"seaecho", "constants", "conventions", "rng", "warnings", "_llvm", "drjit_buffers"},
+    {"seaecho", "constants", "conventions", "rng", "warnings", "_llvm", "backend"},
     {"config"},
     {"ocean"},
     {"wake"},
     {"sea"},
-    {"scattering"},
     {"geometry"},
+    {"scattering"},
     {"tracing"},
     {"radar"},
     {"processing"},

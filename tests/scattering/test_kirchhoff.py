@@ -5,7 +5,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from seaecho.scattering import frames
+from seaecho.geometry import frames
 from seaecho.scattering.fresnel import fresnel_coefficients
 from seaecho.scattering.kirchhoff import kirchhoff_matrix, kirchhoff_sigma
 from seaecho.scattering.slopes import (

@@ -86,8 +86,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.fft import next_fast_len
 
+from ..backend import aligned
 from ..constants import C0
-from ..drjit_buffers import aligned
 from .windows import AzimuthWindow
 
 __all__ = [

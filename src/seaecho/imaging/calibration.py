@@ -75,6 +75,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..constants import C0
+from ..radar.equation import path_amplitude
 from .backprojection import delays, doppler
 from .windows import AzimuthWindow
 
@@ -158,9 +159,9 @@ def amplitude_factor(points: ArrayLike, track: Track, tx_antenna, rx_antenna,
         d_local = np.einsum("nji,pnj->pni", axes, d / r[..., None])
         gains.append(ant.gain_local(d_local))
         ranges.append(r)
-    # Eq (K1), the amplitude of the bistatic radar equation per unit S
-    return (np.sqrt(transmit_power * gains[0] * gains[1]) * wavelength
-            / ((4.0 * np.pi) ** 1.5 * ranges[0] * ranges[1]))
+    # Eq (K1), the amplitude of the bistatic radar equation per unit S (radar eq R1)
+    return path_amplitude(transmit_power, gains[0], gains[1], wavelength, ranges[0],
+                          ranges[1])
 
 
 def delay_gradient(points: ArrayLike, track: Track) -> NDArray[np.float64]:

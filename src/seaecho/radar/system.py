@@ -29,10 +29,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..constants import C0
 from ..rng import generator
-from ..scattering.frames import polarisation_basis
-from .antennas import project_ports
 from .echo import ReceiveWindow, accumulate
-from .equation import channel_matrix, noise_power, path_amplitude, thermal_noise, time_of_flight
+from .equation import noise_power, thermal_noise
 from .model import RadarModel
 from .platforms import PlatformState
 from .pointing import Pointing
@@ -196,13 +194,14 @@ class RadarSystem:
 
     # ------------------------------------------------------------------ scatterers
     def scatterer_echo(self, geometry: PulseGeometry, positions: ArrayLike,
-                       velocities: ArrayLike, s: ArrayLike, directions: bool = False
-                       ) -> ScattererEcho:
+                       velocities: ArrayLike, s: ArrayLike, directions: bool = False, *,
+                       variant: str | None = None) -> ScattererEcho:
         """Delays and per-channel amplitudes of scatterers, eqs (R1) and (R3).
 
-        Runs the fused Dr.Jit kernel (``seaecho.radar.kernels``) when ``self.backend`` is
-        ``"drjit"`` (default) and the numpy reference (:meth:`scatterer_echo_numpy`)
-        when it is ``"numpy"``; both give the same numbers (tests).
+        Evaluates :func:`seaecho.radar.kernels.echo_terms` as one fused Dr.Jit kernel
+        when ``self.backend`` is ``"drjit"`` (default) and with numpy
+        (:meth:`scatterer_echo_numpy`) when it is ``"numpy"``: the same formulas, the
+        same numbers within rounding (tests).
 
         Parameters
         ----------
@@ -214,10 +213,13 @@ class RadarSystem:
             Scatterer velocities [m/s].
         s : array_like (K, 2, 2) complex
             Scattering amplitudes [m] in (h, v) order on the world FSA bases of n_i and
-            n_s (``seaecho.scattering.frames.polarisation_basis`` with normal +z).
+            n_s (``seaecho.geometry.frames.polarisation_basis`` with normal +z).
         directions : bool
             Also return the unit directions n_i, n_s (the Dr.Jit path leaves them None
             otherwise, to save memory traffic; the numpy path always returns them).
+        variant : str, optional
+            Mitsuba variant of the Dr.Jit kernel: ``"llvm_ad_mono_polarized"`` (CPU,
+            default) or ``"cuda_ad_mono_polarized"`` (GPU).
 
         Returns
         -------
@@ -225,44 +227,28 @@ class RadarSystem:
         """
         if self.backend == "numpy" or np.size(positions) == 0:
             return self.scatterer_echo_numpy(geometry, positions, velocities, s)
-        from .kernels import scatterer_echo_drjit
+        from ..backend import drjit_namespace
+        from .kernels import scatterer_echo
 
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
         s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
-        r = scatterer_echo_drjit(self, geometry, p, v, s, directions=directions)
+        r = scatterer_echo(drjit_namespace(variant), self, geometry, p, v, s, directions)
         return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
                              r["g_r"], r.get("n_i"), r.get("n_s"))
 
     def scatterer_echo_numpy(self, geometry: PulseGeometry, positions: ArrayLike,
                              velocities: ArrayLike, s: ArrayLike) -> ScattererEcho:
-        """Numpy reference of :meth:`scatterer_echo` (same parameters and result)."""
+        """Numpy evaluation of :meth:`scatterer_echo` (same parameters and result)."""
+        from ..backend import NUMPY
+        from .kernels import scatterer_echo
+
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
         s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
-        tx, rx = geometry.tx, geometry.rx
-        # Eq (R3): delays from positions and velocities at emission
-        tau_t, tau_r, p_b = time_of_flight(tx.position, p, v, rx.position, rx.velocity)
-        r_t, r_r = C0 * tau_t, C0 * tau_r
-        n_i = (p_b - tx.position) / r_t[:, None]
-        p_rx = rx.position + rx.velocity * (tau_t + tau_r)[:, None]
-        n_s = (p_rx - p_b) / r_r[:, None]
-        g_t, e_t = self.tx_antenna.response(n_i, geometry.tx_axes, receive=False,
-                                            up=tx.rotation[:, 2])
-        g_r, e_r = self.rx_antenna.response(-n_s, geometry.rx_axes, receive=True,
-                                            up=rx.rotation[:, 2])
-        h_i, v_i = polarisation_basis(n_i)
-        h_s, v_s = polarisation_basis(n_s)
-        # Ports on the FSA bases: [k, port, (h, v)]
-        t_hv = project_ports(e_t, h_i, v_i)
-        r_hv = project_ports(e_r, h_s, v_s)
-        m = channel_matrix(s, r_hv, t_hv)  # [k, rx port, tx port]
-        tau = tau_t + tau_r
-        # Eq (R1): amplitude, polarimetric factor, carrier phase exp(-j 2 pi f_c tau)
-        amp = path_amplitude(self.transmit_power, g_t, g_r, self.wavelength, r_t, r_r) \
-            * np.exp(-2j * np.pi * self.carrier * tau)
-        rows = np.stack([m[:, i, j] for _, i, j in self.channels])
-        return ScattererEcho(tau, rows * amp, r_t, r_r, g_t, g_r, n_i, n_s)
+        r = scatterer_echo(NUMPY, self, geometry, p, v, s, directions=True)
+        return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
+                             r["g_r"], r["n_i"], r["n_s"])
 
     # --------------------------------------------------------------------- receive
     def receive(self, pulse: int, echoes: list[ScattererEcho], noise: bool | None = None,

@@ -6,8 +6,9 @@ the receiver (``n_s . N > 0``). The segments start ``eps`` above the centroid al
 normal, ``eps = max(1e-3 * cell size, 8 float32 ulps of the largest facet coordinate)``, so that
 a ray does not hit its own triangle in float32. Everything else (ranges, directions,
 angles, bases) is float64, computed by the Dr.Jit kernel
-:func:`seaecho.tracing.kernels.facet_frames_drjit` (identical to the numpy
-:func:`seaecho.geometry.facets.facet_frames`, faster).
+:func:`seaecho.tracing.kernels.facet_frames_drjit` (the formulas of the numpy
+:func:`seaecho.geometry.facets.facet_frames`, faster), on the tracer's variant (CPU
+``llvm_*`` or GPU ``cuda_*``).
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from ..geometry.facets import Facets
 from ..geometry.mesh import facet_geometry, grid_vertices, to_facets
 from .kernels import facet_frames_drjit
 from .scene import ObjectGeometry, ObjectScene, SeaScene, shadow_rays
+from .variant import set_variant
 
 __all__ = ["FacetTracer"]
 
@@ -50,6 +52,9 @@ class FacetTracer:
     def __init__(self, x: np.ndarray, y: np.ndarray, elevation: np.ndarray | None = None, *,
                  objects: Sequence[ObjectGeometry] = (), eps_r: complex | None = None,
                  frequency_hz: float = 10.0e9, variant: str | None = None) -> None:
+        #: The Mitsuba variant of the scenes and of the frames kernel (one per process).
+        self.variant = set_variant(variant)
+        variant = self.variant
         self.x = np.asarray(x, dtype=np.float64)
         self.y = np.asarray(y, dtype=np.float64)
         z = np.zeros((self.y.size, self.x.size)) if elevation is None else elevation
@@ -118,7 +123,7 @@ class FacetTracer:
         d = p - origin
         r = np.sqrt(np.einsum("ij,ij->i", d, d))
         d /= r[:, None]
-        hit_sub = shadow_rays(self.mi_scenes, origin, d, r * (1.0 - 1e-6))
+        hit_sub = shadow_rays(self.mi_scenes, origin, d, r * (1.0 - 1e-6), variant=self.variant)
         if idx is None:
             return hit_sub
         hit = np.zeros(centroid.shape[0], dtype=bool)
@@ -166,7 +171,7 @@ class FacetTracer:
                    else to_facets(np.asarray(velocity, dtype=np.float64)))
         else:
             centroid, area, normal, vel = geometry
-        geo = facet_frames_drjit(centroid, normal, tx, rx)
+        geo = facet_frames_drjit(centroid, normal, tx, rx, variant=self.variant)
         facing_tx = geo["theta_i"] < np.pi / 2
         facing_rx = geo["theta_s"] < np.pi / 2
         lit = facing_tx & ~self.occluded(centroid, normal, tx, mask=facing_tx)
