@@ -49,7 +49,9 @@ def test_subfacet_slopes_are_the_band_from_the_grid_to_k_over_3():
     # the s = 1 spreading (isotropic slopes: int cos^2 psi cos^2(psi/2)/pi = 1/2) the
     # variance is a closed form. A cut at k/1.5 or k would add 2.8e-3 or 4.4e-3 to the
     # 2.7e-3 expected here.
-    m = build_sea_model(_scene())
+    # (The paper's split, [scattering] unresolved_tilt = false; with it, the slopes the
+    # facets' normals filter out are added: eq U1, test below.)
+    m = build_sea_model(_scene(scattering={"unresolved_tilt": False}))
     k = 2 * np.pi * 10e9 / C0
     assert m.k == pytest.approx(k, rel=1e-12)
     assert m.k_grid == pytest.approx(np.pi / 0.08, rel=1e-12)
@@ -57,6 +59,26 @@ def test_subfacet_slopes_are_the_band_from_the_grid_to_k_over_3():
     expected = _pm_slope_variance(np.pi / 0.08, k / 3, 5.0)
     assert m.mss_upwind + m.mss_crosswind == pytest.approx(expected, rel=2e-3)
     assert m.mss_upwind == pytest.approx(m.mss_crosswind, rel=1e-6)
+    assert m.tilt is None
+
+
+def test_subfacet_slopes_add_what_the_facet_normals_filter_out():
+    # Eq U1: a facet's normal is a finite difference over the triangle, |G| = |sinc(K dx
+    # / 2)| for the mesh normals, so the facets miss (1 - sinc^2) of each resolved mode's
+    # slope variance; the sub-facet slopes get it back, and the Bragg term is averaged
+    # over them with the five-point rule (eq P6).
+    from seaecho.ocean.twoscale import facet_slope_deficit
+
+    plain = build_sea_model(_scene(scattering={"unresolved_tilt": False}))
+    for mode, normals in (("raytraced", "mesh"), ("analytic", "vertex-mean")):
+        sc = _scene(tracing={"mode": mode})
+        m = build_sea_model(sc)
+        du, dc = facet_slope_deficit(sea_spectrum(sc), (8.0, 8.0), (100, 100), normals)
+        assert du > 1e-4 and dc > 1e-4
+        assert m.mss_upwind == pytest.approx(plain.mss_upwind + du, rel=1e-12)
+        assert m.mss_crosswind == pytest.approx(plain.mss_crosswind + dc, rel=1e-12)
+        assert m.tilt.weights[0] == pytest.approx(1 / 3)
+        assert m.tilt.slopes[0][0] == pytest.approx(np.sqrt(3 * m.mss_upwind))
 
 
 def test_bragg_table_reaches_grazing_backscatter():

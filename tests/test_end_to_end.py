@@ -22,7 +22,7 @@ def _db(x):
 
 
 # ------------------------------------------------------------ scene NRCS vs point model
-def _bragg_scene_toml(seed: int) -> str:
+def _bragg_scene_toml(seed: int, scattering: str = "") -> str:
     """A gentle Pierson-Moskowitz sea (U19.5 = 3 m/s; an 8.8 m tile holds the 8.2 m peak
     wavelength, its 0.08 m grid keeps the Bragg roughness at k h = 0.24 < 0.3) seen
     monostatically at 40 deg incidence from 1 km (the angles vary by +-0.25 deg over the
@@ -40,6 +40,8 @@ seed = {seed}
 [tracing]
 mode = "analytic"
 shadowing = "none"
+[scattering]
+{scattering}
 [radar]
 carrier_frequency_hz = 10.0e9
 sampling_rate_hz = 200.0e6
@@ -101,25 +103,29 @@ def test_scene_nrcs_lies_between_the_mean_plane_spm_and_two_scale_models(tmp_pat
     capsys.readouterr()
 
 
-def test_scene_nrcs_is_the_two_scale_model_of_its_own_facet_slopes():
+@pytest.mark.parametrize("tilt", [False, True])
+def test_scene_nrcs_is_the_two_scale_model_of_its_own_facet_slopes(tilt):
     # Two methods that must agree: the sum over the facets (each an SPM on its tilted
     # plane, eq S7 of scattering.facet) and the Gauss-Hermite slope average of
-    # scattering.twoscale (eq T1) with the facets' own sample slope variances. Co-pol
+    # scattering.twoscale (eq T1) with the facets' own sample slope variances (plus, with
+    # the unresolved-tilt average of eq P6, the sub-facet slope variances). Co-pol
     # within 0.15 dB (measured within 0.05 dB over 4 seeds; the facet slopes are not
     # exactly Gaussian). Cross-pol: the facets blend it with eq 11's weight
     # w2 = 10^-((beta / 20 pi)^1.5) = 0.31 at beta = 40 deg (Kirchhoff cross-pol is 0 in
     # back-scatter), the two-scale model does not: 10 log10(1 - 0.31) = -1.62 dB.
     from seaecho.scattering.twoscale import two_scale_sigma
 
-    scene = parse_scene(_toml_dict(_bragg_scene_toml(0)))
+    opts = f'model = "blend"\nunresolved_tilt = {str(tilt).lower()}'
+    scene = parse_scene(_toml_dict(_bragg_scene_toml(0, opts)))
     sim = Simulation(scene)
     truth = sim.sea_truth()
     f = sim.sea_echo(0, sigma=True).facets
     zx, zy = -f.normal[:, 0] / f.normal[:, 2], -f.normal[:, 1] / f.normal[:, 2]
     m = sim.sea_model
+    sub = (m.mss_upwind, m.mss_crosswind) if tilt else (0.0, 0.0)
     th = np.radians(40.0)
-    ref = two_scale_sigma(th, 0.0, th, np.pi, m.k, m.eps_r, m.bragg_spectrum, zx.var(),
-                          zy.var(), 0.0, m.k_grid, n_nodes=24)
+    ref = two_scale_sigma(th, 0.0, th, np.pi, m.k, m.eps_r, m.bragg_spectrum,
+                          zx.var() + sub[0], zy.var() + sub[1], 0.0, m.k_grid, n_nodes=24)
     got = truth["sigma0"].mean(axis=(1, 2))
     np.testing.assert_allclose(_db(got[[0, 3]]), _db(ref[[0, 3]]), atol=0.15)
     w2 = 10.0 ** (-((40.0 / (20.0 * np.pi)) ** 1.5))
@@ -133,7 +139,8 @@ def _toml_dict(text):
 
 
 # ------------------------------------------------------- the wake darkens the Bragg echo
-def _wake_scene(seed=0, mode="analytic", shadowing="smith", n=80, size=6.4, **radar):
+def _wake_scene(seed=0, mode="analytic", shadowing="smith", n=80, size=6.4, scattering=None,
+                **radar):
     """A sea under a low-grazing bistatic radar, half of it in a turbulent wake.
 
     U19.5 = 5 m/s on a 0.08 m grid (k h = 0.24 for the Bragg roughness). Tx 1 km away at
@@ -155,6 +162,7 @@ def _wake_scene(seed=0, mode="analytic", shadowing="smith", n=80, size=6.4, **ra
         "radar": r,
         "transmitter": {"position_m": (-1000.0, 0.0, 50.0), "antenna": ISO},
         "receiver": {"position_m": (-750.0, -400.0, 40.0), "antenna": ISO},
+        "scattering": scattering or {},
     })
 
 
@@ -164,7 +172,8 @@ def _expected_clutter_energy(sim, pulse):
     (Skolnik 2008, eq 23.9 for bistatic clutter), with G = 1 (isotropic antennas), A the
     facet area, v its visibility (lit and seen: Smith's shadowing or ray traced) and
     sigma_mn the facet model with the turbulent wake's Bragg damping read from the sea
-    state's mask. The speckled echo must have this mean (Ulaby & Long 2014, sec. 5-8)."""
+    state's mask, the unresolved-tilt average and the breaking zones where the simulation
+    placed them. The speckled echo must have this mean (Ulaby & Long 2014, sec. 5-8)."""
     from seaecho.geometry.mesh import to_facets
     from seaecho.scattering.facet import facet_sigma
 
@@ -172,7 +181,9 @@ def _expected_clutter_energy(sim, pulse):
     st = sim.surface_state(pulse)
     f = sim.engine.facets(geo.time, state=st)
     sig = facet_sigma(f.n_i, f.n_s, f.normal, *sim.sea_model.facet_model,
-                      wake_damping=to_facets(st.wake_mask).reshape(-1), backend="numpy")
+                      wake_damping=to_facets(st.wake_mask).reshape(-1), backend="numpy",
+                      breaking_fraction=sim.breaking_fraction(st),
+                      **sim.sea_model.facet_options)
     r_t = np.linalg.norm(f.centroid - geo.tx.position, axis=-1)
     r_r = np.linalg.norm(f.centroid - geo.rx.position, axis=-1)
     lam = C0 / 1e10
@@ -215,7 +226,7 @@ def test_turbulent_wake_scales_the_bragg_echo_by_its_damping(tmp_path):
     # reference run drops the ship: the same seed gives the same surface bits.
     from seaecho.config.loading import scene_to_toml_dict
 
-    scene = _wake_scene(0, shadowing="none")
+    scene = _wake_scene(0, shadowing="none", scattering={"model": "blend"})
     bare = scene_to_toml_dict(scene)
     bare.pop("ship")
     sigma = []

@@ -48,15 +48,19 @@ from .ocean.surface import SeaSurface
 from .ocean.twoscale import (
     ROUGHNESS_K_MAX_RATIO,
     TWO_SCALE_CUT_RATIO,
+    facet_slope_deficit,
     height_variance,
     unresolved_statistics,
 )
+from .ocean.wind import u10_from_u19_5
 from .radar.antennas import Antenna
 from .radar.model import RadarModel, TargetSet
 from .radar.platforms import Platform, draw_perturbation
 from .radar.pointing import Pointing
 from .radar.waveform import Waveform
 from .rng import generator
+from .scattering.breaking import breaking_statistics
+from .scattering.facet import TiltQuadrature
 from .scattering.sea_model import SeaModel
 from .scattering.spectrum_table import BraggSpectrumTable
 from .sea import Sea
@@ -177,21 +181,36 @@ def build_sea_model(scene, frequency: float | None = None,
     dx, dy = lx / nx, ly / ny
     k_cut = TWO_SCALE_CUT_RATIO * k
     k_max = ROUGHNESS_K_MAX_RATIO * k
-    tilt = unresolved_statistics(spectrum, dx, dy, k_cut)
-    if not (tilt.mss_upwind > 0 and tilt.mss_crosswind > 0):
+    band = unresolved_statistics(spectrum, dx, dy, k_cut)
+    if not (band.mss_upwind > 0 and band.mss_crosswind > 0):
         raise ValueError(
             f"[sea] grid spacing {max(dx, dy):.4g} m resolves every wave longer than the "
             f"two-scale split 2 pi / k_cut = {2 * np.pi / k_cut:.4g} m at "
             f"{f / 1e9:g} GHz: the facets carry no sub-facet slopes; use a spacing above "
             f"{np.pi / k_cut:.4g} m")
     eps_r = complex(sea_water_permittivity(f, cfg.temperature_c, cfg.salinity_psu))
-    table = BraggSpectrumTable(spectrum.height_spectrum, k_min=tilt.k_grid, k_max=k_max)
+    table = BraggSpectrumTable(spectrum.height_spectrum, k_min=band.k_grid, k_max=k_max)
+    opts = scene.scattering
+    mss_u, mss_c = band.mss_upwind, band.mss_crosswind
+    quadrature = None
+    if opts.unresolved_tilt:
+        # Two scales done right: the sub-facet slopes are those the facets do not carry,
+        # the band above the grid's Nyquist wavenumber plus the resolved waves that the
+        # facets' normals filter out (eq U1), and the Bragg term is averaged over them
+        # (eq P6).
+        normals = "mesh" if scene.tracing.mode == "raytraced" else "vertex-mean"
+        du, dc = facet_slope_deficit(spectrum, cfg.size_m, cfg.shape, normals)
+        mss_u, mss_c = mss_u + du, mss_c + dc
+        quadrature = TiltQuadrature.unscented(mss_u, mss_c)
+    breaking = None
+    if opts.model == "blend+breaking":
+        breaking = breaking_statistics(float(u10_from_u19_5(cfg.wind_speed_m_s)), float(k))
     return SeaModel(frequency=f, k=float(k), eps_r=eps_r,
-                    wind_direction=float(spectrum.wind_direction), k_grid=tilt.k_grid,
-                    k_cut=float(k_cut), k_max=float(k_max), mss_upwind=tilt.mss_upwind,
-                    mss_crosswind=tilt.mss_crosswind,
-                    roughness_height_variance=height_variance(spectrum, tilt.k_grid, k_max),
-                    bragg_spectrum=table)
+                    wind_direction=float(spectrum.wind_direction), k_grid=band.k_grid,
+                    k_cut=float(k_cut), k_max=float(k_max), mss_upwind=mss_u,
+                    mss_crosswind=mss_c,
+                    roughness_height_variance=height_variance(spectrum, band.k_grid, k_max),
+                    bragg_spectrum=table, tilt=quadrature, breaking=breaking)
 
 
 def check_scene(scene, frequency: float | None = None) -> None:

@@ -19,6 +19,13 @@ STREAMS: dict[str, int] = {
     "platform": 2,
     "noise": 3,
     "targets": 4,
+    # per-facet speckle of the unresolved-tilt quadrature nodes (held sea: per block;
+    # evolving sea: index 0, one static phase per facet and node)
+    "speckle-tilt": 5,
+    # per-facet speckle of breaking zones (held sea: per block)
+    "breaking": 6,
+    # anchor draws of the evolving speckle: (family, anchor index)
+    "speckle-evolution": 7,
 }
 
 

@@ -31,6 +31,54 @@ class SurfaceState:
     wake_mask: NDArray[np.float64]  #: turbulent wake, 0 (none) .. 1 (short waves damped)
 
 
+@dataclass(frozen=True)
+class SurfaceKinematics:
+    """Displacement and acceleration of the wind sea's surface particles at one time.
+
+    Linear (Airy) kinematics of the synthesised waves: for a wave of wavenumber K the
+    particle at rest position ``r`` moves horizontally by ``D = j (K / |K|) coth(K d) z``
+    (in the phasor notation of :mod:`seaecho.ocean.surface`; its time derivative is the
+    horizontal orbital velocity there) and vertically by the elevation ``z``; the
+    acceleration is ``-omega^2`` times the displacement (Lamb 1932, art. 228-229). Arrays
+    shaped (ny, nx, ...). The Kelvin wake is not included (its heights are a steady
+    pattern moving with the ship).
+
+    Attributes
+    ----------
+    t : float
+        Time [s].
+    displacement : ndarray (ny, nx, 2)
+        Horizontal particle displacement (D_x, D_y) [m].
+    acceleration : ndarray (ny, nx, 3)
+        Particle acceleration (a_x, a_y, a_z) [m/s^2].
+    """
+
+    t: float
+    displacement: NDArray[np.float64]
+    acceleration: NDArray[np.float64]
+
+
+def surface_kinematics(surface: SeaSurface, t: float) -> SurfaceKinematics:
+    """:class:`SurfaceKinematics` of a :class:`~seaecho.ocean.surface.SeaSurface` at ``t``.
+
+    Uses the realisation's travelling-wave amplitudes (``plus`` along +K, ``minus`` along
+    -K) and its dispersion relation, five inverse FFTs.
+    """
+    plus, minus = surface._travelling(t)
+    z_hat = plus + minus
+    k = np.hypot(surface._kx, surface._ky)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        coth = 1.0 if surface.depth is None else 1.0 / np.tanh(k * surface.depth)
+        gain = np.where(k > 0, coth / np.where(k > 0, k, 1.0), 0.0)
+    dx_hat = 1j * surface._kx * gain * z_hat  # j (K_x / K) coth(K d) z
+    dy_hat = 1j * surface._ky * gain * z_hat
+    w2 = -surface._omega ** 2
+    irfft = surface._irfft
+    disp = np.stack([irfft(dx_hat), irfft(dy_hat)], axis=-1)
+    acc = np.stack([irfft(w2 * dx_hat), irfft(w2 * dy_hat), irfft(w2 * z_hat)], axis=-1)
+    return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc)
+
+
 class Sea:
     """The sea of a scene: surface realisation (seeded) and optional ship wake.
 
@@ -69,6 +117,11 @@ class Sea:
     def y(self) -> NDArray[np.float64]:
         return self.surface.y
 
+    def kinematics(self, t: float = 0.0) -> SurfaceKinematics:
+        """Particle displacement and acceleration of the wind sea at ``t`` [s]
+        (:func:`surface_kinematics`)."""
+        return surface_kinematics(self.surface, t)
+
     def state(self, t: float = 0.0) -> SurfaceState:
         """Sea + wake at time ``t`` [s]."""
         f = self.surface.fields(t)
@@ -97,4 +150,4 @@ class Sea:
         )
 
 
-__all__ = ["Sea", "SurfaceState"]
+__all__ = ["Sea", "SurfaceKinematics", "SurfaceState", "surface_kinematics"]

@@ -144,22 +144,54 @@ class Simulation:
         return self.surface_state(min(max(p, 0), self.radar.n_pulses - 1))
 
     def _block_quantities(self, pulse: int, state, n_facets: int) -> dict:
-        """Wake damping per facet and speckle draws of ``pulse``'s block (memoised).
+        """Per-block quantities of ``pulse``'s block (memoised): wake damping per facet,
+        speckle draws (held sea) and the breaking zones' placement.
 
         The speckle draws come from the ``"speckle"`` stream of the block index, one pair
         (g_K, g_B) per facet, so that facet j gets the same draw at every pulse of its
-        block whatever order the pulses are computed in.
+        block whatever order the pulses are computed in; the unresolved-tilt nodes and the
+        breaking zones draw theirs from the ``"speckle-tilt"`` and ``"breaking"`` streams
+        of the block (so the first two keep their bytes). The breaking zones sit on the
+        facets of largest downward acceleration of the block's surface, covering the
+        fraction q of KHCC03 (:func:`seaecho.scattering.breaking.breaking_placement`).
         """
         from .geometry.mesh import to_facets
-        from .scattering.facet import speckle_draws
+        from .scattering.facet import circular_gaussians, speckle_draws
 
         block = pulse // self.block
         if self._block_cache is None or self._block_cache[0] != block:
-            rng = generator(self.radar.seed, "speckle", block)
-            q = {"damping": to_facets(state.wake_mask).reshape(-1),
-                 "draws": speckle_draws(n_facets, rng)}
+            seed = self.radar.seed
+            g_k, g_b = speckle_draws(n_facets, generator(seed, "speckle", block))
+            draws = {"specular": g_k, "bragg": g_b}
+            model = self.sea_model
+            if model.tilt is not None:
+                nodes = circular_gaussians(n_facets, len(model.tilt.slopes),
+                                           generator(seed, "speckle-tilt", block))
+                draws.update({f"bragg{j + 1}": g for j, g in enumerate(nodes)})
+            q = {"damping": to_facets(state.wake_mask).reshape(-1), "draws": draws,
+                 "breaking": None}
+            if model.breaking is not None:
+                (g_w,) = circular_gaussians(n_facets, 1, generator(seed, "breaking", block))
+                draws["breaking"] = g_w
+                q["breaking"] = self.breaking_fraction(state)
             self._block_cache = (block, q)
         return self._block_cache[1]
+
+    def breaking_fraction(self, state) -> NDArray[np.float64]:
+        """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
+
+        Downward acceleration of the wind sea at the state's time (linear kinematics,
+        :meth:`seaecho.sea.Sea.kinematics`) averaged over each facet's vertices; the
+        facets of largest value cover the fraction q of KHCC03
+        (:func:`seaecho.scattering.breaking.breaking_placement`).
+        """
+        from .geometry.mesh import to_facets
+        from .scattering.breaking import breaking_placement
+
+        stats = self.sea_model.breaking
+        acc = to_facets(self.sea.kinematics(state.t).acceleration[..., 2]).reshape(-1)
+        area = self.engine.geometry(state)[1]
+        return breaking_placement(-acc, area, stats.q)
 
     def sea_echo(self, pulse: int, geometry=None, sigma: bool = False) -> SeaEcho:
         """Echo of the sea facets for one pulse.
@@ -189,9 +221,10 @@ class Simulation:
         # draws are the block's (drawn once per held surface); eqs P1-P4 run in one kernel
         args = (facets.n_i, facets.n_s, facets.normal)
         model = self.sea_model.facet_model
+        options = dict(self.sea_model.facet_options, breaking_fraction=held["breaking"])
         amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,
                                         draws=held["draws"], wake_damping=damping,
-                                        local=facets)
+                                        local=facets, **options)
         visible = vis > 0
         if visible.all():  # the usual case: no copies
             pos, vel = facets.centroid, facets.velocity
@@ -200,8 +233,8 @@ class Simulation:
         echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2))
         sig = None
         if sigma:
-            sig = facet_terms(*args, *model, wake_damping=damping,
-                              local=facets).sigma() * vis[:, None]
+            sig = facet_terms(*args, *model, wake_damping=damping, local=facets,
+                              **options).sigma() * vis[:, None]
         return SeaEcho(echo, sig, facets)
 
     # ------------------------------------------------------------------- one pulse

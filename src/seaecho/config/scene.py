@@ -18,6 +18,7 @@ from .base import Section
 from .image import ImageConfig
 from .radar import PlatformConfig, RadarConfig, TargetConfig
 from .run import RunConfig
+from .scattering import ScatteringConfig
 from .sea import SeaConfig
 from .ship import ShipConfig
 from .tracing import ObjectConfig, TracingConfig
@@ -42,6 +43,10 @@ class Scene(Section):
     )
     targets: tuple[TargetConfig, ...] = Field(
         (), max_length=10_000, description="point targets [[targets]]"
+    )
+    scattering: ScatteringConfig = Field(
+        default_factory=ScatteringConfig,
+        description="per-facet scattering model and sea motion [scattering]",
     )
     tracing: TracingConfig = Field(
         default_factory=TracingConfig, description="facet mode and ray tracing [tracing]"

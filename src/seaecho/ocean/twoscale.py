@@ -154,6 +154,90 @@ def unresolved_statistics(
     )
 
 
-__all__ = ["ROUGHNESS_K_MAX_RATIO", "SPM_KH_MAX", "TWO_SCALE_CUT_RATIO",
-           "UnresolvedStatistics", "height_variance", "slope_variances",
-           "unresolved_statistics"]
+#: How a facet's normal is made from the grid (:func:`facet_slope_deficit`).
+FACET_NORMALS = ("mesh", "vertex-mean")
+
+
+def _triangle_filters(kx, ky, dx: float, dy: float, normals: str):
+    """Slope responses ``(G_x, G_y)`` of the two triangles of a cell to ``exp(j K.r)``.
+
+    ``"mesh"``: the plane through the three vertices (the ray-traced facets);
+    ``"vertex-mean"``: the mean of the exact slopes ``j K`` at the three vertices (the
+    analytic facets). Triangles of :mod:`seaecho.geometry.mesh`: (0,0), (dx,0), (dx,dy)
+    and (0,0), (dx,dy), (0,dy).
+    """
+    ex, ey = np.exp(1j * kx * dx), np.exp(1j * ky * dy)
+    if normals == "mesh":
+        return (((ex - 1.0) / dx, ex * (ey - 1.0) / dy),
+                (ey * (ex - 1.0) / dx, (ey - 1.0) / dy))
+    h0 = (1.0 + ex + ex * ey) / 3.0
+    h1 = (1.0 + ex * ey + ey) / 3.0
+    return ((1j * kx * h0, 1j * ky * h0), (1j * kx * h1, 1j * ky * h1))
+
+
+def facet_slope_deficit(spectrum: DirectionalSpectrum, size: tuple[float, float],
+                        shape: tuple[int, int], normals: str = "mesh") -> tuple[float, float]:
+    """Slope variance of the *resolved* waves that the facets' normals do not carry [-].
+
+    A facet's normal is a plane through (or a mean over) its three vertices: for a
+    wave of wavenumber K near the grid's Nyquist wavenumber it is a finite difference
+    over the facet, not the slope at its centre, and the facets carry less slope variance
+    than the synthesised surface. For a mode ``exp(j K.r)`` the slope of a triangle is
+    ``G(K)`` (``(exp(j K_x dx) - 1) / dx`` ... for the plane through the vertices,
+    ``j K`` times the mean of the vertex phases for the mean of the vertex slopes) instead
+    of ``j K``; summed over the tile's modes with the spectrum's variances,
+
+    .. math::
+        \\Delta C = \\sum_{\\mathbf K} \\Psi(\\mathbf K)\\,\\delta K_x\\delta K_y
+        \\left[\\mathbf K \\mathbf K^T - \\overline{\\mathrm{Re}\\,\\mathbf G\\mathbf G^H}
+        \right] \\qquad \text{(U1)}
+
+    (bar: mean over the two triangles of a cell), projected on the wind axes. The
+    two-scale model must give this variance to the sub-facet slopes as well, or the tilts
+    between the facets' effective resolution and the grid's Nyquist wavenumber are lost.
+
+    Parameters
+    ----------
+    spectrum : DirectionalSpectrum
+    size : (float, float)
+        Tile extents (Lx, Ly) [m].
+    shape : (int, int)
+        Grid nodes (ny, nx).
+    normals : {"mesh", "vertex-mean"}
+        Facet normals of the ray-traced mode (plane through the vertices) or of the
+        analytic mode (mean of the analytic slopes at the vertices).
+
+    Returns
+    -------
+    (float, float)
+        Deficit of the slope variance along and across the wind [-].
+    """
+    if normals not in FACET_NORMALS:
+        raise ValueError(f"normals = {normals!r}: allowed {FACET_NORMALS}")
+    lx, ly = (float(v) for v in size)
+    ny, nx = (int(v) for v in shape)
+    dx, dy = lx / nx, ly / ny
+    kx = (2 * np.pi * np.fft.fftfreq(nx, dx))[None, :]
+    ky = (2 * np.pi * np.fft.fftfreq(ny, dy))[:, None]
+    psi = np.asarray(spectrum(np.broadcast_to(kx, (ny, nx)), np.broadcast_to(ky, (ny, nx))),
+                     dtype=float).copy()
+    psi[0, 0] = 0.0
+    psi[ny // 2, :] = 0.0  # the synthesis leaves the Nyquist row and column empty
+    psi[:, nx // 2] = 0.0
+    w = psi * (2 * np.pi / lx) * (2 * np.pi / ly)
+    c_true = np.array([[np.sum(w * kx * kx), np.sum(w * kx * ky)],
+                       [np.sum(w * kx * ky), np.sum(w * ky * ky)]])
+    c_facet = np.zeros((2, 2))
+    for g in _triangle_filters(kx, ky, dx, dy, normals):
+        for i in range(2):
+            for j in range(2):
+                c_facet[i, j] += 0.5 * np.sum(w * (g[i] * np.conj(g[j])).real)
+    d = c_true - c_facet  # Eq U1
+    u = np.array([np.cos(spectrum.wind_direction), np.sin(spectrum.wind_direction)])
+    c = np.array([-u[1], u[0]])
+    return float(u @ d @ u), float(c @ d @ c)
+
+
+__all__ = ["FACET_NORMALS", "ROUGHNESS_K_MAX_RATIO", "SPM_KH_MAX", "TWO_SCALE_CUT_RATIO",
+           "UnresolvedStatistics", "facet_slope_deficit", "height_variance",
+           "slope_variances", "unresolved_statistics"]

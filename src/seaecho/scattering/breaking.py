@@ -122,13 +122,17 @@ References
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..backend import NUMPY, Boundary, Mat2
 from ..constants import RHO_SEA_WATER, SURFACE_TENSION_OVER_DENSITY, G
+from ..geometry import frames as frames_ns
 from . import frames
 
 #: Mean square slope of the enhanced roughness of breaking zones s_wb^2 [-] (KHCC03).
@@ -357,13 +361,64 @@ def breaking_nrcs_monostatic(theta: ArrayLike) -> NDArray:
     return spec + EPS_WB / S_WB2
 
 
-def _in_plane_axes(normal: NDArray, wind_direction: ArrayLike) -> tuple[NDArray, NDArray]:
-    """Downwind unit vector in the plane of ``normal`` and ``e_c = N x e_u``."""
-    w = np.asarray(wind_direction, dtype=float)
-    u = np.stack([np.cos(w), np.sin(w), np.zeros_like(w)], axis=-1)
-    e_u = u - np.einsum("...i,...i->...", u, normal)[..., None] * normal
-    e_u = e_u / np.linalg.norm(e_u, axis=-1, keepdims=True)
-    return e_u, np.cross(normal, e_u)
+def breaking_matrix(xp, n_i: Any, n_s: Any, N: Any, basis_i: tuple[Any, Any],
+                    basis_s: tuple[Any, Any], cos_wind: Any, sin_wind: Any,
+                    tilt: Any) -> Mat2:
+    """Amplitude matrix ``W`` of breaking zones on planes of normal ``N`` (BR5-BR6).
+
+    Over an array namespace (:mod:`seaecho.backend`): the per-facet kernel and the
+    numpy :func:`breaking_amplitude` evaluate this function.
+
+    Parameters
+    ----------
+    xp : array namespace
+    n_i, n_s, N : vectors
+        Unit incident and scattered directions and the unit normal of the plane the zones
+        sit on [-].
+    basis_i, basis_s : (h, v)
+        Global (+z) FSA bases of ``n_i`` and ``n_s`` (eqs F1-F2).
+    cos_wind, sin_wind : arrays
+        Direction the wind blows towards, as a unit vector's components [-].
+    tilt : float or array
+        Forward tilt of the zones ``epsilon = theta_wb A_wb`` [rad].
+
+    Returns
+    -------
+    Mat2
+        Real-valued ``W`` [-] (``sigma_wb,mn = |W_mn|^2``), global bases, (h, v) order.
+
+    References
+    ----------
+    .. [1] KHCC03 eq 60 (monostatic limit); module docstring (BR5, BR6).
+    """
+    d = n_s - n_i
+    dn = xp.norm(d)
+    ok = dn > 1e-12
+    n_sp = xp.select(ok, d * (1.0 / xp.select(ok, dn, 1.0)), N)
+    lit = (xp.dot(n_i, N) < -1e-12) & (xp.dot(n_s, N) > 1e-12)
+    # Mean tilt: the zones' plane leans towards the wind by eps = theta_wb A_wb.
+    u = xp.vec(cos_wind, sin_wind, 0.0)
+    e_u = xp.normalize(u - xp.dot(u, N) * N)
+    e_c = xp.cross(N, e_u)
+    c_eps, s_eps = xp.cos(tilt), xp.sin(tilt)
+    nt = N * c_eps + e_u * s_eps
+    e_t = e_u * c_eps - N * s_eps
+    cos_n = xp.dot(n_sp, nt)
+    valid = cos_n > 1e-12
+    cn = xp.select(valid, cos_n, 1e-12)
+    z_u = -xp.dot(n_sp, e_t) / cn
+    z_c = -xp.dot(n_sp, e_c) / cn
+    # Eq BR5: isotropic Gaussian slopes about the tilted plane, pi / cos^4 P; plus the
+    # front term.
+    log_spec = -(z_u * z_u + z_c * z_c) * (1.0 / S_WB2) - math.log(S_WB2) - 4.0 * xp.log(cn)
+    spec = xp.select(valid, xp.exp(xp.minimum(log_spec, 700.0)), 0.0)
+    amp = xp.select(lit, xp.sqrt(spec + EPS_WB / S_WB2), 0.0)
+    # Eq BR6: T = A_s^T diag(-1, 1) A_i with the bases of the bisector facet.
+    h, v_i = frames_ns.fsa_basis(xp, n_i, n_sp)
+    a_i = frames_ns.basis_change(xp, basis_i, (h, v_i))
+    a_s = frames_ns.basis_change(xp, basis_s, (h, xp.cross(h, n_s)))
+    t = frames_ns.global_matrix(Mat2.diag(-1.0, 1.0), a_i, a_s)
+    return t * amp
 
 
 def breaking_amplitude(
@@ -403,29 +458,20 @@ def breaking_amplitude(
     n_s = np.asarray(n_s, dtype=float)
     shape = np.broadcast_shapes(n_i.shape, n_s.shape, np.shape(normal))
     nn = np.broadcast_to(np.asarray(normal, dtype=float), shape)
-    d = n_s - n_i
-    dn = np.linalg.norm(d, axis=-1, keepdims=True)
-    n_sp = np.where(dn > 1e-12, d / np.maximum(dn, 1e-300), nn)
-    lit = (np.einsum("...i,...i->...", n_i, nn) < -1e-12) & (
-        np.einsum("...i,...i->...", n_s, nn) > 1e-12)
-    # Mean tilt: the zones' plane leans towards the wind by eps = theta_wb A_wb.
-    e_u, e_c = _in_plane_axes(nn, wind_direction)
-    eps = theta_wb * np.asarray(mean_direction, dtype=float)
-    nt = np.cos(eps)[..., None] * nn + np.sin(eps)[..., None] * e_u
-    e_t = np.cos(eps)[..., None] * e_u - np.sin(eps)[..., None] * nn
-    cos_n = np.einsum("...i,...i->...", n_sp, nt)
-    cn = np.maximum(cos_n, 1e-12)
-    z_u = -np.einsum("...i,...i->...", n_sp, e_t) / cn
-    z_c = -np.einsum("...i,...i->...", n_sp, e_c) / cn
-    # Eq BR5: isotropic Gaussian slopes about the tilted plane, pi / cos^4 P; plus the
-    # front term.
-    log_spec = -(z_u**2 + z_c**2) / S_WB2 - np.log(S_WB2) - 4.0 * np.log(cn)
-    spec = np.where(cos_n > 1e-12, np.exp(np.minimum(log_spec, 700.0)), 0.0)
-    sigma = np.where(lit, spec + EPS_WB / S_WB2, 0.0)
-    # Eq BR6: T = A_s^T diag(-1, 1) A_i with the bases of the bisector facet.
-    a_i, a_s = frames.tilt_rotation(n_i, n_s, n_sp)
-    t = np.einsum("...ji,...j,...jl->...il", a_s, np.array([-1.0, 1.0]), a_i)
-    return (np.sqrt(sigma)[..., None, None] * t).astype(complex)
+    n_i = np.broadcast_to(n_i, shape)
+    n_s = np.broadcast_to(n_s, shape)
+    w = np.broadcast_to(np.asarray(wind_direction, dtype=float), shape[:-1])
+    eps = theta_wb * np.broadcast_to(np.asarray(mean_direction, dtype=float), shape[:-1])
+    io = Boundary(NUMPY)
+    vi, vs, vn = io.vec3(n_i), io.vec3(n_s), io.vec3(nn)
+    z = NUMPY.vec(0.0, 0.0, 1.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        m = breaking_matrix(NUMPY, vi, vs, vn, frames_ns.fsa_basis(NUMPY, vi, z),
+                            frames_ns.fsa_basis(NUMPY, vs, z), np.cos(w), np.sin(w), eps)
+    out = np.empty(shape[:-1] + (2, 2), dtype=complex)
+    for (r, c), e in zip(((0, 0), (0, 1), (1, 0), (1, 1)), m.flat(), strict=True):
+        out[..., r, c] = np.broadcast_to(e, shape[:-1])
+    return out
 
 
 def breaking_sigma(
@@ -565,10 +611,85 @@ def facet_breaking(
     return FacetBreaking(w, qq)
 
 
+def breaking_placement(downward_acceleration: ArrayLike, area: ArrayLike,
+                       q: float) -> NDArray:
+    """Where the breaking zones are: the fraction of each facet they cover [-], shape (N,).
+
+    Waves break where the downward acceleration of the surface exceeds a fraction of
+    gravity, ``-a_z > gamma g`` (Phillips 1958; Longuet-Higgins 1963; the threshold
+    mechanism of Snyder & Kennedy 1983; Srokosz 1986): it singles out the steep,
+    sharp crests of the resolved waves. The universal ``gamma`` (about 0.4-0.5) applied
+    to a linear surface synthesised up to a grid's Nyquist wavenumber gives a breaking
+    area that depends on the grid; here the criterion keeps its form and the threshold
+    is the one that makes the broken area the fraction ``q`` of KHCC03 (eq BR3): the
+    facets of largest ``-a_z`` are covered (fraction 1) until their area is ``q`` times
+    the total, the last one partly.
+
+    Parameters
+    ----------
+    downward_acceleration : array_like (N,)
+        ``-a_z`` of the facets [m/s^2] (any monotonic breaking index works).
+    area : array_like (N,)
+        Facet areas [m^2].
+    q : float
+        Fraction of the area covered by breaking zones [-], in [0, 1].
+
+    Returns
+    -------
+    ndarray (N,)
+        In [0, 1]; ``sum(area * result) = q sum(area)``.
+
+    References
+    ----------
+    .. [1] Phillips, O. M. (1958). The equilibrium range in the spectrum of wind-generated
+       waves. *J. Fluid Mech.* 4, 426-434.
+    .. [2] Snyder, R. L. and Kennedy, R. M. (1983). On the formation of whitecaps by a
+       threshold mechanism. Part I: Basic formalism. *J. Phys. Oceanogr.* 13, 1482-1492.
+    .. [3] Srokosz, M. A. (1986). On the probability of wave breaking in deep water.
+       *J. Phys. Oceanogr.* 16, 382-385.
+    """
+    b = np.asarray(downward_acceleration, dtype=float).reshape(-1)
+    a = np.broadcast_to(np.asarray(area, dtype=float).reshape(-1), b.shape)
+    if not (np.isfinite(q) and 0.0 <= q <= 1.0):
+        raise ValueError(f"q = {q!r}: the breaking fraction must lie in [0, 1]")
+    out = np.zeros(b.shape)
+    total = float(a.sum())
+    if q == 0.0 or total <= 0.0 or b.size == 0:
+        return out
+    target = q * total
+    # Candidates: the largest indices covering well over the target area (O(N)).
+    m = min(b.size, int(np.ceil(2.0 * q * b.size)) + 16)
+    cand = np.argpartition(-b, m - 1)[:m] if m < b.size else np.arange(b.size)
+    order = cand[np.argsort(-b[cand], kind="stable")]
+    cum = np.cumsum(a[order])
+    full = int(np.searchsorted(cum, target, side="right"))
+    out[order[:full]] = 1.0
+    if full < order.size:
+        done = cum[full - 1] if full else 0.0
+        out[order[full]] = (target - done) / a[order[full]]
+    elif cum[-1] < target:  # the candidates were too few (very unequal areas): widen
+        return breaking_placement_sorted(b, a, q)
+    return out
+
+
+def breaking_placement_sorted(b: NDArray, a: NDArray, q: float) -> NDArray:
+    """:func:`breaking_placement` by a full sort (the general case)."""
+    out = np.zeros(b.shape)
+    order = np.argsort(-b, kind="stable")
+    cum = np.cumsum(a[order])
+    target = q * float(a.sum())
+    full = int(np.searchsorted(cum, target, side="right"))
+    out[order[:full]] = 1.0
+    if full < order.size:
+        out[order[full]] = (target - (cum[full - 1] if full else 0.0)) / a[order[full]]
+    return out
+
+
 __all__ = [
     "B_R", "C_Q", "EPS_WB", "K_WB_MAX", "N_GRAVITY", "S_WB2", "THETA_WB",
     "BreakingStatistics", "FacetBreaking", "add_breaking", "breaking_amplitude",
-    "breaking_front_density", "breaking_nrcs_monostatic", "breaking_sigma",
+    "breaking_placement",
+    "breaking_front_density", "breaking_matrix", "breaking_nrcs_monostatic", "breaking_sigma",
     "breaking_sigma_mean_plane", "breaking_statistics", "breaking_wavenumber_limit",
     "dissipation_exponent", "facet_breaking", "friction_velocity", "phase_speed",
     "roughness_length", "wind_growth_rate",

@@ -80,6 +80,7 @@ from .. import backend as _backend
 from ..backend import NUMPY, Boundary, Mat2
 from ..geometry import frames
 from .blend import kirchhoff_weights
+from .breaking import breaking_matrix
 from .kirchhoff import specular_direction, specular_matrix, specular_weight, wind_axes
 from .slopes import CoxMunkParameters
 from .spectrum_table import BraggSpectrumTable
@@ -99,27 +100,119 @@ def _drjit_available() -> bool:
 
 
 @dataclass(frozen=True)
+class TiltQuadrature:
+    """Nodes of the average over the unresolved tilts (eq P6), in the facet's wind frame.
+
+    The slopes ``(Z_u, Z_c)`` of the waves between the grid's Nyquist wavenumber and the
+    two-scale split tilt the Bragg-scattering plane of a facet; eq P6 averages the Bragg
+    term over their Gaussian density with the five-point *unscented* rule (Julier &
+    Uhlmann 2004): the centre with weight 1/3 and the four axis points
+    ``(+-sqrt(3) s_u, 0)``, ``(0, +-sqrt(3) s_c)`` with weight 1/6 each, exact for the
+    mean of polynomials of degree 3 and for the fourth moments ``<Z_u^4>``, ``<Z_c^4>``.
+    Each weight carries the area ``sqrt(1 + Z^2)`` of a sub-facet per unit facet area
+    (eq T1).
+
+    Attributes
+    ----------
+    slopes : tuple of (float, float)
+        ``(Z_u, Z_c)`` of the four axis nodes [-] (the centre is the facet itself).
+    weights : tuple of float
+        Weights of the centre then of the four axis nodes (area factor included) [-].
+    """
+
+    slopes: tuple[tuple[float, float], ...]
+    weights: tuple[float, ...]
+
+    @classmethod
+    def unscented(cls, mss_upwind: float, mss_crosswind: float) -> TiltQuadrature:
+        """The five-point rule for the unresolved slope variances ``s_u^2``, ``s_c^2`` [-].
+
+        References
+        ----------
+        .. [1] Julier, S. J. and Uhlmann, J. K. (2004). Unscented filtering and nonlinear
+           estimation. *Proc. IEEE* 92(3), 401-422 (sigma points with kappa = 3 - n).
+        """
+        if not (mss_upwind >= 0.0 and mss_crosswind >= 0.0):
+            raise ValueError(f"mss_upwind = {mss_upwind}, mss_crosswind = {mss_crosswind}: "
+                             "slope variances must be >= 0 [-]")
+        zu, zc = math.sqrt(3.0 * mss_upwind), math.sqrt(3.0 * mss_crosswind)
+        au, ac = math.sqrt(1.0 + zu * zu), math.sqrt(1.0 + zc * zc)
+        return cls(slopes=((zu, 0.0), (-zu, 0.0), (0.0, zc), (0.0, -zc)),
+                   weights=(1.0 / 3.0, au / 6.0, au / 6.0, ac / 6.0, ac / 6.0))
+
+    @classmethod
+    def gauss_hermite(cls, mss_upwind: float, mss_crosswind: float,
+                      n: int = 3) -> TiltQuadrature:
+        """Tensor-product Gauss-Hermite rule of ``n x n`` nodes (odd ``n``: the centre
+        is a node), area factor included: the reference for :meth:`unscented`."""
+        if n < 1 or n % 2 == 0:
+            raise ValueError(f"n = {n}: need an odd number of nodes per axis")
+        x, w = np.polynomial.hermite.hermgauss(n)
+        x, w = x * math.sqrt(2.0), w / math.sqrt(math.pi)
+        su, sc = math.sqrt(mss_upwind), math.sqrt(mss_crosswind)
+        nodes, weights = [], []
+        for i in range(n):
+            for j in range(n):
+                zu, zc = float(x[i] * su), float(x[j] * sc)
+                c = float(w[i] * w[j]) * math.sqrt(1.0 + zu * zu + zc * zc)
+                if i == j == n // 2:
+                    weights.insert(0, c)
+                else:
+                    nodes.append((zu, zc))
+                    weights.append(c)
+        return cls(slopes=tuple(nodes), weights=tuple(weights))
+
+
+#: Names of the mechanisms of eqs P1-P6, in the order the sums take them.
+MECHANISMS = ("specular", "bragg", "bragg1", "bragg2", "bragg3", "bragg4", "breaking")
+
+
+@dataclass(frozen=True)
 class FacetTerms:
-    """Mechanism matrices and weights of eqs P1-P3 (all shaped (N, 4), HH, HV, VH, VV).
+    """Mechanism matrices and weights of eqs P1-P3, P6-P7 (all shaped (N, 4), HH, HV, VH, VV).
 
     Attributes
     ----------
     specular : ndarray of complex
         ``K`` [-]: ``|K|^2`` is the Kirchhoff/GO sigma.
     bragg : ndarray of complex
-        ``B`` [-]: ``|B|^2`` is the SPM sigma (damping included).
+        ``B`` [-] of the facet's own plane: ``|B|^2`` is the SPM sigma (damping included).
     weight : ndarray
         Kirchhoff weight ``w`` per channel [-].
+    tilted : tuple of ndarray of complex
+        ``B_n`` of the unresolved-tilt nodes n = 1..4 (eq P6), empty without them.
+    tilt_weights : tuple of float
+        Node weights ``c_0 .. c_4`` of eq P6 (empty: ``c_0 = 1``).
+    breaking : ndarray of complex or None
+        ``W`` of the breaking zones (eq P7, BR5-BR6).
+    breaking_fraction : ndarray (N,) or None
+        Fraction ``q`` of each facet covered by breaking zones [-].
     """
 
     specular: NDArray
     bragg: NDArray
     weight: NDArray
+    tilted: tuple[NDArray, ...] = ()
+    tilt_weights: tuple[float, ...] = ()
+    breaking: NDArray | None = None
+    breaking_fraction: NDArray | None = None
 
     def mechanisms(self) -> dict[str, tuple[NDArray, NDArray]]:
         """The terms as :func:`mechanisms` gives them, channels on the last axis (N, 4)."""
-        return {"specular": (self.specular, self.weight),
-                "bragg": (self.bragg, 1.0 - self.weight)}
+        q = None if self.breaking_fraction is None else np.asarray(
+            self.breaking_fraction, dtype=float).reshape(-1, 1)
+        w_k, w_b = self.weight, 1.0 - self.weight
+        if q is not None:
+            w_k, w_b = w_k * (1.0 - q), w_b * (1.0 - q)
+        c0 = self.tilt_weights[0] if self.tilt_weights else 1.0
+        out = {"specular": (self.specular, w_k),
+               "bragg": (self.bragg, w_b if c0 == 1.0 else w_b * c0)}
+        for j, b in enumerate(self.tilted):
+            out[f"bragg{j + 1}"] = (b, w_b * self.tilt_weights[j + 1])
+        if self.breaking is not None:
+            out["breaking"] = (self.breaking, np.broadcast_to(
+                np.zeros((1, 1)) if q is None else q, self.breaking.shape))
+        return out
 
     def sigma(self) -> NDArray:
         """Eq P3: ``sigma_mn`` [m^2/m^2], shape (N, 4) (:func:`mechanism_sigma`)."""
@@ -127,9 +220,12 @@ class FacetTerms:
 
     def covariance(self) -> NDArray:
         """Eq P5 per unit area: ``E[a a^H] / A``, shape (N, 4, 4) [m^2/m^2]."""
-        k = np.sqrt(self.weight) * self.specular
-        b = np.sqrt(1.0 - self.weight) * self.bragg
-        return k[..., :, None] * k[..., None, :].conj() + b[..., :, None] * b[..., None, :].conj()
+        out = None
+        for m, w in self.mechanisms().values():
+            a = np.sqrt(w) * m
+            c = a[..., :, None] * a[..., None, :].conj()
+            out = c if out is None else out + c
+        return out
 
 
 def _each(fn: Callable[[Any], Any], m: Any) -> Any:
@@ -161,8 +257,12 @@ def mechanisms(
     cox_munk: CoxMunkParameters | None = None,
     damping: Any = None,
     local: tuple | None = None,
+    tilt: TiltQuadrature | None = None,
+    breaking: Any = None,
+    breaking_tilt: Any = 0.0,
+    context: dict | None = None,
 ) -> dict[str, tuple[Mat2, Mat2]]:
-    """Eqs P1-P2 and B1-B4: each mechanism's matrix and channel weights, per facet.
+    """Eqs P1-P2, P6-P7 and B1-B4: each mechanism's matrix and channel weights, per facet.
 
     Parameters
     ----------
@@ -187,13 +287,24 @@ def mechanisms(
     local : tuple, optional
         ``(cos_i, cos_s, cos_phi, sin_phi, A_i, A_s)`` of the facets' local frames, if
         already known (else from :mod:`seaecho.geometry.frames`).
+    tilt : TiltQuadrature, optional
+        Average the Bragg term over the unresolved tilts (eq P6): entries ``"bragg1"``
+        .. ``"bragg4"`` for the axis nodes, the centre weight on ``"bragg"``.
+    breaking : array, optional
+        Fraction ``q`` of each facet covered by breaking zones [-]: an entry
+        ``"breaking"`` (eq P7) and the weights of the others times ``1 - q``.
+    breaking_tilt : float or array
+        Forward tilt of the breaking zones ``theta_wb A_wb`` [rad] (BR5).
+    context : dict, optional
+        Filled with intermediate per-facet values that a caller may reuse in the same
+        kernel: ``"bragg_vector"`` (kx, ky of the facet's plane) [rad/m].
 
     Returns
     -------
     dict
-        ``{"specular": (K, w), "bragg": (B, 1 - w)}`` (the mechanisms of ``model``), each
-        a pair of :class:`~seaecho.backend.Mat2`: the complex mechanism matrix [-] in the
-        global FSA bases and its weight per channel [-].
+        ``{"specular": (K, w), "bragg": (B, 1 - w), ...}`` (the mechanisms of ``model``),
+        each a pair of :class:`~seaecho.backend.Mat2`: the complex mechanism matrix [-]
+        in the global FSA bases and its weight per channel [-].
 
     References
     ----------
@@ -217,7 +328,11 @@ def mechanisms(
     else:
         one = 1.0 if model == "kirchhoff" else 0.0
         w = Mat2(one, one, one, one)
+    if context is not None:
+        context["weight"] = w
+    keep = None if breaking is None else 1.0 - breaking
     out: dict[str, tuple[Mat2, Mat2]] = {}
+    e_u = e_c = None
     if model != "spm":
         # Eq P1: K = sqrt(pi P(Z)) |q|^2 / q_N^2 F (eqs K1-K2)
         n_sp = specular_direction(xp, n_i, n_s, N)
@@ -225,16 +340,46 @@ def mechanisms(
         e_u, e_c = wind_axes(xp, N, cos_wind, sin_wind)
         log_w, gc = specular_weight(xp, n_sp, N, e_u, e_c, xp.maximum(mss_upwind, 1e-12),
                                     xp.maximum(mss_crosswind, 1e-12), cox_munk)
-        out["specular"] = (f * xp.select(lit, xp.sqrt(gc) * xp.exp(0.5 * log_w), 0.0), w)
+        out["specular"] = (f * xp.select(lit, xp.sqrt(gc) * xp.exp(0.5 * log_w), 0.0),
+                           w if keep is None else w * keep)
     if model != "kirchhoff":
         # Eq P2: B = 4 sqrt(pi) k^2 cos cos A_s^T alpha A_i sqrt(W (1 - d)) (eq S7)
+        damp = None if damping is None else xp.sqrt(xp.clip(1.0 - damping, 0.0, 1.0))
         kx, ky = bragg_vector(xp, n_i, n_s, N, k)
+        if context is not None:
+            context["bragg_vector"] = (kx, ky)
         rough = xp.sqrt(xp.maximum(spectrum(kx, ky), 0.0))
-        if damping is not None:
-            rough = rough * xp.sqrt(xp.clip(1.0 - damping, 0.0, 1.0))
+        if damp is not None:
+            rough = rough * damp
         b = bragg_matrix(xp, k, eps_r, cos_i, cos_s, cos_phi, sin_phi, a_i, a_s,
                          roughness=rough)
-        out["bragg"] = (b, w.map(lambda x: 1.0 - x))
+        w_b = w.map(lambda x: 1.0 - x)
+        if keep is not None:
+            w_b = w_b * keep
+        if tilt is None:
+            out["bragg"] = (b, w_b)
+        else:
+            out["bragg"] = (b, w_b * tilt.weights[0])
+            if e_u is None:
+                e_u, e_c = wind_axes(xp, N, cos_wind, sin_wind)
+            for j, (zu, zc) in enumerate(tilt.slopes):
+                # Eq P6: the facet's Bragg term on the plane tilted by a node's slopes
+                n_j = xp.normalize(N - e_u * xp.const(zu) - e_c * xp.const(zc))
+                ci, cs, x_s, y_s = frames.local_geometry(xp, n_i, n_s, n_j)
+                cp, sp = azimuth_cos_sin(xp, x_s, y_s)
+                ai = frames.basis_change(xp, basis_i, frames.fsa_basis(xp, n_i, n_j))
+                as_ = frames.basis_change(xp, basis_s, frames.fsa_basis(xp, n_s, n_j))
+                kxj, kyj = bragg_vector(xp, n_i, n_s, n_j, k)
+                rj = xp.sqrt(xp.maximum(spectrum(kxj, kyj), 0.0))
+                if damp is not None:
+                    rj = rj * damp
+                bj = bragg_matrix(xp, k, eps_r, ci, cs, cp, sp, ai, as_, roughness=rj)
+                out[f"bragg{j + 1}"] = (bj, w_b * tilt.weights[j + 1])
+    if breaking is not None:
+        # Eq P7: breaking zones (BR5-BR6) on the facet's plane, weight q
+        wb = breaking_matrix(xp, n_i, n_s, N, basis_i, basis_s, cos_wind, sin_wind,
+                             breaking_tilt).map(lambda e: xp.complex(e, 0.0 * e))
+        out["breaking"] = (wb, Mat2(breaking, breaking, breaking, breaking))
     return out
 
 
@@ -274,7 +419,8 @@ def speckle(xp, mech: Mapping[str, tuple[Any, Any]], draws: Mapping[str, Any],
 
 # ----------------------------------------------------------------- the numpy boundary
 def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind,
-                   mss_crosswind, wind_direction, wake_damping, n: int) -> dict:
+                   mss_crosswind, wind_direction, wake_damping, n: int,
+                   breaking_fraction=None, breaking_tilt: float = 0.0) -> dict:
     """Namespace arrays and constants of :func:`mechanisms` from numpy inputs."""
     xp = io.xp
 
@@ -304,7 +450,18 @@ def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwin
         mss_crosswind=per_facet(mss_crosswind), cos_wind=xp.const(math.cos(w)),
         sin_wind=xp.const(math.sin(w)),
         damping=None if wake_damping is None else io.array(
-            np.asarray(wake_damping, dtype=float).reshape(n)))
+            np.asarray(wake_damping, dtype=float).reshape(n)),
+        breaking=None if breaking_fraction is None else per_facet(
+            _fraction(breaking_fraction)),
+        breaking_tilt=xp.const(breaking_tilt))
+
+
+def _fraction(q) -> Any:
+    """Breaking fractions checked to lie in [0, 1]."""
+    q = np.asarray(q, dtype=float)
+    if not (np.all(np.isfinite(q)) and np.all((q >= 0.0) & (q <= 1.0))):
+        raise ValueError("breaking_fraction: fractions must lie in [0, 1]")
+    return q if q.ndim else float(q)
 
 
 def _local_frames(local: Any, n: int) -> tuple:
@@ -345,6 +502,9 @@ def facet_terms(
     small_scale_height_variance: float | None = None,
     backend: str = "auto",
     variant: str | None = None,
+    tilt: TiltQuadrature | None = None,
+    breaking_fraction: ArrayLike | None = None,
+    breaking_tilt: float = 0.0,
 ) -> FacetTerms:
     """Mechanism matrices ``K``, ``B`` and weights ``w`` of facets (eqs P1-P2, B1-B4).
 
@@ -391,6 +551,12 @@ def facet_terms(
     variant : str, optional
         Mitsuba variant choosing the Dr.Jit back end: ``"llvm_ad_mono_polarized"`` (CPU,
         default) or ``"cuda_ad_mono_polarized"`` (GPU) (:mod:`seaecho.backend`).
+    tilt : TiltQuadrature, optional
+        Average the Bragg term over the unresolved tilts (eq P6).
+    breaking_fraction : array_like (N,) or float, optional
+        Fraction ``q`` of each facet covered by breaking zones, in [0, 1] (eq P7).
+    breaking_tilt : float
+        Forward tilt of the breaking zones ``theta_wb A_wb`` [rad] (BR5).
 
     Returns
     -------
@@ -410,18 +576,24 @@ def facet_terms(
     io = Boundary(xp, n)
     args = _kernel_inputs(io, n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
                           np.asarray(normal, dtype=float).reshape(-1, 3), k, complex(eps_r),
-                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n)
+                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n,
+                          breaking_fraction, breaking_tilt)
     frames_in = _local_frames(local, n) if (local is not None and xp.is_numpy) else None
-    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in)
-    w = (mech.get("specular") or mech["bragg"])[1]
-    if "specular" not in mech:
-        w = w.map(lambda x: 1.0 - x)
-    outs = [w] + [mech[m][0] for m in ("specular", "bragg") if m in mech]
-    res = io.numpy(*outs)
+    ctx: dict = {}
+    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in,
+                      tilt=tilt, context=ctx)
+    names = list(mech)
+    res = io.numpy(ctx["weight"], *[mech[m][0] for m in names])
     weight = res.pop(0).reshape(n, 4)
-    specular = res.pop(0).reshape(n, 4) if "specular" in mech else np.zeros((n, 4), complex)
-    bragg = res.pop(0).reshape(n, 4) if "bragg" in mech else np.zeros((n, 4), complex)
-    return FacetTerms(specular=specular, bragg=bragg, weight=weight)
+    mats = {m: r.reshape(n, 4) for m, r in zip(names, res, strict=True)}
+    zero = np.zeros((n, 4), complex)
+    return FacetTerms(
+        specular=mats.get("specular", zero), bragg=mats.get("bragg", zero), weight=weight,
+        tilted=tuple(mats[f"bragg{j}"] for j in range(1, len(mats) + 1) if f"bragg{j}" in mats),
+        tilt_weights=() if tilt is None or model == "kirchhoff" else tuple(tilt.weights),
+        breaking=mats.get("breaking"),
+        breaking_fraction=None if breaking_fraction is None else np.broadcast_to(
+            _fraction(breaking_fraction), (n,)).copy())
 
 
 def bragg_vectors(n_i: ArrayLike, n_s: ArrayLike, normal: ArrayLike, k: float) -> NDArray:
@@ -471,14 +643,43 @@ def speckle_draws(n: int, rng: np.random.Generator) -> tuple[NDArray, NDArray]:
     return g[:, 0] + 1j * g[:, 1], g[:, 2] + 1j * g[:, 3]
 
 
+def circular_gaussians(n: int, count: int, rng: np.random.Generator) -> list[NDArray]:
+    """``count`` independent circular complex Gaussians of unit variance, shape (n,) each.
+
+    ``rng.standard_normal((n, 2 count))`` once, scaled by sqrt(1/2) (the draws of the
+    further mechanisms of eqs P6-P7: tilt nodes, breaking zones).
+    """
+    g = rng.standard_normal((n, 2 * count)) * np.sqrt(0.5)
+    return [g[:, 2 * j] + 1j * g[:, 2 * j + 1] for j in range(count)]
+
+
+def _draw_map(draws: Any, names: list[str], n: int) -> dict[str, Any]:
+    """Draws as ``{mechanism: (n,) complex}``: a dict, or ``(g_K, g_B)``."""
+    if isinstance(draws, Mapping):
+        d = dict(draws)
+    else:
+        g_k, g_b = draws
+        d = {"specular": g_k, "bragg": g_b}
+    missing = [m for m in names if m not in d]
+    if missing:
+        raise ValueError(f"draws: none given for the mechanisms {missing} (pass a dict "
+                         f"with one (N,) complex draw per mechanism of {names})")
+    for m in names:
+        if np.shape(d[m]) != (n,):
+            raise ValueError(f"draws of shape {np.shape(d[m])} for {m!r}: need ({n},)")
+    return d
+
+
 def speckle_amplitudes(terms: FacetTerms, area: ArrayLike,
                        rng: np.random.Generator | None = None, *,
-                       draws: tuple[NDArray, NDArray] | None = None) -> NDArray:
+                       draws: Any = None) -> NDArray:
     """Eq P4: speckled complex amplitudes ``a_mn`` [m] of facets, shape (N, 4).
 
     Draws two circular complex Gaussians (unit variance) per facet, ``g_K`` then
     ``g_B``, from ``rng`` (:func:`speckle_draws`: ``standard_normal((N, 4))`` once), so a
-    given generator state gives the same amplitudes; or takes them from ``draws``.
+    given generator state gives the same amplitudes, then those of the further
+    mechanisms (:func:`circular_gaussians`, in the order of :data:`MECHANISMS`); or
+    takes them from ``draws``.
 
     Parameters
     ----------
@@ -487,9 +688,10 @@ def speckle_amplitudes(terms: FacetTerms, area: ArrayLike,
         Facet areas [m^2].
     rng : numpy.random.Generator, optional
         Source of the draws (needed when ``draws`` is not given).
-    draws : (g_K, g_B), optional
-        Precomputed :func:`speckle_draws` (N,) complex each; same result as drawing them
-        from the generator that made them.
+    draws : (g_K, g_B) or dict, optional
+        Precomputed draws, (N,) complex each: :func:`speckle_draws`, or a dict with one
+        per mechanism (:data:`MECHANISMS`); same result as drawing them from the
+        generator that made them.
 
     Returns
     -------
@@ -497,16 +699,18 @@ def speckle_amplitudes(terms: FacetTerms, area: ArrayLike,
         ``E|a_mn|^2 = sigma_mn * area`` [m^2]; covariance eq P5.
     """
     n = terms.weight.shape[0]
+    mech = terms.mechanisms()
+    names = list(mech)
     if draws is None:
         if rng is None:
             raise ValueError("speckle_amplitudes needs rng or draws")
-        draws = speckle_draws(n, rng)
-    g_k, g_b = draws
-    if g_k.shape != (n,) or g_b.shape != (n,):
-        raise ValueError(f"draws of shape {g_k.shape}, {g_b.shape}: need ({n},) each")
+        g_k, g_b = speckle_draws(n, rng)
+        draws = {"specular": g_k, "bragg": g_b}
+        extra = [m for m in names if m not in draws]
+        draws.update(zip(extra, circular_gaussians(n, len(extra), rng), strict=True))
+    d = _draw_map(draws, names, n)
     area = np.asarray(area, dtype=float).reshape(-1, 1)
-    return speckle(NUMPY, terms.mechanisms(), {"specular": g_k[:, None], "bragg": g_b[:, None]},
-                   area)
+    return speckle(NUMPY, mech, {m: np.asarray(d[m])[:, None] for m in names}, area)
 
 
 def speckled_facet_amplitudes(
@@ -521,41 +725,56 @@ def speckled_facet_amplitudes(
     mss_crosswind: ArrayLike,
     wind_direction: float = 0.0,
     *,
-    draws: tuple[NDArray, NDArray],
+    draws: Any,
     model: str = "blend",
     cox_munk: CoxMunkParameters | None = None,
     wake_damping: ArrayLike | None = None,
     local: Any = None,
     backend: str = "auto",
     variant: str | None = None,
+    tilt: TiltQuadrature | None = None,
+    breaking_fraction: ArrayLike | None = None,
+    breaking_tilt: float = 0.0,
 ) -> NDArray:
-    """Eqs P1-P4 in one pass: speckled amplitudes ``a_mn`` [m] of facets, shape (N, 4).
+    """Eqs P1-P7 in one pass: speckled amplitudes ``a_mn`` [m] of facets, shape (N, 4).
 
     ``speckle_amplitudes(facet_terms(...), area, draws=draws)`` (same parameters as
-    :func:`facet_terms`, ``area`` (N,) [m^2], ``draws`` from :func:`speckle_draws`):
-    :func:`mechanisms` followed by :func:`speckle`, which the Dr.Jit back end evaluates
-    as one kernel, so that ``K``, ``B`` and ``w`` never come back to numpy (the per-pulse
-    path of a simulation). The back ends agree within rounding (tests).
+    :func:`facet_terms`, ``area`` (N,) [m^2]): :func:`mechanisms` followed by
+    :func:`speckle`, which the Dr.Jit back end evaluates as one kernel, so that the
+    mechanism matrices never come back to numpy (the per-pulse path of a simulation).
+    The back ends agree within rounding (tests).
+
+    ``draws`` is ``(g_K, g_B)`` (:func:`speckle_draws`), a dict of (N,) complex draws,
+    one per mechanism (:data:`MECHANISMS`), or a callable ``draws(xp, io, context)``
+    returning such a dict of namespace arrays, evaluated inside the kernel (``context``
+    as filled by :func:`mechanisms`, plus ``"n_i"``, ``"n_s"``): the evolving speckle of
+    :mod:`seaecho.scattering.dynamics`.
 
     References
     ----------
-    .. [1] Paper eqs 7-11; module docstring (eqs P1-P4).
+    .. [1] Paper eqs 7-11; module docstring (eqs P1-P7).
     """
     if model not in MODELS:
         raise ValueError(f"model = {model!r}: choose from {MODELS}")
     xp = _namespace(backend, spectrum, variant)
     n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
     n = n_i.shape[0]
-    g_k, g_b = draws
-    if np.shape(g_k) != (n,) or np.shape(g_b) != (n,):
-        raise ValueError(f"draws of shape {np.shape(g_k)}, {np.shape(g_b)}: need ({n},) each")
     io = Boundary(xp, n)
     args = _kernel_inputs(io, n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
                           np.asarray(normal, dtype=float).reshape(-1, 3), k, complex(eps_r),
-                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n)
+                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n,
+                          breaking_fraction, breaking_tilt)
     frames_in = _local_frames(local, n) if (local is not None and xp.is_numpy) else None
-    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in)
-    g = {"specular": io.complex(g_k), "bragg": io.complex(g_b)}
+    ctx: dict = {}
+    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in,
+                      tilt=tilt, context=ctx)
+    names = list(mech)
+    if callable(draws):
+        ctx.update(n_i=args["n_i"], n_s=args["n_s"], k=args["k"])
+        g = draws(xp, io, ctx)
+    else:
+        d = _draw_map(draws, names, n)
+        g = {m: io.complex(d[m]) for m in names}
     a = speckle(xp, mech, g, io.array(np.asarray(area, dtype=float).reshape(n)))
     (out,) = io.numpy(a)
     return out.reshape(n, 4)
@@ -621,6 +840,7 @@ def hhvv_coherence(terms: FacetTerms) -> NDArray:
     return np.where(den > 0, c[:, 0, 3] / np.where(den > 0, den, 1.0), 0.0)
 
 
-__all__ = ["BACKENDS", "MODELS", "FacetTerms", "bragg_vectors", "facet_amplitudes",
-           "facet_sigma", "facet_terms", "hhvv_coherence", "mechanism_sigma", "mechanisms",
-           "speckle", "speckle_amplitudes", "speckle_draws", "speckled_facet_amplitudes"]
+__all__ = ["BACKENDS", "MECHANISMS", "MODELS", "FacetTerms", "TiltQuadrature",
+           "bragg_vectors", "circular_gaussians", "facet_amplitudes", "facet_sigma",
+           "facet_terms", "hhvv_coherence", "mechanism_sigma", "mechanisms", "speckle",
+           "speckle_amplitudes", "speckle_draws", "speckled_facet_amplitudes"]

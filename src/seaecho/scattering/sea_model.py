@@ -12,7 +12,10 @@ all read this one object, so they cannot disagree.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
+from .breaking import THETA_WB, BreakingStatistics
+from .facet import TiltQuadrature
 from .spectrum_table import BraggSpectrumTable
 
 
@@ -43,6 +46,11 @@ class SeaModel:
         Height variance of the roughness band k_grid < K < k_max [m^2] (SPM validity).
     bragg_spectrum : BraggSpectrumTable
         Height spectrum W(K) of the roughness band, tabulated (0 outside it) [m^4].
+    tilt : TiltQuadrature or None
+        Nodes of the average of the Bragg term over the unresolved tilts (eq P6), or None
+        for the paper's facet model (Bragg term of the facet's own plane only).
+    breaking : BreakingStatistics or None
+        Breaking zones of the sea at this carrier (KHCC03, eq BR3), or None without them.
     """
 
     frequency: float
@@ -56,6 +64,8 @@ class SeaModel:
     mss_crosswind: float
     roughness_height_variance: float
     bragg_spectrum: BraggSpectrumTable
+    tilt: TiltQuadrature | None = None
+    breaking: BreakingStatistics | None = None
 
     @property
     def facet_model(self) -> tuple:
@@ -64,6 +74,13 @@ class SeaModel:
         mss_upwind, mss_crosswind, wind_direction)."""
         return (self.k, self.eps_r, self.bragg_spectrum, self.mss_upwind,
                 self.mss_crosswind, self.wind_direction)
+
+    @property
+    def facet_options(self) -> dict[str, Any]:
+        """The keywords of ``facet_terms`` / ``speckled_facet_amplitudes`` that follow from
+        the sea: ``tilt`` (eq P6) and ``breaking_tilt`` (``theta_wb A_wb``, BR5)."""
+        eps = 0.0 if self.breaking is None else THETA_WB * self.breaking.mean_direction
+        return {"tilt": self.tilt, "breaking_tilt": float(eps)}
 
     @property
     def subfacet(self) -> tuple[float, float, float]:

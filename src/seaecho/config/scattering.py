@@ -1,0 +1,47 @@
+"""``[scattering]`` section: the per-facet sea scattering model and how the sea moves.
+
+``model`` chooses the mechanisms of each facet: ``"blend"`` (the paper's Kirchhoff / small
+perturbation blend, eqs 10-11) or ``"blend+breaking"`` (plus breaking zones,
+Kudryavtsev et al. 2003, placed on the steepest crests of the resolved surface).
+``unresolved_tilt`` averages the Bragg term over the slopes of the waves the grid does not
+resolve (docs/scattering.md, eq P6), which makes sigma0 independent of the grid spacing.
+``sea_motion`` says what happens between two updates of the surface geometry
+(``[radar] sea_update_pulses``): ``"held"`` freezes the sea and its speckle (the paper's
+section V-B), ``"evolving"`` moves the facets with the waves and evolves their speckle
+(Bragg dispersion, orbital motion, finite lifetimes: docs/dynamics.md).
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import Field
+
+from .base import Section
+
+ScatteringModelName = Literal["blend", "blend+breaking"]
+SeaMotionName = Literal["held", "evolving"]
+
+
+class ScatteringConfig(Section):
+    """The per-facet scattering model and the motion of the sea between updates."""
+
+    model: ScatteringModelName = Field(
+        "blend+breaking",
+        description="per-facet mechanisms: 'blend' (Kirchhoff/SPM blend, paper eqs 10-11) "
+        "or 'blend+breaking' (plus breaking zones, Kudryavtsev et al. 2003)",
+    )
+    unresolved_tilt: bool = Field(
+        True,
+        description="average the Bragg term over the slopes of the unresolved waves "
+        "(five-point quadrature): sigma0 independent of the grid spacing",
+    )
+    sea_motion: SeaMotionName = Field(
+        "held",
+        description="between surface updates ([radar] sea_update_pulses): 'held' freezes "
+        "the sea and its speckle (the paper), 'evolving' moves the facets with the waves "
+        "and evolves the speckle (Bragg lines, orbital motion, finite coherence time)",
+    )
+
+
+__all__ = ["ScatteringConfig", "ScatteringModelName", "SeaMotionName"]
