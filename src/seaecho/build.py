@@ -60,6 +60,7 @@ from .radar.pointing import Pointing
 from .radar.waveform import Waveform
 from .rng import generator
 from .scattering.breaking import breaking_statistics
+from .scattering.dynamics import SeaDynamics
 from .scattering.facet import TiltQuadrature
 from .scattering.sea_model import SeaModel
 from .scattering.spectrum_table import BraggSpectrumTable
@@ -75,6 +76,7 @@ __all__ = [
     "build_engine",
     "build_radar",
     "build_sea",
+    "build_sea_dynamics",
     "build_sea_model",
     "build_simulation",
     "build_tracing",
@@ -203,14 +205,62 @@ def build_sea_model(scene, frequency: float | None = None,
         mss_u, mss_c = mss_u + du, mss_c + dc
         quadrature = TiltQuadrature.unscented(mss_u, mss_c)
     breaking = None
+    u10 = float(u10_from_u19_5(cfg.wind_speed_m_s))
     if opts.model == "blend+breaking":
-        breaking = breaking_statistics(float(u10_from_u19_5(cfg.wind_speed_m_s)), float(k))
+        breaking = breaking_statistics(u10, float(k))
+    dynamics = None
+    if opts.sea_motion == "evolving":
+        dynamics = build_sea_dynamics(scene, spectrum, float(k), band.k_grid, float(k_cut),
+                                      u10)
     return SeaModel(frequency=f, k=float(k), eps_r=eps_r,
                     wind_direction=float(spectrum.wind_direction), k_grid=band.k_grid,
                     k_cut=float(k_cut), k_max=float(k_max), mss_upwind=mss_u,
                     mss_crosswind=mss_c,
                     roughness_height_variance=height_variance(spectrum, band.k_grid, k_max),
-                    bragg_spectrum=table, tilt=quadrature, breaking=breaking)
+                    bragg_spectrum=table, tilt=quadrature, breaking=breaking,
+                    dynamics=dynamics)
+
+
+def _scene_bragg_wavenumber(scene, k: float) -> float:
+    """Mean-plane Bragg wavenumber at the tile centre at the first pulse [rad/m]
+    (``k |(n_s - n_i)_h|``; 2 k sin 45 deg without a transmitter)."""
+    if scene.transmitter is None:
+        return float(2.0 * k * np.sin(np.pi / 4))
+    tx, rx = _platforms(scene)
+    t0 = scene.radar.start_time_s if scene.radar is not None else 0.0
+    p_tx, p_rx = tx.state(t0).position, rx.state(t0).position
+    n_i = -p_tx / np.linalg.norm(p_tx)
+    n_s = p_rx / np.linalg.norm(p_rx)
+    return float(k * np.hypot(*(n_s - n_i)[:2]))
+
+
+def build_sea_dynamics(scene, spectrum: DirectionalSpectrum, k: float, k_grid: float,
+                       k_cut: float, u10: float) -> SeaDynamics:
+    """The evolving speckle's parameters (:mod:`seaecho.scattering.dynamics`, eqs D2-D8):
+    lifetimes of the Bragg waves (at the scene's mean Bragg wavenumber), of the specular
+    points (tilting band) and of the breakers; the tilting band's orbital velocity
+    covariance; the breakers' velocity; the travel-direction split of the Bragg waves."""
+    from .ocean.twoscale import mean_wave_period, orbital_velocity_covariance
+    from .scattering.dynamics import bragg_lifetime, travel_fraction
+
+    stats = breaking_statistics(u10, k)
+    depth = scene.sea.depth_m
+    lifetimes = {
+        "specular": mean_wave_period(spectrum, k_grid, k_cut, "slope", depth),
+        "bragg+": bragg_lifetime(_scene_bragg_wavenumber(scene, k), u10),
+        "bragg-": bragg_lifetime(_scene_bragg_wavenumber(scene, k), u10),
+        "breaking": max(stats.mean_period, 1e-3),
+    }
+    w = float(spectrum.wind_direction)
+    travel = BraggSpectrumTable(lambda kx, ky: travel_fraction(spectrum, kx, ky, u10),
+                                k_min=k_grid, k_max=ROUGHNESS_K_MAX_RATIO * k, n_k=256,
+                                n_psi=180)
+    return SeaDynamics(lifetimes=lifetimes,
+                       velocity_covariance=orbital_velocity_covariance(spectrum, k_grid,
+                                                                       k_cut, depth),
+                       breaker_velocity=stats.mean_phase_speed * np.array(
+                           [np.cos(w), np.sin(w), 0.0]),
+                       travel=travel)
 
 
 def check_scene(scene, frequency: float | None = None) -> None:

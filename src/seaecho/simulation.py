@@ -40,6 +40,7 @@ from .conventions import CHANNELS
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import generator
+from .scattering.breaking import breaking_placement
 
 #: Names of the 2x2 scattering channels, (h, v) order flattened.
 POLARISATIONS = CHANNELS
@@ -115,6 +116,9 @@ class Simulation:
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
         # depends only on (scene, pulse): the cache holds what the block index determines.
         self._block_cache: tuple[int, dict] | None = None
+        #: sea_motion = "evolving": facets move and their speckle evolves between updates
+        self.evolving = self.sea_model is not None and self.sea_model.dynamics is not None
+        self._speckle = None
         if self.sea is not None:
             from .tracing.engine import FacetEngine
 
@@ -160,6 +164,9 @@ class Simulation:
 
         block = pulse // self.block
         if self._block_cache is None or self._block_cache[0] != block:
+            if self.evolving:
+                self._block_cache = (block, self._evolving_block(state))
+                return self._block_cache[1]
             seed = self.radar.seed
             g_k, g_b = speckle_draws(n_facets, generator(seed, "speckle", block))
             draws = {"specular": g_k, "bragg": g_b}
@@ -176,6 +183,57 @@ class Simulation:
                 q["breaking"] = self.breaking_fraction(state)
             self._block_cache = (block, q)
         return self._block_cache[1]
+
+    def _evolving_block(self, state) -> dict:
+        """Per-block quantities of an evolving sea: wake damping, breaking placement, and
+        the facets' phase centres with their velocities and accelerations at the block's
+        surface time (the particles' positions ``r + D``, eq D1), from which each pulse
+        extrapolates to its own time (:meth:`phase_centres`)."""
+        from .geometry.mesh import to_facets
+
+        kin = self.sea.kinematics(state.t)
+        centroid, area, _, velocity = self.engine.geometry(state)
+        disp = np.stack([to_facets(kin.displacement[..., i]).reshape(-1) for i in range(2)],
+                        axis=-1)
+        acc = np.stack([to_facets(kin.acceleration[..., i]).reshape(-1) for i in range(3)],
+                       axis=-1)
+        centre = centroid.copy()
+        centre[:, :2] += disp
+        q = {"damping": to_facets(state.wake_mask).reshape(-1), "draws": None,
+             "breaking": None, "t": float(state.t), "centre": centre, "velocity": velocity,
+             "acceleration": acc}
+        if self.sea_model.breaking is not None:
+            q["breaking"] = breaking_placement(-acc[:, 2], area, self.sea_model.breaking.q)
+        return q
+
+    def phase_centres(self, pulse: int, state) -> NDArray[np.float64]:
+        """Phase centres of the facets at ``pulse``'s emission time [m], shape (N, 3).
+
+        Held sea: the facets' centroids (the surface of the block, frozen). Evolving sea:
+        the particle positions of the block's surface time ``t_s`` carried to the pulse's
+        time ``t_p`` by their velocity and acceleration,
+        ``r(t_p) = r(t_s) + v (t_p - t_s) + a (t_p - t_s)^2 / 2`` (exact for ``t_p = t_s``,
+        i.e. ``sea_update_pulses = 1``; the error of the next order is
+        ``|da/dt| (t_p - t_s)^3 / 6``).
+        """
+        held = self._block_quantities(pulse, state, self.engine.geometry(state)[0].shape[0])
+        if not self.evolving:
+            return self.engine.geometry(state)[0]
+        dt = float(self.radar.emission_time(pulse)) - held["t"]
+        return held["centre"] + held["velocity"] * dt + held["acceleration"] * (0.5 * dt * dt)
+
+    def _speckle_process(self, n_facets: int):
+        """The evolving speckle of the facets (:class:`seaecho.scattering.dynamics.
+        EvolvingSpeckle`), made once."""
+        from .scattering.dynamics import EvolvingSpeckle
+
+        if self._speckle is None or self._speckle.n != n_facets:
+            m = self.sea_model
+            self._speckle = EvolvingSpeckle(
+                m.dynamics, self.radar.seed, n_facets,
+                tilt_nodes=0 if m.tilt is None else len(m.tilt.slopes),
+                breaking=m.breaking is not None)
+        return self._speckle
 
     def breaking_fraction(self, state) -> NDArray[np.float64]:
         """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
@@ -222,14 +280,18 @@ class Simulation:
         args = (facets.n_i, facets.n_s, facets.normal)
         model = self.sea_model.facet_model
         options = dict(self.sea_model.facet_options, breaking_fraction=held["breaking"])
+        draws = held["draws"]
+        if self.evolving:  # eqs D2-D4 evaluated inside the facet kernel
+            draws = self._speckle_process(vis.size).draws(float(geo.time))
         amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,
-                                        draws=held["draws"], wake_damping=damping,
+                                        draws=draws, wake_damping=damping,
                                         local=facets, **options)
+        centres = self.phase_centres(pulse, st)
         visible = vis > 0
         if visible.all():  # the usual case: no copies
-            pos, vel = facets.centroid, facets.velocity
+            pos, vel = centres, facets.velocity
         else:
-            pos, vel, amp = facets.centroid[visible], facets.velocity[visible], amp[visible]
+            pos, vel, amp = centres[visible], facets.velocity[visible], amp[visible]
         echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2))
         sig = None
         if sigma:
@@ -296,7 +358,36 @@ class Simulation:
                                "tracing_refresh_interval_s":
                                    tracing.refresh_interval_s if tracing else 0.0,
                                "sigma_map_pulse": self.models.radar.sigma_map_pulse,
-                               "range_weighting": self.models.radar.range_weighting})
+                               "range_weighting": self.models.radar.range_weighting,
+                               **self.sea_attrs()})
+
+    def sea_attrs(self) -> dict:
+        """Dataset attributes that say how the sea scatters and moves."""
+        m = self.sea_model
+        if m is None:
+            return {}
+        out = {"scattering_model": "blend+breaking" if m.breaking is not None else "blend",
+               "unresolved_tilt": int(m.tilt is not None),
+               "sea_motion": "evolving" if self.evolving else "held",
+               "sea_frozen": int(not self.evolving),
+               "sea_motion_note": (
+                   "evolving: facets move with the surface particles and their speckle "
+                   "evolves at every pulse (Bragg lines, orbital motion, finite lifetimes); "
+                   "geometry (normals, visibility, breaking placement) updated every "
+                   "sea_update_pulses" if self.evolving else
+                   "held: the surface and its speckle are frozen within each block of "
+                   "sea_update_pulses pulses (the paper's section V-B)"),
+               "phase_update_interval_s": (1.0 / self.radar.prf) if self.evolving else 0.0,
+               "subfacet_mss_upwind": m.mss_upwind,
+               "subfacet_mss_crosswind": m.mss_crosswind}
+        if m.breaking is not None:
+            out["breaking_fraction"] = m.breaking.q
+        if self.evolving:
+            for fam, t in m.dynamics.lifetimes.items():
+                out[f"speckle_lifetime_{fam.replace('+', '_plus').replace('-', '_minus')}_s"] = t
+            c = m.dynamics.velocity_covariance
+            out["subfacet_velocity_rms_m_s"] = [float(np.sqrt(c[i, i])) for i in range(3)]
+        return out
 
     # ------------------------------------------------------------------------ run
     def run(self, path: str | os.PathLike, progress: bool = True, chunk: int = 16) -> Path:

@@ -22,6 +22,7 @@ COMMANDS = (
     "surface",
     "run",
     "image",
+    "doppler",
     "trace",
     "compare",
     "sigma",

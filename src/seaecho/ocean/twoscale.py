@@ -154,6 +154,58 @@ def unresolved_statistics(
     )
 
 
+def orbital_velocity_covariance(spectrum: DirectionalSpectrum, k_min: float, k_max: float,
+                                depth: float | None = None) -> np.ndarray:
+    r"""Covariance of the surface particle velocity of the band k_min < K < k_max [m^2/s^2].
+
+    Linear waves: a wave of amplitude a, wavenumber K and frequency omega moves the
+    surface particles horizontally with ``omega coth(K d) a`` along K, in phase with the
+    elevation, and vertically with ``omega a`` in quadrature (Lamb 1932, art. 228), so
+
+    .. math::
+        C_{hh} = \int \omega^2 \coth^2(Kd)\, \hat K \hat K^T \Psi\, d^2K, \quad
+        C_{zz} = \int \omega^2 \Psi\, d^2K, \quad C_{hz} = 0      (U2)
+
+    (``Psi`` the directional spectrum of eq 4, ``omega`` eq 15 with surface tension).
+
+    Returns
+    -------
+    ndarray (3, 3)
+        Velocity covariance in the world frame (x east, y north, z up) [m^2/s^2].
+    """
+    from .dispersion import angular_frequency
+
+    k = _band_grid(k_min, k_max)[:, None]
+    psi = np.linspace(-np.pi, np.pi, _N_PSI, endpoint=False)[None, :]
+    dpsi = 2 * np.pi / _N_PSI
+    w2 = angular_frequency(k, depth) ** 2
+    coth2 = 1.0 if depth is None else 1.0 / np.tanh(k * depth) ** 2
+    density = spectrum.omni(k) * spectrum.spread(k, psi) * w2  # omega^2 S_1d D
+    az = psi + spectrum.wind_direction
+    c = np.empty((3, 3))
+    c[:] = 0.0
+    for i, fi in enumerate((np.cos(az), np.sin(az))):
+        for j, fj in enumerate((np.cos(az), np.sin(az))):
+            c[i, j] = np.trapezoid((density * coth2 * fi * fj).sum(axis=1) * dpsi, k[:, 0])
+    c[2, 2] = np.trapezoid(density.sum(axis=1) * dpsi, k[:, 0])
+    return c
+
+
+def mean_wave_period(spectrum: DirectionalSpectrum, k_min: float, k_max: float,
+                     weight: str = "slope", depth: float | None = None) -> float:
+    """Mean period ``2 pi / <omega>`` of the band k_min < K < k_max [s].
+
+    ``<omega>`` is weighted by the slope spectrum ``K^2 S_1d`` (``weight="slope"``, the
+    waves that tilt the specular points) or by ``S_1d`` (``"height"``).
+    """
+    from .dispersion import angular_frequency
+
+    k = _band_grid(k_min, k_max)
+    s = spectrum.omni(k) * (k**2 if weight == "slope" else 1.0)
+    w = angular_frequency(k, depth)
+    return float(2 * np.pi * np.trapezoid(s, k) / np.trapezoid(s * w, k))
+
+
 #: How a facet's normal is made from the grid (:func:`facet_slope_deficit`).
 FACET_NORMALS = ("mesh", "vertex-mean")
 
@@ -240,4 +292,5 @@ def facet_slope_deficit(spectrum: DirectionalSpectrum, size: tuple[float, float]
 
 __all__ = ["FACET_NORMALS", "ROUGHNESS_K_MAX_RATIO", "SPM_KH_MAX", "TWO_SCALE_CUT_RATIO",
            "UnresolvedStatistics", "facet_slope_deficit", "height_variance",
-           "slope_variances", "unresolved_statistics"]
+           "mean_wave_period", "orbital_velocity_covariance", "slope_variances",
+           "unresolved_statistics"]

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .breaking import THETA_WB, BreakingStatistics
+from .dynamics import SeaDynamics
 from .facet import TiltQuadrature
 from .spectrum_table import BraggSpectrumTable
 
@@ -51,6 +52,9 @@ class SeaModel:
         for the paper's facet model (Bragg term of the facet's own plane only).
     breaking : BreakingStatistics or None
         Breaking zones of the sea at this carrier (KHCC03, eq BR3), or None without them.
+    dynamics : SeaDynamics or None
+        How the facets' speckle evolves between pulses (eqs D2-D8), or None for a held
+        sea.
     """
 
     frequency: float
@@ -66,6 +70,7 @@ class SeaModel:
     bragg_spectrum: BraggSpectrumTable
     tilt: TiltQuadrature | None = None
     breaking: BreakingStatistics | None = None
+    dynamics: SeaDynamics | None = None
 
     @property
     def facet_model(self) -> tuple:
