@@ -219,8 +219,10 @@ class Simulation:
         held = self._block_quantities(pulse, state, self.engine.geometry(state)[0].shape[0])
         if not self.evolving:
             return self.engine.geometry(state)[0]
+        from .scattering.dynamics import extrapolate
+
         dt = float(self.radar.emission_time(pulse)) - held["t"]
-        return held["centre"] + held["velocity"] * dt + held["acceleration"] * (0.5 * dt * dt)
+        return extrapolate(held["centre"], held["velocity"], held["acceleration"], dt)
 
     def _speckle_process(self, n_facets: int):
         """The evolving speckle of the facets (:class:`seaecho.scattering.dynamics.

@@ -243,6 +243,19 @@ def _centro_symmetric(spectrum) -> bool:
     return True
 
 
+def extrapolate(position: ArrayLike, velocity: ArrayLike, acceleration: ArrayLike | None,
+                dt: float) -> NDArray:
+    """Eq D1 between geometry updates: ``r + v dt + a dt^2 / 2`` [m], (N, 3).
+
+    The particle positions of a surface state carried ``dt`` [s] forward by their
+    velocity [m/s] and acceleration [m/s^2] (``None``: uniform motion).
+    """
+    out = np.asarray(position, dtype=float) + np.asarray(velocity, dtype=float) * dt
+    if acceleration is not None:
+        out = out + np.asarray(acceleration, dtype=float) * (0.5 * dt * dt)
+    return out
+
+
 # ---------------------------------------------------------------- stage model
 @dataclass(frozen=True)
 class SeaDynamics:
@@ -384,5 +397,5 @@ class EvolvingSpeckle:
 
 
 __all__ = ["FAMILIES", "LIFETIME_MAX", "LIFETIME_MIN", "EvolvingSpeckle", "SeaDynamics",
-           "bragg_frequency", "bragg_lifetime", "coherence_time",
+           "bragg_frequency", "bragg_lifetime", "coherence_time", "extrapolate",
            "speckle_autocorrelation", "travel_fraction", "window_autocorrelation"]
