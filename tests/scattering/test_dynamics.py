@@ -91,10 +91,11 @@ def test_doppler_spread_and_shift_multiply_the_autocorrelation():
     assert coherence_time(T, 0.0) < 2 * T
 
 
-def _bragg_series(p_plus, theta=np.radians(45.0), prf=200.0, n=256):
+def _bragg_series(p_plus, theta_deg=45.0, prf=200.0, n=256):
     """Coherent sum over flat facets of the Bragg amplitude (VV) of eq P4 with the
     evolving draws, pulse by pulse (monostatic, no resolved motion, no spread)."""
     m = 400
+    theta = np.radians(theta_deg)
     n_i, n_s = frames.directions_from_angles(np.full(m, theta), np.zeros(m),
                                              np.full(m, theta), np.full(m, np.pi))
     normal = np.tile([0.0, 0.0, 1.0], (m, 1))
