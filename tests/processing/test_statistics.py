@@ -86,8 +86,12 @@ def test_rayleigh_and_weibull_fits_recover_parameters():
 def test_empirical_shape_law_structure():
     """Watts & Wicks (1990) law: nu grows as grazing^(2/3) and area^(5/8); HH clutter is
     spikier than VV by 10^0.70; a look along or across the swell changes log10(nu) by
-    -1/3 or +1/3."""
+    -1/3 or +1/3. With the constants of Ward, Tough & Watts (2006), p. 237 (as restated
+    by NRL's clutter generator, Farshchian 2010): VV at 1 deg grazing, 1000 m^2, no swell:
+    log10 nu = 5/8 x 3 - 1.39 = 0.485, nu = 3.055; HH: 10^(1.875 - 2.09) = 0.610."""
     nu = k_shape_empirical(1.0, 1000.0, "VV")
+    assert nu == pytest.approx(10**0.485, rel=1e-12)
+    assert k_shape_empirical(1.0, 1000.0, "HH") == pytest.approx(10 ** (1.875 - 2.09))
     assert k_shape_empirical(8.0, 1000.0, "VV") == pytest.approx(4 * nu)
     assert k_shape_empirical(1.0, 1000.0 * 2**8, "VV") == pytest.approx(32 * nu)
     assert k_shape_empirical(1.0, 1000.0, "HH") == pytest.approx(nu / 10**0.70)

@@ -49,8 +49,9 @@ class ShipConfig(Section):
     )
     turbulent_wake_film_contrast_db: float = Field(
         -3.0, ge=-30.0, le=0.0,
-        description="persistent Bragg contrast of the turbulent wake's surfactant film [dB]; "
-        "the turbulence adds complete damping at the stern decaying as (1 + xi/B)^-3/5",
+        description="persistent Bragg contrast of the turbulent wake's surfactant film [dB], a "
+        "free parameter (no measured value is built in); the turbulence adds complete "
+        "damping at the stern decaying as (1 + xi/B)^-3/5",
     )
 
     @model_validator(mode="after")

@@ -29,7 +29,11 @@ clutter; ``nu -> infinity`` is Rayleigh (exponential intensity).
 
 ``phi_gr`` grazing angle [deg], ``A_c`` resolved area [m^2], ``k_pol = 1.39`` (VV) or
 ``2.09`` (HH), ``theta_sw`` the look direction relative to the swell; stated for
-0.1-10 deg grazing.
+0.1-10 deg grazing. The book could not be read here; the constants were checked against
+an independent restatement, the NRL sea-clutter generator of M. Farshchian (2010), which
+cites Ward, Tough & Watts (2006, 1st ed.), p. 237, with the same exponents, ``k_pol`` and
+swell term ``-cos(2 theta_sw) / 3`` (-1/3 up or down swell, +1/3 across, 0 at 45 deg or
+without swell).
 
 References
 ----------

@@ -46,7 +46,10 @@ balance of Kudryavtsev et al. (2003, 2005) the relative reduction of capillary-g
 Bragg waves (their exponent n = 1) equals the added damping rate over the wind growth
 rate, hence ``d_t ~ nu_t``. *Surfactant films* swept up by the wake's bubbles (Kaiser et
 al. 1988; Peltzer et al. 1992) persist over the strip: their damping is the contrast
-``C_f`` [dB] (default -3 dB), a modelling choice; the strongest published suppression of
+``C_f`` [dB] (default -3 dB), a free parameter (no published X- or C-band contrast of a far
+wake against the surrounding sea could be checked for it: the SAR studies of Lyden et al.
+1988, Milgram et al. 1993, Peltzer et al. 1992 and Soloviev, Gilman et al. 2010 describe
+the dark centreline without a number usable here); the strongest published suppression of
 short waves by a film at moderate wind, an artificial vegetable-oil slick at 6-8 m/s, is
 a spectral contrast of about 10 (-10 dB; Dulov & Yurovskaya, field photographs). The
 wake's age ``xi / V`` enters through ``xi``. Wind dependence (stronger winds restore the
@@ -71,6 +74,11 @@ References
 .. [7] V. Kudryavtsev, D. Hauser, G. Caudal and B. Chapron, J. Geophys. Res. 108(C3), 8054
    (2003); V. Kudryavtsev, D. Akimov, J. Johannessen and B. Chapron, J. Geophys. Res.
    110, C07016 (2005).
+.. [8] J. D. Lyden, R. R. Hammond, D. R. Lyzenga and R. A. Shuchman, "Synthetic aperture
+   radar imaging of surface ship wakes", J. Geophys. Res. 93(C10), 12293-12303 (1988).
+.. [9] A. Soloviev, M. Gilman, K. Young, S. Brusch and S. Lehner, "Sonar measurements in
+   ship wakes simultaneous with TerraSAR-X overpasses", IEEE Trans. Geosci. Remote Sens.
+   48(2), 841-851 (2010).
 """
 
 from __future__ import annotations
