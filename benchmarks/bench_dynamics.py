@@ -5,6 +5,8 @@ of the paper's Simulation 1 (bistatic quad-pol, ray traced; ``--grid N`` to chan
 648 x 648 grid) with the sea held for all pulses (the SAR-like case, no new surface per
 pulse) for the per-facet models:
 
+0. The fused facet kernel alone on 522 242 facets (``--kernel-facets``) for the same
+   models and for the evolving speckle.
 1. ``blend`` without the unresolved-tilt average (the paper's facet model),
 2. ``blend`` with it (eq P6, five Bragg nodes),
 3. ``blend+breaking`` (eq P7) with it,
@@ -66,13 +68,68 @@ def bench(label: str, grid: int | None, pulses: int, model: str, tilt: bool, mot
     return float(np.mean(w)), float(np.mean(c))
 
 
+def bench_kernel(n: int, repeat: int) -> None:
+    """The fused facet kernel alone (eqs P1-P7), best of ``repeat``, wall and CPU."""
+    from seaecho.constants import C0
+    from seaecho.ocean.spectra import DirectionalSpectrum
+    from seaecho.scattering import frames
+    from seaecho.scattering.dynamics import EvolvingSpeckle, SeaDynamics
+    from seaecho.scattering.facet import (
+        TiltQuadrature,
+        circular_gaussians,
+        speckled_facet_amplitudes,
+    )
+    from seaecho.scattering.spectrum_table import BraggSpectrumTable
+
+    k = 2 * np.pi * 10e9 / C0
+    rng = np.random.default_rng(0)
+    th = rng.uniform(0.3, 1.4, n)
+    n_i, n_s = frames.directions_from_angles(th, 0 * th, th, 0 * th + np.pi)
+    z = rng.normal(scale=0.1, size=(n, 2))
+    normal = np.concatenate([-z, np.ones((n, 1))], axis=1)
+    normal /= np.linalg.norm(normal, axis=1, keepdims=True)
+    spec = DirectionalSpectrum(spectrum="elfouhaily", u19_5=8.0)
+    table = BraggSpectrumTable(spec.height_spectrum, k_min=10.0, k_max=20 * k)
+    args = (n_i, n_s, normal, np.ones(n), k, 55.9 - 37.0j, table, 0.01, 0.007, 0.0)
+    tq = TiltQuadrature.unscented(0.01, 0.007)
+    names = ["specular", "bragg", "bragg1", "bragg2", "bragg3", "bragg4", "breaking"]
+    draws = dict(zip(names, circular_gaussians(n, len(names), rng), strict=True))
+    q = np.where(rng.uniform(size=n) < 0.01, 1.0, 0.0)
+    dyn = SeaDynamics(lifetimes=dict.fromkeys(("specular", "bragg+", "bragg-", "breaking"),
+                                              0.5),
+                      velocity_covariance=np.diag([1e-3, 1e-3, 2e-3]),
+                      breaker_velocity=np.array([1.1, 0.0, 0.0]), travel=None)
+    evo = EvolvingSpeckle(dyn, 1, n, tilt_nodes=4, breaking=True)
+    cases = [("blend (the paper's facet model)", {}, draws),
+             ("+ unresolved-tilt average (P6)", {"tilt": tq}, draws),
+             ("+ breaking zones (P7)", {"tilt": tq, "breaking_fraction": q}, draws),
+             ("+ evolving speckle (D2-D5)", {"tilt": tq, "breaking_fraction": q}, None)]
+    print(f"[0] fused facet kernel alone (speckled amplitudes, Dr.Jit LLVM), {n} facets, "
+          f"best of {repeat}")
+    for label, kw, d in cases:
+        times, cpus = [], []
+        for r in range(repeat + 1):
+            dd = evo.draws(0.01 * r) if d is None else d
+            t0, c0 = time.perf_counter(), time.process_time()
+            speckled_facet_amplitudes(*args, draws=dd, **kw)
+            if r:  # the first call compiles the kernel
+                times.append(time.perf_counter() - t0)
+                cpus.append(time.process_time() - c0)
+        print(f"    {label:40s} wall {1e3 * min(times):7.1f} ms   CPU {1e3 * min(cpus):7.1f} ms"
+              f"   (load {os.getloadavg()[0]:.1f})", flush=True)
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--grid", type=int, default=None, help="grid nodes per side")
     ap.add_argument("--pulses", type=int, default=6, help="timed pulses per case")
     ap.add_argument("--update", type=int, default=16,
                     help="geometry update interval of the evolving sea [pulses]")
+    ap.add_argument("--kernel-facets", type=int, default=522_242,
+                    help="facets of the kernel-alone benchmark [0] (0: skip it)")
     a = ap.parse_args()
+    if a.kernel_facets:
+        bench_kernel(a.kernel_facets, 5)
     g = a.grid or 648
     print(f"Simulation 1 (bistatic quad-pol, ray traced, {g} x {g} grid, "
           f"{2 * (g - 1) ** 2} facets), per pulse best / mean of {a.pulses}; "

@@ -11,11 +11,22 @@ range compression -> file (:mod:`seaecho.io.run`).
 
 Per-pulse work is a pure function of (scene, pulse index): :meth:`Simulation.pulse`.
 Pulse p is emitted at t_p = t_start + p / PRF. The sea surface used by pulse p is that of
-the first pulse of its block, t_s = t_(N floor(p / N)) with N = ``sea_update_pulses``
-(the paper's section V-B keeps the map between pings); platforms and facet geometry are
-those of t_p. Speckle is drawn per block (``"speckle"`` stream, block index), so the
-clutter stays coherent while its surface is held and decorrelates when it is renewed;
-noise is drawn per pulse (``"noise"`` stream, pulse index).
+the first pulse of its block, t_s = t_(N floor(p / N)) with N = ``sea_update_pulses``;
+platforms and the facets' frames are those of t_p. What happens within a block is
+``[scattering] sea_motion``:
+
+* ``"held"`` (the paper's section V-B keeps the map between pings): the facets stay at
+  their positions of t_s and the speckle is drawn per block (``"speckle"``,
+  ``"speckle-tilt"``, ``"breaking"`` streams, block index), so the clutter stays coherent
+  while its surface is held and decorrelates when it is renewed;
+* ``"evolving"``: the facets' phase centres (their surface particles' positions) are
+  carried from t_s to t_p by velocity and acceleration, and each mechanism's speckle is a
+  process of time (Bragg lines, orbital Doppler spread, finite lifetimes) whose anchors
+  come from the ``"speckle-evolution"`` stream (:mod:`seaecho.scattering.dynamics`,
+  docs/dynamics.md); the surface geometry (normals, visibility, breaking placement) is
+  updated every block.
+
+Noise is drawn per pulse (``"noise"`` stream, pulse index).
 
 :meth:`Simulation.run` writes pulses to a temporary file beside the destination as they
 are computed (memory bounded by one block of pulses) and renames it into place at the end;
