@@ -1,19 +1,23 @@
 """Deliberate mutations of the physics: does the test suite notice?
 
 Run ``python tools/mutations.py`` (``--full`` to run the whole suite for every mutation,
-``--only NAME ...`` for some of them, ``--list`` to list them). The script copies the tree
-(src, tests, scenes, docs, README.md, pyproject.toml, .ci) to a temporary folder, and for
-each mutation replaces one piece of source there, runs the tests that should catch it
-(then, if they all pass, the whole suite) with the copy first on ``PYTHONPATH``, and puts
-the file back. A mutation is *killed* when at least one test fails. It prints one line
-per mutation and the score, with the machine's load; exit status 1 if any survived, 2
-(before running anything) if a mutation's text no longer occurs in the source as often as
-it expects, or one of its test paths is gone: the list must follow the code.
+``--only NAME ...`` for some of them, ``--list`` to list them). The script copies the
+working tree (the files git lists) to a temporary folder, and for each mutation replaces
+one piece of source there, runs the tests that should catch it (then, if they all pass,
+the whole suite) with the copy first on ``PYTHONPATH``, and puts the file back. A
+mutation is *killed* when at least one test fails. It prints one line per mutation and
+the score, with the machine's load; exit status 1 if any survived, 2 (before running
+anything) if a mutation's text no longer occurs in the source as often as it expects, or
+one of its test paths is gone: the list must follow the code.
 
 Each mutation is a plausible mistake: a dropped factor, a changed cut-off, a swapped
-channel, a sign. The first seven are those an independent review found the suite blind
-to. A formula written once for numpy and Dr.Jit (:mod:`seaecho.backend`) is mutated once:
-the mistake then reaches both back ends.
+channel, a sign. The first seven are mistakes the suite was once blind to. A formula
+written once for numpy and Dr.Jit (:mod:`seaecho.backend`) is mutated once: the mistake
+then reaches both back ends.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
@@ -29,7 +33,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-COPY = ("src", "tests", "scenes", "docs", "README.md", "pyproject.toml", ".ci")
+COPY = ("src", "tests", "scenes", "docs", "benchmarks", "examples", "tools", "README.md",
+        "pyproject.toml", "setup.sh", ".ci")
 
 
 @dataclass(frozen=True)
@@ -47,7 +52,7 @@ class Mutation:
 
 S = "src/seaecho/"
 MUTATIONS = [
-    # --- found by the review: the suite used to pass with each of these
+    # --- the suite used to pass with each of these
     Mutation("echo-without-visibility", S + "simulation.py",
              "amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,",
              "amp = speckled_facet_amplitudes(*args, facets.area, *model,",
@@ -242,6 +247,21 @@ MUTATIONS = [
 
 
 def _copy_tree(dest: Path) -> None:
+    """Copy the working tree: the files git tracks or would track (README, setup.sh,
+    benchmarks... which tests read too), else the folders of ``COPY``."""
+    try:
+        listed = subprocess.run(["git", "ls-files", "-z", "--cached", "--others",
+                                 "--exclude-standard"], cwd=ROOT, capture_output=True,
+                                check=True).stdout.decode().split("\0")
+    except (OSError, subprocess.CalledProcessError):
+        listed = []
+    if listed:
+        for name in filter(None, listed):
+            src = ROOT / name
+            if src.is_file():
+                (dest / name).parent.mkdir(parents=True, exist_ok=True)
+                shutil.copy2(src, dest / name)
+        return
     ignore = shutil.ignore_patterns("__pycache__", "*.egg-info", ".hypothesis", "*.pyc")
     for name in COPY:
         src = ROOT / name

@@ -24,7 +24,7 @@ def test_count_and_faces_match_vertices():
     faces = grid_faces(x.size, y.size)
     assert faces.shape == (facet_count(x.size, y.size), 3) == (2 * 8 * 6, 3)
     assert faces.max() == x.size * y.size - 1
-    # 512 x 512 nodes give the 522k triangles quoted in the issue
+    # 512 x 512 nodes give 522k triangles (2 x 511 x 511)
     assert facet_count(512, 512) == 522_242
 
 

@@ -76,6 +76,9 @@ References
    Syst. 39(3), 760-776, 2003.
 .. [3] I. G. Cumming and F. H. Wong, *Digital Processing of Synthetic Aperture Radar
    Data*, Artech House, 2005, section 2.6 (interpolation by FFT zero padding).
+.. [4] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations

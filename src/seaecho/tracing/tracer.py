@@ -9,6 +9,10 @@ angles, bases) is float64, computed by the Dr.Jit kernel
 :func:`seaecho.tracing.kernels.facet_frames_drjit` (the formulas of the numpy
 :func:`seaecho.geometry.facets.facet_frames`, faster), on the tracer's variant (CPU
 ``llvm_*`` or GPU ``cuda_*``).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
