@@ -182,3 +182,26 @@ def test_dataset_states_sea_update_and_refresh_interval(tmp_path):
         assert ds.attrs["tracing_mode"] == "raytraced"
         assert ds.attrs["sea_update_pulses"] == 2
         assert ds.attrs["sea_update_interval_s"] == pytest.approx(2e-3)
+
+
+@pytest.mark.parametrize("mode", ["analytic", "raytraced"])
+def test_scene_variant_reaches_every_kernel(mode, monkeypatch):
+    # [tracing] variant selects the Dr.Jit back end of every per-pulse kernel (facet
+    # frames, eqs P1-P4, the radar equation of facets and targets), not only the
+    # tracer's: each kernel asks seaecho.backend.check_variant for the scene's variant
+    # by name, never for "whatever runs" (None), which would leave a CUDA scene on the CPU
+    from seaecho import backend
+
+    asked = []
+    check = backend.check_variant
+
+    def spy(variant):
+        asked.append(variant)
+        return check(variant)
+
+    monkeypatch.setattr(backend, "check_variant", spy)
+    sc = _scene(sea=True, n_pulses=1)
+    sc = sc.model_copy(update={"tracing": sc.tracing.model_copy(
+        update={"mode": mode, "variant": "llvm_ad_mono_polarized"})})
+    Simulation(sc).pulse(0)
+    assert len(asked) >= 4 and set(asked) == {"llvm_ad_mono_polarized"}, asked

@@ -343,11 +343,13 @@ def build_tracing(scene, base_dir: str | os.PathLike = ".", *, frequency: float 
 
     cfg = scene.tracing
     mode = cfg.mode if mode is None else mode
+    variant = cfg.variant if variant is None else variant
     f = carrier_frequency(scene, frequency)
     objects: list = []
     if mode == "raytraced":
         for o in scene.objects:
-            objects += load_object(o, base_dir=str(base_dir), ship=scene.ship)
+            objects += load_object(o, base_dir=str(base_dir), ship=scene.ship,
+                                   variant=variant)
     subfacet = None
     if cfg.subfacet_shadowing:
         sm = build_sea_model(scene, f) if sea_model is None else sea_model
@@ -357,7 +359,7 @@ def build_tracing(scene, base_dir: str | os.PathLike = ".", *, frequency: float 
                                             scene.sea.salinity_psu)))
     return TracingModel(mode=mode, shadowing=cfg.shadowing,
                         refresh_interval_s=cfg.refresh_interval_s,
-                        variant=cfg.variant if variant is None else variant,
+                        variant=variant,
                         objects=tuple(objects), frequency=f, eps_r=eps_r, subfacet=subfacet)
 
 
@@ -438,6 +440,8 @@ class SimulationModels:
         Facet mode and occluders.
     attrs : dict
         Dataset attributes that say how the output was made (scene JSON, version, seed).
+    variant : str or None
+        Mitsuba variant of the Dr.Jit kernels and the tracer (``[tracing] variant``).
     """
 
     radar: RadarModel
@@ -445,6 +449,7 @@ class SimulationModels:
     sea_model: SeaModel | None
     tracing: TracingModel | None
     attrs: dict
+    variant: str | None = None
 
 
 def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationModels:
@@ -452,9 +457,21 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
 
     Warns (``SPMValidityWarning``) when the Bragg roughness of the grid's unresolved
     waves has k h > 0.3 (:func:`check_scene` says the same with a suggested spacing).
+
+    Raises
+    ------
+    ValueError
+        ``[tracing] variant`` cannot run here (a CUDA variant without a CUDA GPU, or a
+        back end other than the one Mitsuba already runs in this process):
+        :func:`seaecho.backend.check_variant`, at the start rather than mid-run.
     """
+    from .backend import check_variant
     from .scattering.twoscale import check_spm_validity
 
+    try:
+        variant = check_variant(scene.tracing.variant)
+    except ValueError as exc:
+        raise ValueError(f"[tracing].variant: {exc}") from None
     radar = build_radar(scene)
     sea = sea_model = tracing = None
     if radar.sea_clutter:
@@ -464,4 +481,4 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
         check_spm_validity(sea_model.k, sea_model.roughness_height_variance)
         tracing = build_tracing(scene, base_dir, sea_model=sea_model)
     return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
-                            attrs=scene_attrs(scene))
+                            attrs=scene_attrs(scene), variant=variant)

@@ -103,6 +103,8 @@ class Simulation:
 
     def _setup(self, models: SimulationModels) -> None:
         self.models = models
+        #: Mitsuba variant of the Dr.Jit kernels (``[tracing] variant``, checked by the builder)
+        self.variant = models.variant
         self.radar = RadarSystem(models.radar)
         self.block = models.radar.sea_update_pulses
         #: the sea (surface + wake), None when sea clutter is off
@@ -191,17 +193,18 @@ class Simulation:
         model = self.sea_model.facet_model
         amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,
                                         draws=held["draws"], wake_damping=damping,
-                                        local=facets)
+                                        local=facets, variant=self.variant)
         visible = vis > 0
         if visible.all():  # the usual case: no copies
             pos, vel = facets.centroid, facets.velocity
         else:
             pos, vel, amp = facets.centroid[visible], facets.velocity[visible], amp[visible]
-        echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2))
+        echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2),
+                                         variant=self.variant)
         sig = None
         if sigma:
-            sig = facet_terms(*args, *model, wake_damping=damping,
-                              local=facets).sigma() * vis[:, None]
+            sig = facet_terms(*args, *model, wake_damping=damping, local=facets,
+                              variant=self.variant).sigma() * vis[:, None]
         return SeaEcho(echo, sig, facets)
 
     # ------------------------------------------------------------------- one pulse
@@ -213,7 +216,7 @@ class Simulation:
         echoes = []
         if self.sea is not None:
             echoes.append(self.sea_echo(pulse, geo).echo)
-        t = self.radar.target_echo(geo)
+        t = self.radar.target_echo(geo, variant=self.variant)
         if t is not None:
             echoes.append(t)
         return self.radar.receive(pulse, echoes)

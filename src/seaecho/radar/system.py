@@ -294,14 +294,16 @@ class RadarSystem:
                                  generator(self.seed, "noise", pulse))
         return out
 
-    def target_echo(self, geometry: PulseGeometry) -> ScattererEcho | None:
-        """Echo of the model's point targets at one pulse (None if there are none)."""
+    def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None
+                    ) -> ScattererEcho | None:
+        """Echo of the model's point targets at one pulse (None if there are none);
+        ``variant`` as :meth:`scatterer_echo`."""
         targets = self.model.targets
         if targets is None or not len(targets):
             return None
         return self.scatterer_echo(geometry, targets.positions + geometry.time
                                    * targets.velocities, targets.velocities,
-                                   targets.scattering)
+                                   targets.scattering, variant=variant)
 
 
 __all__ = [

@@ -26,6 +26,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from collections.abc import Callable
+from functools import partial
 
 import numpy as np
 
@@ -207,7 +208,7 @@ class FacetEngine:
         if self.mode == "analytic":
             return analytic_facets(st.x, st.y, st.elevation, st.slope_x, st.slope_y,
                                    st.velocity, tx, rx, shadowing=self.shadowing, time_s=t,
-                                   frames=facet_frames_drjit)
+                                   frames=partial(facet_frames_drjit, variant=self._variant))
         tracer = self._get_tracer(st)
         if self.refresh_interval_s == 0.0:
             return tracer.facets(st.elevation, st.velocity, tx, rx, t=t,
@@ -229,7 +230,7 @@ class FacetEngine:
             self._cache = (t_ref, occ_tx, occ_rx)
         _, occ_tx, occ_rx = self._cache
         centroid, area, normal, velocity = self.geometry(st)
-        geo = facet_frames_drjit(centroid, normal, tx, rx)
+        geo = facet_frames_drjit(centroid, normal, tx, rx, variant=self._variant)
         lit = (geo["theta_i"] < np.pi / 2) & ~occ_tx
         seen = (geo["theta_s"] < np.pi / 2) & ~occ_rx
         return Facets(mode="raytraced", time_s=float(t), visibility_time_s=float(t_ref),
