@@ -203,7 +203,7 @@ MUTATIONS = [
     # --- code that is new since the script was written
     Mutation("breaking-fraction-doubled", S + "scattering/breaking.py",
              "    q = C_Q * total\n", "    q = 2.0 * C_Q * total\n",
-             ("tests/scattering/test_breaking.py",),
+             ("tests/scattering/test_breaking.py", "tests/scattering/test_validation_gmf.py"),
              "KHCC03's fraction of breaking zones q twice too large"),
     Mutation("breaking-swb2", S + "scattering/breaking.py",
              "S_WB2 = 0.19", "S_WB2 = 0.1",
