@@ -84,6 +84,11 @@ class Simulation:
         self._block_cache: tuple[int, dict] | None = None
         if self.config.sea_clutter:
             self._init_sea(base_dir)
+        # Echoes of the [[objects]] with scatterer = true (docs/ship.md), or None
+        from .tracing.hull_echo import HullEchoes
+
+        self.hulls = HullEchoes.from_scene(scene, self.radar, base_dir, surface=(
+            self.surface_state_at if self.sea is not None else None))
 
     # --------------------------------------------------------------------- the sea
     def _init_sea(self, base_dir) -> None:
@@ -212,6 +217,8 @@ class Simulation:
         t = self.radar.target_echo(geo)
         if t is not None:
             echoes.append(t)
+        if self.hulls is not None:
+            echoes += self.hulls.echoes(geo, pulse)
         return self.radar.receive(pulse, echoes)
 
     def compress(self, raw: NDArray[np.complex128]) -> NDArray[np.complex128]:
@@ -274,6 +281,10 @@ class Simulation:
             coords.update(x_cell=("x_cell", self.sea.x[:-1] + 0.5 * dx, {"units": "m"}),
                           y_cell=("y_cell", self.sea.y[:-1] + 0.5 * dy, {"units": "m"}))
         coords["polarisation"] = ("polarisation", np.array(POLARISATIONS))
+        if self.hulls is not None:  # the hulls' centres at the sigma-map pulse, RCS vs pulse
+            hull_data, hull_coords = self.hulls.truth(self.config.sigma_map_pulse)
+            data.update(hull_data)
+            coords.update(hull_coords)
         data["transmitted_pulse"] = (
             ("pulse_sample",), radar.waveform.samples,
             {"units": "1", "long_name": "transmitted pulse samples s[n] (unit amplitude), "
