@@ -90,6 +90,8 @@ from numpy.typing import NDArray
 from ..scattering.frames import polarisation_basis
 
 __all__ = [
+    "local_basis",
+    "po_components",
     "po_vector",
     "reflect",
     "shape_function",
@@ -176,6 +178,69 @@ def po_vector(d: NDArray, d_r: NDArray, n: NDArray, e: NDArray, e_r: NDArray,
     m = _cross(e + e_r, nb)
     # Eq O4: V = eta J_perp - s x M
     return eta_j - _dot(eta_j, sb)[..., None] * sb - _cross(sb, m)
+
+
+def local_basis(d: NDArray, n: NDArray) -> tuple[NDArray, NDArray]:
+    """TE and TM unit vectors ``h_l = n x d / |n x d|``, ``v_i = h_l x d`` (eq F1 with the
+    facet normal; at normal incidence the limit of
+    :func:`seaecho.scattering.frames.polarisation_basis`)."""
+    h = _cross(n, d)
+    norm = np.sqrt(_dot(h, h))
+    bad = norm < 1e-9
+    if np.any(bad):
+        h[bad] = polarisation_basis(d[bad], n[bad])[0]
+        norm[bad] = 1.0
+    h /= norm[:, None]
+    return h, _cross(h, d)
+
+
+def po_components(alpha: NDArray, beta: NDArray, r_h: NDArray, r_v: NDArray,
+                  n: NDArray, h_l: NDArray, v_i: NDArray, v_r: NDArray,
+                  h_s: NDArray, v_s: NDArray) -> tuple[NDArray, NDArray]:
+    """Components of ``V`` (eq O4) on the receive basis, from the TE/TM amplitudes.
+
+    With ``E = alpha h_l + beta v_i`` (so ``E_r = R_h alpha h_l + R_v beta v_r``), the
+    identities ``d x h_l = -v_i``, ``d x v_i = h_l`` (and the same for ``d_r``, ``v_r``)
+    turn eq O3 into
+
+    .. math::
+        \\eta\\mathbf J = \\beta(1 + R_v)\\,\\hat n\\times\\hat h_l
+            - \\alpha(\\hat n\\times\\hat v_i + R_h\\,\\hat n\\times\\hat v_r), \\quad
+        \\mathbf M = -\\alpha(1 + R_h)\\,\\hat n\\times\\hat h_l
+            - \\beta(\\hat n\\times\\hat v_i + R_v\\,\\hat n\\times\\hat v_r)
+
+    and, with ``h_s x s = v_s`` and ``v_s x s = -h_s`` (FSA basis of ``s``), eq O4 into
+    ``h_s . V = h_s . eta J - v_s . M``, ``v_s . V = v_s . eta J + h_s . M``: real dot
+    products and complex scalars only (the same numbers as :func:`po_vector`).
+
+    Parameters
+    ----------
+    alpha, beta : (N, P) complex arrays
+        Incident TE and TM amplitudes for each transmitted polarisation.
+    r_h, r_v : (N,) complex arrays
+        Fresnel coefficients of the facet [-].
+    n, h_l, v_i, v_r : (N, 3) arrays
+        Facet normal (towards the incoming wave) and the local bases [-].
+    h_s, v_s : (N, 3) arrays
+        Receive basis (FSA of the direction to the observer) [-].
+
+    Returns
+    -------
+    v_h, v_v : (N, P) complex arrays
+        ``h_s . V`` and ``v_s . V``.
+    """
+    a1, b1, c1 = _cross(n, h_l), _cross(n, v_i), _cross(n, v_r)
+    out = []
+    for e1, e2 in ((h_s, v_s), (v_s, h_s)):
+        # projections on e1 of eta J and on e2 of M
+        e1a, e1b, e1c = _dot(e1, a1)[:, None], _dot(e1, b1)[:, None], _dot(e1, c1)[:, None]
+        e2a, e2b, e2c = _dot(e2, a1)[:, None], _dot(e2, b1)[:, None], _dot(e2, c1)[:, None]
+        rh, rv = r_h[:, None], r_v[:, None]
+        j = beta * ((1.0 + rv) * e1a) - alpha * (e1b + rh * e1c)
+        m = -alpha * ((1.0 + rh) * e2a) - beta * (e2b + rv * e2c)
+        out.append((j, m))
+    (jh, mv), (jv, mh) = out
+    return jh - mv, jv + mh
 
 
 def tube_footprint(a_perp: NDArray, b_perp: NDArray, d: NDArray, n: NDArray

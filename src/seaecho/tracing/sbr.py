@@ -78,7 +78,7 @@ from ..scattering.frames import polarisation_basis
 from ..scattering.fresnel import fresnel_coefficients
 from ..targets.centres import CentreAccumulator, ScatteringCentres, equivalent_positions
 from ..targets.multipath import ROUGHNESS_MODELS, mirror, sea_reflection
-from ..targets.po import po_vector, reflect, shape_function, tube_footprint
+from ..targets.po import local_basis, po_components, shape_function, tube_footprint
 from .variant import mitsuba_modules
 
 __all__ = [
@@ -90,6 +90,8 @@ __all__ = [
     "trace_signature",
 ]
 
+#: The vertical: normal of the FSA bases.
+_Z = np.array([0.0, 0.0, 1.0])
 #: Vacuum permittivity [F/m] (eps0 = 1 / (mu0 c^2), CODATA 2018 mu0).
 _EPS0 = 1.0 / (1.25663706212e-6 * C0**2)
 
@@ -314,8 +316,15 @@ def _intersect(mi, scene, o: NDArray, d: NDArray) -> tuple[NDArray, NDArray]:
     return t, prim
 
 
-def _blocked(scenes: list, o: NDArray, target: NDArray, eps: float = 0.0) -> NDArray:
-    """Whether the segments from ``o`` to ``target`` hit any of ``scenes``."""
+def _blocked(scenes: list, o: NDArray, target: NDArray, eps: float = 0.0,
+             radius: float = np.inf) -> NDArray:
+    """Whether the segments from ``o`` to ``target`` hit any of ``scenes``.
+
+    ``radius`` [m] bounds the geometry (a sphere about the local origin): a segment is
+    cut where it leaves that sphere, at most ``|o| + radius`` from its origin. (Shadow
+    rays of float32 length ~1e6 m self-hit their own facet in Mitsuba, so far
+    transmitters and receivers must not make long rays.)
+    """
     from .scene import shadow_rays
 
     if not scenes or o.shape[0] == 0:
@@ -323,7 +332,8 @@ def _blocked(scenes: list, o: NDArray, target: NDArray, eps: float = 0.0) -> NDA
     d = target - o
     r = np.sqrt(np.einsum("ij,ij->i", d, d))
     d = d / np.maximum(r, 1e-300)[:, None]
-    return shadow_rays(scenes, o, d, np.maximum(r - eps, 0.0))
+    reach = np.sqrt(np.einsum("ij,ij->i", o, o)) + radius
+    return shadow_rays(scenes, o, d, np.minimum(np.maximum(r - eps, 0.0), reach))
 
 
 def _dot(a: NDArray, b: NDArray) -> NDArray:
@@ -391,9 +401,11 @@ class _Tracer:
                                  f"{self.radius:.1f} m about {self.centre.round(2).tolist()}"
                                  " m): SBR needs it outside")
         self.object_scene = None
+        geo_local = []
         if occluders:
             m = TraceMesh.merge(list(occluders))
-            self.object_scene = _mi_scene(self.mi, m.vertices - self.centre, m.faces, self.keep)
+            geo_local.append(m.vertices - self.centre)
+            self.object_scene = _mi_scene(self.mi, geo_local[-1], m.faces, self.keep)
         self.sea_scene = None
         self.patch_box = None
         self.z_sea = None
@@ -406,9 +418,13 @@ class _Tracer:
                 gv = grid_vertices(np.asarray(x, float) - self.centre[0],
                                    np.asarray(y, float) - self.centre[1],
                                    np.asarray(z, float) - self.centre[2]).reshape(-1, 3)
+                geo_local.append(gv)
                 self.sea_scene = _mi_scene(self.mi, gv, grid_faces(len(x), len(y)), self.keep)
                 self.patch_box = (x[0] - self.centre[0], x[-1] - self.centre[0],
                                   y[0] - self.centre[1], y[-1] - self.centre[1])
+        # Radius about the hull's centre holding every mesh traced (hull, objects, sea)
+        self.geo_radius = max([self.radius] + [float(np.sqrt(_dot(x, x)).max())
+                                               for x in geo_local])
         ref = self.centre if reference is None else np.asarray(reference, dtype=np.float64)
         self.reference = ref
         self.acc = CentreAccumulator(self.k, self.tx_w, self.rx_w, ref, options.cell,
@@ -424,6 +440,10 @@ class _Tracer:
         if sea and self.sea_scene is not None:
             out.append(self.sea_scene)
         return out
+
+    def _blocked(self, scenes: list, o: NDArray, target: NDArray, eps: float = 0.0
+                 ) -> NDArray:
+        return _blocked(scenes, o, target, eps, radius=self.geo_radius + 1.0)
 
     def _under_water(self, p: NDArray) -> NDArray:
         """Points below the mean sea plane where no traced sea decides."""
@@ -472,10 +492,13 @@ class _Tracer:
         ell = np.sqrt(_dot(dv, dv))
         d = dv / ell[:, None]
         # Entry into the bounding sphere: origin of the Mitsuba ray (near the hull)
+        # (the discriminant from the ray's distance to the centre, not b^2 - |q|^2 + r^2,
+        # which cancels catastrophically for a far source), with a margin outside
         b = d @ q
-        disc = b * b - (q @ q - self.radius**2)
+        perp = q - b[:, None] * d
+        disc = self.radius**2 - _dot(perp, perp)
         ok = disc > 0
-        tau = -b - np.sqrt(np.maximum(disc, 0.0))
+        tau = -b - np.sqrt(np.maximum(disc, 0.0)) - 1e-3 * self.radius
         if image:
             # The ray from T' crosses the mean sea plane at the specular point S; the
             # trace starts there (the segment T'-S is the image of the real leg T-S)
@@ -492,8 +515,10 @@ class _Tracer:
         a1, b1 = delta * e1, delta * e2
         ta = (a1 - d * (d @ a1)[:, None]) / ell[:, None]
         tb = (b1 - d * (d @ b1)[:, None]) / ell[:, None]
-        h, v = polarisation_basis(d)
-        e = np.empty((d.shape[0], 2, 3), dtype=np.complex128)
+        # The field of each transmitted polarisation (h, v of the FSA basis of the
+        # departure direction) as coefficients on a real basis (p1, p2) normal to d
+        p1, p2 = local_basis(d, np.broadcast_to(_Z, d.shape))
+        c = np.zeros((d.shape[0], 2, 2), dtype=np.complex128)
         sea_pt = None
         if image:
             sea_pt = q + ((self.z_sea - q[2]) / d[:, 2])[:, None] * d
@@ -501,12 +526,10 @@ class _Tracer:
             # reflected (upward) directions
             gh, gv = sea_reflection(np.arcsin(np.clip(d[:, 2], 0.0, 1.0)), self.sea.eps_r,
                                     self.sea.sigma_h, self.k, self.sea.roughness)
-            e[:, 0] = gh[:, None] * h
-            e[:, 1] = gv[:, None] * v
+            c[:, 0, 0], c[:, 1, 1] = gh, gv
         else:
-            e[:, 0] = h
-            e[:, 1] = v
-        self._bounce(o, d, tau, e, ta, tb, image, sea_pt, (t, prim))
+            c[:, 0, 0], c[:, 1, 1] = 1.0, 1.0
+        self._bounce(o, d, tau, (p1, p2, c), ta, tb, image, sea_pt, (t, prim))
 
     # ------------------------------------------------------------------------ bounces
     def _bounce(self, o, d, s0, e, ta, tb, image: bool, sea_pt, first_hit) -> None:
@@ -520,8 +543,8 @@ class _Tracer:
             else:
                 t, prim = _intersect(mi, self.hull_scene, o, d)
                 hit = np.isfinite(t)
-                o, d, s0, e, ta, tb, t, prim = (a[hit] for a in (o, d, s0, e, ta, tb, t,
-                                                                  prim))
+                o, d, s0, ta, tb, t, prim = (a[hit] for a in (o, d, s0, ta, tb, t, prim))
+                e = tuple(a[hit] for a in e)
             p = o + t[:, None] * d
             s = s0 + t
             ng = self.normals[prim]
@@ -530,20 +553,21 @@ class _Tracer:
             off = p + self.eps_off * n
             # Visibility of the incoming segment
             if bounce == 0 and image:
-                blocked = _blocked(self._scenes(False, False), off, sea_pt)
-                blocked |= _blocked(self._scenes(True, False),
+                blocked = self._blocked(self._scenes(False, False), off, sea_pt)
+                blocked |= self._blocked(self._scenes(True, False),
                                     sea_pt + self.eps_off * np.array([0.0, 0.0, 1.0]),
                                     np.broadcast_to(self.tx, sea_pt.shape))
             elif bounce == 0:
-                blocked = _blocked(self._scenes(False, True), off,
+                blocked = self._blocked(self._scenes(False, True), off,
                                    np.broadcast_to(self.tx, p.shape))
             else:
-                blocked = _blocked(self._scenes(False, True), off, o, eps=self.eps_off)
+                blocked = self._blocked(self._scenes(False, True), off, o, eps=self.eps_off)
             blocked |= self._under_water(p)
             if blocked.any():
                 keep = ~blocked
-                o, d, s, e, ta, tb, p, n, prim, off = (
-                    a[keep] for a in (o, d, s, e, ta, tb, p, n, prim, off))
+                o, d, s, ta, tb, p, n, prim, off = (
+                    a[keep] for a in (o, d, s, ta, tb, p, n, prim, off))
+                e = tuple(a[keep] for a in e)
             if d.shape[0] == 0:
                 return
             self.n_hits += d.shape[0]
@@ -556,20 +580,32 @@ class _Tracer:
             if not pec.all():
                 rh, rv = fresnel_coefficients(cos_i[~pec], eps[~pec])
                 r_h[~pec], r_v[~pec] = rh, rv
-            d_r, e_r = reflect(d, n, e, r_h, r_v)
+            # Eqs O1-O2: TE/TM amplitudes of the incident field, reflected direction
+            h_l, v_i = local_basis(d, n)
+            p1, p2, c = e
+            w1, w2 = _dot(p1, h_l)[:, None], _dot(p2, h_l)[:, None]
+            alpha = c[:, :, 0] * w1 + c[:, :, 1] * w2
+            w1, w2 = _dot(p1, v_i)[:, None], _dot(p2, v_i)[:, None]
+            beta = c[:, :, 0] * w1 + c[:, :, 1] * w2
+            d_r = d + 2.0 * cos_i[:, None] * n
+            v_r = np.cross(h_l, d_r)
             # Eq O5: the footprint of the tube (cross-section at unfolded distance s)
             a_fp, b_fp, area = tube_footprint(s[:, None] * ta, s[:, None] * tb, d, n)
-            self._radiate(p, off, d, d_r, n, e, e_r, a_fp, b_fp, area, s, first, bounce)
-            # Next segment
+            self._radiate(p, off, d, n, (alpha, beta, r_h, r_v, h_l, v_i, v_r),
+                          a_fp, b_fp, area, s, first, bounce)
+            # Next segment: the reflected field on the basis (h_l, v_r) normal to d_r
+            c = np.empty_like(c)
+            c[:, :, 0] = r_h[:, None] * alpha
+            c[:, :, 1] = r_v[:, None] * beta
+            e = (h_l, v_r, c)
             o = off
             d = d_r
-            e = e_r
             s0 = s
             ta = ta - 2.0 * _dot(ta, n)[:, None] * n
             tb = tb - 2.0 * _dot(tb, n)[:, None] * n
             sea_pt = None
 
-    def _radiate(self, p, off, d, d_r, n, e, e_r, a_fp, b_fp, area, s, first, bounce):
+    def _radiate(self, p, off, d, n, fields, a_fp, b_fp, area, s, first, bounce):
         """PO of the footprints towards R (and R'), eqs O3-O6 and C1."""
         k = self.k
         exits = [(self.rx, 0)]
@@ -589,24 +625,24 @@ class _Tracer:
             if last:
                 # Specular point S2 on the mean plane, then the leg S2 -> R
                 s2 = ps + ((self.z_sea - ps[:, 2]) / shs[:, 2])[:, None] * shs
-                blocked = _blocked(self._scenes(True, False), offs, s2)
-                blocked |= _blocked(self._scenes(True, False),
+                blocked = self._blocked(self._scenes(True, False), offs, s2)
+                blocked |= self._blocked(self._scenes(True, False),
                                     s2 + self.eps_off * np.array([0.0, 0.0, 1.0]),
                                     np.broadcast_to(self.rx, s2.shape))
             else:
-                blocked = _blocked(self._scenes(True, True), offs,
+                blocked = self._blocked(self._scenes(True, True), offs,
                                    np.broadcast_to(self.rx, ps.shape))
             idx = idx[~blocked]
             if idx.size == 0:
                 continue
             shs = sh[idx]
-            # Eqs O3-O4 and O6
-            vec = po_vector(d[idx], d_r[idx], n[idx], e[idx], e_r[idx], shs)
-            f = shape_function(k * (shs - d[idx]), a_fp[idx], b_fp[idx])
-            h_s, v_s = polarisation_basis(shs)
+            # Eqs O3-O4 (on the receive basis) and O6
+            h_s, v_s = local_basis(shs, np.broadcast_to(_Z, shs.shape))
+            alpha, beta, r_h, r_v, h_l, v_i, v_r = (a[idx] for a in fields)
             comp = np.empty((idx.size, 2, 2), dtype=np.complex128)
-            comp[:, 0, :] = _dot(vec, h_s[:, None, :])
-            comp[:, 1, :] = _dot(vec, v_s[:, None, :])
+            comp[:, 0, :], comp[:, 1, :] = po_components(alpha, beta, r_h, r_v, n[idx], h_l,
+                                                         v_i, v_r, h_s, v_s)
+            f = shape_function(k * (shs - d[idx]), a_fp[idx], b_fp[idx])
             if last:
                 gh, gv = sea_reflection(np.arcsin(np.clip(-shs[:, 2], 0.0, 1.0)),
                                         self.sea.eps_r, self.sea.sigma_h, k,
