@@ -20,9 +20,9 @@ Delay. A contribution is filed at a *delay-equivalent* position ``c*``: the poin
 to its last hit on the ellipsoid ``|c - T| + |c - R| = L_i`` (:func:`equivalent_positions`,
 Newton steps along the gradient ``u_t + u_r`` of the bistatic range). The kernel's delay
 of ``c*`` is then the path's: a trihedral's triple bounce appears at its apex's range, a
-sea-reflected leg at its longer range (for a hull point at height h seen monostatically,
-the single sea bounce lands near the sea surface below it, the double one near the
-image -h: the mirror picture of multipath).
+sea-reflected leg at its longer range (seen monostatically at grazing angle psi, a hull
+point at height h echoes by the sea-hull-sea path about 2 h sin psi further in range:
+the range of its image -h).
 
 Clustering. Contributions are summed coherently in cubic cells of side ``delta`` on a
 grid anchored at the hull's reference point (one set of cells per path kind), each cell
@@ -246,7 +246,7 @@ class CentreAccumulator:
         self._keys.append(uniq)
         self._sums.append(sums)
 
-    def centres(self, time: float, velocity: ArrayLike, prune: float = 1e-4
+    def centres(self, time: float, velocity: ArrayLike, prune: float = 0.0
                 ) -> ScatteringCentres:
         """The cells as scattering centres.
 
