@@ -97,12 +97,12 @@ def lobing(out: Path) -> None:
         ax.plot(hf, _db(f4 * sigma0), lw=1, label=f"{name}: Blake, pi a^2 |F|^4")
         ax.plot(heights, _db(traced[:, ch]), ".", ms=4, label=f"{name}: SBR, four paths")
     ax.plot(heights, _db(free[:, 0]), "k--", lw=1, label="SBR, free space")
-    ax.set_ylim(-40, 10)
+    ax.set_ylim(-40, 22)
     ax.set_xlabel("sphere centre height above the mean sea [m]")
     ax.set_ylabel("RCS [dBsm]")
     ax.set_title("Sphere a = 0.25 m over a smooth sea, radar 1 km away at 10 m, 10 GHz")
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8, ncol=2, loc="lower right")
+    ax.legend(fontsize=8, ncol=3, loc="upper center")
     fig.tight_layout()
     fig.savefig(out / "ship_multipath_lobing.png", dpi=120)
     plt.close(fig)
@@ -113,10 +113,13 @@ def main() -> None:
     ap.add_argument("--out", type=Path, default=ROOT / "docs" / "figures")
     ap.add_argument("--step", type=float, default=2.0, help="aspect step [deg]")
     ap.add_argument("--density", type=float, default=3.0, help="rays per wavelength")
+    ap.add_argument("--only", choices=("lobing", "aspect"), default=None)
     args = ap.parse_args()
     args.out.mkdir(parents=True, exist_ok=True)
-    lobing(args.out)
-    rcs_vs_aspect(args.step, args.density, args.out)
+    if args.only != "aspect":
+        lobing(args.out)
+    if args.only != "lobing":
+        rcs_vs_aspect(args.step, args.density, args.out)
 
 
 if __name__ == "__main__":
