@@ -99,7 +99,7 @@ class ScatteringCentres:
 
 
 def _norm(a: NDArray) -> NDArray:
-    return np.sqrt(np.einsum("...i,...i->...", a, a))
+    return np.sqrt(a[..., 0] ** 2 + a[..., 1] ** 2 + a[..., 2] ** 2)
 
 
 def equivalent_positions(points: ArrayLike, length: ArrayLike, tx: ArrayLike, rx: ArrayLike,
@@ -118,8 +118,9 @@ def equivalent_positions(points: ArrayLike, length: ArrayLike, tx: ArrayLike, rx
     tx, rx : (3,) array_like
         Transmitter and receiver positions [m].
     iterations : int
-        Newton steps (the bistatic range is smooth; 4 reach float64 precision at the
-        sizes of a ship).
+        Newton steps (the bistatic range is smooth: the residual after a step is of
+        order |c - p|^2 / r; four reach float64 precision for extra paths of tens of
+        metres).
 
     Returns
     -------
@@ -138,7 +139,7 @@ def equivalent_positions(points: ArrayLike, length: ArrayLike, tx: ArrayLike, rx
         dt, dr = c - t, c - r
         rt, rr = _norm(dt), _norm(dr)
         g = dt / rt[:, None] + dr / rr[:, None]
-        g2 = np.einsum("ij,ij->i", g, g)
+        g2 = g[:, 0] ** 2 + g[:, 1] ** 2 + g[:, 2] ** 2
         ok = g2 > 0.05**2
         step = np.where(ok, (target - rt - rr) / np.where(ok, g2, 1.0), 0.0)
         c += step[:, None] * g
