@@ -481,12 +481,13 @@ class _Tracer:
     def launch(self, image: bool) -> None:
         """Trace every ray from T (or from its image T' for the sea-first paths).
 
-        Multiresolution at surface edges (Suk et al. 2001): a launch cell whose first hit
-        is not on the plane of a neighbour's (an edge, a depth step, a miss next to a
-        hit) is split into ``edge_refine^2`` sub-tubes. A tube straddling an edge counts
-        whole or not at all, so the lit region's boundary is a staircase of the grid's
-        step; its periodic error radiates grating-like lobes away from specular (the
-        level between a hull's flashes), which the finer step at edges lowers.
+        Multiresolution at surface edges (Suk et al. 2001): a launch cell whose first or
+        second hit is not on the plane of a neighbour's (an edge, a depth step, a miss
+        next to a hit, a corner's aperture) is split into ``edge_refine^2`` sub-tubes.
+        A tube straddling an edge counts whole or not at all, so the lit region's
+        boundary is a staircase of the grid's step; its periodic error radiates
+        grating-like lobes away from specular (the level between a hull's flashes),
+        which the finer step at edges lowers.
         """
         q = mirror(self.tx, self.z_sea) if image else self.tx
         d0 = float(np.sqrt(_dot(q, q)))
@@ -559,25 +560,36 @@ class _Tracer:
     def _edge_cells(self, q, e1, e2, cells, centres, delta, nu, nv, image):
         """Split the launch cells into plain hit cells and edge cells (see :meth:`launch`).
 
-        A pair of neighbouring cells is an edge when one ray hits and the other misses,
-        or when the two first hits are not on one plane (normals 1e-3 rad apart, or a
-        hit 0.01 delta off the other's plane). Cells next to a cell outside the launch
-        mask (a miss) are edges when they hit. Plain cells that miss are dropped.
+        A pair of neighbouring cells is an edge when, at the first or at the second hit
+        (the specular continuation), one ray hits and the other misses, or the two hits
+        are not on one plane (normals 1e-3 rad apart, or a hit 0.01 delta off the
+        other's plane): the boundaries of the lit surfaces and of the apertures of
+        corners. Cells next to a cell outside the launch mask (a miss) are edges when
+        they hit. Plain cells that miss are dropped.
         """
         n_c = cells.size
-        hit = np.zeros(n_c, dtype=bool)
-        nrm = np.zeros((n_c, 3), dtype=np.float32)
-        pts = np.zeros((n_c, 3), dtype=np.float32)
+        # First and second hits of each cell's ray: hit flag, facet normal, point
+        hit = np.zeros((2, n_c), dtype=bool)
+        nrm = np.zeros((2, n_c, 3), dtype=np.float32)
+        pts = np.zeros((2, n_c, 3), dtype=np.float32)
         for start in range(0, n_c, self.opt.batch):
             sl = slice(start, min(start + self.opt.batch, n_c))
             ui, vj = centres(cells[sl])
             d, _, _, o, ok = self._rays(q, e1, e2, ui, vj, image)
-            t, prim = _intersect(self.mi, self.hull_scene, o, d)
-            h = np.isfinite(t)
-            rows = np.flatnonzero(ok)[h] + start
-            hit[rows] = True
-            nrm[rows] = self.normals[prim[h]]
-            pts[rows] = o[h] + t[h, None] * d[h]
+            rows = np.flatnonzero(ok) + start
+            for k in range(min(2, self.opt.max_bounces)):
+                t, prim = _intersect(self.mi, self.hull_scene, o, d)
+                h = np.isfinite(t)
+                rows, o, d, t, prim = rows[h], o[h], d[h], t[h], prim[h]
+                ng = self.normals[prim]
+                p = o + t[:, None] * d
+                hit[k, rows] = True
+                nrm[k, rows] = ng
+                pts[k, rows] = p
+                # the specular continuation, from the lit side
+                n = np.where((_dot(d, ng) > 0)[:, None], -ng, ng)
+                d = d - 2.0 * _dot(d, n)[:, None] * n
+                o = p + self.eps_off * n
         index = np.full(nu * nv, -1, dtype=np.int64)
         index[cells] = np.arange(n_c)
         i, j = cells // nv, cells % nv
@@ -589,19 +601,20 @@ class _Tracer:
             nb = np.full(n_c, -1, dtype=np.int64)
             nb[inside] = index[ii[inside] * nv + jj[inside]]
             has = nb >= 0
-            nb_hit = np.zeros(n_c, dtype=bool)
-            nb_hit[has] = hit[nb[has]]
-            diff = hit != nb_hit
-            both = hit & nb_hit
-            if both.any():
-                a, b = np.flatnonzero(both), nb[both]
-                na, nb_n = nrm[a].astype(float), nrm[b].astype(float)
-                dp = pts[b].astype(float) - pts[a].astype(float)
-                other = ((np.abs(_dot(na, nb_n)) < 1.0 - 5e-7)
-                         | (np.abs(_dot(na, dp)) > tol) | (np.abs(_dot(nb_n, dp)) > tol))
-                diff[a] |= other
-            edge |= diff
-        return cells[hit & ~edge], cells[edge]
+            for k in range(2):
+                nb_hit = np.zeros(n_c, dtype=bool)
+                nb_hit[has] = hit[k, nb[has]]
+                diff = hit[k] != nb_hit
+                both = hit[k] & nb_hit
+                if both.any():
+                    a, b = np.flatnonzero(both), nb[both]
+                    na, nb_n = nrm[k, a].astype(float), nrm[k, b].astype(float)
+                    dp = pts[k, b].astype(float) - pts[k, a].astype(float)
+                    other = ((np.abs(_dot(na, nb_n)) < 1.0 - 5e-7)
+                             | (np.abs(_dot(na, dp)) > tol) | (np.abs(_dot(nb_n, dp)) > tol))
+                    diff[a] |= other
+                edge |= diff
+        return cells[hit[0] & ~edge], cells[edge]
 
     def _trace(self, q, u0, e1, e2, ui, vj, delta, image: bool) -> None:
         d, ell, tau, o, _ = self._rays(q, e1, e2, ui, vj, image)
