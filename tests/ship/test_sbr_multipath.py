@@ -56,9 +56,10 @@ def test_image_geometry():
 
 
 def _sphere_at(h, tx, sea, cell=0.1):
-    v, f = canonical.sphere(0.25, 5)
+    # 5120 facets of ~16 mm: sagitta 0.13 mm << lambda / 8
+    v, f = canonical.sphere(0.25, 4)
     return trace_signature(TraceMesh.single(v + [0, 0, h], f), tx, tx, F,
-                           options=SBROptions(rays_per_wavelength=4, cell=cell), sea=sea,
+                           options=SBROptions(rays_per_wavelength=3, cell=cell), sea=sea,
                            reference=[0, 0, h])
 
 
@@ -73,7 +74,7 @@ def _four_path(h, tx, gamma_fn):
     return [(1 + (r_d / r_i) * gi * np.exp(-1j * K * (r_i - r_d))) ** 2 for gi in g]
 
 
-@pytest.mark.parametrize("h", [0.5, 0.75, 1.0, 1.25, 1.75, 2.0])
+@pytest.mark.parametrize("h", [0.5, 0.75, 1.25, 2.0])
 def test_sphere_over_flat_sea_is_four_path_interference(h):
     # A sphere (a point-like target: same echo for the four paths at small bistatic
     # angles) at height h over a smooth sea, radar 1 km away at 10 m: the RCS with
