@@ -425,6 +425,39 @@ def scene_attrs(scene) -> dict[str, Any]:
     return attrs(scene)
 
 
+def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | None = None,
+                variant: str | None = None):
+    """The hull model of the ``[[objects]]`` with ``scatterer = true``
+    (:class:`seaecho.tracing.hull_echo.HullModel`), or None when none scatters.
+
+    Every object is loaded (the others occlude the scatterers' rays); the sea's
+    permittivity and rms height (waves up to twice the radar wavenumber) set the
+    reflection of the multipath legs (docs/ship.md).
+    """
+    if not any(o.scatterer for o in scene.objects):
+        return None
+    from .tracing.hull_echo import HullModel, HullOptions
+    from .tracing.scene import load_object
+
+    f = carrier_frequency(scene, frequency)
+    objects = []
+    for cfg in scene.objects:
+        shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship, variant=variant)
+        spec = None
+        if cfg.scatterer:
+            spec = HullOptions(name=cfg.name, rays_per_wavelength=cfg.rays_per_wavelength,
+                               max_bounces=cfg.max_bounces, cell_m=cfg.signature_cell_m,
+                               sea_multipath=cfg.sea_multipath,
+                               refresh_deg=cfg.signature_refresh_deg,
+                               refresh_s=cfg.signature_refresh_s)
+        objects.append((spec, shapes))
+    sea = scene.sea
+    eps_sea = complex(sea_water_permittivity(f, sea.temperature_c, sea.salinity_psu))
+    k = 2.0 * np.pi * f / C0
+    sigma_h = float(np.sqrt(height_variance(sea_spectrum(scene), 0.0, 2.0 * k)))
+    return HullModel(objects=tuple(objects), sea_eps_r=eps_sea, sigma_h=sigma_h)
+
+
 @dataclass(frozen=True)
 class SimulationModels:
     """Everything a :class:`seaecho.simulation.Simulation` needs, built from a scene.
@@ -442,6 +475,8 @@ class SimulationModels:
         Dataset attributes that say how the output was made (scene JSON, version, seed).
     variant : str or None
         Mitsuba variant of the Dr.Jit kernels and the tracer (``[tracing] variant``).
+    hulls : seaecho.tracing.hull_echo.HullModel or None
+        The objects that echo (``scatterer = true``), None when none does.
     """
 
     radar: RadarModel
@@ -450,6 +485,7 @@ class SimulationModels:
     tracing: TracingModel | None
     attrs: dict
     variant: str | None = None
+    hulls: object = None
 
 
 def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationModels:
@@ -480,5 +516,6 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
         sea_model = build_sea_model(scene, spectrum=spectrum)
         check_spm_validity(sea_model.k, sea_model.roughness_height_variance)
         tracing = build_tracing(scene, base_dir, sea_model=sea_model)
+    hulls = build_hulls(scene, base_dir, variant=variant)
     return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
-                            attrs=scene_attrs(scene), variant=variant)
+                            attrs=scene_attrs(scene), variant=variant, hulls=hulls)

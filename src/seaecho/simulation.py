@@ -126,6 +126,12 @@ class Simulation:
             # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
             self.engine = FacetEngine.from_model(models.tracing, self.surface_state_at,
                                                  lambda t: tx.state(t).position, rx_fn)
+        # Echoes of the [[objects]] with scatterer = true (docs/ship.md), or None
+        from .tracing.hull_echo import HullEchoes
+
+        self.hulls = HullEchoes.from_model(
+            models.hulls, self.radar, variant=self.variant,
+            surface=self.surface_state_at if self.sea is not None else None)
 
     # --------------------------------------------------------------------- the sea
     def surface_time(self, pulse: int) -> float:
@@ -219,6 +225,8 @@ class Simulation:
         t = self.radar.target_echo(geo, variant=self.variant)
         if t is not None:
             echoes.append(t)
+        if self.hulls is not None:
+            echoes += self.hulls.echoes(geo, pulse)
         return self.radar.receive(pulse, echoes)
 
     def compress(self, raw: NDArray[np.complex128]) -> NDArray[np.complex128]:
@@ -256,7 +264,10 @@ class Simulation:
 
         truth = self.sea_truth() if self.sea is not None else None
         tracing = self.models.tracing
-        return run_dataset(self.radar, self.models.attrs, truth=truth,
+        # The hulls' centres at the sigma-map pulse and their RCS against pulse
+        hulls = (self.hulls.truth(self.models.radar.sigma_map_pulse)
+                 if self.hulls is not None else None)
+        return run_dataset(self.radar, self.models.attrs, truth=truth, extra=hulls,
                            x=None if self.sea is None else self.sea.x,
                            y=None if self.sea is None else self.sea.y,
                            extra_attrs={

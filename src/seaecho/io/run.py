@@ -28,7 +28,7 @@ from ..conventions import CHANNELS
 
 
 def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
-                extra_attrs: dict | None = None):
+                extra_attrs: dict | None = None, extra: tuple[dict, dict] | None = None):
     """Everything of a run's dataset but the pulses.
 
     Parameters
@@ -44,6 +44,9 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
         Grid node coordinates [m] (with ``truth``).
     extra_attrs : dict, optional
         More attributes (sea update, tracing mode, ...).
+    extra : (dict, dict), optional
+        More variables and their coordinates, as xarray takes them (e.g. the hulls'
+        ground truth, ``seaecho.tracing.hull_echo.HullEchoes.truth``).
 
     Returns
     -------
@@ -134,6 +137,9 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
         "raw_units": "sqrt(W): |raw|^2 is the received power [W]",
     })
     out.update(extra_attrs or {})
+    if extra is not None:
+        data.update(extra[0])
+        coords.update(extra[1])
     return xr.Dataset(data, coords=coords, attrs=out)
 
 
