@@ -26,7 +26,8 @@ What a namespace provides
   branch in both (``Re >= 0``, imaginary part with the sign of the argument's);
 - 2x2 matrices: :class:`Mat2` (``@``, ``.T``, element-wise ``*`` and ``+``), the same
   class for both namespaces;
-- per-run and per-pulse constants: ``const``, ``cconst``, ``vconst``. In Dr.Jit they are
+- per-run and per-pulse constants: ``const``, ``cconst``, ``vconst`` (``const32`` and
+  ``single`` for the float32 parts of a kernel). In Dr.Jit they are
   *opaque* (kernel parameters): a literal would be baked into the kernel's code and a
   new value (the platform's position at each pulse) would recompile it (0.04-0.14 s);
 - table look-ups: ``index`` (float -> integer) and ``gather``;
@@ -288,6 +289,10 @@ class NumpyNamespace:
         return Vec3(x, y, z)
 
     @staticmethod
+    def is_vector(a: Any) -> bool:
+        return isinstance(a, Vec3)
+
+    @staticmethod
     def dot(a: Vec3, b: Vec3) -> Any:
         return a.x * b.x + a.y * b.y + a.z * b.z
 
@@ -322,6 +327,15 @@ class NumpyNamespace:
     @staticmethod
     def cconst(value: complex) -> complex:
         return complex(value)
+
+    @staticmethod
+    def const32(value: float) -> np.float32:
+        return np.float32(value)
+
+    @staticmethod
+    def single(a: Any) -> Any:
+        """``a`` rounded to float32."""
+        return np.asarray(a, dtype=np.float32)
 
     @staticmethod
     def vconst(a: ArrayLike) -> Vec3:
@@ -444,6 +458,9 @@ class DrJitNamespace:
     def vec(self, x: Any, y: Any, z: Any) -> Any:
         return self.Array3(x, y, z)
 
+    def is_vector(self, a: Any) -> bool:
+        return isinstance(a, self.Array3)
+
     # dot and cross as numpy rounds them (products, then sums; no fused multiply-add):
     # the two paths then agree to the last bit on these, and exact zeros stay exact
     # (an ideal H port has no component on v: HH of a VV-only target is exactly 0).
@@ -465,6 +482,14 @@ class DrJitNamespace:
 
     def const(self, value: float) -> Any:
         return self.dr.opaque(self.Float, float(value))
+
+    def const32(self, value: float) -> Any:
+        """A float32 opaque constant."""
+        return self.dr.opaque(self.Float32, float(value))
+
+    def single(self, a: Any) -> Any:
+        """``a`` rounded to float32."""
+        return self.Float32(a)
 
     def cconst(self, value: complex) -> Any:
         value = complex(value)

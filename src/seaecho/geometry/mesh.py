@@ -133,7 +133,7 @@ def vertex_mean(xp, p00: Any, p11: Any, other: Any) -> Any:
     """
     s = p00 + p11 + other
     three = xp.const(3.0)
-    return _divide(xp, s, three) if hasattr(s, "z") else s / three
+    return _divide(xp, s, three) if xp.is_vector(s) else s / three
 
 
 def triangle(xp, p00: Any, p10: Any, p11: Any, p01: Any, upper: Any
