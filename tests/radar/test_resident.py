@@ -202,3 +202,22 @@ def test_cuda_fused_pulse_equals_the_cpu_one(tmp_path):
         assert res.returncode == 0, res.stderr[-3000:]
     a, b = (np.load(p) for p in out.values())
     assert np.abs(a - b).max() <= 1e-8 * np.abs(a).max()
+
+
+def test_sigma_map_in_one_kernel_equals_the_reference():
+    # The dataset's NRCS map (Simulation.sea_truth) from the fused kernel: the same
+    # per-cell sigma0 and visibility as the reference path's SeaEcho.sigma0_cells.
+    fused, ref = _pair(_scene())
+    p = 2
+    se = ref.sea_echo(p, sigma=True)
+    dx = float(ref.sea.x[1] - ref.sea.x[0])
+    want = se.sigma0_cells(dx * dx)
+    st = fused.surface_state(p)
+    geo = fused.radar.geometry(p)
+    held = fused._block_quantities(p, st, fused._resident.n_facets(st))
+    _, *hidden = fused.engine.occlusion(geo.time, st)
+    sigma0, vis = fused._resident.sigma_cells(geo, st, hidden, held["damping"])
+    np.testing.assert_allclose(sigma0, want, rtol=1e-12, atol=0)
+    np.testing.assert_array_equal(vis, se.facets.cell_mean("visibility"))
+    assert vis.dtype == np.float64
+    assert np.any(vis == 0) and np.any(vis == 0.5)  # the boat's shadow, its edge

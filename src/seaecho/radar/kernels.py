@@ -40,7 +40,7 @@ from ..scattering.facet import speckle
 from .antennas import port_coefficients
 from .equation import amplitude_factor, carrier, flight, polarimetric_factor
 
-__all__ = ["antenna_gain", "echo_terms", "port_matrix", "scatterer_echo",
+__all__ = ["antenna_gain", "echo_terms", "facet_visibility", "port_matrix", "scatterer_echo",
            "scatterer_echo_drjit", "sea_echo_terms"]
 
 
@@ -177,6 +177,24 @@ def scatterer_echo_drjit(radar, geometry, p: NDArray, v: NDArray, s: NDArray,
     return scatterer_echo(drjit_namespace(variant), radar, geometry, p, v, s, directions)
 
 
+def facet_visibility(xp, geometry, facets: dict[str, Any]) -> tuple[Any, Any, Any]:
+    """Facing test and ray-traced visibility of facets, as the facet engine has them.
+
+    Returns ``(visible, n_i, n_s)``: Bool (lit from the transmitter and seen from the
+    receiver: facing, eq G1 and the local angles, and not occluded, ``facets["hidden_tx"]``,
+    ``facets["hidden_rx"]``) and the unit directions of eq G1 at the emission positions.
+    """
+    tx = np.asarray(geometry.tx.position, dtype=np.float64)
+    rx = np.asarray(geometry.rx.position, dtype=np.float64)
+    c, nrm = facets["centroid"], facets["normal"]
+    _, _, n_i, n_s = ranges(xp, c, xp.vconst(tx), xp.vconst(rx),
+                            bool(np.array_equal(tx, rx)))
+    theta_i, theta_s, _ = bistatic_angles(xp, n_i, n_s, nrm)
+    visible = ((theta_i < math.pi / 2) & ~facets["hidden_tx"]
+               & (theta_s < math.pi / 2) & ~facets["hidden_rx"])
+    return visible, n_i, n_s
+
+
 def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: Any,
                    draws: dict[str, Any], lo: float, hi: float) -> dict[str, Any]:
     """One pulse of sea facets over a namespace: visibility, eqs P1-P4, eqs R1 and R3.
@@ -208,19 +226,11 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
         ``tau`` [s], ``amplitudes`` (one complex value per channel) [sqrt(W)] and ``keep``
         (Bool: visible and inside the window), for every facet.
     """
-    tx = np.asarray(geometry.tx.position, dtype=np.float64)
-    rx = np.asarray(geometry.rx.position, dtype=np.float64)
-    c, nrm = facets["centroid"], facets["normal"]
-    # Facing test and visibility, as the facet engine (eq G1, local angles)
-    _, _, n_i, n_s = ranges(xp, c, xp.vconst(tx), xp.vconst(rx),
-                            bool(np.array_equal(tx, rx)))
-    theta_i, theta_s, _ = bistatic_angles(xp, n_i, n_s, nrm)
-    visible = ((theta_i < math.pi / 2) & ~facets["hidden_tx"]
-               & (theta_s < math.pi / 2) & ~facets["hidden_rx"])
+    visible, n_i, n_s = facet_visibility(xp, geometry, facets)
     # Eqs P1-P4 with the facet's area times its visibility (0 or 1)
-    area = facets["area"] * xp.select(visible, 1.0, 0.0)
-    s = speckle(xp, mechanisms_of(n_i, n_s, nrm), draws, area)
+    area = facets["area"] * xp.select(visible, xp.const(1.0), xp.const(0.0))
+    s = speckle(xp, mechanisms_of(n_i, n_s, facets["normal"]), draws, area)
     # Eqs R1, R3
-    t = echo_terms(xp, radar, geometry, c, facets["velocity"], s)
+    t = echo_terms(xp, radar, geometry, facets["centroid"], facets["velocity"], s)
     keep = visible & (t["tau"] > lo) & (t["tau"] < hi)
     return dict(tau=t["tau"], amplitudes=t["amplitudes"], keep=keep)

@@ -39,9 +39,9 @@ from numpy.typing import NDArray
 
 from ..backend import Boundary, drjit_namespace
 from ..geometry.mesh import facet_count, facet_geometry_in
-from ..scattering.facet import MODELS, mechanisms
+from ..scattering.facet import MODELS, mechanism_sigma, mechanisms
 from ..scattering.spectrum_table import BraggSpectrumTable
-from .kernels import sea_echo_terms
+from .kernels import facet_visibility, sea_echo_terms
 from .system import DeviceEcho, PulseGeometry, RadarSystem, ScattererEcho
 
 __all__ = ["ResidentSea", "resident_sea"]
@@ -200,6 +200,46 @@ class ResidentSea:
             return DeviceEcho(xp, tau, tuple(packed), c)
         amplitudes = [xp.host(b).view(np.complex128) for b in packed]
         return ScattererEcho(xp.host(tau), amplitudes, None, None, None, None, None, None)
+
+    def sigma_cells(self, geometry: PulseGeometry, surface, hidden: tuple,
+                    damping: NDArray | None = None) -> tuple[NDArray, NDArray]:
+        """NRCS of each grid cell and its visibility, as one kernel (the sigma map).
+
+        The quantities of ``SeaEcho.sigma0_cells`` and ``Facets.cell_mean("visibility")``
+        of the reference path: per facet ``sigma_mn`` (eq P3,
+        :func:`seaecho.scattering.facet.mechanism_sigma`) times the visibility, times the
+        area, summed over the cell's two triangles and divided by the cell's horizontal
+        area.
+
+        Parameters
+        ----------
+        geometry, surface, hidden, damping
+            As :meth:`echo`.
+
+        Returns
+        -------
+        sigma0 : ndarray (4, ny - 1, nx - 1)
+            HH, HV, VH, VV per unit horizontal area [m^2/m^2].
+        visibility : ndarray (ny - 1, nx - 1)
+            Mean of the two triangles' visibility [-].
+        """
+        xp = self.xp
+        nx, ny = np.size(surface.x), np.size(surface.y)
+        n = facet_count(nx, ny)
+        nodes = self._nodes(surface)
+        io = Boundary(xp, n)
+        facets = facet_geometry_in(xp, nodes["x"], nodes["y"], nodes["z"], nodes["v"], nx, ny)
+        facets.update(hidden_tx=self._mask(hidden[0]), hidden_rx=self._mask(hidden[1]))
+        visible, n_i, n_s = facet_visibility(xp, geometry, facets)
+        vis = xp.select(visible, xp.const(1.0), xp.const(0.0))
+        sigma = mechanism_sigma(xp, self._mechanisms(io, damping)(n_i, n_s, facets["normal"]))
+        sig, vis_h, area = io.numpy(sigma, vis, facets["area"])
+        rcs = sig.reshape(n, 4) * vis_h[:, None] * area[:, None]  # [m^2] per facet
+        grid = (ny - 1, nx - 1, 2)
+        dx = float(surface.x[1] - surface.x[0])
+        dy = float(surface.y[1] - surface.y[0])
+        sigma0 = np.moveaxis(rcs.reshape(grid + (4,)).sum(axis=2), -1, 0) / (dx * dy)
+        return sigma0, vis_h.reshape(grid).mean(axis=2)
 
     def _mask(self, hidden: Any) -> Any:
         if isinstance(hidden, np.ndarray):
