@@ -138,3 +138,20 @@ def test_direct_sum_of_few_scatterers_equals_the_nufft():
                                atol=1e-12 * np.abs(direct).max())
     with pytest.raises(ValueError, match="method"):
         accumulate(tau, a, spec, w, method="fast")
+
+
+@pytest.mark.skipif(not hasattr(__import__("os"), "fork"), reason="needs fork")
+def test_accumulation_in_a_forked_process_after_one_in_the_parent():
+    # The worker threads of the parent do not exist in a forked child (distributed runs):
+    # the child must make its own instead of waiting on them forever.
+    import multiprocessing as mp
+
+    s, w, spec = _setup()
+    rng = np.random.default_rng(5)
+    k = 30000
+    tau = w.t0 + rng.uniform(-T, w.duration, k)
+    a = rng.standard_normal((4, k)) + 1j * rng.standard_normal((4, k))
+    here = accumulate(tau, a, spec, w, workers=2)
+    with mp.get_context("fork").Pool(1) as pool:
+        there = pool.apply_async(accumulate, (tau, a, spec, w), {"workers": 2}).get(timeout=60)
+    assert there.tobytes() == here.tobytes()

@@ -223,6 +223,10 @@ def _pool(workers: int) -> ThreadPoolExecutor:
     return ThreadPoolExecutor(workers, thread_name_prefix="seaecho-nufft")
 
 
+if hasattr(os, "register_at_fork"):  # a forked worker process gets pools of its own
+    os.register_at_fork(after_in_child=_pool.cache_clear)
+
+
 def accumulate_cuda(xp, tau: object, amplitudes: tuple, pulse_spectrum: ArrayLike,
                     window: ReceiveWindow, eps: float = 1e-9) -> NDArray[np.complex128]:
     """Eq (E2) on a GPU: cufinufft type 1 on arrays that stay on the device.
