@@ -6,8 +6,9 @@ The stages are the functions a pulse calls, timed by wrapping them (whatever is 
 in this version of the code: the same script profiles the reference path and the fused
 one). Each line gives the wall time and the CPU time (``time.process_time``: every thread
 of the process, so Dr.Jit's and finufft's workers count) per pulse; nested stages are
-indented and included in their parent. ``--reference`` runs the reference path (numpy
-glue between separate kernels) where the code has both.
+indented and included in their parent. ``--reference`` runs the reference path (one
+kernel per stage, numpy between them) instead of the fused pulse
+(``seaecho.radar.resident``).
 
 On a shared machine the wall time is inflated by the other processes; the CPU time is
 the steadier figure (``docs/performance.md``). The load average is printed with it.
@@ -113,8 +114,6 @@ def main() -> None:
     ap.add_argument("--reference", action="store_true",
                     help="the reference path (numpy glue between kernels)")
     args = ap.parse_args()
-    if args.reference:
-        os.environ["SEAECHO_FUSED"] = "0"
 
     from seaecho.config import load_scene
     from seaecho.simulation import Simulation
@@ -131,6 +130,8 @@ def main() -> None:
     warnings.simplefilter("ignore")
     w0, c0 = time.perf_counter(), time.process_time()
     sim = Simulation(scene, base_dir=SIM2.parent)
+    if args.reference:
+        sim._resident = None
     first = 40
     for p in (first, first + 1):  # compilation, BVH, lazy imports: not profiled
         sim.compress(sim.pulse(p))
