@@ -57,8 +57,8 @@ class SeaEcho:
         Per-facet scattering coefficients sigma_mn (HH, HV, VH, VV) per unit *facet*
         area [m^2/m^2] times the facet's visibility, all facets, when asked for:
         ``area * sigma_facet`` is the facet's mean radar cross section [m^2].
-    facets : seaecho.geometry.facets.Facets
-        The facets of the pulse.
+    facets : seaecho.geometry.facets.Facets or None
+        The facets of the pulse (None from the fused kernel, ``radar.resident``).
     """
 
     echo: ScattererEcho
@@ -112,6 +112,7 @@ class Simulation:
         #: the sea at the radar carrier: k, eps_r, sub-facet slopes, Bragg table
         self.sea_model = models.sea_model
         self.engine = None
+        self._resident = None
         self._state_cache: tuple[float, object] | None = None
         # Per-sea-state quantities, computed once per block of held pulses and reused by
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
@@ -126,6 +127,9 @@ class Simulation:
             # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
             self.engine = FacetEngine.from_model(models.tracing, self.surface_state_at,
                                                  lambda t: tx.state(t).position, rx_fn)
+            from .radar.resident import resident_sea  # the fused pulse, where it applies
+
+            self._resident = resident_sea(self.radar, models.tracing, self.sea_model)
         # Echoes of the [[objects]] with scatterer = true (docs/ship.md), or None
         from .tracing.hull_echo import HullEchoes
 
@@ -166,6 +170,8 @@ class Simulation:
             rng = generator(self.radar.seed, "speckle", block)
             q = {"damping": to_facets(state.wake_mask).reshape(-1),
                  "draws": speckle_draws(n_facets, rng)}
+            for a in (q["damping"], *q["draws"]):  # held: kept on the device
+                a.setflags(write=False)
             self._block_cache = (block, q)
         return self._block_cache[1]
 
@@ -187,6 +193,11 @@ class Simulation:
 
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
+        if self._resident is not None and not sigma:  # one kernel, the same numbers
+            held = self._block_quantities(pulse, st, self._resident.n_facets(st))
+            _, *hidden = self.engine.occlusion(geo.time, st)
+            echo = self._resident.echo(geo, st, hidden, held["draws"], held["damping"])
+            return SeaEcho(echo, None, None)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility
         held = self._block_quantities(pulse, st, vis.size)
