@@ -34,6 +34,7 @@ LAYERS = [
     {"build"},
     {"imaging"},
     {"simulation"},
+    {"distributed"},
     {"cli"},
     {"__main__"},
 ]

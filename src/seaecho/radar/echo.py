@@ -150,7 +150,11 @@ def accumulate(tau: ArrayLike, amplitudes: ArrayLike, pulse_spectrum: ArrayLike,
     # Eq (E2): phasor points x_k = 2 pi (tau_k - t0) f_s / N folded into [-pi, pi)
     x = 2.0 * np.pi * ((tau - window.t0) * window.sampling_rate / n)
     x = np.mod(x + np.pi, 2.0 * np.pi) - np.pi
-    phasors = finufft.nufft1d1(x, a, n_modes=n, eps=eps, isign=-1, modeord=1)
+    # One thread: finufft's multithreaded spreading adds its sub-grids in an order that
+    # depends on the thread count, so the bytes would depend on the machine (the same
+    # scene and seed must give the same bytes on one core or a cluster)
+    phasors = finufft.nufft1d1(x, a, n_modes=n, eps=eps, isign=-1, modeord=1,
+                               nthreads=1)
     out = np.fft.ifft(phasors * spec, axis=-1)[:, :window.n_samples]
     return out[0] if squeeze else out
 
