@@ -220,10 +220,10 @@ def run(scene, path: str | os.PathLike, *, client, base_dir: str | os.PathLike =
 def clutter_gates(ds) -> np.ndarray:
     """Mask (pulse, fast_time) of the range gates filled by the sea tile.
 
-    A gate is kept when its delay lies at least one range resolution (1 / bandwidth, or
-    the pulse length without modulation) inside the span of the bistatic delays
-    (|p - tx| + |p - rx|) / c of the grid nodes p (z = 0) at that pulse, so that every
-    kept gate is fully covered by sea.
+    A gate is kept when its delay lies at least half a delay resolution inside the span
+    of the bistatic delays (|p - tx| + |p - rx|) / c of the grid nodes p (z = 0) at that
+    pulse: 0.5 / bandwidth (the pulse length without modulation), about the -4 dB half
+    width of the compressed sinc main lobe, so that a kept gate's main lobe lies on sea.
     """
     x, y = ds["x"].values, ds["y"].values
     sx = max(1, x.size // 64)
@@ -237,8 +237,8 @@ def clutter_gates(ds) -> np.ndarray:
             + np.linalg.norm(nodes[None] - rx[:, None], axis=-1))  # (P, N)
     bw = float(ds.attrs.get("waveform_bandwidth_hz", 0.0))
     res = 1.0 / bw if bw > 0 else float(ds.attrs["waveform_duration_s"])
-    lo = path.min(axis=1) / C0 + res
-    hi = path.max(axis=1) / C0 - res
+    lo = path.min(axis=1) / C0 + 0.5 * res
+    hi = path.max(axis=1) / C0 - 0.5 * res
     t = ds["fast_time"].values
     return (t[None, :] >= lo[:, None]) & (t[None, :] <= hi[:, None])
 
