@@ -269,7 +269,8 @@ def write_netcdf_run(path: str | os.PathLike, static, *, shape: tuple[int, int, 
     """Write the static dataset, then every block of pulses in order, atomically.
 
     Memory: the runner's blocks in flight (one for :class:`SerialBlocks`). The file's
-    bytes do not depend on the runner: blocks are written in pulse order.
+    bytes depend neither on the runner nor on the block size: the pulses are written in
+    order, one at a time.
 
     Parameters
     ----------
@@ -300,8 +301,9 @@ def write_netcdf_run(path: str | os.PathLike, static, *, shape: tuple[int, int, 
                       desc="seaecho run") as bar:
                 for (a, b), (raw, compressed) in zip(blocks, runner.ordered(blocks),
                                                      strict=True):
-                    raw_v[a:b] = raw
-                    rc_v[a:b] = compressed
+                    for k in range(b - a):  # pulse by pulse: the file's layout (chunk
+                        raw_v[a + k] = raw[k]  # order) does not depend on the block size
+                        rc_v[a + k] = compressed[k]
                     bar.update(b - a)
     return Path(path)
 
