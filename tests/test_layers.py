@@ -35,6 +35,7 @@ LAYERS = [
     {"build"},
     {"imaging"},
     {"simulation"},
+    {"distributed"},
     {"cli"},
     {"__main__"},
 ]

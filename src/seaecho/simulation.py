@@ -240,6 +240,26 @@ class Simulation:
             echoes += self.hulls.echoes(geo, pulse)
         return self.radar.receive(pulse, echoes)
 
+    def pulses(self, start: int, stop: int) -> tuple[NDArray[np.complex128],
+                                                     NDArray[np.complex128]]:
+        """Raw and range-compressed samples of pulses ``start`` to ``stop - 1``, each
+        (stop - start, channels, fast_time) [sqrt(W)]: :meth:`pulse` and :meth:`compress`."""
+        raw = np.stack([self.pulse(p) for p in range(start, stop)])
+        return raw, self.compress(raw)
+
+    def block_edges(self) -> NDArray[np.int64]:
+        """Pulse indices at which the held sea surface or the occlusion refresh time
+        changes, with 0 and ``n_pulses``: the pulses between two edges share every
+        per-block cache (surface, speckle, wake damping, traced occlusion)."""
+        p = np.arange(self.radar.n_pulses)
+        change = np.diff(p // self.block, prepend=-1) != 0
+        tr = self.models.tracing
+        if self.engine is not None and tr.mode == "raytraced" and tr.refresh_interval_s > 0:
+            # tracing.engine.reference_time, vectorised
+            ref = np.floor(self.radar.emission_time(p) / tr.refresh_interval_s + 1e-9)
+            change |= np.diff(ref, prepend=ref[0] - 1.0) != 0
+        return np.append(np.flatnonzero(change), p.size)
+
     def compress(self, raw: NDArray[np.complex128]) -> NDArray[np.complex128]:
         """Range-compressed samples with the model's weighting (same shape as ``raw``)."""
         m = self.models.radar
@@ -291,30 +311,43 @@ class Simulation:
                                "range_weighting": self.models.radar.range_weighting})
 
     # ------------------------------------------------------------------------ run
-    def run(self, path: str | os.PathLike, progress: bool = True, chunk: int = 16) -> Path:
-        """Simulate every pulse and write the dataset to ``path`` atomically.
+    def run(self, path: str | os.PathLike, progress: bool = True, chunk: int | None = None,
+            resume: bool = False) -> Path:
+        """Simulate every pulse in this process and write the dataset to ``path``.
+
+        A ``.zarr`` path gets a Zarr store written block by block and resumable
+        (:mod:`seaecho.io.zarr_run`); any other path a netCDF file written atomically.
+        :func:`seaecho.distributed.run` does the same on a Dask cluster, with the same
+        bytes.
 
         Parameters
         ----------
         path : path
-            Output netCDF file (h5netcdf, complex variables as HDF5 compounds).
+            Output netCDF file (h5netcdf, complex variables as HDF5 compounds) or Zarr
+            store (``*.zarr``).
         progress : bool
-            Show a tqdm progress bar.
-        chunk : int
-            Pulses buffered per write (memory: chunk x channels x samples x 32 bytes).
+            Show a tqdm progress bar over the pulses.
+        chunk : int, optional
+            Pulses per block (memory: chunk x channels x samples x 32 bytes; the Zarr
+            chunk along ``pulse``); default :func:`seaecho.io.run.block_size` of
+            :meth:`block_edges`.
+        resume : bool
+            Zarr only: continue an interrupted run of the same scene, computing only the
+            blocks it lacks.
 
         Returns
         -------
         Path
         """
-        from .io.run import write_run
+        from .io.run import SerialBlocks, block_size, write_run
 
-        return write_run(path, self.static_dataset(), n_pulses=self.radar.n_pulses,
-                         n_channels=len(self.radar.channels),
-                         n_samples=self.radar.window.n_samples,
-                         pulse=lambda p: self.pulse(p), compress=lambda raw: self.compress(raw),
+        size = block_size(self.block_edges(), chunk)
+        return write_run(path, self.static_dataset, identity=self.models.attrs,
+                         shape=(self.radar.n_pulses, len(self.radar.channels),
+                                self.radar.window.n_samples), block=size,
+                         runner=SerialBlocks(self.pulses),
                          weighting=self.models.radar.range_weighting, progress=progress,
-                         chunk=chunk)
+                         resume=resume)
 
 
 __all__ = ["POLARISATIONS", "SeaEcho", "Simulation"]
