@@ -11,6 +11,10 @@
    bounded memory means the two peaks are about equal.
 
 Timings on a shared machine are noisy: the load average is printed with them.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

@@ -6,6 +6,10 @@
   shadow polygon;
 - ``tracing_modes.png``: visibility maps of a wind sea with the 10 m motor boat, ray traced
   vs analytic (Smith), bistatic.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

@@ -8,6 +8,10 @@ Run: ``python examples/wake_paper_boat.py [OUTDIR]`` (default ``docs/figures``).
 * ``wake_michell.png``: the Michell amplitude function |A(theta)| of that boat, and the
   wave-resistance coefficient of the standard Wigley hull (B/L = 0.1, T/L = 0.0625) from
   eq W6 against Froude number.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

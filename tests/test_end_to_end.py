@@ -1,5 +1,10 @@
 """End to end: a run's sea echo against the radar equation and the mean-plane point model,
-with shadowing and the turbulent wake on."""
+with shadowing and the turbulent wake on.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 

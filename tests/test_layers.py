@@ -27,6 +27,7 @@ LAYERS = [
     {"sea"},
     {"geometry"},
     {"scattering"},
+    {"targets"},
     {"tracing"},
     {"radar"},
     {"processing"},
@@ -34,11 +35,12 @@ LAYERS = [
     {"build"},
     {"imaging"},
     {"simulation"},
+    {"distributed"},
     {"cli"},
     {"__main__"},
 ]
 #: Stages: they take stage models, never the scene (``config``).
-STAGES = {"ocean", "wake", "sea", "scattering", "geometry", "tracing", "radar",
+STAGES = {"ocean", "wake", "sea", "scattering", "geometry", "targets", "tracing", "radar",
           "processing", "io"}
 RANK = {name: i for i, layer in enumerate(LAYERS) for name in layer}
 

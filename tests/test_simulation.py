@@ -253,3 +253,26 @@ def test_dataset_says_whether_the_sea_is_frozen(tmp_path):
     out = Simulation(_raytraced_scene(0.0, n_pulses=2)).run(tmp_path / "h.nc", progress=False)
     with xr.open_dataset(out, engine="h5netcdf") as ds:
         assert ds.attrs["sea_motion"] == "held" and ds.attrs["sea_frozen"] == 1
+
+
+@pytest.mark.parametrize("mode", ["analytic", "raytraced"])
+def test_scene_variant_reaches_every_kernel(mode, monkeypatch):
+    # [tracing] variant selects the Dr.Jit back end of every per-pulse kernel (facet
+    # frames, eqs P1-P4, the radar equation of facets and targets), not only the
+    # tracer's: each kernel asks seaecho.backend.check_variant for the scene's variant
+    # by name, never for "whatever runs" (None), which would leave a CUDA scene on the CPU
+    from seaecho import backend
+
+    asked = []
+    check = backend.check_variant
+
+    def spy(variant):
+        asked.append(variant)
+        return check(variant)
+
+    monkeypatch.setattr(backend, "check_variant", spy)
+    sc = _scene(sea=True, n_pulses=1)
+    sc = sc.model_copy(update={"tracing": sc.tracing.model_copy(
+        update={"mode": mode, "variant": "llvm_ad_mono_polarized"})})
+    Simulation(sc).pulse(0)
+    assert len(asked) >= 4 and set(asked) == {"llvm_ad_mono_polarized"}, asked

@@ -412,11 +412,13 @@ def build_tracing(scene, base_dir: str | os.PathLike = ".", *, frequency: float 
 
     cfg = scene.tracing
     mode = cfg.mode if mode is None else mode
+    variant = cfg.variant if variant is None else variant
     f = carrier_frequency(scene, frequency)
     objects: list = []
     if mode == "raytraced":
         for o in scene.objects:
-            objects += load_object(o, base_dir=str(base_dir), ship=scene.ship)
+            objects += load_object(o, base_dir=str(base_dir), ship=scene.ship,
+                                   variant=variant)
     subfacet = None
     if cfg.subfacet_shadowing:
         sm = build_sea_model(scene, f) if sea_model is None else sea_model
@@ -426,7 +428,7 @@ def build_tracing(scene, base_dir: str | os.PathLike = ".", *, frequency: float 
                                             scene.sea.salinity_psu)))
     return TracingModel(mode=mode, shadowing=cfg.shadowing,
                         refresh_interval_s=cfg.refresh_interval_s,
-                        variant=cfg.variant if variant is None else variant,
+                        variant=variant,
                         objects=tuple(objects), frequency=f, eps_r=eps_r, subfacet=subfacet)
 
 
@@ -492,6 +494,39 @@ def scene_attrs(scene) -> dict[str, Any]:
     return attrs(scene)
 
 
+def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | None = None,
+                variant: str | None = None):
+    """The hull model of the ``[[objects]]`` with ``scatterer = true``
+    (:class:`seaecho.tracing.hull_echo.HullModel`), or None when none scatters.
+
+    Every object is loaded (the others occlude the scatterers' rays); the sea's
+    permittivity and rms height (waves up to twice the radar wavenumber) set the
+    reflection of the multipath legs (docs/ship.md).
+    """
+    if not any(o.scatterer for o in scene.objects):
+        return None
+    from .tracing.hull_echo import HullModel, HullOptions
+    from .tracing.scene import load_object
+
+    f = carrier_frequency(scene, frequency)
+    objects = []
+    for cfg in scene.objects:
+        shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship, variant=variant)
+        spec = None
+        if cfg.scatterer:
+            spec = HullOptions(name=cfg.name, rays_per_wavelength=cfg.rays_per_wavelength,
+                               max_bounces=cfg.max_bounces, cell_m=cfg.signature_cell_m,
+                               sea_multipath=cfg.sea_multipath,
+                               refresh_deg=cfg.signature_refresh_deg,
+                               refresh_s=cfg.signature_refresh_s)
+        objects.append((spec, shapes))
+    sea = scene.sea
+    eps_sea = complex(sea_water_permittivity(f, sea.temperature_c, sea.salinity_psu))
+    k = 2.0 * np.pi * f / C0
+    sigma_h = float(np.sqrt(height_variance(sea_spectrum(scene), 0.0, 2.0 * k)))
+    return HullModel(objects=tuple(objects), sea_eps_r=eps_sea, sigma_h=sigma_h)
+
+
 @dataclass(frozen=True)
 class SimulationModels:
     """Everything a :class:`seaecho.simulation.Simulation` needs, built from a scene.
@@ -507,6 +542,10 @@ class SimulationModels:
         Facet mode and occluders.
     attrs : dict
         Dataset attributes that say how the output was made (scene JSON, version, seed).
+    variant : str or None
+        Mitsuba variant of the Dr.Jit kernels and the tracer (``[tracing] variant``).
+    hulls : seaecho.tracing.hull_echo.HullModel or None
+        The objects that echo (``scatterer = true``), None when none does.
     """
 
     radar: RadarModel
@@ -514,6 +553,8 @@ class SimulationModels:
     sea_model: SeaModel | None
     tracing: TracingModel | None
     attrs: dict
+    variant: str | None = None
+    hulls: object = None
 
 
 def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationModels:
@@ -521,9 +562,21 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
 
     Warns (``SPMValidityWarning``) when the Bragg roughness of the grid's unresolved
     waves has k h > 0.3 (:func:`check_scene` says the same with a suggested spacing).
+
+    Raises
+    ------
+    ValueError
+        ``[tracing] variant`` cannot run here (a CUDA variant without a CUDA GPU, or a
+        back end other than the one Mitsuba already runs in this process):
+        :func:`seaecho.backend.check_variant`, at the start rather than mid-run.
     """
+    from .backend import check_variant
     from .scattering.twoscale import check_spm_validity
 
+    try:
+        variant = check_variant(scene.tracing.variant)
+    except ValueError as exc:
+        raise ValueError(f"[tracing].variant: {exc}") from None
     radar = build_radar(scene)
     sea = sea_model = tracing = None
     if radar.sea_clutter:
@@ -532,5 +585,6 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
         sea_model = build_sea_model(scene, spectrum=spectrum)
         check_spm_validity(sea_model.k, sea_model.roughness_height_variance)
         tracing = build_tracing(scene, base_dir, sea_model=sea_model)
+    hulls = build_hulls(scene, base_dir, variant=variant)
     return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
-                            attrs=scene_attrs(scene))
+                            attrs=scene_attrs(scene), variant=variant, hulls=hulls)

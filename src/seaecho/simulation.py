@@ -69,8 +69,8 @@ class SeaEcho:
         Per-facet scattering coefficients sigma_mn (HH, HV, VH, VV) per unit *facet*
         area [m^2/m^2] times the facet's visibility, all facets, when asked for:
         ``area * sigma_facet`` is the facet's mean radar cross section [m^2].
-    facets : seaecho.geometry.facets.Facets
-        The facets of the pulse.
+    facets : seaecho.geometry.facets.Facets or None
+        The facets of the pulse (None from the fused kernel, ``radar.resident``).
     """
 
     echo: ScattererEcho
@@ -115,6 +115,8 @@ class Simulation:
 
     def _setup(self, models: SimulationModels) -> None:
         self.models = models
+        #: Mitsuba variant of the Dr.Jit kernels (``[tracing] variant``, checked by the builder)
+        self.variant = models.variant
         self.radar = RadarSystem(models.radar)
         self.block = models.radar.sea_update_pulses
         #: the sea (surface + wake), None when sea clutter is off
@@ -122,6 +124,7 @@ class Simulation:
         #: the sea at the radar carrier: k, eps_r, sub-facet slopes, Bragg table
         self.sea_model = models.sea_model
         self.engine = None
+        self._resident = None
         self._state_cache: tuple[float, object] | None = None
         # Per-sea-state quantities, computed once per block of held pulses and reused by
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
@@ -139,6 +142,15 @@ class Simulation:
             # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
             self.engine = FacetEngine.from_model(models.tracing, self.surface_state_at,
                                                  lambda t: tx.state(t).position, rx_fn)
+            from .radar.resident import resident_sea  # the fused pulse, where it applies
+
+            self._resident = resident_sea(self.radar, models.tracing, self.sea_model)
+        # Echoes of the [[objects]] with scatterer = true (docs/ship.md), or None
+        from .tracing.hull_echo import HullEchoes
+
+        self.hulls = HullEchoes.from_model(
+            models.hulls, self.radar, variant=self.variant,
+            surface=self.surface_state_at if self.sea is not None else None)
 
     # --------------------------------------------------------------------- the sea
     def surface_time(self, pulse: int) -> float:
@@ -192,6 +204,9 @@ class Simulation:
                 (g_w,) = circular_gaussians(n_facets, 1, generator(seed, "breaking", block))
                 draws["breaking"] = g_w
                 q["breaking"] = self.breaking_fraction(state)
+            for a in (q["damping"], q["breaking"], *draws.values()):  # held: on the device
+                if a is not None:
+                    a.setflags(write=False)
             self._block_cache = (block, q)
         return self._block_cache[1]
 
@@ -282,6 +297,12 @@ class Simulation:
 
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
+        if self._resident is not None and not sigma:  # one kernel, the same numbers
+            held = self._block_quantities(pulse, st, self._resident.n_facets(st))
+            _, *hidden = self.engine.occlusion(geo.time, st)
+            echo = self._resident.echo(geo, st, hidden, held["draws"], held["damping"],
+                                       breaking=held["breaking"])
+            return SeaEcho(echo, None, None)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility
         held = self._block_quantities(pulse, st, vis.size)
@@ -298,18 +319,20 @@ class Simulation:
             draws = self._speckle_process(vis.size).draws(float(geo.time))
         amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,
                                         draws=draws, wake_damping=damping,
-                                        local=facets, **options)
+                                        local=facets, variant=self.variant,
+                                        **options)
         centres = self.phase_centres(pulse, st)
         visible = vis > 0
         if visible.all():  # the usual case: no copies
             pos, vel = centres, facets.velocity
         else:
             pos, vel, amp = centres[visible], facets.velocity[visible], amp[visible]
-        echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2))
+        echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2),
+                                         variant=self.variant)
         sig = None
         if sigma:
             sig = facet_terms(*args, *model, wake_damping=damping, local=facets,
-                              **options).sigma() * vis[:, None]
+                              variant=self.variant, **options).sigma() * vis[:, None]
         return SeaEcho(echo, sig, facets)
 
     # ------------------------------------------------------------------- one pulse
@@ -321,10 +344,32 @@ class Simulation:
         echoes = []
         if self.sea is not None:
             echoes.append(self.sea_echo(pulse, geo).echo)
-        t = self.radar.target_echo(geo)
+        t = self.radar.target_echo(geo, variant=self.variant)
         if t is not None:
             echoes.append(t)
+        if self.hulls is not None:
+            echoes += self.hulls.echoes(geo, pulse)
         return self.radar.receive(pulse, echoes)
+
+    def pulses(self, start: int, stop: int) -> tuple[NDArray[np.complex128],
+                                                     NDArray[np.complex128]]:
+        """Raw and range-compressed samples of pulses ``start`` to ``stop - 1``, each
+        (stop - start, channels, fast_time) [sqrt(W)]: :meth:`pulse` and :meth:`compress`."""
+        raw = np.stack([self.pulse(p) for p in range(start, stop)])
+        return raw, self.compress(raw)
+
+    def block_edges(self) -> NDArray[np.int64]:
+        """Pulse indices at which the held sea surface or the occlusion refresh time
+        changes, with 0 and ``n_pulses``: the pulses between two edges share every
+        per-block cache (surface, speckle, wake damping, traced occlusion)."""
+        p = np.arange(self.radar.n_pulses)
+        change = np.diff(p // self.block, prepend=-1) != 0
+        tr = self.models.tracing
+        if self.engine is not None and tr.mode == "raytraced" and tr.refresh_interval_s > 0:
+            # tracing.engine.reference_time, vectorised
+            ref = np.floor(self.radar.emission_time(p) / tr.refresh_interval_s + 1e-9)
+            change |= np.diff(ref, prepend=ref[0] - 1.0) != 0
+        return np.append(np.flatnonzero(change), p.size)
 
     def compress(self, raw: NDArray[np.complex128]) -> NDArray[np.complex128]:
         """Range-compressed samples with the model's weighting (same shape as ``raw``)."""
@@ -361,7 +406,10 @@ class Simulation:
 
         truth = self.sea_truth() if self.sea is not None else None
         tracing = self.models.tracing
-        return run_dataset(self.radar, self.models.attrs, truth=truth,
+        # The hulls' centres at the sigma-map pulse and their RCS against pulse
+        hulls = (self.hulls.truth(self.models.radar.sigma_map_pulse)
+                 if self.hulls is not None else None)
+        return run_dataset(self.radar, self.models.attrs, truth=truth, extra=hulls,
                            x=None if self.sea is None else self.sea.x,
                            y=None if self.sea is None else self.sea.y,
                            extra_attrs={
@@ -403,30 +451,43 @@ class Simulation:
         return out
 
     # ------------------------------------------------------------------------ run
-    def run(self, path: str | os.PathLike, progress: bool = True, chunk: int = 16) -> Path:
-        """Simulate every pulse and write the dataset to ``path`` atomically.
+    def run(self, path: str | os.PathLike, progress: bool = True, chunk: int | None = None,
+            resume: bool = False) -> Path:
+        """Simulate every pulse in this process and write the dataset to ``path``.
+
+        A ``.zarr`` path gets a Zarr store written block by block and resumable
+        (:mod:`seaecho.io.zarr_run`); any other path a netCDF file written atomically.
+        :func:`seaecho.distributed.run` does the same on a Dask cluster, with the same
+        bytes.
 
         Parameters
         ----------
         path : path
-            Output netCDF file (h5netcdf, complex variables as HDF5 compounds).
+            Output netCDF file (h5netcdf, complex variables as HDF5 compounds) or Zarr
+            store (``*.zarr``).
         progress : bool
-            Show a tqdm progress bar.
-        chunk : int
-            Pulses buffered per write (memory: chunk x channels x samples x 32 bytes).
+            Show a tqdm progress bar over the pulses.
+        chunk : int, optional
+            Pulses per block (memory: chunk x channels x samples x 32 bytes; the Zarr
+            chunk along ``pulse``); default :func:`seaecho.io.run.block_size` of
+            :meth:`block_edges`.
+        resume : bool
+            Zarr only: continue an interrupted run of the same scene, computing only the
+            blocks it lacks.
 
         Returns
         -------
         Path
         """
-        from .io.run import write_run
+        from .io.run import SerialBlocks, block_size, write_run
 
-        return write_run(path, self.static_dataset(), n_pulses=self.radar.n_pulses,
-                         n_channels=len(self.radar.channels),
-                         n_samples=self.radar.window.n_samples,
-                         pulse=lambda p: self.pulse(p), compress=lambda raw: self.compress(raw),
+        size = block_size(self.block_edges(), chunk)
+        return write_run(path, self.static_dataset, identity=self.models.attrs,
+                         shape=(self.radar.n_pulses, len(self.radar.channels),
+                                self.radar.window.n_samples), block=size,
+                         runner=SerialBlocks(self.pulses),
                          weighting=self.models.radar.range_weighting, progress=progress,
-                         chunk=chunk)
+                         resume=resume)
 
 
 __all__ = ["POLARISATIONS", "SeaEcho", "Simulation"]

@@ -37,5 +37,6 @@ def test_amplitude_factor_is_the_bistatic_radar_equation():
     a = amplitude_factor(x, track, iso, rect, 50.0, lam)[0, 0]
     r_t, r_r = np.linalg.norm(x - tx), np.linalg.norm(x - rx)
     p_r = 50.0 * 1.0 * rect.peak_gain * lam**2 / ((4 * np.pi) ** 3 * r_t**2 * r_r**2)
-    assert a**2 == pytest.approx(p_r, rel=1e-9)
+    # (a ratio: p_r is about 1e-13 W, below pytest.approx's default absolute tolerance)
+    assert a**2 / p_r == pytest.approx(1.0, rel=1e-9)
     assert 10 * np.log10(rect.peak_gain) == pytest.approx(25.6, abs=0.05)

@@ -1,5 +1,10 @@
 """The calibration maps interpolated from their node grid against the direct evaluation,
-on the paper's stripmap geometry (4 m antenna: K varies over the 28 m footprint)."""
+on the paper's stripmap geometry (4 m antenna: K varies over the 28 m footprint).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 

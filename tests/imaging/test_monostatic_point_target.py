@@ -119,13 +119,15 @@ def test_peak_is_the_scattering_matrix(raw_ds):
     assert area[0] == pytest.approx(cell, rel=0.02)
 
 
-def test_uncalibrated_peak_is_the_coherent_sum_of_the_radar_equation(raw_ds):
+@pytest.mark.parametrize("backend", ["drjit", "numpy"])
+def test_uncalibrated_peak_is_the_coherent_sum_of_the_radar_equation(raw_ds, backend):
     # |I(x0)| = sum_p sqrt(P_r,p), P_r of the radar equation (Skolnik 2008, eq 23.1) with
-    # isotropic antennas: the coherent gain of N pulses, independent of the calibration
+    # isotropic antennas: the coherent gain of N pulses, independent of the calibration;
+    # with eq B2's carrier phase of the wrong sign the pulses would not add up
     from seaecho.imaging.focus import RawData, _Processor
 
     raw = RawData(raw_ds)
-    proc = _Processor(raw, ImageConfig(), "drjit")
+    proc = _Processor(raw, ImageConfig(), backend)
     acc = proc.backproject(TARGET[None, :])[0][3, 0]
     tx = raw_ds["tx_position"].values
     r = np.linalg.norm(tx - TARGET, axis=1)

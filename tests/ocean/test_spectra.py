@@ -1,4 +1,9 @@
-"""Wave spectra and spreading functions against closed forms and published numbers."""
+"""Wave spectra and spreading functions against closed forms and published numbers.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import warnings
 

@@ -1,4 +1,9 @@
-"""Two-scale split statistics and the paper's sampling advice (section IV-A, eqs 13-14)."""
+"""Two-scale split statistics and the paper's sampling advice (section IV-A, eqs 13-14).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import warnings
 

@@ -1,4 +1,9 @@
-"""Calibration of the speckled facet amplitudes: E|a_mn|^2 = sigma_mn A (eq P4-P5)."""
+"""Calibration of the speckled facet amplitudes: E|a_mn|^2 = sigma_mn A (eq P4-P5).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import numpy as np
 import pytest

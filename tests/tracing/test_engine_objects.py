@@ -1,4 +1,9 @@
-"""FacetEngine (modes, refresh interval), [[objects]] loading, hull mesh, XML scenes."""
+"""FacetEngine (modes, refresh interval), [[objects]] loading, hull mesh, XML scenes.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import types
 from pathlib import Path

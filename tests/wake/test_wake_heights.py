@@ -1,5 +1,10 @@
 """Kelvin-wake heights against the empirical model of Kriebel & Seelig (2005), and the
-breaking limit of wave steepness (Michell 1893; Williams 1981: H/lambda <= 0.1412)."""
+breaking limit of wave steepness (Michell 1893; Williams 1981: H/lambda <= 0.1412).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import numpy as np
 import pytest

@@ -6,6 +6,10 @@ section 6.17), the transverse wavelength 2 pi V^2 / g and the divergent waveleng
 2 pi V^2 cos^2(theta) / g (paper section IV-B), the energy per unit length of the
 pattern against Parseval's theorem applied to eq W4, and the steady translation with the
 ship (eqs W1, W12).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 import numpy as np

@@ -22,6 +22,10 @@ Polarisation ports. An antenna has two orthogonal ports, named by its ``basis``:
 ``hv`` (ports H and V), ``slant`` (ports P = +45 deg and M = -45 deg) or ``circular``
 (ports R and L, IEEE handedness). A channel ``"mn"`` is receive port m, transmit port n
 (S_mn: m received, n transmitted), e.g. ``"HV"`` receives H and transmits V.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

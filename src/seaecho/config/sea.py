@@ -1,4 +1,9 @@
-"""``[sea]`` section: sea state, wave spectrum, tile and grid, sea water."""
+"""``[sea]`` section: sea state, wave spectrum, tile and grid, sea water.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 

@@ -46,6 +46,9 @@ References
 .. [3] Khenchaf, A. and Airiau, O. (2000). Bistatic radar moving returns from sea
    surface. *IEICE Trans. Electron.* E83-C(12), 1827-1835 (bistatic two-scale with
    local frames).
+.. [4] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations

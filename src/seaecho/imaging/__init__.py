@@ -3,4 +3,8 @@ polarimetric products, speckle filters, image quality and the paper's image metr
 
 Entry point: :func:`seaecho.imaging.focus.focus` (``seaecho image``). Theory:
 ``docs/imaging.md``.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """

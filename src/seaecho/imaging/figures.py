@@ -10,6 +10,10 @@
   B = |HH + VV|/sqrt 2 in the back-scattering alignment, ``imaging.speckle``), the three
   amplitudes on one linear scale (filtered when present), so that a colour says which
   mechanism dominates.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

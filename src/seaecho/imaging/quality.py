@@ -31,6 +31,9 @@ References
    Data*, Artech House, 2005, section 2.4 (IRF, resolution, PSLR, ISLR).
 .. [2] J. C. Curlander and R. N. McDonough, *Synthetic Aperture Radar: Systems and Signal
    Processing*, Wiley, 1991, section 3.2.3.
+.. [3] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations

@@ -52,6 +52,9 @@ References
 .. [2] N. J. Willis, *Bistatic Radar*, SciTech, 2005, eqs 3.1 and 3.23.
 .. [3] J. A. Kong, *Electromagnetic Wave Theory*, EMW, 2000 (effective aperture
    A_e = G lambda^2 / 4 pi).
+.. [4] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations

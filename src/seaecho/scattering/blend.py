@@ -16,7 +16,9 @@ paper's "Kirchhoff valid within +-20 deg of specular"; ``w2 = 0.1`` at
 
 References
 ----------
-.. [1] Paper eqs 10-11 (section III-C).
+.. [1] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper"), eqs 10-11 (section III-C).
 .. [2] Thorsos, E. I. and Jackson, D. R. (1989). The validity of the perturbation
    approximation for rough surface scattering using a Gaussian roughness spectrum.
    *J. Acoust. Soc. Am.* 86(1), 261-277.

@@ -46,9 +46,9 @@ Within one mechanism the channels are fully coherent (``|gamma_HHVV| = 1``, phas
 coherence to ``|E a_hh a_vv^*| / sqrt(E|a_hh|^2 E|a_vv|^2)`` from P5
 (:func:`hhvv_coherence`). Each ``|a_mn|^2`` is exponentially distributed.
 
-References
-----------
-Implementation. Eqs P1-P5 are functions over an array namespace
+Implementation
+--------------
+Eqs P1-P5 are functions over an array namespace
 (:mod:`seaecho.backend`): :func:`mechanisms` gives each mechanism's matrix and channel
 weights, :func:`mechanism_sigma` eq P3 and :func:`speckle` eq P4. The numpy path
 (``backend="numpy"``) and the fused Dr.Jit kernel (``backend="drjit"``, CPU or CUDA by
@@ -59,7 +59,9 @@ summing to 1) and one more speckle draw: eqs P3-P5 sum over the entries.
 
 References
 ----------
-.. [1] Paper eqs 1-3 and 7-11.
+.. [1] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper"), eqs 1-3 and 7-11.
 .. [2] Ulaby, F. T. and Long, D. G. (2014). *Microwave Radar and Radiometric Remote
    Sensing*, sec. 5-8 (speckle as a circular complex Gaussian field).
 .. [3] Lee, J.-S. and Pottier, E. (2009). *Polarimetric Radar Imaging*, CRC, ch. 4

@@ -38,6 +38,9 @@ References
    surfaces: application to the natural rough surfaces in X-band. *Waves Random Media*
    11(2), 61-89.
 .. [4] Cox, C. and Munk, W. (1954). *J. Opt. Soc. Am.* 44(11), 838-850.
+.. [5] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations

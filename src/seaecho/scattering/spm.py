@@ -55,6 +55,9 @@ References
    11(2), 61-89.
 .. [6] Plant, W. J. (1990). Bragg scattering of electromagnetic waves from the air/sea
    interface. In *Surface Waves and Fluxes*, Vol. II, Kluwer, 41-108.
+.. [7] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations

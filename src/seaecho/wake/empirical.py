@@ -37,6 +37,9 @@ References
 .. [3] Michell, J. H. (1893). The highest waves in water. *Phil. Mag.* 36, 430-437.
 .. [4] Williams, J. M. (1981). Limiting gravity waves in water of finite depth. *Phil.
    Trans. R. Soc. A* 302, 139-188.
+.. [5] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations
