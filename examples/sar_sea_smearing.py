@@ -50,7 +50,7 @@ def scene(motion: str, n_pulses: int | None = None):
     n = int(2 * HALF_SPAN / V * PRF) if n_pulses is None else n_pulses
     return parse_scene({
         "sea": {"spectrum": "elfouhaily", "spreading": "elfouhaily", "wind_speed_m_s": 6.0,
-                "size_x_m": SIZE, "nx": 64},
+                "size_x_m": SIZE, "nx": int(SIZE)},
         "run": {"seed": 5},
         "scattering": {"model": "blend", "sea_motion": motion},
         "tracing": {"mode": "analytic", "shadowing": "smith"},
@@ -72,7 +72,9 @@ def image(motion: str, workdir: Path):
         warnings.simplefilter("ignore")
         sim = Simulation(scene(motion))
         raw = sim.run(workdir / f"{motion}.nc", progress=False)
-        cfg = ImageConfig(pixel_m=0.5, extent_m=(-40.0, 40.0, -56.0, 56.0))
+        half = 0.5 * SIZE
+        cfg = ImageConfig(pixel_m=0.5, extent_m=(-half - 8.0, half + 8.0, -half - 24.0,
+                                                 half + 24.0))
         img = focus(raw, cfg)
     return sim, img
 
@@ -83,10 +85,24 @@ def edge_fit(y, profile):
         c, h, s, a = p
         return 0.5 * a * (special.erf((y - c + h) / (np.sqrt(2) * s))
                           - special.erf((y - c - h) / (np.sqrt(2) * s)))
-    p0 = [0.0, SIZE / 2, 1.0, np.median(profile[np.abs(y) < 20])]
+    p0 = [0.0, SIZE / 2, 1.0, np.median(profile[np.abs(y) < 0.3 * SIZE])]
     res = optimize.least_squares(lambda p: model(p, y) - profile, p0,
-                                 bounds=([-20, 10, 0.05, 0], [20, 50, 20, np.inf]))
+                                 bounds=([-20, 0.25 * SIZE, 0.05, 0],
+                                         [20, 0.75 * SIZE, 20, np.inf]))
     return res.x, model(res.x, y)
+
+
+def measure(motion: str, workdir: Path) -> dict:
+    """Edge width, centre and the velocity-bunching prediction of one image [m]."""
+    sim, img = image(motion, workdir)
+    a = np.abs(np.asarray(img["image"].sel(channel="VV").values)) ** 2
+    y, x = img["y"].values, img["x"].values
+    prof = a[:, np.abs(x) < 0.3 * SIZE].mean(axis=1)
+    p, _ = edge_fit(y, prof)
+    c = orbital_velocity_covariance(sim.sea.spectrum, np.pi / SIZE, sim.sea_model.k_cut)
+    los = np.array([-np.sin(INC), 0.0, np.cos(INC)])
+    return {"sigma": float(p[2]), "centre": float(p[0]),
+            "predicted": float(R / V * np.sqrt(los @ c @ los))}
 
 
 def main(outdir: str = "docs/figures") -> Path:
@@ -97,10 +113,9 @@ def main(outdir: str = "docs/figures") -> Path:
     with tempfile.TemporaryDirectory() as tmp:
         for ax, motion in zip(axes[:2], ("held", "evolving"), strict=True):
             sim, img = image(motion, Path(tmp))
-            key = "sigma0" if "sigma0" in img else "image"
             a = np.abs(np.asarray(img["image"].sel(channel="VV").values)) ** 2
             y, x = img["y"].values, img["x"].values
-            inside = np.abs(x) < 20.0  # range lines well inside the tile
+            inside = np.abs(x) < 0.3 * SIZE  # range lines well inside the tile
             prof = a[:, inside].mean(axis=1)
             p, fit = edge_fit(y, prof)
             spec = sim.sea.spectrum
@@ -123,7 +138,6 @@ def main(outdir: str = "docs/figures") -> Path:
             ax.set_title(f"{motion} sea: |image|^2 [dB]")
             axes[2].plot(y, prof / p[3], label=f"{motion} (edge sigma {p[2]:.1f} m)")
             axes[2].plot(y, fit / p[3], "k:", lw=1)
-            del key
     axes[2].set_xlabel("azimuth y [m]")
     axes[2].set_ylabel("mean intensity over range (normalised)")
     axes[2].set_title(f"edges: (R/V) sigma_r = {pred:.1f} m predicted")
