@@ -16,6 +16,10 @@ evolving with the geometry updated every ``--update`` pulses (phase centres and 
 evolving every pulse), and evolving with a new surface every pulse. Each configuration is
 timed on ``--pulses`` consecutive pulses after two warm-up pulses (JIT compilation, BVH).
 The machine is shared: the load average is printed with the timings.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

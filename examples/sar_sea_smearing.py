@@ -14,6 +14,10 @@ against azimuth) is fitted with an error function; its width is compared with si
 The speckle's coherence time tau_c limits the azimuth resolution to about
 lambda R / (2 V tau_c) (Raney 1980): the azimuth correlation length of the complex image
 is printed for both. Writes ``dynamics_sar_smearing.png``.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

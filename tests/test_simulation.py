@@ -1,4 +1,9 @@
-"""The orchestrator: streamed runs, reproducibility, interrupts, and the clutter radar equation."""
+"""The orchestrator: streamed runs, reproducibility, interrupts, and the clutter radar equation.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 

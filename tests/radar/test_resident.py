@@ -7,6 +7,10 @@ same bytes (a dropped visibility factor, a facet order changed by the compaction
 wrong window bound or speckle draw would each change them). The GPU path cannot run
 here: its plumbing (device echo, cufinufft calls on array pointers) is exercised on the
 CPU back end with a stand-in for cufinufft that reads the same pointers.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

@@ -1,6 +1,10 @@
 """Breaking zones as the third per-facet mechanism (eq P7) and their placement.
 
 KHCC03 is Kudryavtsev, Hauser, Caudal & Chapron (2003), J. Geophys. Res. 108(C3), 8054.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 import numpy as np
@@ -143,3 +147,33 @@ def test_speckle_covariance_includes_the_breaking_mechanism():
     ref = t.covariance()[0]
     assert np.abs(cov - ref).max() < 0.03 * np.abs(ref).max()
     np.testing.assert_allclose(np.diag(ref).real, t.sigma()[0], rtol=1e-12)
+
+
+def test_facet_breaking_is_khcc03_eq1_combination_of_the_facet_terms():
+    # KHCC03 eq 1 on each facet: sigma = (1 - q) sigma_regular + q sigma_wb, sigma_wb
+    # the facet covered by breaking zones (q = 1) and sigma_regular the paper's blend
+    # (q = 0). Keeping the regular mechanisms at full weight on the breaking zones'
+    # area (a dropped 1 - q), or a wrong weight of the breaking term, fails.
+    n_i, n_s, normal = _geometry(200, seed=8)
+    args = (n_i, n_s, normal, K, EPS, _table(), 0.01, 0.007, 0.4)
+    q = np.random.default_rng(9).uniform(0.0, 0.4, 200)
+    kw = dict(tilt=TiltQuadrature.unscented(0.01, 0.007), breaking_tilt=0.03)
+    regular, wb, mixed = (facet_terms(*args, breaking_fraction=f, backend="numpy",
+                                      **kw).sigma() for f in (0.0, 1.0, q))
+    np.testing.assert_allclose(mixed, (1 - q)[:, None] * regular + q[:, None] * wb,
+                               rtol=1e-12, atol=1e-300)
+    assert np.any(wb[:, 0] > 0) and np.any(regular[:, 3] > 0)  # not a vacuous 0 = 0
+
+
+def test_tilt_average_without_unresolved_slopes_is_the_papers_facet_term():
+    # Eq P6's limiting case: with no unresolved slopes (s_u = s_c = 0) every node is the
+    # facet itself and the average is the paper's Bragg term of the facet's plane (eq P2,
+    # the paper's eqs 8-9): the weights of the five-point rule sum to 1 (Julier &
+    # Uhlmann 2004). A centre weight of 1 (or any weights not summing to 1) fails.
+    n_i, n_s, normal = _geometry(200, seed=10)
+    args = (n_i, n_s, normal, K, EPS, _table(), 0.01, 0.007, 0.4)
+    plain = facet_terms(*args, backend="numpy").sigma()
+    flat = facet_terms(*args, tilt=TiltQuadrature.unscented(0.0, 0.0),
+                       backend="numpy").sigma()
+    np.testing.assert_allclose(flat, plain, rtol=1e-12, atol=1e-300)
+    assert sum(TiltQuadrature.unscented(0.0, 0.0).weights) == pytest.approx(1.0, abs=1e-15)

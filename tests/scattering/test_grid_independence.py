@@ -15,6 +15,10 @@ from 0.125 to 2 m). With the sub-facet slopes that the facets miss (eq U1) and t
 term averaged over them (eq P6), co-pol stays within 0.5 dB and cross-pol within 1 dB;
 and the mean-plane limit (the facet sum equals the two-scale model, eq T1, of the total
 slope variance: Khenchaf & Airiau 2000) is tested in tests/test_end_to_end.py.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 import numpy as np

@@ -9,6 +9,10 @@ resolve (docs/scattering.md, eq P6), which makes sigma0 independent of the grid 
 (``[radar] sea_update_pulses``): ``"held"`` freezes the sea and its speckle (the paper's
 section V-B), ``"evolving"`` moves the facets with the waves and evolves their speckle
 (Bragg dispersion, orbital motion, finite lifetimes: docs/dynamics.md).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

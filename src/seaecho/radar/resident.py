@@ -33,6 +33,10 @@ values; tests). The kernel holds the facets where the surface put them, which is
 sea (``[scattering] sea_motion = "held"``, the paper's); an evolving sea (phase centres
 carried between updates, speckle evolving at each pulse) runs the reference path
 (:func:`resident_sea` returns None; docs/dynamics.md).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

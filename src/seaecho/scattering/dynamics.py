@@ -92,6 +92,10 @@ References
    breaking waves. *Phil. Trans. R. Soc. Lond. A* 331, 735-800.
 .. [7] Barrick, D. E. (1968). Rough surface scattering based on the specular point
    theory. *IEEE Trans. Antennas Propag.* 16(4), 449-454.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

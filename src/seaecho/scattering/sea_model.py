@@ -7,6 +7,10 @@ their height spectrum at the Bragg vector (roughness band, grid Nyquist to 20 k)
 the small-perturbation part. :func:`seaecho.build.build_sea_model` makes the one of a
 scene; the simulation, ``seaecho compare`` and the tracing stage's sub-facet shadowing
 all read this one object, so they cannot disagree.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
