@@ -416,12 +416,19 @@ def shadow_test(mi_scenes: Sequence, origins: Sequence, directions: Sequence, ma
         True where the segment hits something (the scenes' hit masks combined by Dr.Jit,
         not read back).
     """
-    _, mi, _ = mitsuba_modules(active_variant() if variant is None else variant)
+    dr, mi, _ = mitsuba_modules(active_variant() if variant is None else variant)
     ray = mi.Ray3f(mi.Point3f(*(mi.Float(a) for a in origins)),
                    mi.Vector3f(*(mi.Float(a) for a in directions)))
     ray.maxt = mi.Float(maxt)
+    # OptiX (CUDA variants) binds one shader table per kernel: with several scenes the
+    # rays are evaluated first and each scene's test is a kernel of its own.
+    split = len(mi_scenes) > 1 and mi.variant().startswith("cuda")
+    if split:
+        dr.eval(ray)
     blocked = None
     for sc in mi_scenes:  # combined on the device
         t = sc.ray_test(ray)
+        if split:
+            dr.eval(t)
         blocked = t if blocked is None else blocked | t
     return blocked

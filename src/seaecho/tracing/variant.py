@@ -62,6 +62,10 @@ def set_variant(variant: str | None = None) -> str:
     if variant.startswith("cuda") and not cuda_available():
         raise ValueError(f"variant = {variant!r}: no CUDA GPU available here; use "
                          f"{DEFAULT_VARIANT!r}")
+    if variant.startswith("cuda"):
+        from ..backend import exact_cuda_math
+
+        exact_cuda_math()
     if current is not None and "sionna.rt" in __import__("sys").modules:
         raise ValueError(f"variant = {variant!r}: Mitsuba already runs {current!r} in this "
                          "process with Sionna RT loaded; start a new process")
