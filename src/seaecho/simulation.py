@@ -298,12 +298,29 @@ class Simulation:
         """
         from .io.run import write_run
 
-        return write_run(path, self.static_dataset(), n_pulses=self.radar.n_pulses,
-                         n_channels=len(self.radar.channels),
-                         n_samples=self.radar.window.n_samples,
-                         pulse=lambda p: self.pulse(p), compress=lambda raw: self.compress(raw),
-                         weighting=self.models.radar.range_weighting, progress=progress,
-                         chunk=chunk)
+        return write_run(path, self.static_dataset(), **self._pulse_loop(progress, chunk))
+
+    def dataset(self, progress: bool = True, chunk: int = 16):
+        """Simulate every pulse and return the dataset :meth:`run` writes, in memory
+        (:func:`seaecho.io.run.run_in_memory`: the same pulses, the same bytes).
+
+        Memory: ``raw`` and ``compressed``, pulses x channels x samples x 32 bytes, plus
+        the static part (:meth:`static_dataset`).
+
+        Returns
+        -------
+        xarray.Dataset
+        """
+        from .io.run import run_in_memory
+
+        return run_in_memory(self.static_dataset(), **self._pulse_loop(progress, chunk))
+
+    def _pulse_loop(self, progress: bool, chunk: int) -> dict:
+        """Arguments of :func:`seaecho.io.run.pulse_blocks` for this run's pulses."""
+        return {"n_pulses": self.radar.n_pulses, "n_channels": len(self.radar.channels),
+                "n_samples": self.radar.window.n_samples, "pulse": self.pulse,
+                "compress": self.compress, "weighting": self.models.radar.range_weighting,
+                "progress": progress, "chunk": chunk}
 
 
 __all__ = ["POLARISATIONS", "SeaEcho", "Simulation"]

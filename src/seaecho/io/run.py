@@ -18,7 +18,7 @@ from __future__ import annotations
 import contextlib
 import os
 import warnings
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import numpy as np
@@ -143,6 +143,47 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
     return xr.Dataset(data, coords=coords, attrs=out)
 
 
+#: Attributes of the ``raw`` and ``compressed`` variables (file and in-memory datasets).
+RAW_ATTRS = {"units": "sqrt(W)", "long_name": "complex baseband raw echo"}
+COMPRESSED_ATTRS = {"units": "sqrt(W)", "long_name": "range-compressed echo"}
+
+
+def pulse_blocks(n_pulses: int, n_channels: int, n_samples: int,
+                 pulse: Callable[[int], np.ndarray],
+                 compress: Callable[[np.ndarray], np.ndarray], *, progress: bool = True,
+                 chunk: int = 16) -> Iterator[tuple[int, int, np.ndarray, np.ndarray]]:
+    """Every pulse in order, in blocks of ``chunk``: ``(start, stop, raw, compressed)``.
+
+    The one loop behind :func:`write_run` (file) and :func:`run_in_memory`, so that both
+    hold the same bytes. The arrays of a block are reused by the next one: copy them or
+    write them before asking for the next block.
+
+    Parameters
+    ----------
+    n_pulses, n_channels, n_samples : int
+        Shape of ``raw`` and ``compressed``.
+    pulse : callable
+        ``p -> (n_channels, n_samples)`` raw samples of pulse p [sqrt(W)].
+    compress : callable
+        Range compression of a block of raw pulses (same shape).
+    progress : bool
+        Show a tqdm progress bar.
+    chunk : int
+        Pulses per block (memory: chunk x channels x samples x 32 bytes).
+    """
+    from tqdm import tqdm
+
+    chunk = max(1, min(chunk, n_pulses))
+    buf = np.empty((chunk, n_channels, n_samples), dtype=np.complex128)
+    with tqdm(total=n_pulses, unit="pulse", disable=not progress, desc="seaecho run") as bar:
+        for start in range(0, n_pulses, chunk):
+            stop = min(start + chunk, n_pulses)
+            for i, p in enumerate(range(start, stop)):
+                buf[i] = pulse(p)
+                bar.update(1)
+            yield start, stop, buf[: stop - start], compress(buf[: stop - start])
+
+
 def write_run(path: str | os.PathLike, static, *, n_pulses: int, n_channels: int,
               n_samples: int, pulse: Callable[[int], np.ndarray],
               compress: Callable[[np.ndarray], np.ndarray], weighting: str = "none",
@@ -155,48 +196,58 @@ def write_run(path: str | os.PathLike, static, *, n_pulses: int, n_channels: int
         Output netCDF file (h5netcdf, complex variables as HDF5 compounds).
     static : xarray.Dataset
         :func:`run_dataset`.
-    n_pulses, n_channels, n_samples : int
-        Shape of ``raw`` and ``compressed``.
-    pulse : callable
-        ``p -> (n_channels, n_samples)`` raw samples of pulse p [sqrt(W)].
-    compress : callable
-        Range compression of a block of raw pulses (same shape).
+    n_pulses, n_channels, n_samples, pulse, compress, progress, chunk
+        As :func:`pulse_blocks`.
     weighting : str
         Range weighting (an attribute of ``compressed``).
-    progress : bool
-        Show a tqdm progress bar.
-    chunk : int
-        Pulses buffered per write (memory: chunk x channels x samples x 32 bytes).
     """
     import h5netcdf
-    from tqdm import tqdm
 
     from .dataset import atomic_path
 
-    chunk = max(1, min(chunk, n_pulses))
     with atomic_path(path) as tmp, quiet_invalid_netcdf():
         static.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=True)
         with h5netcdf.File(tmp, "a", invalid_netcdf=True) as f:
-            raw_v = f.create_variable("raw", ("pulse", "channel", "fast_time"),
-                                      dtype=np.complex128, chunks=(1, n_channels, n_samples))
-            raw_v.attrs.update(units="sqrt(W)", long_name="complex baseband raw echo")
-            rc_v = f.create_variable("compressed", ("pulse", "channel", "fast_time"),
-                                     dtype=np.complex128, chunks=(1, n_channels, n_samples))
-            rc_v.attrs.update(units="sqrt(W)", long_name="range-compressed echo",
-                              weighting=weighting)
-            buf = np.empty((chunk, n_channels, n_samples), dtype=np.complex128)
-            bar = tqdm(total=n_pulses, unit="pulse", disable=not progress, desc="seaecho run")
-            try:
-                for start in range(0, n_pulses, chunk):
-                    stop = min(start + chunk, n_pulses)
-                    for i, p in enumerate(range(start, stop)):
-                        buf[i] = pulse(p)
-                        bar.update(1)
-                    raw_v[start:stop] = buf[: stop - start]
-                    rc_v[start:stop] = compress(buf[: stop - start])
-            finally:
-                bar.close()
+            raw_v, rc_v = (f.create_variable(name, ("pulse", "channel", "fast_time"),
+                                             dtype=np.complex128,
+                                             chunks=(1, n_channels, n_samples))
+                           for name in ("raw", "compressed"))
+            raw_v.attrs.update(RAW_ATTRS)
+            rc_v.attrs.update(COMPRESSED_ATTRS, weighting=weighting)
+            for start, stop, raw, compressed in pulse_blocks(
+                    n_pulses, n_channels, n_samples, pulse, compress, progress=progress,
+                    chunk=chunk):
+                raw_v[start:stop] = raw
+                rc_v[start:stop] = compressed
     return Path(path)
+
+
+def run_in_memory(static, *, n_pulses: int, n_channels: int, n_samples: int,
+                  pulse: Callable[[int], np.ndarray],
+                  compress: Callable[[np.ndarray], np.ndarray], weighting: str = "none",
+                  progress: bool = True, chunk: int = 16):
+    """The dataset that :func:`write_run` writes, held in memory.
+
+    Same arguments as :func:`write_run` but the path. Memory: the static dataset plus
+    ``raw`` and ``compressed``, n_pulses x n_channels x n_samples x 32 bytes.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``static`` with the variables ``raw`` and ``compressed`` (pulse, channel,
+        fast_time) complex128 [sqrt(W)], their attributes as in the file.
+    """
+    shape = (n_pulses, n_channels, n_samples)
+    raw_a, rc_a = np.empty(shape, np.complex128), np.empty(shape, np.complex128)
+    for start, stop, raw, compressed in pulse_blocks(
+            n_pulses, n_channels, n_samples, pulse, compress, progress=progress, chunk=chunk):
+        raw_a[start:stop] = raw
+        rc_a[start:stop] = compressed
+    dims = ("pulse", "channel", "fast_time")
+    ds = static.copy()
+    ds["raw"] = (dims, raw_a, dict(RAW_ATTRS))
+    ds["compressed"] = (dims, rc_a, dict(COMPRESSED_ATTRS, weighting=weighting))
+    return ds
 
 
 @contextlib.contextmanager
@@ -207,4 +258,5 @@ def quiet_invalid_netcdf():
         yield
 
 
-__all__ = ["quiet_invalid_netcdf", "run_dataset", "write_run"]
+__all__ = ["COMPRESSED_ATTRS", "RAW_ATTRS", "pulse_blocks", "quiet_invalid_netcdf",
+           "run_dataset", "run_in_memory", "write_run"]
