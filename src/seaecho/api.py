@@ -835,25 +835,28 @@ def image_config(raw: xr.Dataset | PathLike | Mapping[str, Any] | None = None,
     """
     import json
 
+    import xarray as xr
     from pydantic import ValidationError
 
     from .config.image import ImageConfig
 
     if raw is None:
         values: dict[str, Any] = {}
+    elif isinstance(raw, xr.Dataset):  # before Mapping: a Dataset is one
+        values = dict(json.loads(raw.attrs.get("scene_json", "{}")).get("image") or {})
+    elif isinstance(raw, str | os.PathLike):
+        try:
+            with open_dataset(raw) as ds:
+                text = ds.attrs.get("scene_json", "{}")
+        except (OSError, ValueError) as exc:
+            raise SceneError(f"{os.fspath(raw)}: not a readable netCDF dataset "
+                             f"({exc})") from None
+        values = dict(json.loads(text).get("image") or {})
     elif isinstance(raw, Mapping):
         values = dict(raw)
     else:
-        if isinstance(raw, str | os.PathLike):
-            try:
-                with open_dataset(raw) as ds:
-                    text = ds.attrs.get("scene_json", "{}")
-            except (OSError, ValueError) as exc:
-                raise SceneError(f"{os.fspath(raw)}: not a readable netCDF dataset "
-                                 f"({exc})") from None
-        else:
-            text = raw.attrs.get("scene_json", "{}")
-        values = dict(json.loads(text).get("image") or {})
+        raise SceneError(f"raw: expected a dataset, a file or an [image] dict, got "
+                         f"{type(raw).__name__}")
     for name, v in fields.items():
         if v is not None:
             values[name] = tuple(v) if isinstance(v, list) else v
