@@ -626,8 +626,8 @@ def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
           phi_s_deg: ArrayLike = 0.0, scene: SceneModel | None = None,
           frequency_hz: float | None = None, wind_speed_m_s: float | None = None,
           wind_direction_deg: float | None = None, spectrum: str | None = None,
-          spreading: str | None = None, fetch_m: float | None = None,
-          temperature_c: float | None = None, salinity_psu: float | None = None,
+          spreading: str | None = None, spreading_s: float | None = None,
+          fetch_m: float | None = None, temperature_c: float | None = None, salinity_psu: float | None = None,
           permittivity_model: str = "meissner-wentz", slopes: str = "gaussian",
           cut_ratio: float | None = None) -> xr.DataArray:
     """Mean-plane bistatic scattering coefficients sigma_mn of a wind sea
@@ -660,6 +660,8 @@ def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
     spectrum, spreading : str, optional
         Wave spectrum (``elfouhaily``, ``pierson-moskowitz``, ``jonswap``) and
         spreading (``elfouhaily``, ``longuet-higgins``); default Elfouhaily.
+    spreading_s : float, optional
+        Longuet-Higgins spreading exponent s [-] (default 1, the paper's).
     fetch_m : float, optional
         Fetch [m] (JONSWAP).
     temperature_c, salinity_psu : float, optional
@@ -697,7 +699,8 @@ def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
     if model not in MEAN_PLANE_MODELS:
         raise SceneError(f"model = {model!r}: allowed {', '.join(MEAN_PLANE_MODELS)}")
     sea_args = {"wind_speed_m_s": wind_speed_m_s, "wind_direction_deg": wind_direction_deg,
-                "spectrum": spectrum, "spreading": spreading, "fetch_m": fetch_m,
+                "spectrum": spectrum, "spreading": spreading, "spreading_s": spreading_s,
+                "fetch_m": fetch_m,
                 "temperature_c": temperature_c, "salinity_psu": salinity_psu}
     values = dict(SIGMA_DEFAULTS)
     spec = None
@@ -743,7 +746,7 @@ def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
             spec = DirectionalSpectrum(
                 spectrum=values["spectrum"], spreading=values["spreading"], u19_5=u,
                 wind_direction=float(np.radians(values["wind_direction_deg"])),
-                fetch=values.get("fetch_m"))
+                fetch=values.get("fetch_m"), s=float(values.get("spreading_s") or 1.0))
     except ValueError as exc:
         raise SceneError(str(exc)) from None
     grids = np.meshgrid(*(np.atleast_1d(a) for _, a in named), indexing="ij")
@@ -758,7 +761,7 @@ def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
     attrs = {"units": "m2 m-2", "long_name": f"sigma_mn of the sea, {model} model",
              "model": model, "frequency_hz": f, "wind_speed_m_s": u,
              "wind_direction_deg": float(np.degrees(spec.wind_direction)),
-             "spectrum": spec.spectrum, "spreading": spec.spreading,
+             "spectrum": spec.spectrum, "spreading": spec.spreading, "spreading_s": spec.s,
              "temperature_c": float(values["temperature_c"]),
              "salinity_psu": float(values["salinity_psu"]), "eps_r_real": eps.real,
              "eps_r_imag": eps.imag, "slopes": slopes, "cut_ratio": cut}
