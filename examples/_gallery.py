@@ -6,6 +6,10 @@ mode: small grid, few pulses, a few seconds; ``tests/examples`` runs every scrip
 warning once, in one line, as the command line does: the paper's scenes are outside some
 models' domains on purpose (e.g. the small-perturbation method with k h > 0.3 on a
 0.25 m grid), and saying so is part of the result.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

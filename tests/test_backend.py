@@ -210,3 +210,49 @@ def test_cuda_kernels_equal_numpy():
                           "test_backend._cuda_parity()"], cwd=str(Path(__file__).parent),
                          capture_output=True, text=True)
     assert res.returncode == 0, res.stderr[-3000:]
+
+
+@needs_drjit
+def test_read_only_arrays_stay_on_the_device_while_they_live():
+    # A held sea's arrays are copied once: the same read-only array gives the same
+    # device value; a writeable one is copied at every call (it could change under its
+    # copy); the copy goes when the numpy array does.
+    import gc
+
+    xp = backend.drjit_namespace()
+    a = np.arange(5.0)
+    a.setflags(write=False)
+    first = Boundary(xp, 5).array(a)
+    assert Boundary(xp, 5).array(a) is first
+    np.testing.assert_array_equal(first.numpy(), a)
+    b = np.arange(5.0)
+    assert Boundary(xp, 5).array(b) is not Boundary(xp, 5).array(b)
+    v = np.arange(15.0).reshape(5, 3)
+    v.setflags(write=False)
+    assert Boundary(xp, 5).vec3(v) is Boundary(xp, 5).vec3(v)
+    assert Boundary(xp, 5).vec3(first * 0 + xp.Array3(1.0, 2.0, 3.0)) is not None
+    keys = [(xp.name, id(a), "array"), (xp.name, id(v), "vec3")]
+    assert all(k in backend._RESIDENT for k in keys)
+    del a, v
+    gc.collect()
+    assert not any(k in backend._RESIDENT for k in keys)
+
+
+@needs_drjit
+def test_data_pointer_is_the_arrays_memory():
+    xp = backend.drjit_namespace()
+    a = xp.Float(np.linspace(0.0, 1.0, 6))
+    xp.eval(a)
+    assert backend.data_pointer(a) == xp.host(a).ctypes.data
+    view = backend.cuda_array(a, np.complex128, (3,))
+    assert view.__cuda_array_interface__["shape"] == (3,)
+    with pytest.raises(ValueError, match="needs 64 bytes"):
+        backend.cuda_array(a, np.complex128, (4,))
+
+
+def test_numpy_while_loop_steps_each_entry_until_its_condition_fails():
+    # As Dr.Jit's symbolic loop: an entry whose condition is false keeps its value
+    i, s = NUMPY.while_loop((np.array([0, 2, 5]), np.zeros(3)),
+                            lambda i, s: i < 4, lambda i, s: (i + 1, s + i))
+    np.testing.assert_array_equal(i, [4, 4, 5])
+    np.testing.assert_array_equal(s, [6.0, 5.0, 0.0])

@@ -35,6 +35,7 @@ LAYERS = [
     {"build"},
     {"imaging"},
     {"simulation"},
+    {"distributed"},
     {"api"},
     {"cli"},
     {"__main__"},

@@ -100,16 +100,10 @@ def test_scattering_does_not_reach_into_geometry_buffers_or_later_stages():
             assert not bad, f"{name} imports {sorted(bad)}"
 
 
-#: Modules that still write a Dr.Jit kernel of their own instead of formulas over the
-#: backend's namespace (to be moved onto it; listed so that no new one appears unseen).
-OWN_DRJIT_KERNELS = {"imaging/backprojection.py"}
-
-
 def test_only_the_backend_and_tracing_import_drjit_mitsuba_sionna():
     for name, tree in _modules().items():
         mods = _imports(tree, name)
         if any(m == "drjit" or m.startswith("drjit.") for m in mods):
-            assert (name == "backend.py" or name.startswith("tracing/")
-                    or name in OWN_DRJIT_KERNELS), name
+            assert name == "backend.py" or name.startswith("tracing/"), name
         if any(m.split(".")[0] in ("mitsuba", "sionna") for m in mods):
             assert name.startswith("tracing/"), name

@@ -34,6 +34,10 @@ ending ``_hz``, ``_m``, ``_s``...). Bad input raises :class:`seaecho.config.Scen
 (a ``ValueError``) naming the field or parameter, the value and what is allowed.
 Importing this module is cheap (pydantic and the scene schema): numpy, xarray and the
 simulation stages are imported by the functions that need them.
+
+"The paper": Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
@@ -244,8 +248,9 @@ def _scene(scene) -> SceneModel:
 
 
 # -------------------------------------------------------------------------- simulation
-def _first_pulses(scene: SceneModel, n: int) -> SceneModel:
-    """The scene limited to its first ``n`` pulses (sigma-map pulse kept inside)."""
+def first_pulses(scene: SceneModel, n: int) -> SceneModel:
+    """The scene limited to its first ``n`` pulses, the sigma-map pulse kept inside
+    (``simulate(pulses=n)``, ``--pulses N``)."""
     if isinstance(n, bool) or not isinstance(n, int) or n < 1:
         raise SceneError(f"pulses = {n!r}: must be an integer >= 1")
     n = min(n, scene.radar.n_pulses)
@@ -278,21 +283,25 @@ def _format_bytes(n: float) -> str:
 
 def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | None = None,
              progress: bool = True, base_dir: PathLike | None = None,
-             max_memory_bytes: float | None = None) -> xr.Dataset:
+             max_memory_bytes: float | None = None, workers: int | None = None,
+             scheduler: str | None = None, block_pulses: int | None = None,
+             resume: bool = False) -> xr.Dataset:
     """Simulate the radar echoes of a scene (``seaecho run``).
 
     Every pulse of ``[radar]``: sea clutter, targets, hull echoes, thermal noise, then
     range compression, through the same code as ``seaecho run``
-    (:class:`seaecho.simulation.Simulation`, :mod:`seaecho.io.run`): the same variables,
-    attributes and bytes for the same scene and seed.
+    (:meth:`seaecho.simulation.Simulation.run` and ``dataset``, :mod:`seaecho.io.run`):
+    the same variables, attributes and bytes for the same scene and seed, computed in
+    this process or on a Dask cluster (:mod:`seaecho.distributed`).
 
     Parameters
     ----------
     scene : Scene
         Needs ``[radar]`` and ``[transmitter]``.
     path : path, optional
-        Stream the pulses to this netCDF file (atomically, memory bounded by a block of
-        pulses) and return it opened lazily; without it the run is held in memory.
+        Stream the pulses to this netCDF file (atomically, memory bounded by a few
+        blocks of pulses) or Zarr store (``*.zarr``, block by block, resumable) and
+        return it opened lazily; without it the run is held in memory.
     pulses : int, optional
         Only the first ``pulses`` pulses (a quick look; ``seaecho run --pulses``).
     progress : bool
@@ -303,6 +312,16 @@ def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | N
     max_memory_bytes : float, optional
         In memory only: the most the run's arrays may take [bytes] (default half the
         memory the system has available).
+    workers : int, optional
+        Compute the blocks of pulses on a local Dask cluster of this many worker
+        processes (``seaecho run --workers``; same bytes as a serial run).
+    scheduler : str, optional
+        Or on an existing Dask cluster, e.g. ``"tcp://host:8786"`` (``--scheduler``).
+    block_pulses : int, optional
+        Pulses per block of work and per Zarr chunk (default about 16, aligned with the
+        held sea and the occlusion refresh: :func:`seaecho.io.run.block_size`).
+    resume : bool
+        Zarr ``path`` only: continue an interrupted run of the same scene.
 
     Returns
     -------
@@ -315,10 +334,17 @@ def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | N
     Raises
     ------
     SceneError
-        No ``[radar]`` or ``[transmitter]``, a bad ``pulses``, a scene the stages
-        refuse, or (in memory) a run larger than ``max_memory_bytes``.
+        No ``[radar]`` or ``[transmitter]``, a bad ``pulses``, ``workers``,
+        ``block_pulses`` or ``path``, both ``workers`` and ``scheduler``, a scene the
+        stages refuse, or (in memory) a run larger than ``max_memory_bytes``.
+    seaecho.io.zarr_run.StoreError
+        A Zarr ``path`` holds an interrupted run and ``resume`` is not set, or the run
+        to continue is of another scene.
     """
+    import contextlib
+
     from .build import build_radar, build_simulation, check_scene
+    from .io.zarr_run import is_zarr
     from .radar.system import RadarSystem
     from .simulation import Simulation
 
@@ -327,23 +353,43 @@ def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | N
     if scene.radar is None or scene.transmitter is None:
         raise SceneError(f"{label}: simulate needs [radar] and [transmitter] sections")
     if pulses is not None:
-        scene = _first_pulses(scene, pulses)
+        scene = first_pulses(scene, pulses)
+    for name, value in (("workers", workers), ("block_pulses", block_pulses)):
+        if value is not None and (isinstance(value, bool) or not isinstance(value, int)
+                                  or value < 1):
+            raise SceneError(f"{name} = {value!r}: must be an integer >= 1")
+    if workers is not None and scheduler is not None:
+        raise SceneError(f"workers = {workers}, scheduler = {scheduler!r}: give one of them "
+                         "(a local cluster, or an existing one)")
     if path is None:
+        if resume:
+            raise SceneError("resume = True: needs a Zarr path (*.zarr) to continue")
         _check_fits_in_memory(scene, RadarSystem(build_radar(scene)), max_memory_bytes)
     else:
         path = Path(path)
         if str(path.parent) and not path.parent.is_dir():
             raise SceneError(f"path = {os.fspath(path)!r}: directory {path.parent} does not "
                              "exist")
+        if resume and not is_zarr(path):
+            raise SceneError(f"resume = True: {os.fspath(path)} is not a Zarr store "
+                             "(*.zarr); a netCDF run is written atomically and starts over")
     if scene.radar.sea_clutter:
         check_scene(scene)  # SamplingWarning if the tile or the grid is too coarse
+    base = _base_dir(scene, base_dir)
     try:
-        sim = Simulation.from_models(build_simulation(scene, _base_dir(scene, base_dir)))
+        sim = Simulation.from_models(build_simulation(scene, base))
     except ValueError as exc:
         raise SceneError(f"{label}: {exc}") from None
-    if path is None:
-        return sim.dataset(progress=progress)
-    sim.run(path, progress=progress)
+    with contextlib.ExitStack() as stack:
+        runner = None
+        if workers is not None or scheduler is not None:
+            from . import distributed
+
+            client = stack.enter_context(distributed.cluster(workers, scheduler))
+            runner = distributed.DaskBlocks(client, distributed.Job.of(scene, base))
+        if path is None:
+            return sim.dataset(progress=progress, chunk=block_pulses, runner=runner)
+        sim.run(path, progress=progress, chunk=block_pulses, resume=resume, runner=runner)
     return open_dataset(path)
 
 
@@ -377,13 +423,13 @@ def _check_fits_in_memory(scene, radar, limit: float | None) -> None:
 
 def open_dataset(path: PathLike) -> xr.Dataset:
     """Open a seaecho file (run, image, surface, facets) lazily, complex variables
-    included (h5netcdf). Close it, or use it in a ``with`` block."""
-    import xarray as xr
-
+    included (h5netcdf), or a run's Zarr store (``*.zarr``). Close it, or use it in a
+    ``with`` block."""
     from .io.run import quiet_invalid_netcdf
+    from .io.zarr_run import open_run
 
     with quiet_invalid_netcdf():
-        return xr.open_dataset(path, engine="h5netcdf")
+        return open_run(path)
 
 
 def save(dataset: xr.Dataset, path: PathLike) -> Path:
@@ -627,7 +673,8 @@ def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
           frequency_hz: float | None = None, wind_speed_m_s: float | None = None,
           wind_direction_deg: float | None = None, spectrum: str | None = None,
           spreading: str | None = None, spreading_s: float | None = None,
-          fetch_m: float | None = None, temperature_c: float | None = None, salinity_psu: float | None = None,
+          fetch_m: float | None = None, temperature_c: float | None = None,
+          salinity_psu: float | None = None,
           permittivity_model: str = "meissner-wentz", slopes: str = "gaussian",
           cut_ratio: float | None = None) -> xr.DataArray:
     """Mean-plane bistatic scattering coefficients sigma_mn of a wind sea

@@ -26,12 +26,17 @@ What a namespace provides
   branch in both (``Re >= 0``, imaginary part with the sign of the argument's);
 - 2x2 matrices: :class:`Mat2` (``@``, ``.T``, element-wise ``*`` and ``+``), the same
   class for both namespaces;
-- per-run and per-pulse constants: ``const``, ``cconst``, ``vconst``. In Dr.Jit they are
+- per-run and per-pulse constants: ``const``, ``cconst``, ``vconst`` (``const32`` and
+  ``single`` for the float32 parts of a kernel). In Dr.Jit they are
   *opaque* (kernel parameters): a literal would be baked into the kernel's code and a
   new value (the platform's position at each pulse) would recompile it (0.04-0.14 s);
 - table look-ups: ``index`` (float -> integer) and ``gather``;
 - ``eval(*arrays)``: evaluates every output of a kernel together (one fused kernel in
-  Dr.Jit; nothing in numpy).
+  Dr.Jit; nothing in numpy);
+- loops and indexing for kernels that walk a table (backprojection): ``arange``,
+  ``zeros``, ``while_loop(state, cond, body)`` (a symbolic loop in Dr.Jit, a Python loop
+  over whole arrays in numpy), ``gather(values, index, active)``, ``compress(mask)``
+  (indices of the true entries, in order) and ``host(a)`` (a numpy view or copy).
 
 Stage boundaries
 ----------------
@@ -43,6 +48,16 @@ input is 64-byte aligned (aligned vector loads); numpy's allocator gives 16-byte
 alignment, so buffers go through :func:`aligned` (about one pulse in two recompiled a
 kernel before, 30-90 ms each).
 
+Residency
+---------
+A read-only numpy array (``a.flags.writeable`` False: the facet geometry of a held sea,
+its speckle draws) is copied to the device once and kept there while the numpy array
+lives (:func:`resident`; :class:`Boundary` uses it): the per-pulse kernels of a held sea
+then read device memory only, and on a GPU nothing per facet crosses the bus after the
+first pulse of a block. Outputs come back by :meth:`DrJitNamespace.host`, a zero-copy
+view on the CPU (Dr.Jit's LLVM arrays live in host memory). :func:`cuda_array` hands a
+CUDA array to a library that reads ``__cuda_array_interface__`` (cufinufft).
+
 Set-up
 ------
 Dr.Jit is imported lazily, after :func:`seaecho._llvm.configure_llvm` has pointed it at a
@@ -52,9 +67,11 @@ it only reads the variant Mitsuba already runs, to refuse a mismatch.
 
 from __future__ import annotations
 
+import ctypes
 import functools
 import importlib
 import sys
+import weakref
 from collections.abc import Callable
 from typing import Any
 
@@ -74,10 +91,12 @@ __all__ = [
     "Vec3",
     "aligned",
     "check_variant",
+    "cuda_array",
     "cuda_available",
     "drjit_available",
     "drjit_namespace",
     "namespace",
+    "resident",
 ]
 
 #: Mitsuba variants seaecho runs with; their prefix selects the Dr.Jit back end.
@@ -270,6 +289,10 @@ class NumpyNamespace:
         return Vec3(x, y, z)
 
     @staticmethod
+    def is_vector(a: Any) -> bool:
+        return isinstance(a, Vec3)
+
+    @staticmethod
     def dot(a: Vec3, b: Vec3) -> Any:
         return a.x * b.x + a.y * b.y + a.z * b.z
 
@@ -306,6 +329,15 @@ class NumpyNamespace:
         return complex(value)
 
     @staticmethod
+    def const32(value: float) -> np.float32:
+        return np.float32(value)
+
+    @staticmethod
+    def single(a: Any) -> Any:
+        """``a`` rounded to float32."""
+        return np.asarray(a, dtype=np.float32)
+
+    @staticmethod
     def vconst(a: ArrayLike) -> Vec3:
         x, y, z = (float(c) for c in np.asarray(a, dtype=np.float64).reshape(3))
         return Vec3(x, y, z)
@@ -319,12 +351,46 @@ class NumpyNamespace:
         return np.asarray(x).astype(np.int64)
 
     @staticmethod
-    def gather(values: NDArray, index: Any) -> Any:
-        return values[index]
+    def gather(values: NDArray, index: Any, active: Any = True) -> Any:
+        if active is True:
+            return values[index]
+        return np.where(active, values[np.where(active, index, 0)], 0)
 
     @staticmethod
     def eval(*arrays: Any) -> None:
         return None
+
+    # loops and indexing
+    @staticmethod
+    def arange(n: int) -> NDArray:
+        return np.arange(n, dtype=np.int64)
+
+    @staticmethod
+    def zeros(n: int) -> NDArray:
+        return np.zeros(n)
+
+    @staticmethod
+    def compress(mask: Any) -> NDArray:
+        """Indices of the true entries of ``mask``, in increasing order."""
+        return np.flatnonzero(mask)
+
+    @staticmethod
+    def while_loop(state: tuple, cond: Callable, body: Callable) -> tuple:
+        """``while cond(*state): state = body(*state)``, entry by entry (as Dr.Jit's).
+
+        Whole arrays step together; an entry whose condition is false keeps its values.
+        """
+        state = tuple(state)
+        while True:
+            c = np.asarray(cond(*state))
+            if not c.any():
+                return state
+            new = body(*state)
+            state = tuple(np.where(c, b, a) for a, b in zip(state, new, strict=True))
+
+    @staticmethod
+    def host(a: Any) -> NDArray:
+        return np.asarray(a)
 
 
 #: The numpy namespace (the reference path).
@@ -356,6 +422,8 @@ class DrJitNamespace:
         self.Complex = m.Complex2f64
         self.Array3 = m.Array3f64
         self.UInt = m.UInt32
+        self.Int = m.Int32
+        self.Float32 = m.Float32
         self.Bool = m.Bool
         self.sqrt = dr.sqrt
         self.exp = dr.exp
@@ -390,6 +458,9 @@ class DrJitNamespace:
     def vec(self, x: Any, y: Any, z: Any) -> Any:
         return self.Array3(x, y, z)
 
+    def is_vector(self, a: Any) -> bool:
+        return isinstance(a, self.Array3)
+
     # dot and cross as numpy rounds them (products, then sums; no fused multiply-add):
     # the two paths then agree to the last bit on these, and exact zeros stay exact
     # (an ideal H port has no component on v: HH of a VV-only target is exactly 0).
@@ -412,6 +483,14 @@ class DrJitNamespace:
     def const(self, value: float) -> Any:
         return self.dr.opaque(self.Float, float(value))
 
+    def const32(self, value: float) -> Any:
+        """A float32 opaque constant."""
+        return self.dr.opaque(self.Float32, float(value))
+
+    def single(self, a: Any) -> Any:
+        """``a`` rounded to float32."""
+        return self.Float32(a)
+
     def cconst(self, value: complex) -> Any:
         value = complex(value)
         return self.Complex(self.const(value.real), self.const(value.imag))
@@ -425,8 +504,55 @@ class DrJitNamespace:
     def index(self, x: Any) -> Any:
         return self.UInt(x)
 
-    def gather(self, values: Any, index: Any) -> Any:
-        return self.dr.gather(self.Float, values, index)
+    def gather(self, values: Any, index: Any, active: Any = True, dtype: Any = None) -> Any:
+        """``values[index]`` (0 where not ``active``); ``dtype`` a nested type such as
+        ``Array2f64`` reads consecutive entries (:meth:`pair`)."""
+        return self.dr.gather(type(values) if dtype is None else dtype, values, index, active)
+
+    # loops and indexing
+    def arange(self, n: int) -> Any:
+        return self.dr.arange(self.UInt, n)
+
+    def zeros(self, n: int) -> Any:
+        return self.dr.zeros(self.Float, n)
+
+    def compress(self, mask: Any) -> Any:
+        """Indices of the true entries of ``mask``, in increasing order (UInt32)."""
+        return self.dr.compress(mask)
+
+    def while_loop(self, state: tuple, cond: Callable, body: Callable) -> tuple:
+        """A symbolic loop: one kernel runs ``body`` while ``cond`` holds, per entry."""
+        return self.dr.while_loop(state=tuple(state), cond=cond, body=body)
+
+    def scatter(self, target: Any, value: Any, index: Any) -> None:
+        """``target[index] = value`` (recorded; done with the next evaluation)."""
+        self.dr.scatter(target, value, index)
+
+    def empty(self, n: int, dtype: Any = None) -> Any:
+        """A Float64 (or ``dtype``) array of ``n`` entries with its own memory (not
+        initialised)."""
+        a = self.dr.empty(self.Float if dtype is None else dtype, n)
+        self.dr.make_opaque(a)
+        return a
+
+    def pair(self, a: Any, b: Any) -> Any:
+        """``(a, b)`` as one value: scattered at index k it writes entries 2 k and 2 k + 1
+        of a flat array (the memory of a complex array); gathered likewise."""
+        return self.module.Array2f64(a, b)
+
+    def host(self, a: Any) -> NDArray:
+        """The values of an evaluated array in numpy: a read-only view of the array's
+        memory on the CPU (no copy), a copy from a GPU."""
+        if isinstance(a, int | float | bool):
+            return np.asarray(a)
+        return a.numpy()
+
+    def count(self, mask: Any) -> int:
+        """Number of true entries (reads one integer back)."""
+        return int(self.dr.count(mask)[0]) if self.dr.width(mask) else 0
+
+    def width(self, a: Any) -> int:
+        return int(self.dr.width(a))
 
 
 # --------------------------------------------------------------------- variant choice
@@ -544,6 +670,185 @@ def namespace(backend: str = "drjit", variant: str | None = None):
     raise ValueError(f"backend = {backend!r}: allowed 'numpy', 'drjit', 'auto'")
 
 
+# -------------------------------------------------------------------------- residency
+#: (namespace, id(array), kind) -> (weak reference to the numpy array, device value, buffers)
+_RESIDENT: dict[tuple[str, int, str], tuple[weakref.ref, Any, list]] = {}
+
+
+def _is_namespace_value(xp, a: Any) -> bool:
+    """Whether ``a`` already lives in Dr.Jit namespace ``xp`` (no conversion needed)."""
+    return isinstance(a, xp.Float | xp.Complex | xp.Array3 | xp.Bool | xp.UInt | xp.Float32)
+
+
+def resident(xp, a: NDArray, kind: str = "array") -> Any:
+    """The namespace value of a read-only numpy array, converted once while it lives.
+
+    Parameters
+    ----------
+    xp : NumpyNamespace or DrJitNamespace
+    a : ndarray
+        Values; (N,) float for ``"array"``, (N,) complex for ``"complex"``, (N, 3) for
+        ``"vec3"``, (N,) bool for ``"bool"``. Only an array that cannot be written
+        (``a.flags.writeable`` False) is kept: a writeable one could change under its
+        device copy, so it is converted at every call.
+    kind : {"array", "complex", "vec3", "bool"}
+
+    Returns
+    -------
+    Namespace value (numpy namespace: the array itself, or a :class:`Vec3` of its columns).
+
+    Notes
+    -----
+    The device copy is dropped when the numpy array is garbage-collected (a weak
+    reference), so a held sea's facets stay on the device exactly as long as the engine
+    holds their geometry.
+    """
+    if xp.is_numpy:
+        a = np.asarray(a)
+        if kind == "vec3":
+            return Vec3(a[..., 0], a[..., 1], a[..., 2])
+        return a
+    if not isinstance(a, np.ndarray) or a.flags.writeable:
+        return _convert(xp, a, kind, [])
+    key = (xp.name, id(a), kind)
+    hit = _RESIDENT.get(key)
+    if hit is not None and hit[0]() is a:
+        return hit[1]
+    keep: list = []
+    value = _convert(xp, a, kind, keep)
+    _RESIDENT[key] = (weakref.ref(a, lambda _, key=key: _RESIDENT.pop(key, None)), value, keep)
+    return value
+
+
+def _convert(xp, a: ArrayLike, kind: str, keep: list) -> Any:
+    """numpy -> Dr.Jit (64-byte-aligned buffers appended to ``keep``: LLVM aliases them)."""
+    def real(v):
+        buf = aligned(np.asarray(v, dtype=np.float64).reshape(-1))
+        keep.append(buf)
+        return xp.Float(buf)
+
+    if kind == "array":
+        return real(a)
+    if kind == "complex":
+        a = np.asarray(a, dtype=np.complex128)
+        return xp.Complex(real(a.real), real(a.imag))
+    if kind == "vec3":
+        a = np.asarray(a, dtype=np.float64)
+        if a.shape[-1:] != (3,):
+            raise ValueError(f"vectors must have shape (..., 3), got {a.shape}")
+        return xp.Array3(*(real(a[..., k]) for k in range(3)))
+    if kind == "bool":
+        buf = aligned(np.asarray(a, dtype=bool).reshape(-1), np.bool_)
+        keep.append(buf)
+        return xp.Bool(buf)
+    raise ValueError(f"kind = {kind!r}: allowed 'array', 'complex', 'vec3', 'bool'")
+
+
+# ------------------------------------------------------------------ CUDA array interface
+class _DLDevice(ctypes.Structure):
+    _fields_ = [("device_type", ctypes.c_int32), ("device_id", ctypes.c_int32)]
+
+
+class _DLDataType(ctypes.Structure):
+    _fields_ = [("code", ctypes.c_uint8), ("bits", ctypes.c_uint8), ("lanes", ctypes.c_uint16)]
+
+
+class _DLTensor(ctypes.Structure):
+    _fields_ = [("data", ctypes.c_void_p), ("device", _DLDevice), ("ndim", ctypes.c_int32),
+                ("dtype", _DLDataType), ("shape", ctypes.POINTER(ctypes.c_int64)),
+                ("strides", ctypes.POINTER(ctypes.c_int64)), ("byte_offset", ctypes.c_uint64)]
+
+
+def data_pointer(array: Any) -> int:
+    """Address of the first entry of an evaluated Dr.Jit array (host or device memory).
+
+    Read through the array's DLPack capsule (which is left unconsumed: the array keeps
+    owning its memory, and must outlive every use of the address).
+    """
+    capsule = array.__dlpack__()
+    get = ctypes.pythonapi.PyCapsule_GetPointer
+    get.restype = ctypes.c_void_p
+    get.argtypes = [ctypes.py_object, ctypes.c_char_p]
+    tensor = _DLTensor.from_address(get(capsule, b"dltensor"))
+    return int(tensor.data or 0) + int(tensor.byte_offset)
+
+
+class _Flags:
+    c_contiguous = True
+
+
+class CudaArrayView:
+    """A contiguous Dr.Jit array seen as an n-d array of ``dtype`` through
+    ``__cuda_array_interface__`` (version 3), for GPU libraries such as cufinufft.
+
+    Parameters
+    ----------
+    array : Dr.Jit array
+        Evaluated, contiguous; kept alive by the view.
+    dtype : numpy dtype
+        Element type seen by the consumer (complex128 over an interleaved Float64 array).
+    shape : tuple of int
+        Its shape (C order).
+    """
+
+    flags = _Flags()
+
+    def __init__(self, array: Any, dtype: Any, shape: tuple[int, ...]) -> None:
+        self._array = array
+        self.dtype = np.dtype(dtype)
+        self.shape = tuple(int(s) for s in shape)
+        nbytes = int(np.prod(self.shape)) * self.dtype.itemsize
+        have = int(array.__len__()) * np.dtype(_element_dtype(array)).itemsize
+        if nbytes != have:
+            raise ValueError(f"a {self.shape} {self.dtype} view needs {nbytes} bytes, "
+                             f"the array has {have}")
+        self._ptr = data_pointer(array)
+
+    @property
+    def size(self) -> int:
+        return int(np.prod(self.shape))
+
+    @property
+    def ndim(self) -> int:
+        return len(self.shape)
+
+    def reshape(self, shape: tuple[int, ...]) -> CudaArrayView:
+        return CudaArrayView(self._array, self.dtype, shape)
+
+    @property
+    def __cuda_array_interface__(self) -> dict:
+        return {"shape": self.shape, "typestr": self.dtype.str, "data": (self._ptr, False),
+                "strides": None, "version": 3}
+
+
+def _element_dtype(array: Any) -> Any:
+    name = type(array).__name__
+    return {"Float64": np.float64, "Float": np.float32, "Float32": np.float32,
+            "UInt": np.uint32, "UInt32": np.uint32, "Int": np.int32, "Int32": np.int32,
+            "Bool": np.bool_}[name]
+
+
+def cuda_array(array: Any, dtype: Any, shape: tuple[int, ...]) -> CudaArrayView:
+    """:class:`CudaArrayView` of an evaluated Dr.Jit array (see there)."""
+    return CudaArrayView(array, dtype, shape)
+
+
+def cuda_synchronize() -> None:
+    """Wait for all work queued on the GPU: Dr.Jit's stream and any other library's.
+
+    Dr.Jit and cufinufft queue kernels on their own CUDA streams; before one reads what
+    the other wrote, the context is synchronised (``cuCtxSynchronize`` of the driver,
+    the library every CUDA program loads).
+    """
+    import drjit as dr
+
+    dr.sync_thread()
+    lib = ctypes.CDLL("libcuda.so.1")
+    err = lib.cuCtxSynchronize()
+    if err != 0:
+        raise RuntimeError(f"cuCtxSynchronize failed with CUDA error {err}")
+
+
 # ------------------------------------------------------------------------- boundaries
 class Boundary:
     """numpy <-> namespace conversions of one kernel call (a stage boundary).
@@ -564,29 +869,46 @@ class Boundary:
         self.n = n
         self._keep: list[NDArray] = []
 
+    def _device(self, a: Any, kind: str, dtype: Any) -> Any | None:
+        """``a`` as it is (already a namespace value), its resident copy (a read-only
+        float64 array, :func:`resident`), or None (convert it here)."""
+        if self.xp.is_numpy:
+            return None
+        if _is_namespace_value(self.xp, a):
+            return a
+        if (isinstance(a, np.ndarray) and not a.flags.writeable and a.dtype == dtype):
+            return resident(self.xp, a, kind)
+        return None
+
     def array(self, a: ArrayLike) -> Any:
         """A real (N,) input [float64]."""
         if self.xp.is_numpy:
             return np.asarray(a, dtype=np.float64)
-        buf = aligned(np.asarray(a, dtype=np.float64).reshape(-1))
-        self._keep.append(buf)
-        return self.xp.Float(buf)
+        dev = self._device(a, "array", np.float64)
+        if dev is not None:
+            return dev
+        return _convert(self.xp, a, "array", self._keep)
 
     def complex(self, a: ArrayLike) -> Any:
         """A complex (N,) input [complex128]."""
-        a = np.asarray(a, dtype=np.complex128)
         if self.xp.is_numpy:
-            return a
-        return self.xp.Complex(self.array(a.real), self.array(a.imag))
+            return np.asarray(a, dtype=np.complex128)
+        dev = self._device(a, "complex", np.complex128)
+        if dev is not None:
+            return dev
+        return _convert(self.xp, a, "complex", self._keep)
 
     def vec3(self, a: ArrayLike) -> Any:
         """A (..., 3) input as a namespace vector."""
+        if not self.xp.is_numpy:
+            dev = self._device(a, "vec3", np.float64)
+            if dev is not None:
+                return dev
+            return _convert(self.xp, a, "vec3", self._keep)
         a = np.asarray(a, dtype=np.float64)
         if a.shape[-1:] != (3,):
             raise ValueError(f"vectors must have shape (..., 3), got {a.shape}")
-        if self.xp.is_numpy:
-            return Vec3(a[..., 0], a[..., 1], a[..., 2])
-        return self.xp.Array3(*(self.array(a[..., k]) for k in range(3)))
+        return Vec3(a[..., 0], a[..., 1], a[..., 2])
 
     def numpy(self, *outs: Any) -> list:
         """Evaluate ``outs`` together (one kernel) and return them as numpy arrays.

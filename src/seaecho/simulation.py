@@ -57,8 +57,8 @@ class SeaEcho:
         Per-facet scattering coefficients sigma_mn (HH, HV, VH, VV) per unit *facet*
         area [m^2/m^2] times the facet's visibility, all facets, when asked for:
         ``area * sigma_facet`` is the facet's mean radar cross section [m^2].
-    facets : seaecho.geometry.facets.Facets
-        The facets of the pulse.
+    facets : seaecho.geometry.facets.Facets or None
+        The facets of the pulse (None from the fused kernel, ``radar.resident``).
     """
 
     echo: ScattererEcho
@@ -112,6 +112,7 @@ class Simulation:
         #: the sea at the radar carrier: k, eps_r, sub-facet slopes, Bragg table
         self.sea_model = models.sea_model
         self.engine = None
+        self._resident = None
         self._state_cache: tuple[float, object] | None = None
         # Per-sea-state quantities, computed once per block of held pulses and reused by
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
@@ -126,6 +127,9 @@ class Simulation:
             # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
             self.engine = FacetEngine.from_model(models.tracing, self.surface_state_at,
                                                  lambda t: tx.state(t).position, rx_fn)
+            from .radar.resident import resident_sea  # the fused pulse, where it applies
+
+            self._resident = resident_sea(self.radar, models.tracing, self.sea_model)
         # Echoes of the [[objects]] with scatterer = true (docs/ship.md), or None
         from .tracing.hull_echo import HullEchoes
 
@@ -166,6 +170,8 @@ class Simulation:
             rng = generator(self.radar.seed, "speckle", block)
             q = {"damping": to_facets(state.wake_mask).reshape(-1),
                  "draws": speckle_draws(n_facets, rng)}
+            for a in (q["damping"], *q["draws"]):  # held: kept on the device
+                a.setflags(write=False)
             self._block_cache = (block, q)
         return self._block_cache[1]
 
@@ -187,6 +193,11 @@ class Simulation:
 
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
+        if self._resident is not None and not sigma:  # one kernel, the same numbers
+            held = self._block_quantities(pulse, st, self._resident.n_facets(st))
+            _, *hidden = self.engine.occlusion(geo.time, st)
+            echo = self._resident.echo(geo, st, hidden, held["draws"], held["damping"])
+            return SeaEcho(echo, None, None)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility
         held = self._block_quantities(pulse, st, vis.size)
@@ -228,6 +239,26 @@ class Simulation:
         if self.hulls is not None:
             echoes += self.hulls.echoes(geo, pulse)
         return self.radar.receive(pulse, echoes)
+
+    def pulses(self, start: int, stop: int) -> tuple[NDArray[np.complex128],
+                                                     NDArray[np.complex128]]:
+        """Raw and range-compressed samples of pulses ``start`` to ``stop - 1``, each
+        (stop - start, channels, fast_time) [sqrt(W)]: :meth:`pulse` and :meth:`compress`."""
+        raw = np.stack([self.pulse(p) for p in range(start, stop)])
+        return raw, self.compress(raw)
+
+    def block_edges(self) -> NDArray[np.int64]:
+        """Pulse indices at which the held sea surface or the occlusion refresh time
+        changes, with 0 and ``n_pulses``: the pulses between two edges share every
+        per-block cache (surface, speckle, wake damping, traced occlusion)."""
+        p = np.arange(self.radar.n_pulses)
+        change = np.diff(p // self.block, prepend=-1) != 0
+        tr = self.models.tracing
+        if self.engine is not None and tr.mode == "raytraced" and tr.refresh_interval_s > 0:
+            # tracing.engine.reference_time, vectorised
+            ref = np.floor(self.radar.emission_time(p) / tr.refresh_interval_s + 1e-9)
+            change |= np.diff(ref, prepend=ref[0] - 1.0) != 0
+        return np.append(np.flatnonzero(change), p.size)
 
     def compress(self, raw: NDArray[np.complex128]) -> NDArray[np.complex128]:
         """Range-compressed samples with the model's weighting (same shape as ``raw``)."""
@@ -280,17 +311,32 @@ class Simulation:
                                "range_weighting": self.models.radar.range_weighting})
 
     # ------------------------------------------------------------------------ run
-    def run(self, path: str | os.PathLike, progress: bool = True, chunk: int = 16) -> Path:
-        """Simulate every pulse and write the dataset to ``path`` atomically.
+    def run(self, path: str | os.PathLike, progress: bool = True, chunk: int | None = None,
+            resume: bool = False, runner=None) -> Path:
+        """Simulate every pulse and write the dataset to ``path``.
+
+        A ``.zarr`` path gets a Zarr store written block by block and resumable
+        (:mod:`seaecho.io.zarr_run`); any other path a netCDF file written atomically.
+        The blocks are computed in this process, or by ``runner``
+        (:class:`seaecho.distributed.DaskBlocks`: on a Dask cluster, with the same bytes).
 
         Parameters
         ----------
         path : path
-            Output netCDF file (h5netcdf, complex variables as HDF5 compounds).
+            Output netCDF file (h5netcdf, complex variables as HDF5 compounds) or Zarr
+            store (``*.zarr``).
         progress : bool
-            Show a tqdm progress bar.
-        chunk : int
-            Pulses buffered per write (memory: chunk x channels x samples x 32 bytes).
+            Show a tqdm progress bar over the pulses.
+        chunk : int, optional
+            Pulses per block (memory: chunk x channels x samples x 32 bytes; the Zarr
+            chunk along ``pulse``); default :func:`seaecho.io.run.block_size` of
+            :meth:`block_edges`.
+        resume : bool
+            Zarr only: continue an interrupted run of the same scene, computing only the
+            blocks it lacks.
+        runner : optional
+            Computes the blocks (:func:`seaecho.io.run.write_run`); default
+            :class:`seaecho.io.run.SerialBlocks` of :meth:`pulses`, in this process.
 
         Returns
         -------
@@ -298,14 +344,21 @@ class Simulation:
         """
         from .io.run import write_run
 
-        return write_run(path, self.static_dataset(), **self._pulse_loop(progress, chunk))
+        return write_run(path, self.static_dataset, identity=self.models.attrs,
+                         progress=progress, resume=resume, **self._blocks(chunk, runner))
 
-    def dataset(self, progress: bool = True, chunk: int = 16):
-        """Simulate every pulse and return the dataset :meth:`run` writes, in memory
-        (:func:`seaecho.io.run.run_in_memory`: the same pulses, the same bytes).
+    def dataset(self, progress: bool = True, chunk: int | None = None, runner=None):
+        """Simulate every pulse and return the dataset that :meth:`run` writes, held in
+        memory (:func:`seaecho.io.run.run_in_memory`: the same blocks, the same values
+        bit for bit).
 
         Memory: ``raw`` and ``compressed``, pulses x channels x samples x 32 bytes, plus
         the static part (:meth:`static_dataset`).
+
+        Parameters
+        ----------
+        progress, chunk, runner
+            As :meth:`run`.
 
         Returns
         -------
@@ -313,14 +366,19 @@ class Simulation:
         """
         from .io.run import run_in_memory
 
-        return run_in_memory(self.static_dataset(), **self._pulse_loop(progress, chunk))
+        return run_in_memory(self.static_dataset(), progress=progress,
+                             **self._blocks(chunk, runner))
 
-    def _pulse_loop(self, progress: bool, chunk: int) -> dict:
-        """Arguments of :func:`seaecho.io.run.pulse_blocks` for this run's pulses."""
-        return {"n_pulses": self.radar.n_pulses, "n_channels": len(self.radar.channels),
-                "n_samples": self.radar.window.n_samples, "pulse": self.pulse,
-                "compress": self.compress, "weighting": self.models.radar.range_weighting,
-                "progress": progress, "chunk": chunk}
+    def _blocks(self, chunk: int | None, runner) -> dict:
+        """Shape, block size, runner and weighting of this run's pulses
+        (:func:`seaecho.io.run.write_run`)."""
+        from .io.run import SerialBlocks, block_size
+
+        return {"shape": (self.radar.n_pulses, len(self.radar.channels),
+                          self.radar.window.n_samples),
+                "block": block_size(self.block_edges(), chunk),
+                "runner": SerialBlocks(self.pulses) if runner is None else runner,
+                "weighting": self.models.radar.range_weighting}
 
 
 __all__ = ["POLARISATIONS", "SeaEcho", "Simulation"]

@@ -6,6 +6,10 @@ files quote), the bistatic ground-range resolution c / (B (sin theta_i + sin the
 of an in-plane geometry and its monostatic limit c / (2 B sin theta_i) (Willis,
 *Bistatic Radar*, 2005, ch. 8), and the stripmap azimuth resolution D / 2 of an aperture
 of length D (Cumming & Wong, *Digital Processing of SAR Data*, 2005, ch. 4).
+
+"The paper": Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

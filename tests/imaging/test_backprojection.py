@@ -90,3 +90,17 @@ def test_drjit_kernel_matches_numpy(kind):
     np.testing.assert_allclose(a, b, rtol=0, atol=1e-5 * np.abs(b).max())
     with pytest.raises(ValueError, match="backend"):
         backproject(x, block, fc, win, backend="cuda")
+
+
+def test_backprojection_on_a_gpu_without_one_is_a_clear_error(monkeypatch):
+    # The kernel follows the Mitsuba variant: asking for CUDA where there is none is a
+    # ValueError before any work (not a failure inside the loop).
+    from seaecho import backend
+
+    monkeypatch.setattr(backend, "cuda_available", lambda: False)
+    block = PulseBlock(np.zeros((1, 1, 8), np.complex64), 0.0, 1e8, np.zeros((1, 3)),
+                       np.zeros((1, 3)), np.zeros((1, 3)), np.zeros((1, 3)), np.zeros(1),
+                       np.ones(1))
+    with pytest.raises(ValueError, match="no CUDA GPU"):
+        backproject(np.zeros((1, 3)), block, 1e10, AzimuthWindow.named("none", 100.0),
+                    variant="cuda_ad_mono_polarized")

@@ -21,6 +21,7 @@ COMMANDS = (
     "check",
     "surface",
     "run",
+    "sweep",
     "image",
     "trace",
     "compare",

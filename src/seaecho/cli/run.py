@@ -8,6 +8,7 @@ NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 
@@ -19,55 +20,65 @@ def register(sub: argparse._SubParsersAction) -> None:
         "atomically) and draw the paper's Fig. 6 panels.",
     )
     p.add_argument("scene", help="scene file (TOML)")
-    p.add_argument("-o", "--output", help="output netCDF file (default: [run] output, "
-                   "else <scene>.nc)")
+    p.add_argument("-o", "--output", help="output netCDF file, or Zarr store if it ends in "
+                   ".zarr (default: [run] output, else <scene>.nc)")
     p.add_argument("--pulses", type=int, metavar="N",
                    help="simulate only the first N pulses (quick look)")
     p.add_argument("--no-figures", action="store_true", help="do not write PNG figures")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar")
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--workers", type=int, metavar="N",
+                   help="run the blocks of pulses on a local Dask cluster of N worker "
+                   "processes (default: serially in this process; same bytes)")
+    g.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run on an existing Dask cluster (e.g. tcp://host:8786); a Zarr "
+                   "output and the scene's meshes must be on a file system the workers see")
+    p.add_argument("--resume", action="store_true",
+                   help="Zarr output: continue an interrupted run of the same scene, "
+                   "computing only the missing blocks")
+    p.add_argument("--block-pulses", type=int, metavar="N",
+                   help="pulses per block of work and per Zarr chunk (default: about 16, "
+                   "aligned with the held sea and the occlusion refresh)")
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    import xarray as xr
-
-    from ..build import build_simulation, check_scene
-    from ..config import SceneError, load_scene
+    from ..api import load_scene, simulate
+    from ..config import SceneError
     from ..io.figures import run_figures
-    from ..simulation import Simulation
+    from ..io.zarr_run import StoreError, is_zarr, part_path
     from . import UsageError
 
     scene = load_scene(args.scene)
     if scene.radar is None or scene.transmitter is None:
         raise SceneError(f"{args.scene}: `seaecho run` needs [radar] and [transmitter] "
                          "sections")
-    if args.pulses is not None:
-        if args.pulses < 1:
-            raise UsageError(f"--pulses {args.pulses}: must be >= 1")
-        n = min(args.pulses, scene.radar.n_pulses)
-        radar = scene.radar.model_copy(update={
-            "n_pulses": n, "sigma_map_pulse": min(scene.radar.sigma_map_pulse, n - 1)})
-        scene = scene.model_copy(update={"radar": radar})
     if args.output:
         out = Path(args.output)
     elif scene.run.output:
         out = Path(scene.run.output)
     else:
         out = Path(Path(args.scene).stem + ".nc")
-    if str(out.parent) and not out.parent.is_dir():
-        raise UsageError(f"output directory {out.parent} does not exist")
-    if scene.radar.sea_clutter:
-        check_scene(scene)  # SamplingWarning on stderr if the tile / grid is too coarse
-    try:
-        sim = Simulation.from_models(build_simulation(scene, base_dir=Path(args.scene).parent))
-    except ValueError as exc:
-        raise SceneError(f"{args.scene}: {exc}") from None
-    sim.run(out, progress=not args.quiet)
-    r = sim.radar
-    print(f"wrote {out} ({r.n_pulses} pulses x {len(r.channels)} channels x "
-          f"{r.window.n_samples} samples)")
-    if not args.no_figures:
-        with xr.open_dataset(out, engine="h5netcdf") as ds:
+    zarr_out = is_zarr(out)
+    if zarr_out and scene.image is not None:
+        raise UsageError(f"{args.scene} has [image]: focusing reads a netCDF run; write "
+                         "the run to a .nc file")
+    try:  # the Python API's run: same checks, same bytes (seaecho.simulate)
+        ds = simulate(scene, path=out, pulses=args.pulses, progress=not args.quiet,
+                      workers=args.workers, scheduler=args.scheduler,
+                      block_pulses=args.block_pulses, resume=args.resume)
+    except StoreError as exc:
+        raise UsageError(str(exc)) from None
+    except KeyboardInterrupt:
+        if not zarr_out:
+            raise
+        print(f"seaecho: interrupted; the blocks written so far are kept in "
+              f"{part_path(out)}: continue with --resume", file=sys.stderr)
+        return 130
+    with ds:
+        print(f"wrote {out} ({ds.sizes['pulse']} pulses x {ds.sizes['channel']} channels x "
+              f"{ds.sizes['fast_time']} samples)")
+        if not args.no_figures:
             for png in run_figures(ds, out.with_suffix("")):
                 print(f"wrote {png}")
     if scene.image is not None:  # [image]: focus the raw data just written (seaecho image)

@@ -61,11 +61,16 @@ section 5.8 for the bistatic case) and Ulander, Hellsten & Stenstrom (2003, eq 4
 makes no assumption on the track (straight, waypoints, perturbed), the look direction or
 the bistatic geometry.
 
-Two implementations give the same numbers (tests): :func:`backproject_numpy`, the
-reference, vectorised over blocks of (pixels x pulses); and :func:`backproject_drjit`, one
-Dr.Jit LLVM kernel over pixels with a symbolic loop over the pulses of a block (float64
-delays, the carrier phase reduced modulo one cycle before a float32 sine and cosine,
-float32 samples, accumulation in float32 per block then float64 across blocks).
+The per-pixel, per-pulse terms (delay, Doppler offset and window, interpolation index,
+carrier phase: :func:`pulse_terms`, :func:`interpolate`) are written once over an array
+namespace (:mod:`seaecho.backend`), the delay being the radar equation's own
+(:func:`seaecho.radar.equation.flight`, eq R3). Two evaluations give the same numbers
+(tests): :func:`backproject_numpy`, the reference, on (pixels x pulses) tiles summed over
+the pulses; and :func:`backproject_drjit`, one Dr.Jit kernel over pixels with a symbolic
+loop over the pulses of a block, on the CPU (``drjit.llvm``) or a CUDA GPU
+(``drjit.cuda``) by the Mitsuba variant. Both take float64 delays, the carrier phase
+reduced modulo one cycle before a float32 sine and cosine, float32 samples; the kernel
+accumulates in float32 per block (float64 across blocks), numpy in float64.
 
 References
 ----------
@@ -84,13 +89,15 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.fft import next_fast_len
 
-from ..backend import aligned
+from ..backend import NUMPY, Boundary, Vec3, aligned, drjit_namespace
 from ..constants import C0
+from ..radar.equation import flight
 from .windows import AzimuthWindow
 
 __all__ = [
@@ -100,6 +107,8 @@ __all__ = [
     "backproject_numpy",
     "delays",
     "doppler",
+    "interpolate",
+    "pulse_terms",
     "upsample",
 ]
 
@@ -187,13 +196,106 @@ def upsample(compressed: ArrayLike, factor: int) -> NDArray[np.complex64]:
     return out.astype(np.complex64)
 
 
-def _receive_delay(d: NDArray, v: NDArray) -> NDArray:
-    """Positive root tau of |d + v tau| = c tau (eq R3 of docs/radar.md) [s]."""
-    dv = np.einsum("...i,...i->...", d, v)
-    a = C0 * C0 - np.einsum("...i,...i->...", v, v)
-    return (dv + np.sqrt(dv * dv + a * np.einsum("...i,...i->...", d, d))) / a
+# ------------------------------------------------------------ formulas (any namespace)
+def echo_delay(xp, x: Any, tx: Any, rx: Any, rx_velocity: Any) -> Any:
+    """tau_p(x) of eq (B1) [s]: eq R3 of the echo model for a static scatterer at ``x``."""
+    tau_t, tau_r, _ = flight(xp, tx, x, xp.vec(0.0, 0.0, 0.0), rx, rx_velocity)
+    return tau_t + tau_r
 
 
+def doppler_frequency(xp, x: Any, tx: Any, rx: Any, tx_velocity: Any, rx_velocity: Any
+                      ) -> Any:
+    """lambda f_p(x) of eq (B4) [m/s]: the bistatic range rate -d(r_t + r_r)/dt of a
+    static scatterer at ``x`` (Willis 2005, eq 3.23)."""
+    a, b = x - tx, x - rx
+    return xp.dot(a, tx_velocity) / xp.norm(a) + xp.dot(b, rx_velocity) / xp.norm(b)
+
+
+def azimuth_window(xp, xi: Any, coef: list) -> Any:
+    """W(xi) of eq (W1) (``imaging.windows``) for |xi| <= 1/2, the caller masks outside:
+    ``sum_m c_m cos(2 pi m xi)`` with cos(m t) by the Chebyshev recurrence [-].
+
+    ``coef``: the normalised coefficients as namespace constants (float32).
+    """
+    c1 = xp.cos(xi * (2.0 * np.pi))
+    w = coef[0]
+    prev, cur = 1.0, c1
+    for m in range(1, len(coef)):
+        if m > 1:  # cos(m t) = 2 cos(t) cos((m-1) t) - cos((m-2) t)
+            prev, cur = cur, 2.0 * c1 * cur - prev
+        w = w + coef[m] * cur
+    return w
+
+
+def pulse_terms(xp, x: Any, pulse: dict[str, Any], par: dict[str, Any]) -> dict[str, Any]:
+    """Eqs (B1)-(B4) for pixels ``x`` and one pulse (or broadcast pulses), namespace ``xp``.
+
+    Parameters
+    ----------
+    xp : array namespace
+    x : vector
+        Pixel positions [m].
+    pulse : dict
+        ``tx, rx, tx_velocity, rx_velocity`` (vectors [m, m/s]), ``doppler_centroid``
+        f_c,p [Hz] and ``weight`` [-] of the pulse.
+    par : dict
+        Constants: ``t0`` [s], ``rate`` U f_s [Hz], ``fc`` [Hz], ``inv_lb`` 1/(lambda B_a)
+        [s/m], ``inv_b`` 1/B_a [s], ``n_up`` (samples per channel), ``coef`` (window).
+
+    Returns
+    -------
+    dict
+        ``index`` of the left sample and ``eps`` (float32) of eq (B3), ``ok`` (inside the
+        window and the band), ``w_band`` (w_p(x) where the band holds, 0 elsewhere),
+        ``w`` (w_p(x) where the sample also exists), ``cos``, ``sin`` (the carrier phase
+        factor of eq (B2) times ``w``, float32).
+    """
+    tau = echo_delay(xp, x, pulse["tx"], pulse["rx"], pulse["rx_velocity"])  # (B1)
+    # Eq (B4): Doppler offset from the centroid, normalised by B_a, and W
+    f = doppler_frequency(xp, x, pulse["tx"], pulse["rx"], pulse["tx_velocity"],
+                          pulse["rx_velocity"])
+    xi = xp.single(f * par["inv_lb"] - pulse["doppler_centroid"] * par["inv_b"])
+    band = xp.abs(xi) <= 0.5
+    w_band = xp.select(band, azimuth_window(xp, xi, par["coef"])
+                       * xp.single(pulse["weight"]), 0.0)
+    # Eq (B3): the left upsampled sample and the fraction
+    u = (tau - par["t0"]) * par["rate"]
+    left = xp.floor(u)
+    ok = (left >= 0.0) & (left + 1.0 < par["n_up"]) & band
+    w = xp.select(ok, w_band, 0.0)
+    # Eq (B2): carrier phase exp(+j 2 pi f_c tau), reduced modulo one cycle in float64
+    cyc = par["fc"] * tau
+    phase = xp.single(cyc - xp.floor(cyc)) * (2.0 * np.pi)
+    return dict(index=xp.index(xp.select(ok, left, 0.0)), eps=xp.single(u - left), ok=ok,
+                w_band=w_band, w=w, cos=xp.cos(phase) * w, sin=xp.sin(phase) * w)
+
+
+def interpolate(xp, data: Any, base: Any, eps: Any, ok: Any, channel: int, stride: int
+                ) -> tuple[Any, Any]:
+    """y_p(tau) of eq (B3), real and imaginary parts, from the flat float32 samples
+    ``data`` laid out [pulse, sample, channel, re/im]: entry ``base + 2 channel`` is the
+    left sample's real part, ``+ stride`` the next sample's."""
+    k = base + 2 * channel
+    re0, im0 = xp.gather(data, k, ok), xp.gather(data, k + 1, ok)
+    re1, im1 = xp.gather(data, k + stride, ok), xp.gather(data, k + (stride + 1), ok)
+    return re0 + eps * (re1 - re0), im0 + eps * (im1 - im0)
+
+
+def _flat_samples(block: PulseBlock) -> NDArray[np.float32]:
+    """The block's samples as float32 [pulse, sample, channel, re/im] (one pixel's
+    gathers are contiguous)."""
+    return np.ascontiguousarray(block.samples.transpose(0, 2, 1)).view(np.float32).reshape(-1)
+
+
+def _constants(xp, block: PulseBlock, carrier: float, window: AzimuthWindow) -> dict:
+    return {"t0": xp.const(block.t0), "rate": xp.const(block.rate), "fc": xp.const(carrier),
+            "inv_lb": xp.const(carrier / (C0 * window.bandwidth)),
+            "inv_b": xp.const(1.0 / window.bandwidth),
+            "n_up": xp.const(float(block.samples.shape[2])),
+            "coef": [xp.const32(c) for c in window.normalised]}
+
+
+# ------------------------------------------------------------------------- numpy API
 def delays(pixels: ArrayLike, tx: ArrayLike, rx: ArrayLike, rx_velocity: ArrayLike
            ) -> NDArray[np.float64]:
     """Delays tau_p(x) of eq (B1) for every pixel and pulse [s].
@@ -209,14 +311,9 @@ def delays(pixels: ArrayLike, tx: ArrayLike, rx: ArrayLike, rx_velocity: ArrayLi
     -------
     ndarray (P, N)
     """
-    x = np.asarray(pixels, dtype=np.float64)[:, None, :]
-    t = np.asarray(tx, dtype=np.float64)[None]
-    r = np.asarray(rx, dtype=np.float64)[None]
-    v = np.broadcast_to(np.asarray(rx_velocity, dtype=np.float64)[None],
-                        (x.shape[0],) + r.shape[1:])
-    tau_t = np.linalg.norm(x - t, axis=-1) / C0
-    # Eq (B1): the receiver moves by v tau_t while the pulse reaches the pixel
-    return tau_t + _receive_delay(r + v * tau_t[..., None] - x, v)
+    x, t, r, v = _pixel_pulse(pixels, tx, rx, rx_velocity)
+    tau = echo_delay(NUMPY, x, t, r, v)
+    return np.broadcast_to(tau, (x.x.shape[0], t.x.shape[1])).copy()
 
 
 def doppler(pixels: ArrayLike, tx: ArrayLike, rx: ArrayLike, tx_velocity: ArrayLike,
@@ -239,13 +336,17 @@ def doppler(pixels: ArrayLike, tx: ArrayLike, rx: ArrayLike, tx_velocity: ArrayL
     ndarray (P, N)
         -(1/lambda) d(r_t + r_r)/dt (Willis 2005, eq 3.23).
     """
-    x = np.asarray(pixels, dtype=np.float64)[:, None, :]
-    f = np.zeros(x.shape[:1] + np.shape(tx)[:1])
-    for p, v in ((tx, tx_velocity), (rx, rx_velocity)):
-        d = x - np.asarray(p, dtype=np.float64)[None]
-        u = d / np.linalg.norm(d, axis=-1, keepdims=True)
-        f += np.einsum("pni,ni->pn", u, np.asarray(v, dtype=np.float64))
-    return f / wavelength
+    x, t, r, vt, vr = _pixel_pulse(pixels, tx, rx, tx_velocity, rx_velocity)
+    f = doppler_frequency(NUMPY, x, t, r, vt, vr) / wavelength
+    return np.broadcast_to(f, (x.x.shape[0], t.x.shape[1])).copy()
+
+
+def _pixel_pulse(pixels: ArrayLike, *per_pulse: ArrayLike) -> list[Vec3]:
+    """Pixels as (P, 1) and per-pulse vectors as (1, N) numpy namespace vectors."""
+    io = Boundary(NUMPY)
+    out = [io.vec3(np.asarray(pixels, dtype=np.float64).reshape(-1, 3)[:, None, :])]
+    out += [io.vec3(np.asarray(a, dtype=np.float64).reshape(-1, 3)[None]) for a in per_pulse]
+    return out
 
 
 def backproject_numpy(pixels: ArrayLike, block: PulseBlock, carrier: float,
@@ -274,55 +375,42 @@ def backproject_numpy(pixels: ArrayLike, block: PulseBlock, carrier: float,
         sum_p w_p(x), and the same over the pulses whose echo of x is inside the receive
         window [-] (their ratio says whether the window covers the pixel).
     """
+    xp = NUMPY
     x = np.asarray(pixels, dtype=np.float64).reshape(-1, 3)
     n_b, n_c, n_u = block.samples.shape
     out = np.zeros((n_c, x.shape[0]), dtype=np.complex128)
     wsum = np.zeros((2, x.shape[0]))
-    flat = block.samples.reshape(n_b * n_c, n_u)
+    if n_b == 0 or x.shape[0] == 0:
+        return out, wsum
+    data = _flat_samples(block)
+    par = _constants(xp, block, carrier, window)
+    _, tx, rx, tv, rv = _pixel_pulse(x[:1], block.tx, block.rx, block.tx_velocity,
+                                     block.rx_velocity)
+    pulse = dict(tx=tx, rx=rx, tx_velocity=tv, rx_velocity=rv,
+                 doppler_centroid=block.doppler_centroid[None, :],
+                 weight=block.weight[None, :])
+    stride = 2 * n_c
+    first = (np.arange(n_b) * n_u)[None, :]
     step = max(1, max_elements // max(n_b, 1))
-    wavelength = C0 / carrier
     for s in range(0, x.shape[0], step):  # tiles of pixels, each vectorised
-        xs = x[s:s + step]
-        tau = delays(xs, block.tx, block.rx, block.rx_velocity)  # (P, N)
-        # Eq (B4): window over the Doppler offset from the centroid
-        f = doppler(xs, block.tx, block.rx, block.tx_velocity, block.rx_velocity,
-                    wavelength)
-        w = window((f - block.doppler_centroid[None, :]) / window.bandwidth)
-        w = w * block.weight[None, :]
-        # Eq (B3): fractional index in the upsampled samples
-        u = (tau - block.t0) * block.rate
-        i0 = np.floor(u).astype(np.int64)
-        eps = (u - i0).astype(np.float32)
-        ok = (i0 >= 0) & (i0 + 1 < n_u)
-        wsum[0, s:s + step] = np.sum(w, axis=1)
-        wsum[1, s:s + step] = np.sum(w * ok, axis=1)
-        i0 = np.where(ok, i0, 0)
-        # Eq (B2): carrier phase exp(+j 2 pi f_c tau), reduced modulo one cycle
-        cyc = carrier * tau
-        cyc -= np.floor(cyc)
-        rot = np.exp(2j * np.pi * cyc) * (w * ok)
-        pulse = np.arange(n_b)[None, :]
+        (xs,) = _pixel_pulse(x[s:s + step])
+        t = pulse_terms(xp, xs, pulse, par)
+        wsum[0, s:s + step] = np.sum(t["w_band"], axis=1, dtype=np.float64)
+        wsum[1, s:s + step] = np.sum(t["w"], axis=1, dtype=np.float64)
+        base = (first + t["index"]) * stride
         for c in range(n_c):  # the channels
-            row = pulse * n_c + c
-            y = (1.0 - eps) * flat[row, i0] + eps * flat[row, i0 + 1]
-            out[c, s:s + step] = np.sum(y * rot, axis=1)
+            yr, yi = interpolate(xp, data, base, t["eps"], t["ok"], c, stride)
+            out[c, s:s + step] = (np.sum(yr * t["cos"] - yi * t["sin"], axis=1,
+                                         dtype=np.float64)
+                                  + 1j * np.sum(yr * t["sin"] + yi * t["cos"], axis=1,
+                                                dtype=np.float64))
     return out, wsum
 
 
-def _drjit():
-    from .._llvm import configure_llvm
-
-    configure_llvm()
-    import drjit as dr
-    from drjit import llvm
-
-    return dr, llvm
-
-
 def backproject_drjit(pixels: ArrayLike, block: PulseBlock, carrier: float,
-                      window: AzimuthWindow, max_pixels: int = 1 << 20
-                      ) -> NDArray[np.complex128]:
-    """Eqs (B1)-(B4) as one Dr.Jit LLVM kernel per tile of pixels (same result as
+                      window: AzimuthWindow, max_pixels: int = 1 << 20, *,
+                      variant: str | None = None) -> NDArray[np.complex128]:
+    """Eqs (B1)-(B4) as one Dr.Jit kernel per tile of pixels (same result as
     :func:`backproject_numpy`, see the module docstring).
 
     Per-run values (carrier, window, sampling) and per-block sizes enter as opaque
@@ -341,6 +429,9 @@ def backproject_drjit(pixels: ArrayLike, block: PulseBlock, carrier: float,
         Processed Doppler band B_a and window W of eq (B4).
     max_pixels : int
         Pixels per kernel launch (bounds the memory: 2 C float32 accumulators per pixel).
+    variant : str, optional
+        Mitsuba variant choosing ``drjit.llvm`` (CPU, default) or ``drjit.cuda`` (GPU)
+        (:func:`seaecho.backend.drjit_namespace`).
 
     Returns
     -------
@@ -348,121 +439,70 @@ def backproject_drjit(pixels: ArrayLike, block: PulseBlock, carrier: float,
     weights : ndarray (2, P)
         As :func:`backproject_numpy`.
     """
-    dr, llvm = _drjit()
-    Float64, Float32 = llvm.Float64, llvm.Float
+    xp = drjit_namespace(variant)
     x = np.asarray(pixels, dtype=np.float64).reshape(-1, 3)
     n_b, n_c, n_u = block.samples.shape
     out = np.zeros((n_c, x.shape[0]), dtype=np.complex128)
     wsum = np.zeros((2, x.shape[0]))
     if n_b == 0 or x.shape[0] == 0:
         return out, wsum
-    # Samples as float32 [pulse, i, channel, re/im]: one pixel's gathers are contiguous
-    data = Float32(aligned(np.ascontiguousarray(block.samples.transpose(0, 2, 1))
-                           .view(np.float32).reshape(-1), np.float32))
-    cols = [Float64(aligned(a)) for a in (
-        *block.tx.T, *block.rx.T, *block.tx_velocity.T, *block.rx_velocity.T,
-        block.doppler_centroid, block.weight)]
-    # Per-run values as opaque parameters: one compiled kernel for every block
-    par = {"n_pulses": dr.opaque(llvm.UInt32, n_b), "t0": dr.opaque(Float64, block.t0),
-           "rate": dr.opaque(Float64, block.rate), "fc": dr.opaque(Float64, carrier),
-           "inv_lb": dr.opaque(Float64, carrier / (C0 * window.bandwidth)),
-           "inv_b": dr.opaque(Float64, 1.0 / window.bandwidth),
-           "n_up": dr.opaque(llvm.Int32, n_u),
-           "coef": [dr.opaque(Float32, c) for c in window.normalised]}
+    io = Boundary(xp)
+    data = xp.Float32(aligned(_flat_samples(block), np.float32))
+    cols = {"tx": io.vec3(block.tx), "rx": io.vec3(block.rx),
+            "tx_velocity": io.vec3(block.tx_velocity),
+            "rx_velocity": io.vec3(block.rx_velocity),
+            "doppler_centroid": io.array(block.doppler_centroid),
+            "weight": io.array(block.weight)}
+    par = _constants(xp, block, carrier, window)
+    par["n_pulses"] = xp.index(xp.const(float(n_b)))
     for s in range(0, x.shape[0], max_pixels):  # tiles of pixels, one kernel each
-        pix = [Float64(aligned(x[s:s + max_pixels, k])) for k in range(3)]
-        acc = _kernel(dr, llvm, pix, data, cols, par, n_c)
-        vals = np.stack([np.asarray(a, dtype=np.float64) for a in acc])
-        out[:, s:s + max_pixels] = vals[0:2 * n_c:2] + 1j * vals[1:2 * n_c:2]
+        tile = Boundary(xp)
+        acc = _loop(xp, tile.vec3(x[s:s + max_pixels]), data, cols, par, n_c)
+        vals = Boundary(xp, int(x[s:s + max_pixels].shape[0])).numpy(*acc)
+        for c in range(n_c):
+            out[c, s:s + max_pixels] = vals[2 * c] + 1j * vals[2 * c + 1]
         wsum[:, s:s + max_pixels] = vals[2 * n_c:]
     return out, wsum
 
 
-def _kernel(dr, llvm, pix, data, cols, par, n_c):
-    """The symbolic loop over pulses of :func:`backproject_drjit` for one tile of pixels;
-    returns the 2 C + 2 accumulators (re, im per channel; sum of w, sum of w inside the
-    window), evaluated."""
-    Float64, Float32, UInt32, Int32 = llvm.Float64, llvm.Float, llvm.UInt32, llvm.Int32
-    px, py, pz = pix
-    n_pix = dr.width(px)
-    t0, rate, fc, n_up = par["t0"], par["rate"], par["fc"], par["n_up"]
-    inv_lb, inv_b, coef = par["inv_lb"], par["inv_b"], par["coef"]
-    c2 = C0 * C0
-    two_pi = float(2.0 * np.pi)
+def _loop(xp, px: Any, data: Any, cols: dict, par: dict, n_c: int) -> list:
+    """The symbolic loop over pulses of :func:`backproject_drjit` for one tile of pixels:
+    the 2 C + 2 accumulators (re, im per channel; sum of w, sum of w inside the window)."""
+    n_pix = xp.width(px.x)
     stride = 2 * n_c
-    acc = [dr.zeros(Float32, n_pix) for _ in range(stride + 2)]
-    i = dr.zeros(UInt32, n_pix)
+    acc = [xp.single(xp.zeros(n_pix)) for _ in range(stride + 2)]
+    first = xp.index(xp.zeros(n_pix))
 
     def cond(i, *acc):
         return i < par["n_pulses"]
 
     def body(i, *acc):
-        (tx, ty, tz, rx, ry, rz, ux, uy, uz, vx, vy, vz, fdc, wp) = (
-            dr.gather(Float64, col, i) for col in cols)
-        # Eq (B1): outbound leg, then the receiver's leg with its motion
-        ax, ay, az = px - tx, py - ty, pz - tz
-        r_t = dr.sqrt(ax * ax + ay * ay + az * az)
-        tau_t = r_t / C0
-        dx = rx + vx * tau_t - px
-        dy = ry + vy * tau_t - py
-        dz = rz + vz * tau_t - pz
-        dv = dx * vx + dy * vy + dz * vz
-        a = c2 - (vx * vx + vy * vy + vz * vz)
-        tau = tau_t + (dv + dr.sqrt(dv * dv + a * (dx * dx + dy * dy + dz * dz))) / a
-        # Eq (B4): Doppler offset from the centroid, normalised by B_a, and W
-        bx, by, bz = px - rx, py - ry, pz - rz
-        r_r = dr.sqrt(bx * bx + by * by + bz * bz)
-        f = (ax * ux + ay * uy + az * uz) / r_t + (bx * vx + by * vy + bz * vz) / r_r
-        xi = Float32(f * inv_lb - fdc * inv_b)
-        cos1 = dr.cos(two_pi * xi)
-        w = coef[0]
-        if len(coef) > 1:
-            prev, cur = dr.ones(Float32, n_pix), cos1
-            w = w + coef[1] * cur
-            for m in range(2, len(coef)):  # cos(m t) by the Chebyshev recurrence
-                prev, cur = cur, 2.0 * cos1 * cur - prev
-                w = w + coef[m] * cur
-        # Eq (B3): linear interpolation of the upsampled samples
-        u = (tau - t0) * rate
-        fl = dr.floor(u)
-        i0 = Int32(fl)
-        eps = Float32(u - fl)
-        band = dr.abs(xi) <= 0.5
-        ok = (i0 >= 0) & (i0 + 1 < n_up) & band
-        w_band = dr.select(band, w * Float32(wp), 0.0)
-        w = dr.select(ok, w_band, 0.0)
-        # Eq (B2): carrier phase, reduced modulo one cycle in float64
-        cyc = fc * tau
-        sn, cs = dr.sincos(Float32(cyc - dr.floor(cyc)) * two_pi)
-        cs, sn = cs * w, sn * w
-        base = UInt32((Int32(i) * n_up + dr.select(ok, i0, 0)) * stride)
+        pulse = {k: (xp.vec(*(xp.gather(c, i) for c in v)) if xp.is_vector(v)
+                     else xp.gather(v, i)) for k, v in cols.items()}
+        t = pulse_terms(xp, px, pulse, par)
+        base = (i * xp.index(par["n_up"]) + t["index"]) * stride
         new = []
         for c in range(n_c):
-            k = base + 2 * c
-            re0 = dr.gather(Float32, data, k, ok)
-            im0 = dr.gather(Float32, data, k + 1, ok)
-            re1 = dr.gather(Float32, data, k + stride, ok)
-            im1 = dr.gather(Float32, data, k + stride + 1, ok)
-            yr = dr.fma(eps, re1 - re0, re0)
-            yi = dr.fma(eps, im1 - im0, im0)
-            new.append(acc[2 * c] + (yr * cs - yi * sn))
-            new.append(acc[2 * c + 1] + (yr * sn + yi * cs))
-        new.append(acc[stride] + w_band)
-        new.append(acc[stride + 1] + w)
+            yr, yi = interpolate(xp, data, base, t["eps"], t["ok"], c, stride)
+            new.append(acc[2 * c] + (yr * t["cos"] - yi * t["sin"]))
+            new.append(acc[2 * c + 1] + (yr * t["sin"] + yi * t["cos"]))
+        new.append(acc[stride] + t["w_band"])
+        new.append(acc[stride + 1] + t["w"])
         return (i + 1, *new)
 
-    i, *acc = dr.while_loop(state=(i, *acc), cond=cond, body=body)
-    dr.eval(*acc)
+    _, *acc = xp.while_loop((first, *acc), cond, body)
+    xp.eval(*acc)
     return acc
 
 
 def backproject(pixels: ArrayLike, block: PulseBlock, carrier: float,
-                window: AzimuthWindow, backend: str = "drjit"
+                window: AzimuthWindow, backend: str = "drjit", *, variant: str | None = None
                 ) -> tuple[NDArray[np.complex128], NDArray[np.float64]]:
     """Eqs (B1)-(B4) by ``backend`` ('drjit' or 'numpy'): the (C, P) image [sqrt(W)] and
-    the (2, P) weight sums of :func:`backproject_numpy`."""
+    the (2, P) weight sums of :func:`backproject_numpy`. ``variant`` selects the Dr.Jit
+    back end (``llvm_*`` CPU, default; ``cuda_*`` GPU)."""
     if backend == "drjit":
-        return backproject_drjit(pixels, block, carrier, window)
+        return backproject_drjit(pixels, block, carrier, window, variant=variant)
     if backend == "numpy":
         return backproject_numpy(pixels, block, carrier, window)
     raise ValueError(f"backend = {backend!r}: allowed 'drjit', 'numpy'")

@@ -143,68 +143,155 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
     return xr.Dataset(data, coords=coords, attrs=out)
 
 
-#: Attributes of the ``raw`` and ``compressed`` variables (file and in-memory datasets).
-RAW_ATTRS = {"units": "sqrt(W)", "long_name": "complex baseband raw echo"}
-COMPRESSED_ATTRS = {"units": "sqrt(W)", "long_name": "range-compressed echo"}
+#: Default pulses per block: memory of a block is block x channels x samples x 32 bytes.
+DEFAULT_BLOCK_PULSES = 16
 
 
-def pulse_blocks(n_pulses: int, n_channels: int, n_samples: int,
-                 pulse: Callable[[int], np.ndarray],
-                 compress: Callable[[np.ndarray], np.ndarray], *, progress: bool = True,
-                 chunk: int = 16) -> Iterator[tuple[int, int, np.ndarray, np.ndarray]]:
-    """Every pulse in order, in blocks of ``chunk``: ``(start, stop, raw, compressed)``.
-
-    The one loop behind :func:`write_run` (file) and :func:`run_in_memory`, so that both
-    hold the same bytes. The arrays of a block are reused by the next one: copy them or
-    write them before asking for the next block.
+def block_size(edges: np.ndarray, size: int | None = None,
+               target: int = DEFAULT_BLOCK_PULSES) -> int:
+    """Pulses per block of work (and per Zarr chunk along ``pulse``).
 
     Parameters
     ----------
-    n_pulses, n_channels, n_samples : int
-        Shape of ``raw`` and ``compressed``.
-    pulse : callable
-        ``p -> (n_channels, n_samples)`` raw samples of pulse p [sqrt(W)].
-    compress : callable
-        Range compression of a block of raw pulses (same shape).
-    progress : bool
-        Show a tqdm progress bar.
-    chunk : int
-        Pulses per block (memory: chunk x channels x samples x 32 bytes).
+    edges : array of int
+        ``Simulation.block_edges()``: 0, the pulses where the held sea or the occlusion
+        refresh changes, and n_pulses.
+    size : int, optional
+        A block size chosen by the caller (>= 1): returned as it is (capped at n_pulses).
+    target : int
+        Wanted block size when ``size`` is None.
+
+    Returns
+    -------
+    int
+        With ``size`` None: the size in [target / 2, 2 target] whose block boundaries
+        cut the fewest held segments (a cut segment is rebuilt by the next block: its
+        surface synthesis, speckle draws and occlusion trace), the nearest to ``target``
+        among equals.
     """
-    from tqdm import tqdm
+    edges = np.asarray(edges, dtype=np.int64)
+    n = int(edges[-1])
+    if n < 1:
+        raise ValueError(f"n_pulses = {n}: nothing to run")
+    if size is not None:
+        if int(size) < 1:
+            raise ValueError(f"block size {size}: must be >= 1 pulse")
+        return min(int(size), n)
+    best = None
+    for c in range(max(1, target // 2), 2 * target + 1):
+        if c >= n:
+            c = n
+        bounds = np.arange(c, n, c)
+        cuts = bounds.size - np.isin(bounds, edges).sum()
+        key = (int(cuts), abs(c - target))
+        if best is None or key < best[0]:
+            best = (key, c)
+        if c == n:
+            break
+    return best[1]
 
-    chunk = max(1, min(chunk, n_pulses))
-    buf = np.empty((chunk, n_channels, n_samples), dtype=np.complex128)
-    with tqdm(total=n_pulses, unit="pulse", disable=not progress, desc="seaecho run") as bar:
-        for start in range(0, n_pulses, chunk):
-            stop = min(start + chunk, n_pulses)
-            for i, p in enumerate(range(start, stop)):
-                buf[i] = pulse(p)
-                bar.update(1)
-            yield start, stop, buf[: stop - start], compress(buf[: stop - start])
+
+def blocks_of(n_pulses: int, size: int) -> list[tuple[int, int]]:
+    """``[(start, stop), ...]`` of consecutive blocks of ``size`` pulses."""
+    return [(a, min(a + size, n_pulses)) for a in range(0, n_pulses, size)]
 
 
-def write_run(path: str | os.PathLike, static, *, n_pulses: int, n_channels: int,
-              n_samples: int, pulse: Callable[[int], np.ndarray],
-              compress: Callable[[np.ndarray], np.ndarray], weighting: str = "none",
-              progress: bool = True, chunk: int = 16) -> Path:
-    """Write the static dataset, then every pulse as it is computed, atomically.
+class SerialBlocks:
+    """Blocks computed one after the other in this process (the runner of
+    ``Simulation.run``; ``seaecho.distributed`` has the Dask runner).
+
+    Parameters
+    ----------
+    compute : callable
+        ``(start, stop) -> (raw, compressed)``, each (stop - start, channels, samples).
+    """
+
+    def __init__(self, compute: Callable[[int, int], tuple[np.ndarray, np.ndarray]]):
+        self.compute = compute
+
+    def ordered(self, blocks: list[tuple[int, int]]) -> Iterator[tuple[np.ndarray,
+                                                                      np.ndarray]]:
+        """The blocks' (raw, compressed) in block order."""
+        for a, b in blocks:
+            yield self.compute(a, b)
+
+    def stored(self, part: Path, todo: list[int], blocks: list[tuple[int, int]]
+               ) -> Iterator[dict]:
+        """Compute and write each block of ``todo`` into the Zarr run ``part``; yield
+        its completion record (:func:`seaecho.io.zarr_run.write_block`)."""
+        from .zarr_run import write_block
+
+        for i in todo:
+            a, b = blocks[i]
+            yield write_block(part, i, a, b, *self.compute(a, b))
+
+
+def write_run(path: str | os.PathLike, static: Callable[[], object], *, identity: dict,
+              shape: tuple[int, int, int], block: int, runner, weighting: str = "none",
+              progress: bool = True, resume: bool = False) -> Path:
+    """Write a run's dataset: the static part, then every block of pulses.
 
     Parameters
     ----------
     path : path
-        Output netCDF file (h5netcdf, complex variables as HDF5 compounds).
-    static : xarray.Dataset
-        :func:`run_dataset`.
-    n_pulses, n_channels, n_samples, pulse, compress, progress, chunk
-        As :func:`pulse_blocks`.
+        ``*.zarr``: a Zarr store (:func:`seaecho.io.zarr_run.write_zarr_run`, resumable);
+        else a netCDF file (h5netcdf, complex variables as HDF5 compounds), written
+        atomically.
+    static : callable
+        ``() -> xarray.Dataset`` of :func:`run_dataset` (not called when a Zarr run is
+        resumed).
+    identity : dict
+        ``scene_json``, ``seaecho_version``, ``seed`` of the run (``scene_attrs``): what a
+        resumed store must match.
+    shape : (n_pulses, n_channels, n_samples)
+        Shape of ``raw`` and ``compressed``.
+    block : int
+        Pulses per block (:func:`block_size`).
+    runner : SerialBlocks or seaecho.distributed.DaskBlocks
+        Computes the blocks: ``ordered(blocks)`` and ``stored(part, todo, blocks)``.
     weighting : str
         Range weighting (an attribute of ``compressed``).
+    progress : bool
+        Show a tqdm progress bar over the pulses.
+    resume : bool
+        Zarr only: continue an interrupted run (:mod:`seaecho.io.zarr_run`).
+    """
+    from .zarr_run import is_zarr, write_zarr_run
+
+    if is_zarr(path):
+        return write_zarr_run(path, static, identity=identity, shape=shape, block=block,
+                              runner=runner, weighting=weighting, progress=progress,
+                              resume=resume)
+    if resume:
+        raise ValueError(f"{path}: --resume needs a Zarr output (*.zarr); a netCDF run "
+                         "is written atomically and restarts from the beginning")
+    return write_netcdf_run(path, static(), shape=shape, block=block, runner=runner,
+                            weighting=weighting, progress=progress)
+
+
+def write_netcdf_run(path: str | os.PathLike, static, *, shape: tuple[int, int, int],
+                     block: int, runner, weighting: str = "none",
+                     progress: bool = True) -> Path:
+    """Write the static dataset, then every block of pulses in order, atomically.
+
+    Memory: the runner's blocks in flight (one for :class:`SerialBlocks`). The file's
+    bytes depend neither on the runner nor on the block size: the pulses are written in
+    order, one at a time.
+
+    Parameters
+    ----------
+    path : path
+        Output netCDF file.
+    static : xarray.Dataset
+        :func:`run_dataset`.
+    shape, block, runner, weighting, progress
+        As :func:`write_run`.
     """
     import h5netcdf
 
     from .dataset import atomic_path
 
+    n_pulses, n_channels, n_samples = shape
     with atomic_path(path) as tmp, quiet_invalid_netcdf():
         static.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=True)
         with h5netcdf.File(tmp, "a", invalid_netcdf=True) as f:
@@ -214,22 +301,27 @@ def write_run(path: str | os.PathLike, static, *, n_pulses: int, n_channels: int
                            for name in ("raw", "compressed"))
             raw_v.attrs.update(RAW_ATTRS)
             rc_v.attrs.update(COMPRESSED_ATTRS, weighting=weighting)
-            for start, stop, raw, compressed in pulse_blocks(
-                    n_pulses, n_channels, n_samples, pulse, compress, progress=progress,
-                    chunk=chunk):
-                raw_v[start:stop] = raw
-                rc_v[start:stop] = compressed
+            for a, b, raw, compressed in in_order(n_pulses, block, runner, progress):
+                for k in range(b - a):  # pulse by pulse: the file's layout (chunk
+                    raw_v[a + k] = raw[k]  # order) does not depend on the block size
+                    rc_v[a + k] = compressed[k]
     return Path(path)
 
 
-def run_in_memory(static, *, n_pulses: int, n_channels: int, n_samples: int,
-                  pulse: Callable[[int], np.ndarray],
-                  compress: Callable[[np.ndarray], np.ndarray], weighting: str = "none",
-                  progress: bool = True, chunk: int = 16):
-    """The dataset that :func:`write_run` writes, held in memory.
+def run_in_memory(static, *, shape: tuple[int, int, int], block: int, runner,
+                  weighting: str = "none", progress: bool = True):
+    """The dataset that :func:`write_netcdf_run` writes, held in memory: the same blocks
+    from the same runner, so the same values bit for bit.
 
-    Same arguments as :func:`write_run` but the path. Memory: the static dataset plus
-    ``raw`` and ``compressed``, n_pulses x n_channels x n_samples x 32 bytes.
+    Memory: the static dataset plus ``raw`` and ``compressed``, n_pulses x n_channels x
+    n_samples x 32 bytes.
+
+    Parameters
+    ----------
+    static : xarray.Dataset
+        :func:`run_dataset`.
+    shape, block, runner, weighting, progress
+        As :func:`write_run`.
 
     Returns
     -------
@@ -237,17 +329,33 @@ def run_in_memory(static, *, n_pulses: int, n_channels: int, n_samples: int,
         ``static`` with the variables ``raw`` and ``compressed`` (pulse, channel,
         fast_time) complex128 [sqrt(W)], their attributes as in the file.
     """
-    shape = (n_pulses, n_channels, n_samples)
     raw_a, rc_a = np.empty(shape, np.complex128), np.empty(shape, np.complex128)
-    for start, stop, raw, compressed in pulse_blocks(
-            n_pulses, n_channels, n_samples, pulse, compress, progress=progress, chunk=chunk):
-        raw_a[start:stop] = raw
-        rc_a[start:stop] = compressed
+    for a, b, raw, compressed in in_order(shape[0], block, runner, progress):
+        raw_a[a:b] = raw
+        rc_a[a:b] = compressed
     dims = ("pulse", "channel", "fast_time")
     ds = static.copy()
     ds["raw"] = (dims, raw_a, dict(RAW_ATTRS))
     ds["compressed"] = (dims, rc_a, dict(COMPRESSED_ATTRS, weighting=weighting))
     return ds
+
+
+def in_order(n_pulses: int, block: int, runner, progress: bool = True
+             ) -> Iterator[tuple[int, int, np.ndarray, np.ndarray]]:
+    """Every block of pulses in order, ``(start, stop, raw, compressed)``, with a tqdm
+    progress bar: the loop of :func:`write_netcdf_run` and :func:`run_in_memory`."""
+    from tqdm import tqdm
+
+    blocks = blocks_of(n_pulses, block)
+    with tqdm(total=n_pulses, unit="pulse", disable=not progress, desc="seaecho run") as bar:
+        for (a, b), (raw, compressed) in zip(blocks, runner.ordered(blocks), strict=True):
+            yield a, b, raw, compressed
+            bar.update(b - a)
+
+
+#: Attributes of the ``raw`` and ``compressed`` variables (both file formats).
+RAW_ATTRS = {"units": "sqrt(W)", "long_name": "complex baseband raw echo"}
+COMPRESSED_ATTRS = {"units": "sqrt(W)", "long_name": "range-compressed echo"}
 
 
 @contextlib.contextmanager
@@ -258,5 +366,6 @@ def quiet_invalid_netcdf():
         yield
 
 
-__all__ = ["COMPRESSED_ATTRS", "RAW_ATTRS", "pulse_blocks", "quiet_invalid_netcdf",
-           "run_dataset", "run_in_memory", "write_run"]
+__all__ = ["COMPRESSED_ATTRS", "DEFAULT_BLOCK_PULSES", "RAW_ATTRS", "SerialBlocks",
+           "block_size", "blocks_of", "in_order", "quiet_invalid_netcdf", "run_dataset",
+           "run_in_memory", "write_netcdf_run", "write_run"]

@@ -13,10 +13,20 @@ float64: ranges keep sub-micrometre precision and the carrier phase 2 pi f_c tau
 reduced modulo one cycle before its sine and cosine. Per-pulse values (platform
 positions, velocities, antenna axes) enter as opaque constants: one compiled kernel per
 run.
+
+:func:`sea_echo_terms` chains the sea's per-pulse stages for a set of facets: facing test
+and ray-traced visibility (eq G1 and the local angles of :mod:`seaecho.geometry.frames`),
+the speckled facet amplitudes (eqs P1-P4, :func:`seaecho.scattering.facet.mechanisms`
+and :func:`~seaecho.scattering.facet.speckle`) and :func:`echo_terms`. These are the same
+functions, called with the same values, as the reference path of
+``Simulation.sea_echo`` (a Dr.Jit kernel per stage, numpy in between), so Dr.Jit records
+them as one kernel whose numbers are those of the reference to the last bit (tests);
+:class:`seaecho.radar.resident.ResidentSea` runs it on device-resident facets.
 """
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -24,12 +34,14 @@ from numpy.typing import NDArray
 
 from ..backend import Boundary, Mat2, Rows
 from ..constants import C0
-from ..geometry.frames import basis_change, fsa_basis
+from ..geometry.bistatic import ranges
+from ..geometry.frames import basis_change, bistatic_angles, fsa_basis
+from ..scattering.facet import speckle
 from .antennas import port_coefficients
 from .equation import amplitude_factor, carrier, flight, polarimetric_factor
 
-__all__ = ["antenna_gain", "echo_terms", "port_matrix", "scatterer_echo",
-           "scatterer_echo_drjit"]
+__all__ = ["antenna_gain", "echo_terms", "facet_visibility", "port_matrix", "scatterer_echo",
+           "scatterer_echo_drjit", "sea_echo_terms"]
 
 
 def antenna_gain(xp, antenna, d: Any, axes: Any) -> Any:
@@ -163,3 +175,62 @@ def scatterer_echo_drjit(radar, geometry, p: NDArray, v: NDArray, s: NDArray,
     from ..backend import drjit_namespace
 
     return scatterer_echo(drjit_namespace(variant), radar, geometry, p, v, s, directions)
+
+
+def facet_visibility(xp, geometry, facets: dict[str, Any]) -> tuple[Any, Any, Any]:
+    """Facing test and ray-traced visibility of facets, as the facet engine has them.
+
+    Returns ``(visible, n_i, n_s)``: Bool (lit from the transmitter and seen from the
+    receiver: facing, eq G1 and the local angles, and not occluded, ``facets["hidden_tx"]``,
+    ``facets["hidden_rx"]``) and the unit directions of eq G1 at the emission positions.
+    """
+    tx = np.asarray(geometry.tx.position, dtype=np.float64)
+    rx = np.asarray(geometry.rx.position, dtype=np.float64)
+    c, nrm = facets["centroid"], facets["normal"]
+    _, _, n_i, n_s = ranges(xp, c, xp.vconst(tx), xp.vconst(rx),
+                            bool(np.array_equal(tx, rx)))
+    theta_i, theta_s, _ = bistatic_angles(xp, n_i, n_s, nrm)
+    visible = ((theta_i < math.pi / 2) & ~facets["hidden_tx"]
+               & (theta_s < math.pi / 2) & ~facets["hidden_rx"])
+    return visible, n_i, n_s
+
+
+def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: Any,
+                   draws: dict[str, Any], lo: float, hi: float) -> dict[str, Any]:
+    """One pulse of sea facets over a namespace: visibility, eqs P1-P4, eqs R1 and R3.
+
+    Parameters
+    ----------
+    xp : array namespace (:mod:`seaecho.backend`)
+    radar : seaecho.radar.system.RadarSystem
+    geometry : seaecho.radar.system.PulseGeometry
+        Platform states of the pulse; the facing test and the scattering use the
+        positions at the emission (``geometry.tx.position``, ``geometry.rx.position``), as
+        the facet engine does.
+    facets : dict
+        Namespace values: ``centroid``, ``normal``, ``velocity`` (vectors) [m, -, m/s],
+        ``area`` [m^2], ``hidden_tx``, ``hidden_rx`` (Bool: segment to the transmitter /
+        receiver blocked, ``FacetEngine.occlusion``).
+    mechanisms_of : callable
+        ``(n_i, n_s, N) -> mechanisms`` (:func:`seaecho.scattering.facet.mechanisms` with
+        the sea's values bound): the facets' mechanism matrices and weights.
+    draws : dict
+        Speckle draws per mechanism (complex namespace values, eq P4).
+    lo, hi : float
+        Delays [s] outside which an echo cannot reach the receive window
+        (``ReceiveWindow.keep``).
+
+    Returns
+    -------
+    dict
+        ``tau`` [s], ``amplitudes`` (one complex value per channel) [sqrt(W)] and ``keep``
+        (Bool: visible and inside the window), for every facet.
+    """
+    visible, n_i, n_s = facet_visibility(xp, geometry, facets)
+    # Eqs P1-P4 with the facet's area times its visibility (0 or 1)
+    area = facets["area"] * xp.select(visible, xp.const(1.0), xp.const(0.0))
+    s = speckle(xp, mechanisms_of(n_i, n_s, facets["normal"]), draws, area)
+    # Eqs R1, R3
+    t = echo_terms(xp, radar, geometry, facets["centroid"], facets["velocity"], s)
+    keep = visible & (t["tau"] > lo) & (t["tau"] < hi)
+    return dict(tau=t["tau"], amplitudes=t["amplitudes"], keep=keep)

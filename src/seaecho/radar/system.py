@@ -23,13 +23,14 @@ emission time (the echo arrives microseconds later).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..constants import C0
 from ..rng import generator
-from .echo import ReceiveWindow, accumulate
+from .echo import ReceiveWindow, accumulate, accumulate_cuda
 from .equation import noise_power, thermal_noise
 from .model import RadarModel
 from .platforms import PlatformState
@@ -54,20 +55,55 @@ class ScattererEcho:
     Attributes
     ----------
     tau : (K,) total delay tau_t + tau_r [s] (float64)
-    amplitudes : (C, K) complex amplitude per channel [sqrt(W)], carrier phase included
-    r_t, r_r : (K,) ranges [m]
-    g_t, g_r : (K,) antenna power gains [-]
+    amplitudes : (C, K) complex amplitude per channel [sqrt(W)], carrier phase included;
+        or a list of C (K,) complex arrays (the fused sea kernel)
+    r_t, r_r : (K,) ranges [m], or None (the fused sea kernel, ``seaecho.radar.resident``,
+        returns only what the accumulation needs)
+    g_t, g_r : (K,) antenna power gains [-], or None (likewise)
     n_i, n_s : (K, 3) unit propagation directions [-], or None when not asked for
     """
 
     tau: NDArray[np.float64]
-    amplitudes: NDArray[np.complex128]
-    r_t: NDArray[np.float64]
-    r_r: NDArray[np.float64]
-    g_t: NDArray[np.float64]
-    g_r: NDArray[np.float64]
+    amplitudes: NDArray[np.complex128] | list[NDArray[np.complex128]]
+    r_t: NDArray[np.float64] | None
+    r_r: NDArray[np.float64] | None
+    g_t: NDArray[np.float64] | None
+    g_r: NDArray[np.float64] | None
     n_i: NDArray[np.float64] | None
     n_s: NDArray[np.float64] | None
+
+
+@dataclass(frozen=True)
+class DeviceEcho:
+    """Delays and amplitudes of scatterers that stay in GPU memory (eq R1).
+
+    :meth:`RadarSystem.receive` accumulates them on the device
+    (:func:`seaecho.radar.echo.accumulate_cuda`); only the pulse's samples come back.
+
+    Attributes
+    ----------
+    xp : seaecho.backend.DrJitNamespace
+        The namespace (``drjit.cuda``) the arrays live in.
+    tau : Dr.Jit Float64 (K,)
+        Total delays [s], all inside the receive window.
+    amplitudes : tuple of C Dr.Jit Float64 (2 K,)
+        Complex amplitudes [sqrt(W)] per channel, interleaved (re, im): the memory of a
+        complex (K,) array each.
+    n_channels : int
+        C.
+    """
+
+    xp: Any
+    tau: Any
+    amplitudes: Any
+    n_channels: int
+
+    def to_host(self) -> ScattererEcho:
+        """The same echo as numpy arrays (a copy from the device)."""
+        tau = np.array(self.xp.host(self.tau), dtype=np.float64)
+        amp = np.stack([np.array(self.xp.host(a)).view(np.complex128)
+                        for a in self.amplitudes])
+        return ScattererEcho(tau, amp, None, None, None, None, None, None)
 
 
 def canonical_channels(channels, rx_ports: tuple[str, str], tx_ports: tuple[str, str]
@@ -259,8 +295,10 @@ class RadarSystem:
         ----------
         pulse : int
             Pulse index (selects the noise stream).
-        echoes : list of ScattererEcho
-            Scatterer sets (sea facets, targets) of this pulse.
+        echoes : list of ScattererEcho or DeviceEcho
+            Scatterer sets (sea facets, targets) of this pulse, each accumulated by
+            :func:`~seaecho.radar.echo.accumulate` (a few targets: the direct sum; the
+            sea: the NUFFT) or, on a GPU, :func:`~seaecho.radar.echo.accumulate_cuda`.
         noise : bool or None
             Add k T0 F B noise; default the model's ``thermal_noise``.
         out : ndarray (C, n_samples) complex, optional
@@ -275,19 +313,19 @@ class RadarSystem:
             out = np.zeros((n_ch, self.window.n_samples), dtype=np.complex128)
         else:
             out[...] = 0.0
-        taus, amps = [], []
-        for e in echoes:  # a handful of scatterer sets, each one vectorised
+        for e in echoes:  # a handful of scatterer sets (sea, targets), each one vectorised
+            if isinstance(e, DeviceEcho):  # already cut to the window, on the GPU
+                out += accumulate_cuda(e.xp, e.tau, e.amplitudes, self._spectrum,
+                                       self.window)
+                continue
             keep = self.window.keep(e.tau, self.waveform.n_samples)
             if keep.all():  # no copies
-                taus.append(e.tau)
-                amps.append(e.amplitudes)
+                tau, amp = e.tau, e.amplitudes
+            elif isinstance(e.amplitudes, np.ndarray):
+                tau, amp = e.tau[keep], e.amplitudes[:, keep]
             else:
-                taus.append(e.tau[keep])
-                amps.append(e.amplitudes[:, keep])
-        if taus:
-            tau = taus[0] if len(taus) == 1 else np.concatenate(taus)
+                tau, amp = e.tau[keep], [a[keep] for a in e.amplitudes]
             if tau.size:
-                amp = amps[0] if len(amps) == 1 else np.concatenate(amps, axis=1)
                 out += accumulate(tau, amp, self._spectrum, self.window)
         if self.model.thermal_noise if noise is None else noise:
             out += thermal_noise(out.shape, self.noise_power,
@@ -307,6 +345,7 @@ class RadarSystem:
 
 
 __all__ = [
+    "DeviceEcho",
     "Pointing",
     "PulseGeometry",
     "RadarSystem",

@@ -110,7 +110,7 @@ class FacetEngine:
         self.refresh_interval_s = float(refresh_interval_s)
         self.objects = list(objects)
         self._tracer = None
-        self._cache: tuple[float, np.ndarray, np.ndarray] | None = None
+        self._cache: tuple[float, object, object] | None = None
         self._geometry: tuple | None = None  # (state, (centroid, area, normal, velocity))
         self._variant = variant
         self.eps_r = eps_r
@@ -193,6 +193,33 @@ class FacetEngine:
         return dataclasses.replace(f, visibility=f.visibility * s,
                                    extra={**f.extra, "subfacet_shadowing": s})
 
+    def occlusion(self, t: float, state=None) -> tuple[float, object, object]:
+        """Occlusion serving time ``t`` [s] (raytraced mode): ``(t_ref, hidden_tx,
+        hidden_rx)``, whether each facet's segment to the transmitter / receiver is blocked,
+        traced on the surface, objects and platforms of ``t_ref`` (module docstring) for
+        every facet, memoised until ``t_ref`` changes. The masks are the tracer's device
+        arrays (:meth:`~seaecho.tracing.tracer.FacetTracer.occluded` with ``device``):
+        ``tracer.to_numpy`` reads them back.
+        """
+        st = self.surface(t) if state is None else state
+        tracer = self._get_tracer(st)
+        t_ref = reference_time(t, self.refresh_interval_s)
+        if self._cache is None or self._cache[0] != t_ref:
+            st_ref = st if t_ref == t else self.surface(t_ref)
+            tx_ref, rx_ref = self.positions(t_ref)
+            tracer.set_surface(st_ref.elevation)
+            tracer.set_time(t_ref)
+            if st_ref is st:  # the usual held surface: meshed once
+                c_ref, _, n_ref, _ = self.geometry(st)
+            else:
+                c_ref, _, n_ref = facet_geometry(grid_vertices(st_ref.x, st_ref.y,
+                                                               st_ref.elevation))
+            occ_tx = tracer.occluded(c_ref, n_ref, tx_ref, device=True)
+            occ_rx = occ_tx if np.array_equal(tx_ref, rx_ref) else tracer.occluded(
+                c_ref, n_ref, rx_ref, device=True)
+            self._cache = (t_ref, occ_tx, occ_rx)
+        return self._cache
+
     def _facets(self, t: float, state=None) -> Facets:
         """Facets at time ``t`` [s] in the engine's mode, without sub-facet shadowing.
 
@@ -213,22 +240,8 @@ class FacetEngine:
         if self.refresh_interval_s == 0.0:
             return tracer.facets(st.elevation, st.velocity, tx, rx, t=t,
                                  geometry=self.geometry(st))
-        t_ref = reference_time(t, self.refresh_interval_s)
-        if self._cache is None or self._cache[0] != t_ref:
-            st_ref = st if t_ref == t else self.surface(t_ref)
-            tx_ref, rx_ref = self.positions(t_ref)
-            tracer.set_surface(st_ref.elevation)
-            tracer.set_time(t_ref)
-            if st_ref is st:  # the usual held surface: meshed once
-                c_ref, _, n_ref, _ = self.geometry(st)
-            else:
-                c_ref, _, n_ref = facet_geometry(grid_vertices(st_ref.x, st_ref.y,
-                                                               st_ref.elevation))
-            occ_tx = tracer.occluded(c_ref, n_ref, tx_ref)
-            occ_rx = occ_tx if np.array_equal(tx_ref, rx_ref) else tracer.occluded(
-                c_ref, n_ref, rx_ref)
-            self._cache = (t_ref, occ_tx, occ_rx)
-        _, occ_tx, occ_rx = self._cache
+        t_ref, occ_tx, occ_rx = self.occlusion(t, st)
+        occ_tx, occ_rx = tracer.to_numpy(occ_tx), tracer.to_numpy(occ_rx)
         centroid, area, normal, velocity = self.geometry(st)
         geo = facet_frames_drjit(centroid, normal, tx, rx, variant=self._variant)
         lit = (geo["theta_i"] < np.pi / 2) & ~occ_tx

@@ -16,6 +16,7 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -31,6 +32,7 @@ __all__ = [
     "load_object",
     "rotation_matrix",
     "shadow_rays",
+    "shadow_test",
 ]
 
 #: Vacuum permittivity [F/m] (eps0 = 1 / (mu0 c^2), CODATA 2018 mu0).
@@ -386,11 +388,40 @@ def shadow_rays(mi_scenes: Sequence, origins: np.ndarray, directions: np.ndarray
     o = [aligned(origins[:, k], np.float32) for k in range(3)]
     d = [aligned(directions[:, k], np.float32) for k in range(3)]
     t = aligned(maxt, np.float32)
-    ray = mi.Ray3f(mi.Point3f(*(mi.Float(a) for a in o)), mi.Vector3f(*(mi.Float(a) for a in d)))
-    ray.maxt = mi.Float(t)
-    blocked = None
-    for sc in mi_scenes:  # combined on the device, read back once
-        t = sc.ray_test(ray)
-        blocked = t if blocked is None else blocked | t
+    blocked = shadow_test(mi_scenes, [mi.Float(a) for a in o], [mi.Float(a) for a in d],
+                          mi.Float(t), variant=variant)
     hit[:] = np.asarray(blocked.numpy(), dtype=bool)
     return hit
+
+
+def shadow_test(mi_scenes: Sequence, origins: Sequence, directions: Sequence, maxt: Any, *,
+                variant: str | None = None) -> Any:
+    """Whether each ray segment is blocked by any of the scenes, on the device.
+
+    Parameters
+    ----------
+    mi_scenes : sequence of mitsuba.Scene
+        Scenes to test against (non-empty).
+    origins, directions : three Dr.Jit arrays each
+        Ray origins [m] and unit directions [-] of the variant's back end (float64 or
+        float32: converted to Mitsuba's float32 without leaving the device).
+    maxt : Dr.Jit array
+        Segment lengths [m].
+    variant : str, optional
+        As :func:`shadow_rays`.
+
+    Returns
+    -------
+    mitsuba.Bool
+        True where the segment hits something (the scenes' hit masks combined by Dr.Jit,
+        not read back).
+    """
+    _, mi, _ = mitsuba_modules(active_variant() if variant is None else variant)
+    ray = mi.Ray3f(mi.Point3f(*(mi.Float(a) for a in origins)),
+                   mi.Vector3f(*(mi.Float(a) for a in directions)))
+    ray.maxt = mi.Float(maxt)
+    blocked = None
+    for sc in mi_scenes:  # combined on the device
+        t = sc.ray_test(ray)
+        blocked = t if blocked is None else blocked | t
+    return blocked

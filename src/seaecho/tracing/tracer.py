@@ -21,10 +21,11 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from ..backend import Boundary, drjit_namespace
 from ..geometry.facets import Facets
 from ..geometry.mesh import facet_geometry, grid_vertices, to_facets
 from .kernels import facet_frames_drjit
-from .scene import ObjectGeometry, ObjectScene, SeaScene, shadow_rays
+from .scene import ObjectGeometry, ObjectScene, SeaScene, shadow_test
 from .variant import set_variant
 
 __all__ = ["FacetTracer"]
@@ -71,6 +72,7 @@ class FacetTracer:
         self.moving_objects = ObjectScene(moving, variant=variant) if moving else None
         cell = min(np.min(np.diff(self.x)), np.min(np.diff(self.y)))
         self._cell = float(cell)
+        self._scale_of: tuple[np.ndarray, float] | None = None
 
     @property
     def mi_scenes(self) -> list:
@@ -98,8 +100,13 @@ class FacetTracer:
             self.moving_objects.move_to(t)
 
     def occluded(self, centroid: np.ndarray, normal: np.ndarray, position: np.ndarray,
-                 mask: np.ndarray | None = None) -> np.ndarray:
+                 mask: np.ndarray | None = None, *, device: bool = False):
         """Whether the segments from the facets to a position hit the sea or an object.
+
+        The rays are set up (origin, direction, length, in float64) and tested on the
+        tracer's back end: read-only facet arrays (a held sea's geometry) are on the device
+        already (:func:`seaecho.backend.resident`), and with ``device=True`` the result
+        stays there too.
 
         Parameters
         ----------
@@ -109,30 +116,63 @@ class FacetTracer:
             Transmitter or receiver position [m].
         mask : (N,) bool array, optional
             Only trace these facets (others come back False).
+        device : bool
+            Return the namespace's Bool array (``drjit.llvm`` or ``drjit.cuda``, no read
+            back) instead of numpy; needs ``mask`` None.
 
         Returns
         -------
-        (N,) bool array
+        (N,) bool array, or a Dr.Jit Bool array when ``device``
         """
+        xp = drjit_namespace(self.variant)
         p = np.asarray(position, dtype=np.float64)
         idx = None if mask is None else np.flatnonzero(mask)
         if idx is not None and idx.size == centroid.shape[0]:
             idx = None  # every facet traced: no gather, no scatter
+        if device and idx is not None:
+            raise ValueError("occluded(device=True) traces every facet (mask must be None)")
         c = centroid if idx is None else centroid[idx]
         nrm = normal if idx is None else normal[idx]
+        n = c.shape[0]
+        if n == 0:
+            return xp.Bool(np.zeros(0, dtype=bool)) if device else np.zeros(
+                centroid.shape[0], dtype=bool)
         # float32 resolution at the ray origins (the facets), not at the far end
-        scale = float(np.max(np.abs(c))) if c.size else 0.0
+        scale = self._scale(c)
         eps = max(1e-3 * self._cell, 8.0 * np.finfo(np.float32).eps * scale)
-        origin = c + eps * nrm
-        d = p - origin
-        r = np.sqrt(np.einsum("ij,ij->i", d, d))
-        d /= r[:, None]
-        hit_sub = shadow_rays(self.mi_scenes, origin, d, r * (1.0 - 1e-6), variant=self.variant)
+        io = Boundary(xp, n)
+        origin = io.vec3(c) + io.vec3(nrm) * xp.const(eps)
+        d = xp.vconst(p) - origin
+        r = xp.sqrt(xp.dot(d, d))
+        d = d / r
+        blocked = shadow_test(self.mi_scenes, origin, d, r * (1.0 - 1e-6),
+                              variant=self.variant)
+        blocked = xp.Bool(blocked)
+        if device:
+            xp.eval(blocked)
+            return blocked
+        hit_sub = np.asarray(xp.host(blocked), dtype=bool)
         if idx is None:
-            return hit_sub
+            return hit_sub.copy()
         hit = np.zeros(centroid.shape[0], dtype=bool)
         hit[idx] = hit_sub
         return hit
+
+    def _scale(self, c: np.ndarray) -> float:
+        """Largest coordinate magnitude of the ray origins [m] (memoised per read-only
+        array: a held surface's centroids are traced at every refresh)."""
+        if not c.flags.writeable and self._scale_of is not None and self._scale_of[0] is c:
+            return self._scale_of[1]
+        value = float(np.max(np.abs(c)))
+        if not c.flags.writeable:
+            self._scale_of = (c, value)
+        return value
+
+    def to_numpy(self, hidden) -> np.ndarray:
+        """numpy copy of an occlusion mask from :meth:`occluded` (either form)."""
+        if isinstance(hidden, np.ndarray):
+            return hidden
+        return np.array(drjit_namespace(self.variant).host(hidden), dtype=bool)
 
     def facets(self, elevation: np.ndarray | None, velocity: np.ndarray | None,
                tx: np.ndarray, rx: np.ndarray | None = None, *, t: float = 0.0,
