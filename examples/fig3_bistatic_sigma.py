@@ -1,6 +1,6 @@
 """The paper's Fig. 3: bistatic sigma_mn against phi_s for Kirchhoff, SPM and the blend.
 
-    python examples/fig3_bistatic_sigma.py [--out docs/figures] [--quick]
+    python examples/fig3_bistatic_sigma.py [--out docs/gallery] [--quick]
 
 Writes ``scattering_fig3.png``: theta_i = 20 deg, theta_s = 30 deg, phi_i = 0,
 phi_s = 0..180 deg, U19.5 = 4.53 m/s (wind towards +x), 10 GHz, 20 degC, 35 psu,

@@ -1,6 +1,6 @@
 """The paper's Fig. 4: blended sigma_mn over (theta_s, phi_s) for theta_i = 39 deg.
 
-    python examples/fig4_bistatic_map.py [--out docs/figures] [--quick]
+    python examples/fig4_bistatic_map.py [--out docs/gallery] [--quick]
 
 Writes ``scattering_fig4.png``: theta_i = 39 deg, phi_i = 0, theta_s = 0..89 deg,
 phi_s = 0..180 deg, U19.5 = 4.53 m/s, wind direction psi = 0, 10 GHz, 20 degC, 35 psu,

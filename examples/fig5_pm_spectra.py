@@ -1,6 +1,6 @@
 """The paper's Fig. 5: Pierson-Moskowitz spectra for wind speeds in a geometric progression.
 
-    python examples/fig5_pm_spectra.py [--out docs/figures] [--quick]
+    python examples/fig5_pm_spectra.py [--out docs/gallery] [--quick]
 
 Writes ``ocean_fig5_pm_spectra.png``: the omnidirectional wavenumber spectrum S(K) of
 Pierson & Moskowitz (paper eq 5, a0 = 8.1e-3, with the standard factor 1/2,
@@ -8,7 +8,7 @@ docs/ocean.md) for U19.5 = 2.5, 5, 10 and 20 m/s (factor a = 2), in log-log axes
 paper's invariant (eq 14): multiplying U by a moves the curve by (-2 log a, +6 log a),
 since S(K / a^2; a U) = a^6 S(K; U); the dotted curves are the 2.5 m/s spectrum moved so,
 on top of the computed ones. Each curve's peak K_p = sqrt(2 b0 / 3) g / U^2 and H_s =
-0.209 U^2 / g are marked. ``--quick``: 200 wavenumbers instead of 2000.
+0.209 U^2 / g are marked (``seaecho.wave_spectrum``). ``--quick``: 200 wavenumbers instead of 2000.
 
 The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
 polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
@@ -22,8 +22,7 @@ from pathlib import Path
 import numpy as np
 from _gallery import options, save
 
-from seaecho.ocean.spectra import DirectionalSpectrum, pierson_moskowitz, pierson_moskowitz_peak
-from seaecho.ocean.twoscale import height_variance
+import seaecho
 
 WINDS = (2.5, 5.0, 10.0, 20.0)  # U19.5 [m/s], factor a = 2 (the paper's choice)
 
@@ -34,15 +33,14 @@ def main(argv: list[str] | None = None) -> list[Path]:
 
     k = np.geomspace(1e-3, 1e2, 200 if args.quick else 2000)
     fig, ax = plt.subplots(figsize=(7.0, 4.6), constrained_layout=True)
-    base = pierson_moskowitz(k, WINDS[0])
+    base = seaecho.wave_spectrum(k, wind_speed_m_s=WINDS[0], spectrum="pierson-moskowitz")
     for i, u in enumerate(WINDS):
-        s = pierson_moskowitz(k, u)
-        hs = 4.0 * np.sqrt(height_variance(DirectionalSpectrum("pierson-moskowitz",
-                                                               "longuet-higgins", u), 0.0,
-                                           1e4))
-        ax.loglog(k, s, color=f"C{i}", label=f"U19.5 = {u:g} m/s: H_s = {hs:.2f} m")
-        kp = pierson_moskowitz_peak(u)
-        ax.plot(kp, pierson_moskowitz(kp, u), "o", color=f"C{i}", ms=4)
+        s = seaecho.wave_spectrum(k, wind_speed_m_s=u, spectrum="pierson-moskowitz")
+        hs, kp = s.attrs["significant_wave_height_m"], s.attrs["peak_wavenumber_rad_m"]
+        ax.loglog(k, s, color=f"C{i}", label=f"U19.5 = {u:g} m/s: H_s = {hs:.2f} m, "
+                  f"K_p = {kp:.3g} rad/m")
+        peak = seaecho.wave_spectrum(kp, wind_speed_m_s=u, spectrum="pierson-moskowitz")
+        ax.plot(kp, float(peak), "o", color=f"C{i}", ms=4)
         if i:  # eq 14: the 2.5 m/s curve moved by (-2 log a, +6 log a), a = u / 2.5
             a = u / WINDS[0]
             ax.loglog(k / a**2, base * a**6, ":", color="k", lw=1.0)

@@ -1,6 +1,6 @@
 """The paper's Fig. 6: Simulation 1, bistatic returns of a 64 m sea with the motor boat.
 
-    python examples/fig6_simulation1.py [--out docs/figures] [--quick]
+    python examples/fig6_simulation1.py [--out docs/gallery] [--paper | --quick]
 
 Runs ``scenes/paper_sim1_bistatic_64m.toml`` from Python (``seaecho.simulate``: the
 10 m boat at 10 kt heading 35 deg with its wake and its hull echo, Tx 20 deg and Rx
@@ -8,8 +8,10 @@ Runs ``scenes/paper_sim1_bistatic_64m.toml`` from Python (``seaecho.simulate``: 
 ``paper_fig6_simulation1.png``: (a) the sea + wake elevation, (b) the modulus of the
 received signal of the first pulse (unit transmitted amplitude, as the paper's 6b), (c)
 the range-compressed signal, (d-g) sigma_mn [dB] of every sea cell (the paper's
-6c-6f), visibility included. ``--quick``: a 20 m tile on the same grid spacing, two
-pulses, the hull traced with one ray per wavelength.
+6c-6f), visibility included. By default a 32 m tile on the same 0.099 m grid with the
+boat moved into it and 4 pulses; ``--paper``: the paper's 64 m tile and 8 pulses (the
+README's ``seaecho run``); ``--quick``: a 10 m tile, one pulse, the hull traced with one ray
+per wavelength.
 
 The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
 polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
@@ -21,21 +23,22 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-from _gallery import SCENES, db, options, save, seaecho_warnings
+from _gallery import SCENES, db, options, save, seaecho_warnings, sized
 
 import seaecho
 
-#: Reduced mode: a 20 m tile (above the 18.7 m peak wavelength) on the same 0.099 m grid,
-#: the boat moved into it, two pulses, the hull traced with one ray per wavelength.
-QUICK = {"sea.size_x_m": 20.0, "sea.nx": 202, "ship.position_m": [3.0, 2.0],
-         "radar.n_pulses": 2, "objects.0.rays_per_wavelength": 1.0}
+#: Reduced size: a 32 m tile on the paper's 0.099 m grid, the boat moved into it, 4 pulses
+DEFAULT = {"sea.size_x_m": 32.0, "sea.nx": 324, "ship.position_m": [6.0, 4.0],
+           "radar.n_pulses": 4}
+#: Tiny: a 10 m tile, one pulse, the hull traced with one ray per wavelength
+QUICK = {"sea.size_x_m": 10.0, "sea.nx": 102, "ship.position_m": [1.0, 1.0],
+         "radar.n_pulses": 1, "objects.0.rays_per_wavelength": 1.0}
 
 
 def main(argv: list[str] | None = None) -> list[Path]:
     args = options(__doc__, argv)
-    scene = seaecho.load_scene(SCENES / "paper_sim1_bistatic_64m.toml")
-    if args.quick:
-        scene = seaecho.with_overrides(scene, QUICK)
+    scene = sized(seaecho.load_scene(SCENES / "paper_sim1_bistatic_64m.toml"), args,
+                  DEFAULT, QUICK)
     with seaecho_warnings():
         ds = seaecho.simulate(scene, progress=not args.quick)
 

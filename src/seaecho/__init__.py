@@ -1,14 +1,15 @@
 """seaecho: physics-based simulator of bistatic, polarimetric marine radar echoes.
 
-From Python (:mod:`seaecho.api`, docs/python.md)::
+From Python (:mod:`seaecho.api`, docs/python-api.md)::
 
     import seaecho
     scene = seaecho.load_scene("scenes/paper_sim1_bistatic_64m.toml")
     ds = seaecho.simulate(seaecho.with_overrides(scene, {"sea.wind_speed_m_s": 8.0}))
 
 ``load_scene``, ``parse_scene``, ``with_overrides``, ``simulate``, ``surface``, ``trace``,
-``compare``, ``sigma``, ``permittivity``, ``image``, ``save`` and ``open_dataset`` return
-scenes and xarray objects; they are imported on first use, so ``import seaecho`` stays
+``compare``, ``sigma``, ``wave_spectrum``, ``permittivity``, ``image``,
+``image_measures``, ``figures``, ``save`` and ``open_dataset`` return scenes, xarray
+objects and files; they are imported on first use, so ``import seaecho`` stays
 fast. The package is split by pipeline stage (see ``docs/design.md``): ``config`` (scene
 files), ``ocean`` (spectra, surfaces, sea water), ``wake`` (ship wakes), ``scattering``
 (polarimetric sea scattering), ``tracing`` (Sionna RT / Mitsuba facets), ``geometry``
@@ -28,7 +29,9 @@ __all__ = [
     "Scene",
     "__version__",
     "compare",
+    "figures",
     "image",
+    "image_measures",
     "load_scene",
     "open_dataset",
     "parse_scene",
@@ -38,6 +41,7 @@ __all__ = [
     "simulate",
     "surface",
     "trace",
+    "wave_spectrum",
     "with_overrides",
 ]
 #: The Python API (:mod:`seaecho.api`), re-exported here on first use (PEP 562).
@@ -47,7 +51,9 @@ if TYPE_CHECKING:  # pragma: no cover
     from .api import (
         Scene,
         compare,
+        figures,
         image,
+        image_measures,
         load_scene,
         open_dataset,
         parse_scene,
@@ -57,6 +63,7 @@ if TYPE_CHECKING:  # pragma: no cover
         simulate,
         surface,
         trace,
+        wave_spectrum,
         with_overrides,
     )
 

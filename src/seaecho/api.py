@@ -16,8 +16,11 @@ function                      gives                            command line
 :func:`trace`                 facets seen from Tx and Rx       ``seaecho trace``
 :func:`compare`               ray-traced vs analytic facets    ``seaecho compare``
 :func:`sigma`                 mean-plane sigma_mn of the sea   ``seaecho sigma``
+:func:`wave_spectrum`         wave spectrum S(K), H_s, peak
 :func:`permittivity`          sea-water permittivity           ``seaecho permittivity``
 :func:`image`                 focused SAR image                ``seaecho image``
+:func:`image_measures`        the paper's image measures       ``seaecho image``
+:func:`figures`               the command line's PNG figures   ``run``, ``image``
 :func:`save`, :func:`open_dataset`  netCDF files (complex variables included)
 ============================  ===============================  =========================
 
@@ -69,8 +72,10 @@ __all__ = [
     "Scene",
     "SceneSummary",
     "compare",
+    "figures",
     "image",
     "image_config",
+    "image_measures",
     "load_scene",
     "open_dataset",
     "parse_scene",
@@ -81,6 +86,7 @@ __all__ = [
     "simulate",
     "surface",
     "trace",
+    "wave_spectrum",
     "with_overrides",
 ]
 
@@ -364,7 +370,11 @@ def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | N
     if path is None:
         if resume:
             raise SceneError("resume = True: needs a Zarr path (*.zarr) to continue")
-        _check_fits_in_memory(scene, RadarSystem(build_radar(scene)), max_memory_bytes)
+        try:
+            radar = RadarSystem(build_radar(scene))
+        except ValueError as exc:
+            raise SceneError(f"{label}: {exc}") from None
+        _check_fits_in_memory(scene, radar, max_memory_bytes)
     else:
         path = Path(path)
         if str(path.parent) and not path.parent.is_dir():
@@ -816,6 +826,68 @@ def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
                         attrs=attrs)
 
 
+def wave_spectrum(wavenumber_rad_m: ArrayLike, *, wind_speed_m_s: float = 4.53,
+                  spectrum: str = "elfouhaily", fetch_m: float | None = None,
+                  scene: SceneModel | None = None) -> xr.DataArray:
+    """Omnidirectional wavenumber spectrum S(K) of a wind sea (the paper's eq 5 for
+    Pierson-Moskowitz; :mod:`seaecho.ocean.spectra` for the others and their sources).
+
+    Parameters
+    ----------
+    wavenumber_rad_m : float or sequence
+        Wavenumbers K > 0 [rad/m].
+    wind_speed_m_s : float
+        U19.5 [m/s] (default 4.53, the paper's Fig. 3 sea).
+    spectrum : str
+        ``elfouhaily``, ``pierson-moskowitz`` or ``jonswap``.
+    fetch_m : float, optional
+        Fetch [m] (JONSWAP; Elfouhaily's wave age).
+    scene : Scene, optional
+        Take the spectrum, wind and fetch from the scene's ``[sea]`` instead.
+
+    Returns
+    -------
+    xarray.DataArray
+        S(K) [m^3] over ``wavenumber`` [rad/m], with attributes ``spectrum``,
+        ``wind_speed_m_s``, ``significant_wave_height_m`` (H_s = 4 sqrt(int S dK) over
+        0 < K < 10^4 rad/m) and ``peak_wavenumber_rad_m`` (the maximum of S, found by a
+        bounded search over 10^-4 < K < 10^2 rad/m).
+    """
+    import numpy as np
+    import xarray as xr
+    from scipy.optimize import minimize_scalar
+
+    from .build import sea_spectrum
+    from .ocean.spectra import DirectionalSpectrum
+    from .ocean.twoscale import height_variance
+
+    k = np.asarray(wavenumber_rad_m, dtype=np.float64)
+    if k.ndim > 1 or not np.all(np.isfinite(k)) or np.any(k <= 0):
+        raise SceneError(f"wavenumber_rad_m = {np.ravel(k)[:8].tolist()}...: expected "
+                         "positive numbers [rad/m], a number or a 1-D sequence")
+    if scene is not None:
+        spec = sea_spectrum(_scene(scene))
+    else:
+        if not SIGMA_WIND_M_S[0] < wind_speed_m_s <= SIGMA_WIND_M_S[1]:
+            raise SceneError(f"wind_speed_m_s = {wind_speed_m_s!r}: must be in "
+                             f"(0, {SIGMA_WIND_M_S[1]:g}] m/s")
+        try:
+            spec = DirectionalSpectrum(spectrum=spectrum, spreading="longuet-higgins",
+                                       u19_5=float(wind_speed_m_s), fetch=fetch_m)
+        except ValueError as exc:
+            raise SceneError(str(exc)) from None
+    peak = minimize_scalar(lambda lk: -float(spec.omni(np.exp(lk))),
+                           bounds=(math.log(1e-4), math.log(1e2)), method="bounded",
+                           options={"xatol": 1e-10})
+    attrs = {"units": "m3", "long_name": f"omnidirectional {spec.spectrum} spectrum",
+             "spectrum": spec.spectrum, "wind_speed_m_s": float(spec.u19_5),
+             "significant_wave_height_m": 4.0 * math.sqrt(height_variance(spec, 0.0, 1e4)),
+             "peak_wavenumber_rad_m": float(math.exp(peak.x))}
+    dims = ("wavenumber",) if k.ndim else ()
+    return xr.DataArray(spec.omni(k), dims=dims, name="spectrum", attrs=attrs,
+                        coords={"wavenumber": (dims, k, {"units": "rad m-1"})})
+
+
 def permittivity(frequency_hz: ArrayLike = 10.0e9, temperature_c: float = 20.0,
                  salinity_psu: float = 35.0, model: str = "meissner-wentz") -> xr.DataArray:
     """Complex relative permittivity of sea water, eps' - j eps''
@@ -971,6 +1043,65 @@ def image(raw: xr.Dataset | PathLike, config: ImageConfig | None = None, *,
     except ValueError as exc:  # grid, window, or a dataset that is not a raw run
         where = os.fspath(raw) if isinstance(raw, str | os.PathLike) else "raw dataset"
         raise SceneError(f"{where}: {exc}") from None
+
+
+def image_measures(img: xr.Dataset, variable: str = "sigma0") -> dict[str, dict[str, float]]:
+    """The paper's image claims measured per channel of a focused image over the sea
+    (what ``seaecho image`` prints; docs/imaging.md, :mod:`seaecho.imaging.quality`).
+
+    Parameters
+    ----------
+    img : xarray.Dataset
+        :func:`image` of a run with sea clutter.
+    variable : str
+        ``sigma0``, or ``sigma0_filtered`` with a speckle filter.
+
+    Returns
+    -------
+    dict
+        ``{channel: {"sea_db": ..., "wake_db": ..., "contrast_db": ...,
+        "secondary_peak_db": ..., "modulation": ...}}``: the measures the image allows
+        (an empty dict for a channel without sea).
+    """
+    from .imaging.quality import paper_metrics
+
+    if variable not in img:
+        raise SceneError(f"variable = {variable!r}: not in the image (has "
+                         f"{', '.join(sorted(map(str, img.data_vars)))})")
+    return paper_metrics(img, variable)
+
+
+def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
+    """Write the PNG figures the command line draws for a dataset, ``<stem>_<what>.png``.
+
+    A run (:func:`simulate`, ``seaecho run``): the signal of the first pulse, raw and
+    range compressed, and with sea clutter the elevation and sigma0 maps (the paper's
+    Fig. 6 panels). An image (:func:`image`, ``seaecho image``): sigma0 per channel on
+    one dB scale (its ``[image].dynamic_range_db``), the speckle-filtered sigma0, the
+    Pauli composite (the paper's Figs. 7-9).
+
+    Returns
+    -------
+    list of Path
+        The files written (each atomically).
+    """
+    import json
+
+    stem = Path(stem)
+    if str(stem.parent) and not stem.parent.is_dir():
+        raise SceneError(f"stem = {os.fspath(stem)!r}: directory {stem.parent} does not "
+                         "exist")
+    if "raw" in dataset:
+        from .io.figures import run_figures
+
+        return run_figures(dataset, stem)
+    if "image_json" in dataset.attrs:
+        from .imaging.figures import image_figures
+
+        cfg = json.loads(dataset.attrs["image_json"])
+        return image_figures(dataset, stem, cfg["dynamic_range_db"])
+    raise SceneError("dataset: neither a run (no 'raw') nor an image (no 'image_json' "
+                     "attribute)")
 
 
 # ----------------------------------------------------------------------------- summary

@@ -159,3 +159,16 @@ def test_image_of_the_dataset_is_the_image_of_the_file(tmp_path):
     assert a["image"].values.tobytes() == b["image"].values.tobytes()
     with pytest.raises(SceneError, match=r"\[image\].pixel_m = -1"):
         seaecho.image(ds, pixel_m=-1)
+
+
+def test_figures_of_a_run_and_refusals(scene_file, cli_run, tmp_path):
+    # the command line's figures of the run (the same names seaecho run writes)
+    paths = seaecho.figures(cli_run, tmp_path / "run")
+    assert sorted(p.name for p in paths) == ["run_compressed.png", "run_elevation.png",
+                                             "run_sigma.png", "run_signal.png"]
+    with pytest.raises(SceneError, match="neither a run"):
+        seaecho.figures(xr.Dataset(), tmp_path / "x")
+    with pytest.raises(SceneError, match="does not exist"):
+        seaecho.figures(cli_run, tmp_path / "nowhere" / "run")
+    with pytest.raises(SceneError, match="variable = 'sigma0_filtered'"):
+        seaecho.image_measures(xr.Dataset(), "sigma0_filtered")

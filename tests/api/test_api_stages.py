@@ -3,7 +3,12 @@
 Parity with the functions they wrap (the command line writes what these return), the
 labelled layout, reciprocity at backscatter (S_hv = S_vh, so sigma_hv = sigma_vh: a
 property of any reciprocal medium, e.g. Ulaby & Long, *Microwave Radar and Radiometric
-Remote Sensing*, 2014, sec. 5-6), and bad input named.
+Remote Sensing*, 2014, sec. 5-6), the wave spectrum against the Pierson-Moskowitz closed
+forms and the paper's eq 14 scaling, and bad input named.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
@@ -120,3 +125,34 @@ def test_trace_and_compare():
         seaecho.trace(scene, frequency_hz=10e9)
     with pytest.raises(SceneError, match=r"no \[radar\]"):
         seaecho.trace(scene, tx_position=tx)
+
+
+def test_wave_spectrum_against_pierson_moskowitz_closed_forms():
+    # Pierson & Moskowitz (1964) in the paper's eq 5 form S(K) = a0 / (2 K^3)
+    # exp(-b0 g^2 / (K^2 U^4)), a0 = 8.1e-3, b0 = 0.74 (the 1/2: docs/ocean.md): its
+    # maximum at K_p = sqrt(2 b0 / 3) g / U^2 (dS/dK = 0), its significant wave height
+    # H_s = 4 sqrt(a0 U^4 / (4 b0 g^2)) = 0.2092 U^2 / g, and the paper's eq 14 scaling
+    # S(K / a^2; a U) = a^6 S(K; U).
+    from seaecho.constants import G
+
+    k = np.geomspace(1e-3, 10.0, 50)
+    s = seaecho.wave_spectrum(k, wind_speed_m_s=10.0, spectrum="pierson-moskowitz")
+    assert s.dims == ("wavenumber",) and s.attrs["units"] == "m3"
+    np.testing.assert_allclose(s.values, 8.1e-3 / (2 * k**3)
+                               * np.exp(-0.74 * G**2 / (k**2 * 10.0**4)), rtol=1e-12)
+    assert s.attrs["peak_wavenumber_rad_m"] == pytest.approx(
+        np.sqrt(2 * 0.74 / 3) * G / 100.0, rel=1e-6)
+    assert s.attrs["significant_wave_height_m"] == pytest.approx(0.2092 * 100.0 / G,
+                                                                 rel=2e-3)
+    a = 2.0
+    s2 = seaecho.wave_spectrum(k / a**2, wind_speed_m_s=10.0 * a, spectrum="pierson-moskowitz")
+    np.testing.assert_allclose(s2.values, a**6 * s.values, rtol=1e-12)
+    # a scene's [sea] gives the same spectrum as its values
+    scene = seaecho.parse_scene(SEA)
+    np.testing.assert_array_equal(
+        seaecho.wave_spectrum(k, scene=scene).values,
+        seaecho.wave_spectrum(k, wind_speed_m_s=8.0, spectrum="pierson-moskowitz").values)
+    with pytest.raises(SceneError, match="wavenumber_rad_m"):
+        seaecho.wave_spectrum([0.0, 1.0])
+    with pytest.raises(SceneError, match="wind_speed_m_s = -1"):
+        seaecho.wave_spectrum(1.0, wind_speed_m_s=-1.0)

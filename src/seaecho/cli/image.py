@@ -64,9 +64,8 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
     """Focus ``raw_path`` into ``out`` (atomic) and its figures; print the measures."""
     import time
 
-    from ..api import image
-    from ..imaging.figures import image_figures
-    from ..imaging.quality import paper_metrics
+    from ..api import figures as draw
+    from ..api import image, image_measures
     from ..io.dataset import write_dataset_atomic
     from ..io.run import quiet_invalid_netcdf
 
@@ -81,13 +80,13 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
           f"{img.attrs['pixel_m']:g} m, track {cfg.track}; backprojection "
           f"{timings['backprojection']:.2f} s, {timings['pixel_pulses_per_s']:.3g} "
           f"pixel-pulses/s, total {time.perf_counter() - t:.2f} s)")
-    metrics = paper_metrics(img)
+    metrics = image_measures(img)
     for ch, m in metrics.items():
         if m:
             text = ", ".join(f"{k} {v:.2f}" for k, v in m.items())
             print(f"  {ch}: {text}")
     if figures and cfg.figures:
-        for png in image_figures(img, out.with_suffix(""), cfg.dynamic_range_db):
+        for png in draw(img, out.with_suffix("")):
             wrote.append(png)
             print(f"wrote {png}")
     return wrote

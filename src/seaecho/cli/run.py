@@ -43,9 +43,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..api import load_scene, simulate
+    from ..api import figures, load_scene, simulate
     from ..config import SceneError
-    from ..io.figures import run_figures
     from ..io.zarr_run import StoreError, is_zarr, part_path
     from . import UsageError
 
@@ -79,7 +78,7 @@ def run(args: argparse.Namespace) -> int:
         print(f"wrote {out} ({ds.sizes['pulse']} pulses x {ds.sizes['channel']} channels x "
               f"{ds.sizes['fast_time']} samples)")
         if not args.no_figures:
-            for png in run_figures(ds, out.with_suffix("")):
+            for png in figures(ds, out.with_suffix("")):
                 print(f"wrote {png}")
     if scene.image is not None:  # [image]: focus the raw data just written (seaecho image)
         from .image import focus_to_files
