@@ -63,9 +63,10 @@ def test_load_parse_and_overrides_keep_the_scene_and_its_folder():
 
 
 def test_overrides_keep_every_scene_file_as_it_is():
-    # An override round-trips the scene through its fields: only those the file set, or
-    # a validator refuses a default written out (the bistatic SAR scene's boat is no
-    # scatterer, so its ray density may not be given).
+    # An override round-trips the scene through all its fields, defaults included (as a
+    # run's scene_json, which seaecho image reads back): a validator must not refuse a
+    # default written out (the bistatic SAR scene's boat is no scatterer, and the ray
+    # density of scatterers is only refused when given another value).
     for path in sorted((ROOT / "scenes").glob("*.toml")):
         scene = seaecho.load_scene(path)
         assert seaecho.with_overrides(scene, {}).model_dump() == scene.model_dump(), path

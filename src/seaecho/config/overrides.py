@@ -30,7 +30,7 @@ import tomllib
 from collections.abc import Iterable, Mapping
 from typing import Any
 
-from .loading import SceneError, parse_scene
+from .loading import SceneError, parse_scene, scene_to_toml_dict
 from .scene import Scene
 
 __all__ = ["parse_assignment", "parse_assignments", "with_overrides"]
@@ -94,10 +94,8 @@ def with_overrides(scene: Scene | Mapping[str, Any], overrides: Mapping[str, Any
         number), or a result that is not a valid scene (unknown field, value out of range,
         ...): the message names the field, the value and what is allowed.
     """
-    # the fields the scene was given, not its defaults: a validator may refuse a default
-    # written out (e.g. an [[objects]] ray density on an object that is no scatterer)
-    data = (scene.model_dump(mode="json", exclude_none=True, exclude_unset=True)
-            if isinstance(scene, Scene) else copy.deepcopy(dict(scene)))
+    data = scene_to_toml_dict(scene) if isinstance(scene, Scene) else copy.deepcopy(
+        dict(scene))
     for name, value in overrides.items():
         _check_name(name)
         _assign(data, name, value)
