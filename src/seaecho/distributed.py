@@ -174,8 +174,11 @@ def cluster(workers: int | None = None, scheduler: str | None = None,
     if workers is None or workers < 1:
         raise ValueError(f"workers = {workers}: must be >= 1")
     with (dask.config.set({"distributed.nanny.pre-spawn-environ": worker_environment()}),
+          # no dashboard; the scheduler's HTTP server on a free port (its default 8787
+          # may be taken by another cluster on the machine: a warning, then a failure)
           LocalCluster(n_workers=workers, threads_per_worker=threads_per_worker,
-                       processes=processes, dashboard_address=None) as lc,
+                       processes=processes, dashboard_address=":0",
+                       scheduler_kwargs={"dashboard": False}) as lc,
           Client(lc) as client):
         yield client
 
@@ -221,16 +224,9 @@ def run(scene, path: str | os.PathLike, *, client, base_dir: str | os.PathLike =
         The scene's simulation if already built here (its static dataset is written by
         this process).
     """
-    from .io.run import block_size, write_run
-
     sim = Simulation(scene, base_dir=base_dir) if simulation is None else simulation
-    size = block_size(sim.block_edges(), block)
-    return write_run(path, sim.static_dataset, identity=sim.models.attrs,
-                     shape=(sim.radar.n_pulses, len(sim.radar.channels),
-                            sim.radar.window.n_samples), block=size,
-                     runner=DaskBlocks(client, Job.of(scene, base_dir)),
-                     weighting=sim.models.radar.range_weighting, progress=progress,
-                     resume=resume)
+    return sim.run(path, progress=progress, chunk=block, resume=resume,
+                   runner=DaskBlocks(client, Job.of(scene, base_dir)))
 
 
 # ------------------------------------------------------------------------- reductions

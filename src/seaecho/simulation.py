@@ -452,13 +452,13 @@ class Simulation:
 
     # ------------------------------------------------------------------------ run
     def run(self, path: str | os.PathLike, progress: bool = True, chunk: int | None = None,
-            resume: bool = False) -> Path:
-        """Simulate every pulse in this process and write the dataset to ``path``.
+            resume: bool = False, runner=None) -> Path:
+        """Simulate every pulse and write the dataset to ``path``.
 
         A ``.zarr`` path gets a Zarr store written block by block and resumable
         (:mod:`seaecho.io.zarr_run`); any other path a netCDF file written atomically.
-        :func:`seaecho.distributed.run` does the same on a Dask cluster, with the same
-        bytes.
+        The blocks are computed in this process, or by ``runner``
+        (:class:`seaecho.distributed.DaskBlocks`: on a Dask cluster, with the same bytes).
 
         Parameters
         ----------
@@ -474,20 +474,51 @@ class Simulation:
         resume : bool
             Zarr only: continue an interrupted run of the same scene, computing only the
             blocks it lacks.
+        runner : optional
+            Computes the blocks (:func:`seaecho.io.run.write_run`); default
+            :class:`seaecho.io.run.SerialBlocks` of :meth:`pulses`, in this process.
 
         Returns
         -------
         Path
         """
-        from .io.run import SerialBlocks, block_size, write_run
+        from .io.run import write_run
 
-        size = block_size(self.block_edges(), chunk)
         return write_run(path, self.static_dataset, identity=self.models.attrs,
-                         shape=(self.radar.n_pulses, len(self.radar.channels),
-                                self.radar.window.n_samples), block=size,
-                         runner=SerialBlocks(self.pulses),
-                         weighting=self.models.radar.range_weighting, progress=progress,
-                         resume=resume)
+                         progress=progress, resume=resume, **self._blocks(chunk, runner))
+
+    def dataset(self, progress: bool = True, chunk: int | None = None, runner=None):
+        """Simulate every pulse and return the dataset that :meth:`run` writes, held in
+        memory (:func:`seaecho.io.run.run_in_memory`: the same blocks, the same values
+        bit for bit).
+
+        Memory: ``raw`` and ``compressed``, pulses x channels x samples x 32 bytes, plus
+        the static part (:meth:`static_dataset`).
+
+        Parameters
+        ----------
+        progress, chunk, runner
+            As :meth:`run`.
+
+        Returns
+        -------
+        xarray.Dataset
+        """
+        from .io.run import run_in_memory
+
+        return run_in_memory(self.static_dataset(), progress=progress,
+                             **self._blocks(chunk, runner))
+
+    def _blocks(self, chunk: int | None, runner) -> dict:
+        """Shape, block size, runner and weighting of this run's pulses
+        (:func:`seaecho.io.run.write_run`)."""
+        from .io.run import SerialBlocks, block_size
+
+        return {"shape": (self.radar.n_pulses, len(self.radar.channels),
+                          self.radar.window.n_samples),
+                "block": block_size(self.block_edges(), chunk),
+                "runner": SerialBlocks(self.pulses) if runner is None else runner,
+                "weighting": self.models.radar.range_weighting}
 
 
 __all__ = ["POLARISATIONS", "SeaEcho", "Simulation"]

@@ -5,8 +5,6 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from ..conventions import CHANNELS
-
 
 def register(sub: argparse._SubParsersAction) -> None:
     from .trace import add_geometry_options
@@ -24,19 +22,31 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def _wrap(a):
+def table_rows(ds) -> list[tuple]:
+    """Rows (quantity, unit, raytraced, analytic, analytic - raytraced) of the CSV table
+    from :func:`seaecho.api.compare`'s dataset."""
     import numpy as np
 
-    return np.angle(np.exp(1j * a))
+    from ..conventions import CHANNELS
 
-
-def summed_sigma(f, sea_model):
-    """Sum over facets of area x visibility x sigma_mn (HH, HV, VH, VV) [m^2], with the
-    simulation's own sea model (:func:`seaecho.build.build_sea_model`)."""
-    from ..scattering.facet import facet_sigma
-
-    sigma = facet_sigma(f.n_i, f.n_s, f.normal, *sea_model.facet_model, local=f)
-    return (f.area * f.visibility) @ sigma
+    rows = []
+    for key in ("lit_fraction_tx", "seen_fraction_rx", "visible_fraction"):
+        t, a = (float(v) for v in ds[key].values)
+        rows.append((key, "1", t, a, a - t))
+    for name in ("theta_i", "theta_s", "phi", "normal"):
+        d = ds[f"{name}_difference"].values
+        d = d[np.isfinite(d)]
+        rows.append((f"{name}_difference_mean", "deg", np.nan, np.nan, float(d.mean())))
+        rows.append((f"{name}_difference_rms", "deg", np.nan, np.nan,
+                     float(np.sqrt(np.mean(d**2)))))
+        rows.append((f"{name}_difference_max_abs", "deg", np.nan, np.nan,
+                     float(np.abs(d).max())))
+    for c in CHANNELS:
+        a, b = (float(v) for v in ds["sigma_sum"].sel(polarisation=c).values)
+        rows.append((f"sigma_sum_{c}", "m2", a, b, b - a))
+        rows.append((f"sigma_sum_{c}_db", "dB", float(10 * np.log10(a)),
+                     float(10 * np.log10(b)), float(10 * np.log10(b / a))))
+    return rows
 
 
 def run(args: argparse.Namespace) -> int:
@@ -48,55 +58,19 @@ def run(args: argparse.Namespace) -> int:
     import matplotlib.pyplot as plt
     import numpy as np
 
-    from ..build import build_engine as build_facet_engine
-    from ..build import build_sea_model
+    from ..api import compare
     from ..io.dataset import atomic_path, atomic_savefig
-    from ..io.facets import visibility_summary
+    from ..io.facets import node_extent
     from . import UsageError
-    from .trace import build_engine
+    from .trace import geometry_arguments, load
 
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise UsageError(f"-o {out}: exists and is not a folder")
-    scene, sea, traced = build_engine(args, mode="raytraced")
-    freq = None if args.frequency_ghz is None else args.frequency_ghz * 1e9
-    try:
-        sea_model = build_sea_model(scene, freq)
-    except ValueError as exc:
-        raise UsageError(str(exc)) from None
-    analytic = build_facet_engine(scene, sea.state, Path(args.scene).resolve().parent,
-                                  frequency=freq, mode="analytic", tx_position=args.tx,
-                                  rx_position=args.rx, sea_model=sea_model)
-    st = sea.state(args.time)
-    ft = traced.facets(args.time, state=st)
-    fa = analytic.facets(args.time, state=st)
+    kwargs = geometry_arguments(args)
+    ds = compare(load(args), **kwargs)
     out.mkdir(parents=True, exist_ok=True)
-
-    rows = []
-    vt, va = visibility_summary(ft), visibility_summary(fa)
-    for key in vt:
-        rows.append((key, "1", vt[key], va[key], va[key] - vt[key]))
-    both = (ft.visibility > 0) & (fa.visibility > 0)
-    diffs = {
-        "theta_i": np.degrees(fa.theta_i - ft.theta_i),
-        "theta_s": np.degrees(fa.theta_s - ft.theta_s),
-        "phi": np.degrees(_wrap(fa.phi - ft.phi)),
-        "normal": np.degrees(np.arccos(np.clip(np.einsum("ij,ij->i", ft.normal, fa.normal),
-                                               -1, 1))),
-    }
-    for name, d in diffs.items():
-        d = d[both]
-        rows.append((f"{name}_difference_mean", "deg", np.nan, np.nan, float(d.mean())))
-        rows.append((f"{name}_difference_rms", "deg", np.nan, np.nan,
-                     float(np.sqrt(np.mean(d**2)))))
-        rows.append((f"{name}_difference_max_abs", "deg", np.nan, np.nan,
-                     float(np.abs(d).max())))
-    st_sig, sa_sig = summed_sigma(ft, sea_model), summed_sigma(fa, sea_model)
-    for c, a, b in zip(CHANNELS, st_sig, sa_sig, strict=True):
-        rows.append((f"sigma_sum_{c}", "m2", float(a), float(b), float(b - a)))
-        rows.append((f"sigma_sum_{c}_db", "dB", float(10 * np.log10(a)),
-                     float(10 * np.log10(b)), float(10 * np.log10(b / a))))
-
+    rows = table_rows(ds)
     table = out / "compare.csv"
     with atomic_path(table) as tmp, open(tmp, "w", newline="") as fh:
         w = csv.writer(fh)
@@ -104,14 +78,14 @@ def run(args: argparse.Namespace) -> int:
         for r in rows:
             w.writerow([r[0], r[1]] + [f"{v:.6g}" for v in r[2:]])
 
-    x, y = sea.x, sea.y
-    ext = (x[0], x[-1], y[0], y[-1])
+    ext = node_extent(ds)
+    vis = ds["visibility"]
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.6), constrained_layout=True)
     for ax, (a, title, cmap, lim) in zip(axes, [
-            (ft.cell_mean("visibility"), "ray-traced: lit and seen", "gray", (0, 1)),
-            (fa.cell_mean("visibility"), f"analytic ({analytic.shadowing}): lit and seen",
-             "gray", (0, 1)),
-            (fa.cell_mean("visibility") - ft.cell_mean("visibility"),
+            (vis.sel(mode="raytraced").values, "ray-traced: lit and seen", "gray", (0, 1)),
+            (vis.sel(mode="analytic").values,
+             f"analytic ({ds.attrs['shadowing']}): lit and seen", "gray", (0, 1)),
+            ((vis.sel(mode="analytic") - vis.sel(mode="raytraced")).values,
              "analytic - ray-traced", "RdBu_r", (-1, 1))], strict=True):
         im = ax.imshow(a, origin="lower", extent=ext, cmap=cmap, vmin=lim[0], vmax=lim[1],
                        interpolation="nearest")
@@ -123,8 +97,9 @@ def run(args: argparse.Namespace) -> int:
     plt.close(fig)
 
     fig, axes = plt.subplots(1, 4, figsize=(16, 3.8), constrained_layout=True)
-    for ax, (name, d) in zip(axes, diffs.items(), strict=True):
-        ax.hist(d[both], bins=100, color="C0")
+    for ax, name in zip(axes, ("theta_i", "theta_s", "phi", "normal"), strict=True):
+        d = ds[f"{name}_difference"].values
+        ax.hist(d[np.isfinite(d)], bins=100, color="C0")
         ax.set_xlabel(f"{name}: analytic - ray-traced [deg]" if name != "normal"
                       else "angle between normals [deg]")
         ax.set_yscale("log")

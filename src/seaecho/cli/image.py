@@ -54,28 +54,9 @@ _OVERRIDES = {"track": "track", "pixel_m": "pixel_m", "extent": "extent_m",
               "speckle_filter": "speckle_filter", "filter_size": "filter_size"}
 
 
-def image_config(scene_image: dict | None, args: argparse.Namespace | None = None):
-    """The [image] section of a scene (dict or None) with CLI overrides, validated."""
-    from pydantic import ValidationError
-
-    from ..config.image import ImageConfig
-    from . import UsageError
-
-    values = dict(scene_image or {})
-    if args is not None:
-        for opt, field in _OVERRIDES.items():
-            v = getattr(args, opt, None)
-            if v is not None:
-                values[field] = tuple(v) if isinstance(v, list) else v
-    try:
-        return ImageConfig.model_validate(values)
-    except ValidationError as exc:
-        err = exc.errors()[0]
-        msg = err["msg"].removeprefix("Value error, ")
-        if not err["loc"]:  # a check across fields: its message names them
-            raise UsageError(f"[image]: {msg}") from None
-        loc = ".".join(str(p) for p in err["loc"])
-        raise UsageError(f"[image].{loc} = {err.get('input')!r}: {msg}") from None
+def image_fields(args: argparse.Namespace) -> dict:
+    """The [image] fields given on the command line (options left out are None)."""
+    return {field: getattr(args, opt, None) for opt, field in _OVERRIDES.items()}
 
 
 def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
@@ -83,19 +64,14 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
     """Focus ``raw_path`` into ``out`` (atomic) and its figures; print the measures."""
     import time
 
-    from ..imaging.figures import image_figures
-    from ..imaging.focus import focus
-    from ..imaging.quality import paper_metrics
+    from ..api import figures as draw
+    from ..api import image, image_measures
     from ..io.dataset import write_dataset_atomic
     from ..io.run import quiet_invalid_netcdf
-    from . import UsageError
 
     timings: dict = {}
     t = time.perf_counter()
-    try:
-        img = focus(raw_path, cfg, backend=backend, timings=timings, progress=progress)
-    except ValueError as exc:  # bad grid, window, or a file that is not a raw dataset
-        raise UsageError(f"{raw_path}: {exc}") from None
+    img = image(raw_path, cfg, backend=backend, progress=progress, timings=timings)
     with quiet_invalid_netcdf():
         write_dataset_atomic(img, out)
     wrote = [out]
@@ -104,23 +80,20 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
           f"{img.attrs['pixel_m']:g} m, track {cfg.track}; backprojection "
           f"{timings['backprojection']:.2f} s, {timings['pixel_pulses_per_s']:.3g} "
           f"pixel-pulses/s, total {time.perf_counter() - t:.2f} s)")
-    metrics = paper_metrics(img)
+    metrics = image_measures(img)
     for ch, m in metrics.items():
         if m:
             text = ", ".join(f"{k} {v:.2f}" for k, v in m.items())
             print(f"  {ch}: {text}")
     if figures and cfg.figures:
-        for png in image_figures(img, out.with_suffix(""), cfg.dynamic_range_db):
+        for png in draw(img, out.with_suffix("")):
             wrote.append(png)
             print(f"wrote {png}")
     return wrote
 
 
 def run(args: argparse.Namespace) -> int:
-    import json
-
-    import xarray as xr
-
+    from ..api import image_config
     from . import UsageError
 
     raw = Path(args.raw)
@@ -131,12 +104,7 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"output directory {out.parent} does not exist")
     if out.resolve() == raw.resolve():
         raise UsageError(f"output {out} would overwrite the raw dataset")
-    try:
-        with xr.open_dataset(raw, engine="h5netcdf") as ds:
-            scene = json.loads(ds.attrs.get("scene_json", "{}"))
-    except (OSError, ValueError) as exc:
-        raise UsageError(f"{raw}: not a readable netCDF dataset ({exc})") from None
-    cfg = image_config(scene.get("image"), args)
+    cfg = image_config(raw, **image_fields(args))
     focus_to_files(raw, out, cfg, backend=args.backend, progress=not args.quiet,
                    figures=not args.no_figures)
     return 0

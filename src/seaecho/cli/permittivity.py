@@ -25,7 +25,8 @@ def run(args: argparse.Namespace) -> int:
     import sys
     import warnings
 
-    from ..ocean.seawater import PERMITTIVITY_MODELS, sea_water_permittivity
+    from ..api import permittivity
+    from ..ocean.seawater import PERMITTIVITY_MODELS
     from . import UsageError
 
     models = sorted(PERMITTIVITY_MODELS) if args.model == "all" else [args.model]
@@ -34,16 +35,13 @@ def run(args: argparse.Namespace) -> int:
             raise UsageError(f"--frequency-ghz = {f}: must be in (0, 1000] GHz")
     print("model,frequency_ghz,temperature_c,salinity_psu,eps_real,eps_imag")
     for model in models:
-        for f in args.frequency_ghz:
-            with warnings.catch_warnings(record=True) as caught:
-                warnings.simplefilter("always")
-                try:
-                    eps = complex(sea_water_permittivity(f * 1e9, args.temperature_c,
-                                                         args.salinity_psu, model=model))
-                except ValueError as exc:
-                    raise UsageError(str(exc)) from None
-            for w in caught:
-                print(f"seaecho permittivity: warning: {w.message}", file=sys.stderr)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            eps = permittivity([f * 1e9 for f in args.frequency_ghz], args.temperature_c,
+                               args.salinity_psu, model=model)
+        for w in caught:
+            print(f"seaecho permittivity: warning: {w.message}", file=sys.stderr)
+        for f, e in zip(args.frequency_ghz, eps.values, strict=True):
             print(f"{model},{f:g},{args.temperature_c:g},{args.salinity_psu:g},"
-                  f"{eps.real:.4f},{eps.imag:.4f}")
+                  f"{e.real:.4f},{e.imag:.4f}")
     return 0

@@ -42,69 +42,30 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def first_pulses(scene, n: int):
-    """The scene limited to its first ``n`` pulses (``--pulses``)."""
-    from . import UsageError
-
-    if n < 1:
-        raise UsageError(f"--pulses {n}: must be >= 1")
-    n = min(n, scene.radar.n_pulses)
-    radar = scene.radar.model_copy(update={
-        "n_pulses": n, "sigma_map_pulse": min(scene.radar.sigma_map_pulse, n - 1)})
-    return scene.model_copy(update={"radar": radar})
-
-
 def run(args: argparse.Namespace) -> int:
-    from ..build import build_simulation, check_scene
-    from ..config import SceneError, load_scene
-    from ..io.figures import run_figures
-    from ..io.zarr_run import StoreError, is_zarr, open_run, part_path
-    from ..simulation import Simulation
+    from ..api import figures, load_scene, simulate
+    from ..config import SceneError
+    from ..io.zarr_run import StoreError, is_zarr, part_path
     from . import UsageError
 
     scene = load_scene(args.scene)
     if scene.radar is None or scene.transmitter is None:
         raise SceneError(f"{args.scene}: `seaecho run` needs [radar] and [transmitter] "
                          "sections")
-    if args.pulses is not None:
-        scene = first_pulses(scene, args.pulses)
     if args.output:
         out = Path(args.output)
     elif scene.run.output:
         out = Path(scene.run.output)
     else:
         out = Path(Path(args.scene).stem + ".nc")
-    if str(out.parent) and not out.parent.is_dir():
-        raise UsageError(f"output directory {out.parent} does not exist")
     zarr_out = is_zarr(out)
-    if args.resume and not zarr_out:
-        raise UsageError(f"--resume: {out} is not a Zarr store (*.zarr); a netCDF run is "
-                         "written atomically and starts over")
     if zarr_out and scene.image is not None:
         raise UsageError(f"{args.scene} has [image]: focusing reads a netCDF run; write "
                          "the run to a .nc file")
-    if args.workers is not None and args.workers < 1:
-        raise UsageError(f"--workers {args.workers}: must be >= 1")
-    if args.block_pulses is not None and args.block_pulses < 1:
-        raise UsageError(f"--block-pulses {args.block_pulses}: must be >= 1")
-    if scene.radar.sea_clutter:
-        check_scene(scene)  # SamplingWarning on stderr if the tile / grid is too coarse
-    base_dir = Path(args.scene).parent
-    try:
-        sim = Simulation.from_models(build_simulation(scene, base_dir=base_dir))
-    except ValueError as exc:
-        raise SceneError(f"{args.scene}: {exc}") from None
-    try:
-        if args.workers is None and args.scheduler is None:
-            sim.run(out, progress=not args.quiet, chunk=args.block_pulses,
-                    resume=args.resume)
-        else:
-            from .. import distributed
-
-            with distributed.cluster(args.workers, args.scheduler) as client:
-                distributed.run(scene, out, client=client, base_dir=base_dir,
-                                block=args.block_pulses, resume=args.resume,
-                                progress=not args.quiet, simulation=sim)
+    try:  # the Python API's run: same checks, same bytes (seaecho.simulate)
+        ds = simulate(scene, path=out, pulses=args.pulses, progress=not args.quiet,
+                      workers=args.workers, scheduler=args.scheduler,
+                      block_pulses=args.block_pulses, resume=args.resume)
     except StoreError as exc:
         raise UsageError(str(exc)) from None
     except KeyboardInterrupt:
@@ -113,12 +74,11 @@ def run(args: argparse.Namespace) -> int:
         print(f"seaecho: interrupted; the blocks written so far are kept in "
               f"{part_path(out)}: continue with --resume", file=sys.stderr)
         return 130
-    r = sim.radar
-    print(f"wrote {out} ({r.n_pulses} pulses x {len(r.channels)} channels x "
-          f"{r.window.n_samples} samples)")
-    if not args.no_figures:
-        with open_run(out) as ds:
-            for png in run_figures(ds, out.with_suffix("")):
+    with ds:
+        print(f"wrote {out} ({ds.sizes['pulse']} pulses x {ds.sizes['channel']} channels x "
+              f"{ds.sizes['fast_time']} samples)")
+        if not args.no_figures:
+            for png in figures(ds, out.with_suffix("")):
                 print(f"wrote {png}")
     if scene.image is not None:  # [image]: focus the raw data just written (seaecho image)
         from .image import focus_to_files

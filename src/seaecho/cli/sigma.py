@@ -143,46 +143,28 @@ def run(args: argparse.Namespace) -> int:
 
     import numpy as np
 
+    from ..api import SIGMA_FREQUENCY_HZ, SIGMA_WIND_M_S, load_scene, sigma
     from ..io.dataset import atomic_path
-    from ..ocean.seawater import sea_water_permittivity
-    from ..ocean.spectra import DirectionalSpectrum
-    from ..scattering.models import sea_sigma
     from . import UsageError
 
     sea_options = {"wind_speed": "--wind-speed", "wind_direction_deg": "--wind-direction-deg",
                    "spectrum": "--spectrum", "spreading": "--spreading",
                    "fetch_m": "--fetch-m", "temperature_c": "--temperature-c",
                    "salinity_psu": "--salinity-psu"}
-    scene_spec = None
+    scene = None
     if args.scene is not None:
-        from ..build import carrier_frequency, sea_spectrum
-        from ..config import load_scene
-
         given = [flag for name, flag in sea_options.items() if getattr(args, name) is not None]
         if given:
             raise UsageError(f"--scene takes the sea state from the scene file; do not give "
                              f"{', '.join(given)}")
         scene = load_scene(args.scene)
-        scene_spec = sea_spectrum(scene)
-        freq = None if args.frequency_ghz is None else args.frequency_ghz * 1e9
-        try:
-            args.frequency_ghz = carrier_frequency(scene, freq) / 1e9
-        except ValueError as exc:
-            raise UsageError(f"{args.scene}: {exc}") from None
-        args.temperature_c, args.salinity_psu = scene.sea.temperature_c, scene.sea.salinity_psu
-        args.wind_speed = scene_spec.u19_5
-        args.wind_direction_deg = float(np.degrees(scene_spec.wind_direction))
-        args.spectrum = scene_spec.spectrum
-    defaults = {"frequency_ghz": 10.0, "wind_speed": 4.53, "wind_direction_deg": 0.0,
-                "spectrum": "elfouhaily", "spreading": "elfouhaily", "temperature_c": 20.0,
-                "salinity_psu": 35.0}
-    for name, value in defaults.items():
-        if getattr(args, name) is None:
-            setattr(args, name, value)
-    if not 0.1 <= args.frequency_ghz <= 100.0:
-        raise UsageError(f"--frequency-ghz = {args.frequency_ghz}: must be in [0.1, 100] GHz")
-    if not 0.0 < args.wind_speed <= 40.0:
-        raise UsageError(f"--wind-speed = {args.wind_speed}: must be in (0, 40] m/s")
+    # Flags in their own units; the API checks the same bounds (in SI) again
+    (f_lo, f_hi), u_hi = (b / 1e9 for b in SIGMA_FREQUENCY_HZ), SIGMA_WIND_M_S[1]
+    if args.frequency_ghz is not None and not f_lo <= args.frequency_ghz <= f_hi:
+        raise UsageError(f"--frequency-ghz = {args.frequency_ghz}: must be in [{f_lo:g}, "
+                         f"{f_hi:g}] GHz")
+    if args.wind_speed is not None and not 0.0 < args.wind_speed <= u_hi:
+        raise UsageError(f"--wind-speed = {args.wind_speed}: must be in (0, {u_hi:g}] m/s")
     if not 0.0 < args.cut_ratio <= 1.0:
         raise UsageError(f"--cut-ratio = {args.cut_ratio}: must be in (0, 1]")
     if args.spectrum == "jonswap" and args.fetch_m is None:
@@ -201,39 +183,38 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"-o {out}: the output must be a .csv file")
     if not (out.parent if str(out.parent) else Path(".")).is_dir():
         raise UsageError(f"-o {out}: directory {out.parent} does not exist")
-    try:
-        eps = complex(sea_water_permittivity(args.frequency_ghz * 1e9, args.temperature_c,
-                                             args.salinity_psu, model=args.permittivity_model))
-        spec = scene_spec if scene_spec is not None else DirectionalSpectrum(
-            spectrum=args.spectrum, spreading=args.spreading, u19_5=args.wind_speed,
-            wind_direction=float(np.radians(args.wind_direction_deg)), fetch=args.fetch_m)
-    except ValueError as exc:
-        raise UsageError(str(exc)) from None
 
-    grids = np.meshgrid(*angles, indexing="ij")
-    ti, ts, pi_, ps = (np.radians(g.ravel()) for g in grids)
+    sea = {} if scene is not None else {
+        "wind_speed_m_s": args.wind_speed, "wind_direction_deg": args.wind_direction_deg,
+        "spectrum": args.spectrum, "spreading": args.spreading, "fetch_m": args.fetch_m,
+        "temperature_c": args.temperature_c, "salinity_psu": args.salinity_psu}
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        sigma = sea_sigma(args.model, ti, pi_, ts, ps, args.frequency_ghz * 1e9, spec, eps,
-                          slopes=args.slopes, cut_ratio=args.cut_ratio)
+        s = sigma(args.model, theta_i_deg=angles[0], theta_s_deg=angles[1],
+                  phi_i_deg=angles[2], phi_s_deg=angles[3], scene=scene,
+                  frequency_hz=None if args.frequency_ghz is None else args.frequency_ghz * 1e9,
+                  permittivity_model=args.permittivity_model, slopes=args.slopes,
+                  cut_ratio=args.cut_ratio, **sea)
     for w in {str(w.message): w for w in caught}.values():
         print(f"seaecho sigma: warning: {w.message}", file=sys.stderr)
+    a = s.attrs
     with np.errstate(divide="ignore"):
-        db = np.maximum(10.0 * np.log10(sigma), DB_FLOOR)
-    rows = np.column_stack([np.degrees(ti), np.degrees(ts), np.degrees(pi_), np.degrees(ps),
-                            db])
+        db = np.maximum(10.0 * np.log10(s.values.reshape(-1, 4)), DB_FLOOR)
+    grids = np.meshgrid(*angles, indexing="ij")
+    rows = np.column_stack([g.ravel() for g in grids] + [db])
     header = ("theta_i_deg,theta_s_deg,phi_i_deg,phi_s_deg,"
               "sigma_hh_db,sigma_hv_db,sigma_vh_db,sigma_vv_db")
     with atomic_path(out) as tmp:
         np.savetxt(tmp, rows, delimiter=",", header=header, comments="", fmt="%.6g")
     print(f"wrote {out} ({n_rows} geometries, model {args.model}, eps_r = "
-          f"{eps.real:.2f}{eps.imag:+.2f}j)")
+          f"{a['eps_r_real']:.2f}{a['eps_r_imag']:+.2f}j)")
     if not args.no_figure:
-        varying = [(i, a) for i, a in enumerate(angles) if len(a) > 1]
+        varying = [(i, v) for i, v in enumerate(angles) if len(v) > 1]
         png = out.with_suffix(".png")
         if len(varying) <= 2:
-            title = (f"{args.model}, {args.frequency_ghz:g} GHz, U19.5 = {args.wind_speed:g} m/s"
-                     f" towards {args.wind_direction_deg:g} deg, {args.spectrum}")
+            title = (f"{args.model}, {a['frequency_hz'] / 1e9:g} GHz, U19.5 = "
+                     f"{a['wind_speed_m_s']:g} m/s towards {a['wind_direction_deg']:g} deg, "
+                     f"{a['spectrum']}")
             _figure(rows, varying, png, title)
             print(f"wrote {png}")
         else:

@@ -27,14 +27,10 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    import math
     import warnings
 
-    from ..build import build_sea, check_scene, scene_attrs
-    from ..config import load_scene
-    from ..io.dataset import write_dataset_atomic
+    from ..api import load_scene, save, surface
     from ..io.figures import elevation_map
-    from ..io.surface import surface_dataset
     from . import UsageError
 
     scene = load_scene(args.scene)
@@ -46,15 +42,11 @@ def run(args: argparse.Namespace) -> int:
         out = Path(Path(args.scene).stem + "_surface.nc")
     if not out.parent.is_dir() and str(out.parent):
         raise UsageError(f"output directory {out.parent} does not exist")
-    times = args.time if args.time else list(scene.run.surface_times_s)
-    if any(not math.isfinite(t) for t in times):
-        raise UsageError(f"--time {times}: times must be finite numbers of seconds")
     with warnings.catch_warnings():
-        warnings.simplefilter("always")
-        check_scene(scene)
-    ds = surface_dataset(build_sea(scene), times, attrs=scene_attrs(scene), name=scene.name)
-    write_dataset_atomic(ds, out)
-    print(f"wrote {out} ({len(times)} time(s), {ds.sizes['y']} x {ds.sizes['x']} grid, "
+        warnings.simplefilter("always")  # SamplingWarning: tile or grid too coarse
+        ds = surface(scene, args.time or None, progress=True)  # bad --time: SceneError
+    save(ds, out)
+    print(f"wrote {out} ({ds.sizes['time']} time(s), {ds.sizes['y']} x {ds.sizes['x']} grid, "
           f"Hs of resolved band {ds.attrs['expected_hs_resolved_m']:.3f} m)")
     if not args.no_figure:
         png = elevation_map(ds, out.with_suffix(".png"))

@@ -111,9 +111,9 @@ def _split_top_level(raw: str) -> list[str]:
 
 
 def run(args: argparse.Namespace) -> int:
+    from ..api import first_pulses
     from ..config import load_scene
     from . import UsageError
-    from .run import first_pulses
 
     grid: dict[str, list] = {}
     for text in args.sets:

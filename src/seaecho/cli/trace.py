@@ -39,53 +39,47 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def build_engine(args: argparse.Namespace, mode: str | None = None):
-    """(scene, sea, engine) of the CLI arguments; bad input -> SceneError / UsageError."""
-    import math
+def geometry_arguments(args: argparse.Namespace) -> dict:
+    """Keyword arguments of :func:`seaecho.api.trace` / :func:`~seaecho.api.compare`
+    from the shared options; ``--rx`` without ``--tx`` is a usage error."""
+    from . import UsageError
 
-    from ..build import build_engine as build_facet_engine
-    from ..build import build_sea
-    from ..config import load_scene
+    if args.rx is not None and args.tx is None:
+        raise UsageError("--rx needs --tx")
+    freq = None if args.frequency_ghz is None else args.frequency_ghz * 1e9
+    return {"time": args.time, "tx_position": args.tx, "rx_position": args.rx,
+            "variant": args.variant, "frequency_hz": freq}
+
+
+def load(args: argparse.Namespace):
+    """The scene of ``args.scene``, checked for what the geometry options need."""
+    from ..api import load_scene
     from . import UsageError
 
     scene = load_scene(args.scene)
-    if not math.isfinite(args.time):
-        raise UsageError(f"--time {args.time}: must be a finite number of seconds")
-    if args.rx is not None and args.tx is None:
-        raise UsageError("--rx needs --tx")
     if args.tx is None and scene.transmitter is None:
         raise UsageError(f"{args.scene}: no [transmitter] section; give --tx X Y Z")
-    freq = None if args.frequency_ghz is None else args.frequency_ghz * 1e9
-    try:
-        sea = build_sea(scene)
-        engine = build_facet_engine(scene, sea.state, Path(args.scene).resolve().parent,
-                                    frequency=freq, mode=mode, variant=args.variant,
-                                    tx_position=args.tx, rx_position=args.rx)
-    except ValueError as exc:
-        raise UsageError(str(exc)) from None
-    return scene, sea, engine
+    return scene
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..build import scene_attrs
-    from ..io.dataset import write_dataset_atomic
-    from ..io.facets import facet_maps, facets_dataset, visibility_summary
+    from ..api import save, trace
+    from ..io.facets import facet_maps
     from . import UsageError
 
     out = Path(args.output)
     if str(out.parent) and not out.parent.is_dir():
         raise UsageError(f"output directory {out.parent} does not exist")
-    scene, sea, engine = build_engine(args, mode=args.mode)
-    f = engine.facets(args.time)
-    tx, rx = engine.positions(args.time)
-    ds = facets_dataset(f, sea.x, sea.y, tx, rx, attrs=scene_attrs(scene))
-    write_dataset_atomic(ds, out)
-    s = visibility_summary(f)
-    print(f"wrote {out} ({f.mode}, {f.n_facets} facets at t = {f.time_s:g} s; lit from Tx "
-          f"{s['lit_fraction_tx']:.4f}, seen from Rx {s['seen_fraction_rx']:.4f}, both "
-          f"{s['visible_fraction']:.4f})")
+    kwargs = geometry_arguments(args)
+    scene = load(args)
+    ds = trace(scene, mode=args.mode, **kwargs)
+    save(ds, out)
+    a = ds.attrs
+    print(f"wrote {out} ({a['facet_mode']}, {ds['area'].size} facets at t = {a['time_s']:g} s; "
+          f"lit from Tx {a['lit_fraction_tx']:.4f}, seen from Rx {a['seen_fraction_rx']:.4f}, "
+          f"both {a['visible_fraction']:.4f})")
     if not args.no_figure:
-        png = facet_maps(f, sea.x, sea.y, out.with_suffix(".png"),
-                         title=f"{scene.name}: {f.mode} facets at t = {f.time_s:g} s")
+        png = facet_maps(ds, out.with_suffix(".png"), title=f"{scene.name}: "
+                         f"{a['facet_mode']} facets at t = {a['time_s']:g} s")
         print(f"wrote {png}")
     return 0

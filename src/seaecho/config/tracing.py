@@ -134,9 +134,12 @@ class ObjectConfig(Section):
             raise ValueError("conductivity_s_m needs relative_permittivity")
         own = {"max_bounces", "rays_per_wavelength", "signature_refresh_deg",
                "signature_refresh_s", "signature_cell_m", "sea_multipath"}
-        if not self.scatterer and own & self.model_fields_set:
-            raise ValueError(f"{', '.join(sorted(own & self.model_fields_set))}: only with "
-                             "scatterer = true")
+        # given with other values than the defaults (a scene written back in full, as a
+        # run's scene_json, holds the defaults and reads back)
+        given = {f for f in own & self.model_fields_set
+                 if getattr(self, f) != type(self).model_fields[f].default}
+        if not self.scatterer and given:
+            raise ValueError(f"{', '.join(sorted(given))}: only with scatterer = true")
         suffix = self.file.rsplit(".", 1)[-1].lower() if "." in self.file else ""
         if suffix not in ("ply", "obj", "stl", "xml"):
             raise ValueError(f"file = {self.file!r}: allowed extensions .ply, .obj, .stl, .xml")

@@ -59,7 +59,7 @@ def _overlay(ax, img) -> None:
                    linewidths=0.5, alpha=0.6)
     if "ship_x_m" in img.attrs:
         ax.plot(img.attrs["ship_x_m"], img.attrs["ship_y_m"], marker="^", color="r",
-                ms=6, ls="none", label="ship (no echo yet)")
+                ms=6, ls="none", label="ship (hull centre)")
         ax.legend(loc="upper right", fontsize=7)
     if "target_position" in img:
         p = img["target_position"].values

@@ -17,7 +17,7 @@ import numpy as np
 from ..geometry.facets import Facets
 from .dataset import atomic_savefig
 
-__all__ = ["facets_dataset", "facet_maps", "visibility_summary"]
+__all__ = ["facet_maps", "facets_dataset", "node_extent", "visibility_summary"]
 
 _UNITS = {
     "centroid": "m", "area": "m2", "normal": "1", "velocity": "m s-1", "r_tx": "m",
@@ -99,23 +99,31 @@ def visibility_summary(f: Facets) -> dict[str, float]:
             "visible_fraction": float(w @ f.visibility)}
 
 
-def facet_maps(f: Facets, x: np.ndarray, y: np.ndarray, path: str | os.PathLike,
-               title: str = "") -> Path:
-    """PNG maps (cell means of the two triangles): lit, seen, local incidence, local
-    scattering angle [deg]."""
+def node_extent(ds) -> tuple[float, float, float, float]:
+    """(x_min, x_max, y_min, y_max) of the grid nodes [m] of a facet dataset (its cell
+    centres plus half a cell on each side)."""
+    xc, yc = ds["x_cell"].values, ds["y_cell"].values
+    hx = 0.5 * (xc[1] - xc[0]) if xc.size > 1 else 0.5
+    hy = 0.5 * (yc[1] - yc[0]) if yc.size > 1 else 0.5
+    return (float(xc[0] - hx), float(xc[-1] + hx), float(yc[0] - hy), float(yc[-1] + hy))
+
+
+def facet_maps(ds, path: str | os.PathLike, title: str = "") -> Path:
+    """PNG maps of a facet dataset (:func:`facets_dataset`), cell means of the two
+    triangles: lit, seen, local incidence, local scattering angle [deg]."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    ext = (x[0], x[-1], y[0], y[-1])
+    ext = node_extent(ds)
     fig, axes = plt.subplots(2, 2, figsize=(10, 8.5), constrained_layout=True)
     panels = [("lit", "lit from Tx [-]", "gray", (0, 1)),
               ("seen", "seen from Rx [-]", "gray", (0, 1)),
               ("theta_i", "local incidence theta_i [deg]", "viridis", None),
               ("theta_s", "local scattering theta_s [deg]", "viridis", None)]
     for ax, (name, label, cmap, lim) in zip(axes.ravel(), panels, strict=True):
-        a = f.cell_mean(name)
+        a = ds[name].values.mean(axis=-1)
         if name.startswith("theta"):
             a = np.degrees(a)
         vmin, vmax = lim if lim else (np.nanpercentile(a, 1), np.nanpercentile(a, 99))
@@ -125,7 +133,7 @@ def facet_maps(f: Facets, x: np.ndarray, y: np.ndarray, path: str | os.PathLike,
         ax.set_ylabel("y (north) [m]")
         ax.set_title(label)
         fig.colorbar(im, ax=ax, shrink=0.85)
-    fig.suptitle(title or f"{f.mode} facets at t = {f.time_s:g} s")
+    fig.suptitle(title or f"{ds.attrs['facet_mode']} facets at t = {ds.attrs['time_s']:g} s")
     out = atomic_savefig(fig, path, dpi=110)
     plt.close(fig)
     return out

@@ -288,12 +288,10 @@ def write_netcdf_run(path: str | os.PathLike, static, *, shape: tuple[int, int, 
         As :func:`write_run`.
     """
     import h5netcdf
-    from tqdm import tqdm
 
     from .dataset import atomic_path
 
     n_pulses, n_channels, n_samples = shape
-    blocks = blocks_of(n_pulses, block)
     with atomic_path(path) as tmp, quiet_invalid_netcdf():
         static.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=True)
         with h5netcdf.File(tmp, "a", invalid_netcdf=True) as f:
@@ -303,15 +301,56 @@ def write_netcdf_run(path: str | os.PathLike, static, *, shape: tuple[int, int, 
                            for name in ("raw", "compressed"))
             raw_v.attrs.update(RAW_ATTRS)
             rc_v.attrs.update(COMPRESSED_ATTRS, weighting=weighting)
-            with tqdm(total=n_pulses, unit="pulse", disable=not progress,
-                      desc="seaecho run") as bar:
-                for (a, b), (raw, compressed) in zip(blocks, runner.ordered(blocks),
-                                                     strict=True):
-                    for k in range(b - a):  # pulse by pulse: the file's layout (chunk
-                        raw_v[a + k] = raw[k]  # order) does not depend on the block size
-                        rc_v[a + k] = compressed[k]
-                    bar.update(b - a)
+            for a, b, raw, compressed in in_order(n_pulses, block, runner, progress):
+                for k in range(b - a):  # pulse by pulse: the file's layout (chunk
+                    raw_v[a + k] = raw[k]  # order) does not depend on the block size
+                    rc_v[a + k] = compressed[k]
     return Path(path)
+
+
+def run_in_memory(static, *, shape: tuple[int, int, int], block: int, runner,
+                  weighting: str = "none", progress: bool = True):
+    """The dataset that :func:`write_netcdf_run` writes, held in memory: the same blocks
+    from the same runner, so the same values bit for bit.
+
+    Memory: the static dataset plus ``raw`` and ``compressed``, n_pulses x n_channels x
+    n_samples x 32 bytes.
+
+    Parameters
+    ----------
+    static : xarray.Dataset
+        :func:`run_dataset`.
+    shape, block, runner, weighting, progress
+        As :func:`write_run`.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``static`` with the variables ``raw`` and ``compressed`` (pulse, channel,
+        fast_time) complex128 [sqrt(W)], their attributes as in the file.
+    """
+    raw_a, rc_a = np.empty(shape, np.complex128), np.empty(shape, np.complex128)
+    for a, b, raw, compressed in in_order(shape[0], block, runner, progress):
+        raw_a[a:b] = raw
+        rc_a[a:b] = compressed
+    dims = ("pulse", "channel", "fast_time")
+    ds = static.copy()
+    ds["raw"] = (dims, raw_a, dict(RAW_ATTRS))
+    ds["compressed"] = (dims, rc_a, dict(COMPRESSED_ATTRS, weighting=weighting))
+    return ds
+
+
+def in_order(n_pulses: int, block: int, runner, progress: bool = True
+             ) -> Iterator[tuple[int, int, np.ndarray, np.ndarray]]:
+    """Every block of pulses in order, ``(start, stop, raw, compressed)``, with a tqdm
+    progress bar: the loop of :func:`write_netcdf_run` and :func:`run_in_memory`."""
+    from tqdm import tqdm
+
+    blocks = blocks_of(n_pulses, block)
+    with tqdm(total=n_pulses, unit="pulse", disable=not progress, desc="seaecho run") as bar:
+        for (a, b), (raw, compressed) in zip(blocks, runner.ordered(blocks), strict=True):
+            yield a, b, raw, compressed
+            bar.update(b - a)
 
 
 #: Attributes of the ``raw`` and ``compressed`` variables (both file formats).
@@ -327,6 +366,6 @@ def quiet_invalid_netcdf():
         yield
 
 
-__all__ = ["COMPRESSED_ATTRS", "DEFAULT_BLOCK_PULSES", "RAW_ATTRS", "SerialBlocks", "block_size",
-           "blocks_of", "quiet_invalid_netcdf", "run_dataset", "write_netcdf_run",
-           "write_run"]
+__all__ = ["COMPRESSED_ATTRS", "DEFAULT_BLOCK_PULSES", "RAW_ATTRS", "SerialBlocks",
+           "block_size", "blocks_of", "in_order", "quiet_invalid_netcdf", "run_dataset",
+           "run_in_memory", "write_netcdf_run", "write_run"]
