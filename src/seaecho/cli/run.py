@@ -57,7 +57,6 @@ def first_pulses(scene, n: int):
 def run(args: argparse.Namespace) -> int:
     from ..build import build_simulation, check_scene
     from ..config import SceneError, load_scene
-    from ..io.figures import run_figures
     from ..io.zarr_run import StoreError, is_zarr, open_run, part_path
     from ..simulation import Simulation
     from . import UsageError
@@ -117,6 +116,8 @@ def run(args: argparse.Namespace) -> int:
     print(f"wrote {out} ({r.n_pulses} pulses x {len(r.channels)} channels x "
           f"{r.window.n_samples} samples)")
     if not args.no_figures:
+        from ..io.figures import run_figures  # matplotlib: after the pulses
+
         with open_run(out) as ds:
             for png in run_figures(ds, out.with_suffix("")):
                 print(f"wrote {png}")
