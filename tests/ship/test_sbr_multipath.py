@@ -151,3 +151,26 @@ def test_multipath_needs_platforms_above_the_sea():
     with pytest.raises(ValueError, match="above the mean sea level"):
         trace_signature(TraceMesh.single(v + [0, 0, 2], f), [-100, 0, -5.0], [-100, 0, 5.0],
                         F, sea=SeaPlane(eps_r=EPS_SEA))
+
+
+def test_signature_bytes_do_not_depend_on_the_threads(monkeypatch):
+    # Parity: the batches of rays run on worker threads and are added in batch order,
+    # so one thread and four give the same bytes (small batches: many of them, direct and
+    # sea-first launches, edge cells); a thread pool that summed in completion order, or
+    # a batch dropped, would fail.
+    import seaecho.tracing.sbr as sbr
+
+    v, f = canonical.sphere(0.25, 3)
+    tx = np.array([-20.0, 5.0, 12.0])
+    sea = SeaPlane(eps_r=EPS_SEA, sigma_h=0.05)
+    out = []
+    for threads in (1, 4):
+        monkeypatch.setattr(sbr, "THREADS", threads)
+        out.append(trace_signature(TraceMesh.single(v + [0, 0, 1.0], f), tx, tx, F,
+                                   options=SBROptions(rays_per_wavelength=2, batch=2048),
+                                   sea=sea))
+    a, b = out
+    assert a.n_rays == b.n_rays and a.n_hits == b.n_hits > 4 * 2048
+    assert a.totals.tobytes() == b.totals.tobytes()
+    assert a.centres.position.tobytes() == b.centres.position.tobytes()
+    assert a.centres.s.tobytes() == b.centres.s.tobytes()

@@ -48,6 +48,11 @@ diag(-1, 1) S_FSA``, the familiar opposite statement.
 Geometry goes to Mitsuba in float32 in a frame centred on the hull (so precision does not
 depend on where the hull is in the world); ranges and phases stay float64.
 
+The batches of rays are independent: they are traced on worker threads (numpy and
+Mitsuba release the GIL; :data:`THREADS`), and their contributions are added to the
+centres in batch order, so that the signature's bytes do not depend on the number of
+threads.
+
 Not modelled: edge diffraction (PTD, the ILDC of Michaeli), creeping waves, surface
 waves, the curvature of the facets within a tube (faceted meshes), interactions
 hull-sea-hull, multiple objects' mutual bounces (each scatterer is traced with the
@@ -66,7 +71,9 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import os
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
@@ -94,6 +101,26 @@ __all__ = [
 _Z = np.array([0.0, 0.0, 1.0])
 #: Vacuum permittivity [F/m] (eps0 = 1 / (mu0 c^2), CODATA 2018 mu0).
 _EPS0 = 1.0 / (1.25663706212e-6 * C0**2)
+#: Worker threads of a trace (batches of rays in parallel; the result does not depend
+#: on it). The environment variable ``SEAECHO_SBR_THREADS`` overrides it.
+THREADS = int(os.environ.get("SEAECHO_SBR_THREADS", 0)) or min(4, os.cpu_count() or 1)
+
+
+def _ordered_map(fn: Callable, jobs: Iterable) -> Iterator:
+    """``fn(job)`` of every job, in job order, computed on :data:`THREADS` threads (two
+    jobs ahead of the consumer at most, so memory holds a few batches)."""
+    jobs = list(jobs)
+    if THREADS <= 1 or len(jobs) <= 1:
+        yield from map(fn, jobs)
+        return
+    with ThreadPoolExecutor(THREADS, thread_name_prefix="seaecho-sbr") as pool:
+        ahead = THREADS + 1
+        futures = [pool.submit(fn, j) for j in jobs[:ahead]]
+        for i in range(len(jobs)):
+            if i + ahead < len(jobs):
+                futures.append(pool.submit(fn, jobs[i + ahead]))
+            yield futures[i].result()
+            futures[i] = None
 
 
 def material_permittivity(frequency_hz: float, *, itu_type: str | None = None,
@@ -514,23 +541,35 @@ class _Tracer:
             return u_lo + (idx // nv + 0.5) * delta, v_lo + (idx % nv + 0.5) * delta
 
         m = self.opt.edge_refine
+        first = None
         if m > 1:
-            plain, edge = self._edge_cells(q, e1, e2, cells, centres, delta, nu, nv, image)
+            plain, edge, first = self._edge_cells(q, e1, e2, cells, centres, delta, nu, nv,
+                                                  image)
         else:
             plain, edge = cells, cells[:0]
         self.n_rays += plain.size + edge.size * m * m
-        for start in range(0, plain.size, self.opt.batch):
-            ui, vj = centres(plain[start:start + self.opt.batch])
-            self._trace(q, u0, e1, e2, ui, vj, delta, image)
+        step = self.opt.batch
+        jobs = [(plain[a:a + step], 1, None if first is None else
+                 (first[0][a:a + step], first[1][a:a + step]))
+                for a in range(0, plain.size, step)]
         # Edge cells: m x m sub-tubes of side delta / m
+        per = max(1, self.opt.batch // (m * m))
+        jobs += [(edge[a:a + per], m, None) for a in range(0, edge.size, per)]
         sub = (np.arange(m) + 0.5) / m - 0.5
         su, sv = (np.repeat(sub, m) * delta, np.tile(sub, m) * delta)
-        per = max(1, self.opt.batch // (m * m))
-        for start in range(0, edge.size, per):
-            ui, vj = centres(edge[start:start + per])
+
+        def trace(job):
+            ui, vj = centres(job[0])
+            if job[1] == 1:
+                return self._trace(q, u0, e1, e2, ui, vj, delta, image, job[2])
             ui = (ui[:, None] + su).ravel()
             vj = (vj[:, None] + sv).ravel()
-            self._trace(q, u0, e1, e2, ui, vj, delta / m, image)
+            return self._trace(q, u0, e1, e2, ui, vj, delta / m, image)
+
+        for hits, contributions in _ordered_map(trace, jobs):  # added in batch order
+            self.n_hits += hits
+            for args in contributions:
+                self.acc.add(*args)
 
     def _rays(self, q, e1, e2, ui, vj, image: bool):
         """Launch rays through the grid points (ui, vj): directions, distances to the
@@ -572,7 +611,12 @@ class _Tracer:
         hit = np.zeros((2, n_c), dtype=bool)
         nrm = np.zeros((2, n_c, 3), dtype=np.float32)
         pts = np.zeros((2, n_c, 3), dtype=np.float32)
-        for start in range(0, n_c, self.opt.batch):
+        # First hit of each cell's ray, reused by the trace of the plain cells (Mitsuba's
+        # distances are float32: kept exactly)
+        first_t = np.full(n_c, np.inf, dtype=np.float32)
+        first_prim = np.zeros(n_c, dtype=np.int32)
+
+        def first_hits(start):
             sl = slice(start, min(start + self.opt.batch, n_c))
             ui, vj = centres(cells[sl])
             d, _, _, o, ok = self._rays(q, e1, e2, ui, vj, image)
@@ -581,6 +625,8 @@ class _Tracer:
                 t, prim = _intersect(self.mi, self.hull_scene, o, d)
                 h = np.isfinite(t)
                 rows, o, d, t, prim = rows[h], o[h], d[h], t[h], prim[h]
+                if k == 0:
+                    first_t[rows], first_prim[rows] = t, prim
                 ng = self.normals[prim]
                 p = o + t[:, None] * d
                 hit[k, rows] = True
@@ -590,36 +636,53 @@ class _Tracer:
                 n = np.where((_dot(d, ng) > 0)[:, None], -ng, ng)
                 d = d - 2.0 * _dot(d, n)[:, None] * n
                 o = p + self.eps_off * n
+
+        for _ in _ordered_map(first_hits, range(0, n_c, self.opt.batch)):
+            pass  # each batch fills its own rows
         index = np.full(nu * nv, -1, dtype=np.int64)
         index[cells] = np.arange(n_c)
         i, j = cells // nv, cells % nv
         edge = np.zeros(n_c, dtype=bool)
         tol = 0.01 * delta
-        for di, dj in ((1, 0), (0, 1), (-1, 0), (0, -1)):
+        # Each pair of neighbours once (right and up; the test is symmetric in the pair,
+        # to the last bit: dp changes sign, the dot products only their sign)
+        for di, dj in ((1, 0), (0, 1)):
             ii, jj = i + di, j + dj
             inside = (ii >= 0) & (ii < nu) & (jj >= 0) & (jj < nv)
             nb = np.full(n_c, -1, dtype=np.int64)
             nb[inside] = index[ii[inside] * nv + jj[inside]]
             has = nb >= 0
+            a_all, b_all = np.flatnonzero(has), nb[has]
+            has_prev = np.zeros(n_c, dtype=bool)  # the cell on the other side exists
+            has_prev[b_all] = True
             for k in range(2):
-                nb_hit = np.zeros(n_c, dtype=bool)
-                nb_hit[has] = hit[k, nb[has]]
-                diff = hit[k] != nb_hit
-                both = hit[k] & nb_hit
-                if both.any():
-                    a, b = np.flatnonzero(both), nb[both]
+                # a missing neighbour (off the grid or not covered): an edge if it hits
+                edge |= hit[k] & ~(has & has_prev)
+                ha, hb = hit[k, a_all], hit[k, b_all]
+                rel = ha != hb
+                both = np.flatnonzero(ha & hb)
+                if both.size:
+                    a, b = a_all[both], b_all[both]
                     na, nb_n = nrm[k, a].astype(float), nrm[k, b].astype(float)
                     dp = pts[k, b].astype(float) - pts[k, a].astype(float)
-                    other = ((np.abs(_dot(na, nb_n)) < 1.0 - 5e-7)
-                             | (np.abs(_dot(na, dp)) > tol) | (np.abs(_dot(nb_n, dp)) > tol))
-                    diff[a] |= other
-                edge |= diff
-        return cells[hit[0] & ~edge], cells[edge]
+                    rel[both] = ((np.abs(_dot(na, nb_n)) < 1.0 - 5e-7)
+                                 | (np.abs(_dot(na, dp)) > tol) | (np.abs(_dot(nb_n, dp)) > tol))
+                edge[a_all[rel]] = True
+                edge[b_all[rel]] = True
+        plain = hit[0] & ~edge
+        return cells[plain], cells[edge], (first_t[plain], first_prim[plain])
 
-    def _trace(self, q, u0, e1, e2, ui, vj, delta, image: bool) -> None:
-        d, ell, tau, o, _ = self._rays(q, e1, e2, ui, vj, image)
+    def _trace(self, q, u0, e1, e2, ui, vj, delta, image: bool, first=None
+               ) -> tuple[int, list]:
+        """Trace one batch of rays: (hits radiated, the contributions for
+        ``CentreAccumulator.add`` in order). ``first``: the rays' first hits (distance,
+        triangle) when :meth:`_edge_cells` traced them already."""
+        d, ell, tau, o, ok = self._rays(q, e1, e2, ui, vj, image)
         # First hits (rays that miss the hull cost nothing more)
-        t, prim = _intersect(self.mi, self.hull_scene, o, d)
+        if first is not None and ok.all():
+            t, prim = first[0].astype(np.float64), first[1].astype(np.int64)
+        else:
+            t, prim = _intersect(self.mi, self.hull_scene, o, d)
         hit = np.isfinite(t)
         d, ell, tau, o, t, prim = d[hit], ell[hit], tau[hit], o[hit], t[hit], prim[hit]
         # Tube cross-section per unit distance (normal to d)
@@ -640,15 +703,21 @@ class _Tracer:
             c[:, 0, 0], c[:, 1, 1] = gh, gv
         else:
             c[:, 0, 0], c[:, 1, 1] = 1.0, 1.0
-        self._bounce(o, d, tau, (p1, p2, c), ta, tb, image, sea_pt, (t, prim))
+        out: list = []
+        return self._bounce(o, d, tau, (p1, p2, c), ta, tb, image, sea_pt, (t, prim),
+                            out), out
 
     # ------------------------------------------------------------------------ bounces
-    def _bounce(self, o, d, s0, e, ta, tb, image: bool, sea_pt, first_hit) -> None:
+    def _bounce(self, o, d, s0, e, ta, tb, image: bool, sea_pt, first_hit, out: list
+                ) -> int:
+        """Follow a batch of tubes from their first hit; contributions appended to
+        ``out``; returns the number of hits radiated."""
         mi = self.mi
         first = 1 if image else 0
+        hits = 0
         for bounce in range(self.opt.max_bounces):
             if d.shape[0] == 0:
-                return
+                return hits
             if bounce == 0:
                 t, prim = first_hit
             else:
@@ -680,8 +749,8 @@ class _Tracer:
                     a[keep] for a in (o, d, s, ta, tb, p, n, prim, off))
                 e = tuple(a[keep] for a in e)
             if d.shape[0] == 0:
-                return
-            self.n_hits += d.shape[0]
+                return hits
+            hits += d.shape[0]
             # Eqs O1-O2 with the facet's material
             eps = self.eps[prim]
             pec = np.isnan(eps.real)
@@ -703,7 +772,7 @@ class _Tracer:
             # Eq O5: the footprint of the tube (cross-section at unfolded distance s)
             a_fp, b_fp, area = tube_footprint(s[:, None] * ta, s[:, None] * tb, d, n)
             self._radiate(p, off, d, n, (alpha, beta, r_h, r_v, h_l, v_i, v_r),
-                          a_fp, b_fp, area, s, first, bounce)
+                          a_fp, b_fp, area, s, first, bounce, out)
             # Next segment: the reflected field on the basis (h_l, v_r) normal to d_r
             c = np.empty_like(c)
             c[:, :, 0] = r_h[:, None] * alpha
@@ -715,9 +784,11 @@ class _Tracer:
             ta = ta - 2.0 * _dot(ta, n)[:, None] * n
             tb = tb - 2.0 * _dot(tb, n)[:, None] * n
             sea_pt = None
+        return hits
 
-    def _radiate(self, p, off, d, n, fields, a_fp, b_fp, area, s, first, bounce):
-        """PO of the footprints towards R (and R'), eqs O3-O6 and C1."""
+    def _radiate(self, p, off, d, n, fields, a_fp, b_fp, area, s, first, bounce, out):
+        """PO of the footprints towards R (and R'), eqs O3-O6 and C1: the contributions
+        (``CentreAccumulator.add``'s arguments) appended to ``out``."""
         k = self.k
         exits = [(self.rx, 0)]
         if self.sea is not None and self.sea.multipath:
@@ -768,9 +839,10 @@ class _Tracer:
             c, good = equivalent_positions(pw, length, self.tx_w, self.rx_w)
             path = first + 2 * last
             n_good = int(good.sum())
-            self.acc.add(c[good], amp[good], length[good], spreading[good],
-                         np.full(n_good, path, dtype=np.int64),
-                         np.full(n_good, path * self.opt.max_bounces + bounce, dtype=np.int64))
+            out.append((c[good], amp[good], length[good], spreading[good],
+                        np.full(n_good, path, dtype=np.int64),
+                        np.full(n_good, path * self.opt.max_bounces + bounce,
+                                dtype=np.int64)))
 
 
 def trace_signature(hull: TraceMesh, tx: ArrayLike, rx: ArrayLike, frequency_hz: float, *,
