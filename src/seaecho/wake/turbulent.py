@@ -49,7 +49,8 @@ al. 1988; Peltzer et al. 1992) persist over the strip: their damping is the cont
 ``C_f`` [dB] (default -3 dB), a free parameter (no published X- or C-band contrast of a far
 wake against the surrounding sea could be checked for it: the SAR studies of Lyden et al.
 1988, Milgram et al. 1993, Peltzer et al. 1992 and Soloviev, Gilman et al. 2010 describe
-the dark centreline without a number usable here); the strongest published suppression of
+the dark centreline without a number usable here; a wider search, listed in
+docs/wake.md, found none either); the strongest published suppression of
 short waves by a film at moderate wind, an artificial vegetable-oil slick at 6-8 m/s, is
 a spectral contrast of about 10 (-10 dB; Dulov & Yurovskaya, field photographs). The
 wake's age ``xi / V`` enters through ``xi``. Wind dependence (stronger winds restore the
