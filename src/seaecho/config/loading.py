@@ -125,6 +125,9 @@ def load_scene(path: str | Path) -> Scene:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"{path}: not valid TOML ({exc})") from None
+    except RecursionError:
+        raise SceneError(f"{path}: not valid TOML for seaecho: arrays or tables nested too "
+                         "deeply (a scene file needs at most a few levels)") from None
     return parse_scene(data, source=str(path))
 
 
