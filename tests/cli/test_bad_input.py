@@ -42,3 +42,44 @@ def test_deeply_nested_toml_value_is_a_message(tmp_path, capsys, command):
     rc, err = _cli(capsys, command, str(scene), *extra)
     assert rc == 2 and "nested too deeply" in err
     assert sorted(tmp_path.iterdir()) == [scene]
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "section", "allowed"),
+    [
+        ("nx = 64", "nx = 64\nNy = 64", "[sea].Ny", "wind_speed_m_s"),
+        ("seed = 1", "Seed = 1", "[run].Seed", "surface_times_s"),
+        ("position_m = [-500.0, 0.0, 300.0]", "Position_m = [-500.0, 0.0, 300.0]",
+         "[transmitter].Position_m", "waypoint_times_s"),
+        ('kind = "lfm"', 'KIND = "lfm"', "[radar].waveform.KIND", "up_chirp"),
+    ],
+)
+def test_unknown_key_with_capitals_is_named_with_its_own_section(tmp_path, capsys, old, new,
+                                                                 section, allowed):
+    # The loc cleaner used to drop every part starting with a capital (meant for class
+    # names of tagged unions): the key vanished and the top level's keys were listed
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, _replace(old, new))))
+    assert rc == 2
+    line = next(ln for ln in err.splitlines() if "unknown key" in ln)
+    assert line.startswith(section) and allowed in line
+    assert "transmitter, " not in line  # not the top level's keys
+
+
+def test_long_values_are_cut_in_messages(tmp_path, capsys):
+    name = "a" * 1_000_000
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, _replace(
+        'name = "calibration_point_target"', f'name = "{name}"'))))
+    assert rc == 2 and "at most 200 characters" in err
+    assert len(err) < 1000 and "1000000 characters" in err
+    targets = "".join(f"[[targets]]\nposition_m = [{i}.0, 0.0, 1.0]\nrcs_m2 = 1.0\n"
+                      for i in range(10_001))
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, CAL + targets)))
+    assert rc == 2 and "at most 10000 items" in err
+    assert len(err) < 1000 and "10004 items" in err
+
+
+def test_long_lists_in_validator_messages_are_cut(tmp_path, capsys):
+    times = ", ".join(str(float(100_000 - i)) for i in range(100_000))
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, _replace(
+        "seed = 1", f"seed = 1\nsurface_times_s = [{times}]"))))
+    assert rc == 2 and "increasing order" in err and len(err) < 1000

@@ -30,7 +30,7 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
-from .base import Section
+from .base import Section, short_repr
 
 Vec3 = tuple[float, float, float]
 
@@ -203,7 +203,8 @@ class PlatformConfig(Section):
             if len(t) != len(p):
                 raise ValueError(f"{len(t)} waypoint times but {len(p)} positions")
             if any(b <= a for a, b in zip(t, t[1:], strict=False)):
-                raise ValueError(f"waypoint_times_s = {list(t)}: must increase strictly")
+                raise ValueError(f"waypoint_times_s = {short_repr(t)}: must increase "
+                                 "strictly")
             if self.position_m is not None or any(self.velocity_m_s):
                 raise ValueError("motion 'waypoints' takes no position_m/velocity_m_s")
         return self

@@ -16,7 +16,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from .base import Section
+from .base import Section, short_repr
 
 #: Mitsuba variants seaecho can trace with (polarised, differentiable, mono-spectral).
 VariantName = Literal["llvm_ad_mono_polarized", "cuda_ad_mono_polarized"]
@@ -114,7 +114,8 @@ class ObjectConfig(Section):
             raise ValueError("conductivity_s_m needs relative_permittivity")
         suffix = self.file.rsplit(".", 1)[-1].lower() if "." in self.file else ""
         if suffix not in ("ply", "obj", "stl", "xml"):
-            raise ValueError(f"file = {self.file!r}: allowed extensions .ply, .obj, .stl, .xml")
+            raise ValueError(f"file = {short_repr(self.file)}: allowed extensions .ply, .obj, "
+                             ".stl, .xml")
         return self
 
     @property
