@@ -102,12 +102,12 @@ def _clean_loc(loc: tuple[Any, ...], model: type[BaseModel]) -> tuple[Any, ...]:
 
 
 def _section_name(loc: tuple[Any, ...]) -> str:
-    """The TOML table of a loc: ``[radar.waveform]``, ``[[targets]] #2``, (top level)."""
+    """The section of a loc as messages name it: ``[sea]``, ``[radar].waveform``."""
     if not loc:
         return "(top level)"
-    if any(isinstance(p, int) for p in loc):
-        return _format_loc(loc)
-    return "[" + ".".join(str(p) for p in loc) + "]"
+    if len(loc) == 1 and isinstance(loc[0], str):
+        return f"[{loc[0]}]"
+    return _format_loc(loc)
 
 
 def format_validation_error(exc: ValidationError, model: type[BaseModel] = Scene) -> str:
