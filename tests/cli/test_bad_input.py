@@ -83,3 +83,26 @@ def test_long_lists_in_validator_messages_are_cut(tmp_path, capsys):
     rc, err = _cli(capsys, "check", str(_scene(tmp_path, _replace(
         "seed = 1", f"seed = 1\nsurface_times_s = [{times}]"))))
     assert rc == 2 and "increasing order" in err and len(err) < 1000
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "field"),
+    [
+        ("wind_speed_m_s = 5.0", "wind_speed_m_s = true", "[sea].wind_speed_m_s = true"),
+        ("nx = 64", 'nx = "32"', '[sea].nx = "32"'),
+        ("nx = 64", "nx = 64.0", "[sea].nx = 64.0"),
+        ("seed = 1", "seed = 1.5", "[run].seed = 1.5"),
+        ("thermal_noise = true", "thermal_noise = 1", "[radar].thermal_noise = 1"),
+        ("n_pulses = 32", 'n_pulses = "32"', '[radar].n_pulses = "32"'),
+    ],
+)
+def test_strict_types(tmp_path, capsys, old, new, field):
+    # Lax validation took true as 1.0 and "32" as 32
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, _replace(old, new))))
+    assert rc == 2 and field in err
+
+
+def test_integer_is_accepted_for_a_float(tmp_path, capsys):
+    rc, _ = _cli(capsys, "check", str(_scene(tmp_path, _replace(
+        "wind_speed_m_s = 5.0", "wind_speed_m_s = 5"))))
+    assert rc == 0

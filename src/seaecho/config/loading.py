@@ -153,12 +153,29 @@ def _allowed_keys(model: type[BaseModel], loc: tuple[Any, ...]) -> list[str]:
     return sorted(getattr(current, "model_fields", {}))
 
 
+def _lists_to_tuples(data: Any) -> Any:
+    """TOML arrays (lists) as tuples, so that strict validation accepts them."""
+    if isinstance(data, list):
+        return tuple(_lists_to_tuples(v) for v in data)
+    if isinstance(data, dict):
+        return {k: _lists_to_tuples(v) for k, v in data.items()}
+    return data
+
+
 def parse_scene(data: dict[str, Any], source: str = "<scene>") -> Scene:
-    """Validate a scene given as a dict (the parsed TOML)."""
+    """Validate a scene given as a dict (the parsed TOML).
+
+    Validation is strict: a number must be written as a number (``nx = 32``, not
+    ``"32"``), a boolean as ``true``/``false`` (not ``1``), an integer field takes no
+    fraction (``nx = 32.0`` is refused); an integer is accepted where a float is expected.
+    """
     try:
-        return Scene.model_validate(data)
+        return Scene.model_validate(_lists_to_tuples(data), strict=True)
     except ValidationError as exc:
         raise SceneError(f"{source}: invalid scene\n{format_validation_error(exc)}") from None
+    except RecursionError:
+        raise SceneError(f"{source}: invalid scene: values nested too deeply (a scene "
+                         "file needs at most a few levels of tables and arrays)") from None
 
 
 def load_scene(path: str | Path) -> Scene:
