@@ -4,9 +4,12 @@ scenes (the fuzzing suite in ``tests/fuzz`` generates many more)."""
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
+import numpy as np
 import pytest
+import xarray as xr
 
 from seaecho.cli import main
 
@@ -106,3 +109,51 @@ def test_integer_is_accepted_for_a_float(tmp_path, capsys):
     rc, _ = _cli(capsys, "check", str(_scene(tmp_path, _replace(
         "wind_speed_m_s = 5.0", "wind_speed_m_s = 5"))))
     assert rc == 0
+
+
+def _run_quietly(*args) -> int:
+    """main(args) with warnings printed (as the console script does), not raised."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("always")
+        return main(list(args))
+
+
+def test_wind_below_beaufort_force_1_is_refused(tmp_path, capsys):
+    # 1e-300 m/s passed the schema (> 0) and `check` died in ZeroDivisionError
+    # (k_p = g Omega^2 / U10^2); the Beaufort scale calls a wind below 0.3 m/s calm
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, _replace(
+        "wind_speed_m_s = 5.0", "wind_speed_m_s = 1e-300"))))
+    assert rc == 2 and "[sea].wind_speed_m_s = 1e-300" in err and "0.3" in err
+
+
+def test_lightest_wind_runs_with_sea_clutter(tmp_path, capsys):
+    text = _replace("wind_speed_m_s = 5.0", "wind_speed_m_s = 0.3")
+    text = _replace("sea_clutter = false", "sea_clutter = true", text)
+    text = _replace("nx = 64", "nx = 16", text)
+    scene = _scene(tmp_path, text)
+    out = tmp_path / "x.nc"
+    assert _run_quietly("check", str(scene)) == 0
+    assert _run_quietly("run", str(scene), "-o", str(out), "-q", "--no-figures",
+                        "--pulses", "1") == 0
+    with xr.open_dataset(out, engine="h5netcdf") as ds:
+        assert np.isfinite(ds["raw"].values).all()
+    assert "Traceback" not in capsys.readouterr().err
+
+
+def test_carrier_whose_radar_band_the_grid_resolves(tmp_path, capsys):
+    # 1.000001 MHz: the band of unresolved waves [pi/dx, 50 k] is empty; `check` died with
+    # "need 0 <= k_min < k_max" while `run` (sea clutter off) exited 0
+    scene = _scene(tmp_path, _replace("carrier_frequency_hz = 10.0e9",
+                                      "carrier_frequency_hz = 1.000001e6"))
+    rc, err = _cli(capsys, "check", str(scene))
+    assert rc == 0 and "coarse against the radar wavelength" not in capsys.readouterr().out
+
+
+def test_surface_of_a_grid_finer_than_every_tabulated_wave(tmp_path, capsys):
+    # 1 mm tile on 64 points: k_cut = pi / dx > 1e4 rad/m, the upper limit of the
+    # unresolved band the surface file reports; an empty band has zero variance
+    scene = _scene(tmp_path, "[sea]\nwind_speed_m_s = 5.0\nsize_x_m = 0.001\nnx = 64\n")
+    out = tmp_path / "s.nc"
+    assert _run_quietly("surface", str(scene), "-o", str(out)) == 0
+    with xr.open_dataset(out, engine="h5netcdf") as ds:
+        assert ds.attrs["unresolved_height_variance_m2"] == 0.0

@@ -78,7 +78,7 @@ def test_surface_same_seed_same_bytes(small_scene, tmp_path):
     ("edit", "fragment"),
     [
         (("wind_speed_m_s = 6.0", 'wind_speed_m_s = "six"'), "[sea].wind_speed_m_s"),
-        (("wind_speed_m_s = 6.0", "wind_speed_m_s = -6.0"), "greater than 0"),
+        (("wind_speed_m_s = 6.0", "wind_speed_m_s = -6.0"), "greater than or equal to 0.3"),
         (("nx = 64", "nx = 64\ncolour = 1"), "unknown key"),
         (("speed_kn = 10.0", "speed_kn = 100.0"), "[ship].speed_kn"),
     ],

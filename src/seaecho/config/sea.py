@@ -11,6 +11,12 @@ from .base import Section
 SpectrumName = Literal["pierson-moskowitz", "jonswap", "elfouhaily"]
 SpreadingName = Literal["longuet-higgins", "elfouhaily"]
 
+#: Lowest wind [m/s]: the lower limit of Beaufort force 1 ("light air, ripples with the
+#: appearance of scales"); below it, force 0, the sea is "like a mirror" (the Beaufort
+#: wind force scale as the World Meteorological Organization tabulates it). The spectra
+#: have no meaning there (k_p = g Omega^2 / U^2 diverges as U -> 0).
+MIN_WIND_M_S = 0.3
+
 
 class SeaConfig(Section):
     """The wind-driven sea: spectrum, tile, grid and water properties."""
@@ -33,9 +39,10 @@ class SeaConfig(Section):
     )
     wind_speed_m_s: float = Field(
         ...,
-        gt=0.0,
+        ge=MIN_WIND_M_S,
         le=40.0,
-        description="wind speed U19.5 at 19.5 m above the sea [m/s] (paper eq 5)",
+        description="wind speed U19.5 at 19.5 m above the sea [m/s] (paper eq 5); from "
+        "0.3 m/s, Beaufort force 1 (below, the sea is calm and no wind-sea spectrum applies)",
     )
     wind_direction_deg: float = Field(
         0.0,
@@ -91,4 +98,4 @@ class SeaConfig(Section):
         return self.size_x_m, self.size_y_m if self.size_y_m is not None else self.size_x_m
 
 
-__all__ = ["SeaConfig", "SpectrumName", "SpreadingName"]
+__all__ = ["MIN_WIND_M_S", "SeaConfig", "SpectrumName", "SpreadingName"]
