@@ -157,3 +157,30 @@ def test_surface_of_a_grid_finer_than_every_tabulated_wave(tmp_path, capsys):
     assert _run_quietly("surface", str(scene), "-o", str(out)) == 0
     with xr.open_dataset(out, engine="h5netcdf") as ds:
         assert ds.attrs["unresolved_height_variance_m2"] == 0.0
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "named"),
+    [
+        ('channels = ["HH", "HV", "VH", "VV"]', 'channels = ["XX"]', "'XX'"),
+        ('channels = ["HH", "HV", "VH", "VV"]', 'channels = ["hh"]', "'hh'"),
+        ('look_at_m = [0.0, 0.0, 0.0]\n\n[receiver]',
+         'look_at_m = [0.0, 0.0, 0.0]\nbasis = "circular"\n\n[receiver]', "'HH'"),
+    ],
+)
+def test_check_refuses_channels_that_run_refuses(tmp_path, capsys, old, new, named):
+    # `check` accepted these and `run` then refused them
+    scene = _scene(tmp_path, _replace(old, new))
+    for command in ("check", "run"):
+        extra = ["-o", str(tmp_path / "x.nc"), "-q"] if command == "run" else []
+        rc, err = _cli(capsys, command, str(scene), *extra)
+        assert rc == 2 and "[radar].channels" in err and named in err
+    assert sorted(tmp_path.iterdir()) == [scene]
+
+
+def test_circular_channels_are_accepted(tmp_path, capsys):
+    text = _replace('look_at_m = [0.0, 0.0, 0.0]\n\n[receiver]',
+                    'look_at_m = [0.0, 0.0, 0.0]\nbasis = "circular"\n\n[receiver]')
+    text = _replace('channels = ["HH", "HV", "VH", "VV"]', 'channels = ["HR", "VL"]', text)
+    rc, _ = _cli(capsys, "check", str(_scene(tmp_path, text)))
+    assert rc == 0

@@ -12,7 +12,7 @@ registered here too, each in its own module of this package.
 
 from __future__ import annotations
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
 from .base import Section
 from .radar import PlatformConfig, RadarConfig, TargetConfig
@@ -48,6 +48,13 @@ class Scene(Section):
     objects: tuple[ObjectConfig, ...] = Field(
         (), max_length=1000, description="meshes / XML scenes that occlude the sea [[objects]]"
     )
+
+    @model_validator(mode="after")
+    def _across_sections(self) -> Scene:
+        from .consistency import check_scene
+
+        check_scene(self)
+        return self
 
 
 __all__ = ["Scene"]
