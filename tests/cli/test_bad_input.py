@@ -128,7 +128,7 @@ def test_wind_below_beaufort_force_1_is_refused(tmp_path, capsys):
 
 def test_lightest_wind_runs_with_sea_clutter(tmp_path, capsys):
     text = _replace("wind_speed_m_s = 5.0", "wind_speed_m_s = 0.3")
-    text = _replace("sea_clutter = false", "sea_clutter = true", text)
+    text = _replace("sea_clutter = false\n", "sea_clutter = true\n", text)
     text = _replace("nx = 64", "nx = 16", text)
     scene = _scene(tmp_path, text)
     out = tmp_path / "x.nc"
@@ -184,3 +184,55 @@ def test_circular_channels_are_accepted(tmp_path, capsys):
     text = _replace('channels = ["HH", "HV", "VH", "VV"]', 'channels = ["HR", "VL"]', text)
     rc, _ = _cli(capsys, "check", str(_scene(tmp_path, text)))
     assert rc == 0
+
+
+SEA_ON = _replace("sea_clutter = false\n", "sea_clutter = true\n",
+                  _replace("n_pulses = 32", "n_pulses = 4"))
+
+
+@pytest.mark.parametrize(
+    ("text", "named"),
+    [
+        # a point target at the transmitter's / the receiver's position
+        (_replace("position_m = [0.0, 0.0, 1.0]", "position_m = [-500.0, 0.0, 300.0]"),
+         "[[targets]] 'sphere10'"),
+        (_replace("position_m = [0.0, 0.0, 1.0]", "position_m = [200.0, 100.0, 80.0]"),
+         "[[targets]] 'sphere10'"),
+        # a target whose track passes through the transmitter at pulse 1 (t = 1 ms)
+        (_replace("position_m = [-12.0, 20.0, 0.5]\nvelocity_m_s = [7.0, 3.0, 0.0]",
+                  "position_m = [-501.0, 0.0, 300.0]\nvelocity_m_s = [1000.0, 0.0, 0.0]"),
+         "[[targets]] 'mover'"),
+        # an antenna looking at its own position
+        (_replace("look_at_m = [0.0, 0.0, 0.0]\n\n[receiver]",
+                  "look_at_m = [-500.0, 0.0, 300.0]\n\n[receiver]"),
+         "[transmitter].antenna.look_at_m"),
+        # a transmitter at the sea surface looking at itself (sea clutter on)
+        (_replace("position_m = [-500.0, 0.0, 300.0]", "position_m = [0.0, 0.0, 0.0]", SEA_ON),
+         "[transmitter].position_m"),
+        # a receiver 5 m below the sea surface (it received sea echo)
+        (_replace("position_m = [200.0, 100.0, 80.0]", "position_m = [200.0, 100.0, -5.0]",
+                  SEA_ON), "[receiver].position_m"),
+        # 1 MHz with sea clutter: the 1 m grid resolves every Bragg wave
+        (_replace("carrier_frequency_hz = 10.0e9", "carrier_frequency_hz = 1.000001e6",
+                  SEA_ON), "[sea].size_x_m / nx"),
+        # nothing to receive
+        (CAL[:CAL.index("[[targets]]")], "nothing to receive"),
+    ],
+)
+def test_degenerate_geometry_is_refused_by_check_and_run(tmp_path, capsys, text, named):
+    # Each of the first five ran with exit status 0 and wrote NaN/Inf into `raw`
+    scene = _scene(tmp_path, text)
+    out = tmp_path / "x.nc"
+    assert _run_quietly("check", str(scene)) == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and named in err, err
+    assert _run_quietly("run", str(scene), "-o", str(out), "-q") == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and named in err, err
+    assert sorted(tmp_path.iterdir()) == [scene]
+
+
+def test_missing_object_file_is_refused_by_check(tmp_path, capsys):
+    text = CAL + '\n[[objects]]\nname = "hull"\nfile = "no_such_hull.ply"\n'
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
+    assert rc == 2 and "no_such_hull.ply" in err and "[[objects]] #0" in err

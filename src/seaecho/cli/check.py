@@ -14,10 +14,16 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from pathlib import Path
+
     from ..config import load_scene
     from ..ocean.sampling import check_sampling
+    from ..preflight import check_run
 
     scene = load_scene(args.scene)
+    runnable = scene.radar is not None and scene.transmitter is not None
+    if runnable:  # what `seaecho run` would refuse, refused here too
+        check_run(scene, args.scene, base_dir=Path(args.scene).parent)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         check_sampling(scene)
@@ -30,6 +36,9 @@ def run(args: argparse.Namespace) -> int:
         s = scene.ship
         print(f"  ship: {s.length_m} x {s.beam_m} m, draft {s.draft_m} m, "
               f"{s.speed:.3f} m/s heading {s.heading_deg} deg")
+    if not runnable:
+        print("  no [radar] and [transmitter]: `seaecho surface` and `seaecho trace` can use "
+              "it, `seaecho run` needs both")
     for w in caught:
         print(f"  warning: {w.message}")
     return 0

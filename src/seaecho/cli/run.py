@@ -43,6 +43,9 @@ def run(args: argparse.Namespace) -> int:
         radar = scene.radar.model_copy(update={
             "n_pulses": n, "sigma_map_pulse": min(scene.radar.sigma_map_pulse, n - 1)})
         scene = scene.model_copy(update={"radar": radar})
+    from ..preflight import check_run
+
+    check_run(scene, args.scene, base_dir=Path(args.scene).parent)  # degenerate geometry...
     if args.output:
         out = Path(args.output)
     elif scene.run.output:
