@@ -221,3 +221,43 @@ def test_dataset_states_sea_update_and_refresh_interval(tmp_path):
         assert ds.attrs["tracing_mode"] == "raytraced"
         assert ds.attrs["sea_update_pulses"] == 2
         assert ds.attrs["sea_update_interval_s"] == pytest.approx(2e-3)
+
+
+def _nan_target_echo(real, bad_pulse, bad_target):
+    """target_echo with target ``bad_target``'s amplitudes NaN from ``bad_pulse`` on."""
+
+    def echo(self, geometry):
+        e = real(self, geometry)
+        if geometry.time >= self.emission_time(bad_pulse):
+            e.amplitudes[:, bad_target] = np.nan
+        return e
+
+    return echo
+
+
+def test_non_finite_pulse_stops_the_run_and_names_the_target(tmp_path, monkeypatch):
+    from seaecho.guards import NonFiniteEchoError
+    from seaecho.radar.system import RadarSystem
+
+    monkeypatch.setattr(RadarSystem, "target_echo",
+                        _nan_target_echo(RadarSystem.target_echo, 3, 1))
+    path = tmp_path / "out.nc"
+    with pytest.raises(NonFiniteEchoError, match=r"pulse 3 .*point target \"#1\""):
+        Simulation(_scene(n_pulses=6)).run(path, progress=False, chunk=2)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_non_finite_sea_facets_are_named(monkeypatch):
+    from seaecho.guards import NonFiniteEchoError
+
+    sim = Simulation(_scene(sea=True, n_pulses=2))
+    real = sim.sea_echo
+
+    def sea_echo(pulse, geometry=None, sigma=False):
+        se = real(pulse, geometry, sigma)
+        se.echo.tau[5] = np.inf
+        return se
+
+    monkeypatch.setattr(sim, "sea_echo", sea_echo)
+    with pytest.raises(NonFiniteEchoError, match=r"pulse 1 .*1 sea facets \(first index 5\)"):
+        sim.pulse(1)

@@ -31,6 +31,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .constants import C0
+from .guards import check_pulse
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import generator
@@ -212,7 +213,9 @@ class Simulation:
         t = self.radar.target_echo(geo)
         if t is not None:
             echoes.append(t)
-        return self.radar.receive(pulse, echoes)
+        raw = self.radar.receive(pulse, echoes)
+        check_pulse(self, pulse, raw, echoes)  # NaN/Inf: NonFiniteEchoError (guards.py)
+        return raw
 
     def compress(self, raw: NDArray[np.complex128]) -> NDArray[np.complex128]:
         """Range-compressed samples with the scene's weighting (same shape as ``raw``)."""

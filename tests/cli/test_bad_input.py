@@ -236,3 +236,24 @@ def test_missing_object_file_is_refused_by_check(tmp_path, capsys):
     text = CAL + '\n[[objects]]\nname = "hull"\nfile = "no_such_hull.ply"\n'
     rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
     assert rc == 2 and "no_such_hull.ply" in err and "[[objects]] #0" in err
+
+
+def test_non_finite_pulse_is_exit_2_with_no_file(tmp_path, capsys, monkeypatch):
+    # The finite-output guard (seaecho.guards): a NaN that no scene check foresaw stops
+    # the run with a message naming the pulse and the scatterer, and leaves no file
+    from seaecho.radar.system import RadarSystem
+
+    real = RadarSystem.target_echo
+
+    def echo(self, geometry):
+        e = real(self, geometry)
+        if geometry.time >= self.emission_time(2):
+            e.amplitudes[:, 2] = np.nan
+        return e
+
+    monkeypatch.setattr(RadarSystem, "target_echo", echo)
+    scene = _scene(tmp_path, CAL)
+    rc, err = _cli(capsys, "run", str(scene), "-o", str(tmp_path / "x.nc"), "-q",
+                   "--pulses", "4")
+    assert rc == 2 and "pulse 2" in err and 'point target "mover"' in err
+    assert sorted(tmp_path.iterdir()) == [scene]
