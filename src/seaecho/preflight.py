@@ -37,7 +37,8 @@ everything ``run`` would):
   tangent-plane approximation (paper section III: "the curvature of the waves [must be]
   large enough in front of the electromagnetic wavelength").
 
-- **Files**: every ``[[objects]]`` file exists beside the scene.
+- **Files and devices** the ray-traced sea needs: every ``[[objects]]`` file exists
+  beside the scene and loads; a CUDA variant has a CUDA GPU.
 
 - **Something to receive**: sea clutter on, a target, or an explicit receive window.
 
@@ -370,13 +371,29 @@ def two_scale_problems(scene) -> list[str]:
 
 
 def object_problems(scene, base_dir) -> list[str]:
-    """``[[objects]]`` files that do not exist beside the scene."""
+    """``[[objects]]`` the run would load (ray-traced sea clutter) and cannot: a missing
+    or unreadable file, a CUDA variant without a CUDA GPU."""
+    if not (scene.radar.sea_clutter and scene.tracing.mode == "raytraced"):
+        return []
     out = []
     for i, obj in enumerate(scene.objects):
         path = Path(base_dir) / obj.file
         if not path.is_file():
             out.append(f"[[objects]] #{i} ({obj.name}): file = {short_repr(obj.file)}: no such "
                        f"file in {Path(base_dir).resolve()}")
+            continue
+        from .tracing.scene import load_object
+
+        try:
+            load_object(obj, base_dir=str(base_dir), ship=scene.ship)
+        except ValueError as exc:
+            out.append(f"[[objects]] #{i} ({obj.name}): {short_repr(str(exc), 300)[1:-1]}")
+    if scene.tracing.variant.startswith("cuda"):
+        from .tracing.variant import cuda_available
+
+        if not cuda_available():
+            out.append(f"[tracing].variant = {short_repr(scene.tracing.variant)}: no CUDA GPU "
+                       "is usable here; use 'llvm_ad_mono_polarized'")
     return out
 
 

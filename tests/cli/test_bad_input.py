@@ -232,10 +232,34 @@ def test_degenerate_geometry_is_refused_by_check_and_run(tmp_path, capsys, text,
     assert sorted(tmp_path.iterdir()) == [scene]
 
 
-def test_missing_object_file_is_refused_by_check(tmp_path, capsys):
-    text = CAL + '\n[[objects]]\nname = "hull"\nfile = "no_such_hull.ply"\n'
-    rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
-    assert rc == 2 and "no_such_hull.ply" in err and "[[objects]] #0" in err
+@pytest.mark.parametrize(
+    ("objects", "named"),
+    [
+        ('name = "hull"\nfile = "no_such_hull.ply"', "no_such_hull.ply"),
+        ('name = "hull"\nfile = "garbage.ply"', "[[objects]] #0 (hull)"),
+    ],
+)
+def test_object_files_the_run_cannot_load_are_refused_by_check(tmp_path, capsys, objects,
+                                                                named):
+    (tmp_path / "garbage.ply").write_text("not a mesh")
+    scene = _scene(tmp_path, SEA_ON + "\n[[objects]]\n" + objects + "\n")
+    rc, err = _cli(capsys, "check", str(scene))
+    assert rc == 2 and named in err
+
+
+@pytest.mark.parametrize(
+    ("objects", "named"),
+    [
+        # found by the fuzzing suite: `check` accepted both, `run` refused them
+        ('[[objects]]\nname = "hull"\nfile = "m.ply"\nfollow_ship = true\n',
+         "needs a [ship]"),
+        ('[[objects]]\nname = "a"\nfile = "m.ply"\n[[objects]]\nname = "a"\nfile = "n.ply"\n',
+         "must be unique"),
+    ],
+)
+def test_object_consistency_is_in_the_schema(tmp_path, capsys, objects, named):
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, CAL + "\n" + objects)))
+    assert rc == 2 and "[[objects]]" in err and named in err
 
 
 def test_non_finite_pulse_is_exit_2_with_no_file(tmp_path, capsys, monkeypatch):

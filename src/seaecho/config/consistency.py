@@ -2,8 +2,9 @@
 
 A single section's model cannot see its neighbours: the channels of ``[radar]`` are
 only meaningful with the polarisation bases of ``[transmitter.antenna]`` and
-``[receiver.antenna]``. Each check raises ``ValueError`` with a message that starts with
-the field it names (``[radar].channels = ...``), which the loader prints as it is.
+``[receiver.antenna]``; an object that follows the ship needs a ``[ship]``. Each check
+raises ``ValueError`` with a message that starts with the field it names
+(``[radar].channels = ...``), which the loader prints as it is.
 """
 
 from __future__ import annotations
@@ -38,9 +39,23 @@ def check_channels(scene) -> None:
             f"the transmitter's '{tx}' basis: allowed {', '.join(allowed)}")
 
 
+def check_objects(scene) -> None:
+    """``[[objects]]``: unique names; ``follow_ship`` needs a ``[ship]``."""
+    seen: set[str] = set()
+    for i, obj in enumerate(scene.objects):
+        if obj.name in seen:
+            raise ValueError(f"[[objects]] #{i}: name = {short_repr(obj.name)} is used by "
+                             "an earlier object; names must be unique")
+        seen.add(obj.name)
+        if obj.follow_ship and scene.ship is None:
+            raise ValueError(f"[[objects]] #{i} ({obj.name}): follow_ship = true needs a "
+                             "[ship] section")
+
+
 def check_scene(scene) -> None:
     """Every check of this module (called by :class:`~seaecho.config.scene.Scene`)."""
     check_channels(scene)
+    check_objects(scene)
 
 
-__all__ = ["allowed_channels", "check_channels", "check_scene"]
+__all__ = ["allowed_channels", "check_channels", "check_objects", "check_scene"]
