@@ -281,3 +281,23 @@ def test_non_finite_pulse_is_exit_2_with_no_file(tmp_path, capsys, monkeypatch):
                    "--pulses", "4")
     assert rc == 2 and "pulse 2" in err and 'point target "mover"' in err
     assert sorted(tmp_path.iterdir()) == [scene]
+
+
+def test_depth_too_shallow_for_the_waves_is_refused(tmp_path, capsys):
+    # Found by the fuzzing suite: depth_m = 5e-324 (> 0, allowed) made k d underflow, the
+    # wave velocities NaN and the run stop on the finite-output guard
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, _replace(
+        "nx = 64", "nx = 64\ndepth_m = 5e-324", SEA_ON))))
+    assert rc == 2 and "[sea].depth_m = 4.94066e-324" in err and "McCowan" in err
+
+
+def test_pierson_moskowitz_significant_height():
+    """H_s = 0.21 U19.5^2 / g (Pierson & Moskowitz 1964; Stewart 2008, eq 16.26), which
+    sets the breaking depth H_s / 0.78 (McCowan 1894) of the depth check."""
+    from seaecho.config import parse_scene
+    from seaecho.config.consistency import significant_height
+    from seaecho.constants import G
+
+    sea = parse_scene({"sea": {"spectrum": "pierson-moskowitz", "wind_speed_m_s": 12.0,
+                               "size_x_m": 64.0, "nx": 16}}).sea
+    assert significant_height(sea) == pytest.approx(0.21 * 12.0**2 / G, rel=0.01)

@@ -2,7 +2,8 @@
 
 A single section's model cannot see its neighbours: the channels of ``[radar]`` are
 only meaningful with the polarisation bases of ``[transmitter.antenna]`` and
-``[receiver.antenna]``; an object that follows the ship needs a ``[ship]``. Each check
+``[receiver.antenna]``; an object that follows the ship needs a ``[ship]``; the depth of
+``[sea]`` must hold the waves of its wind. Each check
 raises ``ValueError`` with a message that starts with the field it names
 (``[radar].channels = ...``), which the loader prints as it is.
 """
@@ -52,10 +53,54 @@ def check_objects(scene) -> None:
                              "[ship] section")
 
 
+#: McCowan's limit on the height of a wave in water of depth d: H <= 0.78 d.
+BREAKING_RATIO = 0.78
+
+
+def significant_height(sea) -> float:
+    """Significant wave height H_s = 4 sqrt(m0) of a ``[sea]`` section's spectrum [m]
+    (m0 its integral over 0 < K < 1e4 rad/m)."""
+    import warnings
+
+    from ..ocean.spectra import DirectionalSpectrum
+    from ..ocean.twoscale import height_variance
+
+    with warnings.catch_warnings():  # validity warnings come with the run, not here
+        warnings.simplefilter("ignore")
+        spectrum = DirectionalSpectrum.from_sea_config(sea)
+        return 4.0 * height_variance(spectrum, 0.0, 1.0e4) ** 0.5
+
+
+def check_depth(scene) -> None:
+    """``[sea].depth_m`` must hold the sea's waves: d >= H_s / 0.78.
+
+    Shallower, the waves of the spectrum would break (McCowan 1894: a wave of height H
+    breaks in water of depth d < H / 0.78), so linear waves on finite depth (paper eq 15)
+    do not describe them; the limit also keeps k d from underflowing (a depth of 1e-300 m
+    gave NaN wave velocities).
+
+    References
+    ----------
+    J. McCowan, "On the highest wave of permanent type", Philosophical Magazine 38(5),
+    351-358, 1894.
+    """
+    depth = scene.sea.depth_m
+    if depth is None:
+        return
+    h_s = significant_height(scene.sea)
+    if depth < h_s / BREAKING_RATIO:
+        raise ValueError(
+            f"[sea].depth_m = {depth:g}: shallower than this sea's waves allow, "
+            f"H_s / 0.78 = {h_s / BREAKING_RATIO:.3g} m (H_s = {h_s:.3g} m, significant "
+            "height of the spectrum; waves break where H > 0.78 d, McCowan 1894)")
+
+
 def check_scene(scene) -> None:
     """Every check of this module (called by :class:`~seaecho.config.scene.Scene`)."""
     check_channels(scene)
     check_objects(scene)
+    check_depth(scene)
 
 
-__all__ = ["allowed_channels", "check_channels", "check_objects", "check_scene"]
+__all__ = ["BREAKING_RATIO", "allowed_channels", "check_channels", "check_depth", "check_objects",
+           "check_scene", "significant_height"]
