@@ -301,3 +301,25 @@ def test_pierson_moskowitz_significant_height():
     sea = parse_scene({"sea": {"spectrum": "pierson-moskowitz", "wind_speed_m_s": 12.0,
                                "size_x_m": 64.0, "nx": 16}}).sea
     assert significant_height(sea) == pytest.approx(0.21 * 12.0**2 / G, rel=0.01)
+
+
+@pytest.mark.parametrize("spectrum", ["jonswap", "elfouhaily"])
+def test_fetch_shorter_than_the_youngest_sea_is_refused(tmp_path, capsys, spectrum):
+    # Found by the fuzzing suite: fetch_m = 5e-324 made `check` die in ZeroDivisionError
+    # (JONSWAP) or give a NaN crest height (Elfouhaily)
+    text = _replace("nx = 64", f'nx = 64\nspectrum = "{spectrum}"\nfetch_m = 5e-324', SEA_ON)
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
+    assert rc == 2 and "[sea].fetch_m = 4.94066e-324" in err and "Elfouhaily" in err
+
+
+def test_shortest_fetch_is_the_youngest_sea_of_the_fetch_law():
+    """Elfouhaily et al. (1997): Omega_c = 0.84 tanh((X / 2.2e4)^0.4)^-0.75 spans 0.84
+    (fully developed) to 5 (young); the shortest fetch accepted gives Omega_c = 5."""
+    from seaecho.config.consistency import MIN_DIMENSIONLESS_FETCH
+    from seaecho.constants import G
+    from seaecho.ocean.spectra import elfouhaily_parameters, u10_from_u19_5
+
+    u = 8.0
+    u10 = float(u10_from_u19_5(u))
+    fetch = MIN_DIMENSIONLESS_FETCH * u10**2 / G
+    assert elfouhaily_parameters(u, fetch).omega_c == pytest.approx(5.0, rel=1e-6)

@@ -2,13 +2,15 @@
 
 A single section's model cannot see its neighbours: the channels of ``[radar]`` are
 only meaningful with the polarisation bases of ``[transmitter.antenna]`` and
-``[receiver.antenna]``; an object that follows the ship needs a ``[ship]``; the depth of
-``[sea]`` must hold the waves of its wind. Each check
+``[receiver.antenna]``; an object that follows the ship needs a ``[ship]``; the fetch and
+the depth of ``[sea]`` must suit the waves of its wind. Each check
 raises ``ValueError`` with a message that starts with the field it names
 (``[radar].channels = ...``), which the loader prints as it is.
 """
 
 from __future__ import annotations
+
+import numpy as np
 
 from .base import short_repr
 from .radar import PORTS
@@ -95,12 +97,51 @@ def check_depth(scene) -> None:
             "height of the spectrum; waves break where H > 0.78 d, McCowan 1894)")
 
 
+#: Youngest sea of the fetch laws: inverse wave age Omega_c <= 5 (Elfouhaily et al. 1997:
+#: 0.84 fully developed, about 1 mature, 2 to 5 young), i.e. a dimensionless fetch
+#: g F / U10^2 >= X0 atanh((0.84 / 5)^(4/3))^(5/2) with X0 = 2.2e4 (their fetch law).
+MIN_DIMENSIONLESS_FETCH = 2.2e4 * float(np.arctanh((0.84 / 5.0) ** (4.0 / 3.0))) ** 2.5
+
+
+def check_fetch(scene) -> None:
+    """``[sea].fetch_m`` must give a sea no younger than the fetch laws describe.
+
+    The JONSWAP and Elfouhaily spectra set their peak from the dimensionless fetch
+    X = g F / U10^2 (Hasselmann et al. 1973; Elfouhaily et al. 1997, whose fetch law
+    Omega_c = 0.84 tanh((X / X0)^0.4)^-0.75 spans 0.84 <= Omega_c <= 5 from fully
+    developed to young seas). A shorter fetch is outside them (a fetch of 1e-300 m
+    divided by zero).
+
+    References
+    ----------
+    T. Elfouhaily, B. Chapron, K. Katsaros and D. Vandemark, "A unified directional
+    spectrum for long and short wind-driven waves", J. Geophys. Res. 102(C7),
+    15781-15796, 1997.
+    """
+    sea = scene.sea
+    if sea.fetch_m is None or sea.spectrum == "pierson-moskowitz":
+        return
+    from ..constants import G
+    from ..ocean.spectra import u10_from_u19_5
+
+    u10 = float(u10_from_u19_5(sea.wind_speed_m_s))
+    x = G * sea.fetch_m / u10**2
+    if x < MIN_DIMENSIONLESS_FETCH:
+        least = MIN_DIMENSIONLESS_FETCH * u10**2 / G
+        raise ValueError(
+            f"[sea].fetch_m = {sea.fetch_m:g}: too short for the fetch laws at U19.5 = "
+            f"{sea.wind_speed_m_s:g} m/s: g F / U10^2 = {x:.3g} < "
+            f"{MIN_DIMENSIONLESS_FETCH:.3g} (inverse wave age above 5, younger than the "
+            f"youngest sea of Elfouhaily et al. 1997); give at least {least:.3g} m")
+
+
 def check_scene(scene) -> None:
     """Every check of this module (called by :class:`~seaecho.config.scene.Scene`)."""
     check_channels(scene)
     check_objects(scene)
+    check_fetch(scene)
     check_depth(scene)
 
 
-__all__ = ["BREAKING_RATIO", "allowed_channels", "check_channels", "check_depth", "check_objects",
-           "check_scene", "significant_height"]
+__all__ = ["BREAKING_RATIO", "MIN_DIMENSIONLESS_FETCH", "allowed_channels", "check_channels",
+           "check_depth", "check_fetch", "check_objects", "check_scene", "significant_height"]
