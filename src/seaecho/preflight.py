@@ -412,8 +412,13 @@ def run_problems(scene, base_dir=".") -> list[str]:
             + object_problems(scene, base_dir) + geometry_problems(scene))
 
 
-def check_run(scene, source: str, base_dir=".") -> None:
-    """Raise one :class:`~seaecho.config.SceneError` listing every problem, if any.
+def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = None,
+              figures: bool = True) -> str:
+    """Refuse a scene `seaecho run` cannot simulate; return its resource estimate.
+
+    The cheap checks and the memory estimate (``seaecho.resources``) come first, so that
+    a scene too large for memory is refused before its tracks are drawn; then the
+    geometry. Every problem found is listed in one :class:`~seaecho.config.SceneError`.
 
     Parameters
     ----------
@@ -423,10 +428,28 @@ def check_run(scene, source: str, base_dir=".") -> None:
         The scene file's name, to start the message.
     base_dir : path
         Folder of the scene file.
+    max_memory_gb : float or None
+        Memory limit [GB] (``--max-memory-gb``); default the environment's.
+    figures : bool
+        The run draws figures.
+
+    Returns
+    -------
+    str
+        One line: estimated peak memory against the limit, and run time.
     """
-    problems = run_problems(scene, base_dir)
+    from .resources import check_memory
+
+    problems = two_scale_problems(scene) + receive_problems(scene) + object_problems(
+        scene, base_dir)
+    try:
+        _, line = check_memory(scene, source, max_memory_gb, figures)
+    except SceneError as exc:
+        raise SceneError("\n".join([str(exc), *problems])) from None
+    problems += geometry_problems(scene)
     if problems:
         raise SceneError(f"{source}: cannot be simulated\n" + "\n".join(problems))
+    return line
 
 
 __all__ = [

@@ -47,6 +47,12 @@ class UsageError(ValueError):
     """Bad command-line or scene input: reported in one line, exit status 2."""
 
 
+def check_memory_option(value: float | None) -> None:
+    """``--max-memory-gb`` must be a positive, finite number of GB."""
+    if value is not None and not (0 < value < float("inf")):
+        raise UsageError(f"--max-memory-gb {value}: must be a positive number of GB")
+
+
 def _show_warning(message, category, filename, lineno, file=None, line=None):
     """One line per seaecho warning on stderr; others as Python shows them."""
     from ..warnings import SeaechoWarning

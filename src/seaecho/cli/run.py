@@ -20,6 +20,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="simulate only the first N pulses (quick look)")
     p.add_argument("--no-figures", action="store_true", help="do not write PNG figures")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar")
+    p.add_argument("--max-memory-gb", type=float, metavar="GB", help="refuse a run whose "
+                   "estimated peak memory exceeds this (default: what is available, or "
+                   "SEAECHO_MAX_MEMORY_GB)")
     p.set_defaults(func=run)
 
 
@@ -44,8 +47,11 @@ def run(args: argparse.Namespace) -> int:
             "n_pulses": n, "sigma_map_pulse": min(scene.radar.sigma_map_pulse, n - 1)})
         scene = scene.model_copy(update={"radar": radar})
     from ..preflight import check_run
+    from . import check_memory_option
 
-    check_run(scene, args.scene, base_dir=Path(args.scene).parent)  # degenerate geometry...
+    check_memory_option(args.max_memory_gb)  # memory estimate, degenerate geometry...
+    print(check_run(scene, args.scene, base_dir=Path(args.scene).parent,
+                    max_memory_gb=args.max_memory_gb, figures=not args.no_figures))
     if args.output:
         out = Path(args.output)
     elif scene.run.output:

@@ -1,0 +1,393 @@
+"""Resources of a run: peak memory and an order of magnitude of the run time.
+
+`seaecho check` prints :func:`estimate` for a scene; `seaecho run` prints it and refuses
+(exit 2) a scene whose estimated peak exceeds the memory it may use, naming the fields
+that drive the estimate, before anything large is allocated. The estimate is computed
+from the scene alone (arithmetic, plus the nominal platform tracks for the receive
+window): nothing in it allocates more than the scene's own description.
+
+Model. The peak resident memory of ``seaecho run`` is
+
+.. math::
+
+    M = M_0 + m_c N_{cells} + m_f C N_{fft} + m_w C n_{chunk} N_s + m_p N_p
+        + M_F(N_p C N_s) + m_g N_{gm} + m_t K                                    (M1)
+
+with M_0 the process (Python, numpy, h5py, Dr.Jit; Mitsuba with sea clutter), N_cells the
+sea grid's points (sea clutter on), C the channels, N_s the samples of the receive window
+and N_fft its NUFFT period (``seaecho.radar.echo``), n_chunk = min(16, N_p) pulses per
+write, N_p the pulses, N_gm the Gauss-Markov steps of the perturbed platforms, K the point
+targets, and M_F the figures drawn from the whole raw and compressed arrays (0 with
+``--no-figures``; piecewise linear, matplotlib's overhead per value being larger for
+small arrays), which adds to the rest (the run loop's memory is not all returned).
+
+Or, if larger, M_0 + M_A: the normalisation of a rectangular aperture's pattern (eq A1
+of ``seaecho.radar.antennas``, computed when the radar is built) integrates it on
+n_theta = 8 D / lambda + 96 Gauss-Legendre nodes (D the aperture's larger side), whose
+n_theta x n_theta eigenvalue problem and 2 n_theta^2-point grid take
+M_A = m_a n_theta^2 + 200 MiB and a time t_a n_theta^3: a 100 m aperture at 1 THz would
+need petabytes, so the estimate refuses it.
+
+The coefficients are upper envelopes of the peak RSS measured by
+``benchmarks/bench_resources.py`` (``ru_maxrss`` of the child process) on scenes that
+vary one term at a time, from 4 096 to 1 048 576 sea grid points and up to 1.6 million
+samples per pulse; the total is multiplied by :data:`SAFETY`. The accuracy on those
+scenes is in docs/resources.md; ``tests/test_resources.py`` runs a small scene and checks
+that its measured peak is below the estimate.
+
+Time (order of magnitude only, measured on one loaded 2-core machine): a start-up of a
+few seconds, then per pulse t_c N_cells + t_f C N_fft log2 N_fft + t_t K.
+
+The memory a run may use is the smallest of the memory the system reports available
+(``MemAvailable`` of ``/proc/meminfo``), the cgroup's limit less its usage, and the
+``--max-memory-gb`` option or the ``SEAECHO_MAX_MEMORY_GB`` environment variable.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+from scipy.fft import next_fast_len
+
+from .config import SceneError
+from .constants import C0
+
+MiB = 1024.0**2
+GiB = 1024.0**3
+
+# Coefficients of eq (M1) [bytes] (fitted, module docstring)
+M0_TARGETS = 270 * MiB  #: process with the radar chain only
+M0_SEA = {"analytic": 280 * MiB, "raytraced": 310 * MiB}  #: with the sea stages
+M_CELL = {"analytic": 2100.0, "raytraced": 2300.0}  #: per sea grid point
+M_FFT = 20.0  #: per channel and NUFFT bin (phasors, spectrum product, inverse FFT)
+M_WRITE = 70.0  #: per channel, sample and buffered pulse (buffer, range compression)
+M_PULSE = 1000.0  #: per pulse (tracks, times, per-pulse dataset variables)
+#: Per pulse, channel and sample when figures are drawn: the first 2e6 (matplotlib's
+#: per-cell overhead dominates), then the rest
+M_FIGURE = (140.0, 55.0)
+FIGURE_KNEE = 2.0e6
+M_GM = 200.0  #: per Gauss-Markov step and perturbed platform
+M_TARGET = 400.0  #: per point target
+M_ANTENNA = 40.0  #: per n_theta^2 of a rectangular aperture's normalisation
+M_ANTENNA_GRID = 200 * MiB  #: its integration grid (chunks of 2e6 directions)
+#: Margin on the sum, so that the estimate stays above the measured peak.
+SAFETY = 1.15
+
+# Time coefficients [s] (order of magnitude)
+T_START = {"targets": 4.0, "analytic": 5.0, "raytraced": 8.0}
+T_CELL = {"analytic": 1.5e-6, "raytraced": 2.5e-6}
+T_FFT = 4.0e-9
+T_TARGET = 2.0e-6
+T_PULSE = 1.0e-2
+T_ANTENNA = 3.0e-10  #: per n_theta^3 (Gauss-Legendre nodes: eigenvalues)
+T_ANTENNA_GRID = 2.0e-7  #: per direction of the normalisation grid
+
+#: Environment variable that sets the memory limit [GB].
+ENV_LIMIT = "SEAECHO_MAX_MEMORY_GB"
+#: Pulses buffered per write by ``Simulation.run``.
+CHUNK = 16
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """Estimated resources of a run.
+
+    Attributes
+    ----------
+    peak_bytes : float
+        Peak resident memory [bytes] (eq M1 times :data:`SAFETY`).
+    time_s : float
+        Order of magnitude of the run time [s].
+    terms : dict
+        Bytes of each term of eq (M1), with the fields that drive it as keys' values in
+        ``drivers``.
+    drivers : dict
+        For each term, the scene fields that set it.
+    n_samples, n_fft, n_pulses, channels, cells : int
+        The sizes that enter the model.
+    """
+
+    peak_bytes: float
+    time_s: float
+    terms: dict[str, float] = field(default_factory=dict)
+    drivers: dict[str, str] = field(default_factory=dict)
+    n_samples: int = 0
+    n_fft: int = 0
+    n_pulses: int = 0
+    channels: int = 0
+    cells: int = 0
+
+    def largest_terms(self, n: int = 2) -> list[str]:
+        """Names of the ``n`` largest terms (the process base left out; the antenna
+        pattern's is transient, at the start, the others add up)."""
+        named = [(v, k) for k, v in self.terms.items() if k != "process"]
+        return [k for v, k in sorted(named, reverse=True)[:n] if v > 0]
+
+
+# ----------------------------------------------------------------- receive window
+def _nominal_position(cfg, t: float) -> np.ndarray:
+    """Nominal position of a platform section at time t [m] (``platforms`` semantics)."""
+    from .preflight import nominal_segments
+
+    segs = nominal_segments(cfg)
+    seg = next((s for s in segs if s.t_a <= t <= s.t_b), segs[-1])
+    return seg.c + seg.v * t
+
+
+def window_size(scene) -> tuple[int, int, int]:
+    """(samples per pulse N_s, NUFFT period N_fft, pulse samples N_p) of a run.
+
+    The same arithmetic as ``ReceiveWindow.from_ranges`` and ``RadarSystem.auto_window``
+    (parity-tested), on the nominal tracks; a perturbed track widens the window by its
+    8-sigma bound on each side, so the estimate stays an upper bound.
+    """
+    from .preflight import perturbation_bound
+    from .radar.echo import GUARD
+
+    r = scene.radar
+    w = r.waveform
+    fs = r.sampling_rate_hz
+    n_pulse = max(int(np.ceil(w.duration_s * fs - 1e-9)), 1)
+    bandwidth = w.bandwidth_hz if w.kind == "lfm" else 1.0 / w.duration_s
+    if r.window_start_m is not None:
+        start, end = r.window_start_m, r.window_end_m
+    else:
+        lx, ly = scene.sea.size_m
+        s = np.linspace(-0.5, 0.5, 65)
+        edge = np.concatenate([np.stack([s * lx, np.full_like(s, -0.5 * ly)], -1),
+                               np.stack([s * lx, np.full_like(s, 0.5 * ly)], -1),
+                               np.stack([np.full_like(s, -0.5 * lx), s * ly], -1),
+                               np.stack([np.full_like(s, 0.5 * lx), s * ly], -1),
+                               [[0.0, 0.0]]])
+        points = np.concatenate([edge, np.zeros((edge.shape[0], 1))], axis=1)
+        rx_cfg = scene.receiver or scene.transmitter
+        slack = 0.5 * (perturbation_bound(scene.transmitter) + perturbation_bound(rx_cfg))
+        ranges = []
+        for pulse in (0, r.n_pulses - 1):
+            t = r.start_time_s + pulse / r.prf_hz
+            pt = _nominal_position(scene.transmitter, t)
+            pr = _nominal_position(rx_cfg, t)
+            pts = [points] if r.sea_clutter else []
+            pts += [np.array(g.position_m) + t * np.array(g.velocity_m_s)
+                    for g in scene.targets]
+            if not pts:
+                continue
+            p = np.vstack(pts)
+            ranges.append(0.5 * (np.linalg.norm(p - pt, axis=-1)
+                                 + np.linalg.norm(p - pr, axis=-1)))
+        if not ranges:
+            return 1, int(next_fast_len(1 + n_pulse + 2 * GUARD)), n_pulse
+        rr = np.concatenate(ranges)
+        margin = (0.05 * np.hypot(lx, ly) * r.sea_clutter + 4 * C0 / (2 * bandwidth) + 5.0
+                  + slack)
+        start, end = max(rr.min() - margin, 0.0), rr.max() + margin
+    n_samples = math.ceil((2.0 * (end - start) / C0 + w.duration_s) * fs) + 1
+    # next_fast_len is exact but slow for huge sizes; a power of two bounds it
+    total = n_samples + n_pulse + 2 * GUARD
+    n_fft = int(next_fast_len(total)) if total < 2**40 else 2 ** math.ceil(math.log2(total))
+    return n_samples, n_fft, n_pulse
+
+
+# --------------------------------------------------------------------------- model
+def gauss_markov_steps(scene) -> int:
+    """Gauss-Markov steps drawn for the perturbed platforms (``draw_perturbation``)."""
+    r = scene.radar
+    span = (r.n_pulses - 1) / r.prf_hz + 1.0e-3
+    steps = 0
+    for cfg in (scene.transmitter, scene.receiver):
+        if cfg is not None and cfg.perturbation is not None:
+            steps += int(np.ceil(span / cfg.perturbation.step_s)) + 2
+    return steps
+
+
+def _figure_bytes(n: float) -> float:
+    """Memory of the figures drawn from n = pulses x channels x samples values [bytes]."""
+    return M_FIGURE[0] * min(n, FIGURE_KNEE) + M_FIGURE[1] * max(n - FIGURE_KNEE, 0.0)
+
+
+def antenna_nodes(scene) -> list[tuple[str, int]]:
+    """(section, n_theta) of each rectangular antenna's pattern normalisation."""
+    lam = C0 / scene.radar.carrier_frequency_hz
+    out = []
+    for name in ("transmitter", "receiver"):
+        cfg = getattr(scene, name)
+        if cfg is None:
+            cfg = scene.transmitter  # monostatic: the receiver is built from it again
+        a = cfg.antenna
+        if a.pattern == "rectangular":
+            out.append((name, int(8 * max(a.width_m, a.height_m) / lam) + 96))
+    return out
+
+
+def estimate(scene, figures: bool = True) -> Estimate:
+    """Peak memory and run time of ``seaecho run`` for a scene (eq M1).
+
+    Parameters
+    ----------
+    scene : seaecho.config.Scene
+        With [radar] and [transmitter].
+    figures : bool
+        The run draws its figures (``seaecho run`` without ``--no-figures``).
+    """
+    r = scene.radar
+    sea = r.sea_clutter
+    mode = scene.tracing.mode
+    nx, ny = scene.sea.grid_shape
+    cells = nx * ny if sea else 0
+    n_s, n_fft, _ = window_size(scene)
+    c = len(r.channels)
+    n_p = r.n_pulses
+    chunk = min(CHUNK, n_p)
+    k = len(scene.targets)
+    gm = gauss_markov_steps(scene)
+    terms = {
+        "process": M0_SEA[mode] if sea else M0_TARGETS,
+        "sea grid": M_CELL[mode] * cells,
+        "receive window": M_FFT * c * n_fft + M_WRITE * c * chunk * n_s,
+        "pulses": M_PULSE * n_p,
+        "figures": _figure_bytes(n_p * c * n_s) if figures else 0.0,
+        "perturbation": M_GM * gm,
+        "targets": M_TARGET * k,
+    }
+    window_fields = ("[radar].sampling_rate_hz, [radar.waveform].bandwidth_hz and "
+                     "duration_s, the window (window_start_m/window_end_m, or the tile "
+                     "and targets it covers), [radar].channels")
+    drivers = {
+        "process": "(fixed)",
+        "sea grid": "[sea].nx, [sea].ny ([radar].sea_clutter)",
+        "receive window": window_fields,
+        "pulses": "[radar].n_pulses",
+        "figures": "[radar].n_pulses x the receive window (use --no-figures)",
+        "perturbation": "[transmitter/receiver.perturbation].step_s, [radar].n_pulses "
+                        "and prf_hz",
+        "targets": "[[targets]]",
+    }
+    nodes = antenna_nodes(scene)
+    n_theta = max((n for _, n in nodes), default=0)
+    antenna = M_ANTENNA * n_theta**2 + (M_ANTENNA_GRID if n_theta >= 1000 else 0.0)
+    terms["antenna pattern"] = antenna
+    drivers["antenna pattern"] = ("[transmitter/receiver.antenna].width_m and height_m "
+                                  "against the wavelength ([radar].carrier_frequency_hz)")
+    stages = sum(v for k, v in terms.items() if k != "antenna pattern")
+    peak = SAFETY * max(stages, terms["process"] + antenna)
+    per_pulse = T_PULSE + T_TARGET * k + T_FFT * c * n_fft * math.log2(max(n_fft, 2))
+    if sea:
+        per_pulse += T_CELL[mode] * cells
+    start = T_START[mode] if sea else T_START["targets"]
+    time_s = start + n_p * per_pulse + sum(
+        T_ANTENNA * n**3 + T_ANTENNA_GRID * 2 * n**2 for _, n in nodes)
+    return Estimate(peak, time_s, terms, drivers, n_s, n_fft, n_p, c, cells)
+
+
+# --------------------------------------------------------------------------- limits
+def _read(path: str) -> str | None:
+    try:
+        return Path(path).read_text().strip()
+    except OSError:
+        return None
+
+
+def available_memory() -> tuple[float | None, str]:
+    """(bytes, source) this process may still use, from the system and its cgroup;
+    (None, reason) where neither can be read."""
+    found: list[tuple[float, str]] = []
+    meminfo = _read("/proc/meminfo")
+    if meminfo:
+        for line in meminfo.splitlines():
+            if line.startswith("MemAvailable:"):
+                found.append((float(line.split()[1]) * 1024.0, "available memory"))
+    limit, usage = _read("/sys/fs/cgroup/memory.max"), _read("/sys/fs/cgroup/memory.current")
+    if limit is None:  # cgroup v1
+        limit = _read("/sys/fs/cgroup/memory/memory.limit_in_bytes")
+        usage = _read("/sys/fs/cgroup/memory/memory.usage_in_bytes")
+    if limit and limit != "max" and limit.isdigit() and int(limit) < 2**60:
+        free = float(limit) - float(usage or 0)
+        found.append((max(free, 0.0), "the cgroup's memory limit"))
+    if not found:
+        return None, "available memory unknown on this system"
+    return min(found)
+
+
+def memory_limit(max_memory_gb: float | None = None) -> tuple[float | None, str]:
+    """(bytes, source) a run may use: ``max_memory_gb`` [GB, 1e9 bytes], else
+    ``SEAECHO_MAX_MEMORY_GB``, capped by :func:`available_memory`."""
+    avail, source = available_memory()
+    asked, asked_source = None, ""
+    if max_memory_gb is not None:
+        asked, asked_source = max_memory_gb * 1e9, "--max-memory-gb"
+    elif os.environ.get(ENV_LIMIT):
+        text = os.environ[ENV_LIMIT]
+        try:
+            asked = float(text) * 1e9
+        except ValueError:
+            raise SceneError(f"{ENV_LIMIT} = {text!r}: must be a number of GB") from None
+        if not (asked > 0 and math.isfinite(asked)):
+            raise SceneError(f"{ENV_LIMIT} = {text!r}: must be a positive number of GB")
+        asked_source = ENV_LIMIT
+    if asked is not None and (avail is None or asked <= avail):
+        return asked, asked_source
+    return avail, source
+
+
+def format_bytes(n: float) -> str:
+    return f"{n / GiB:.3g} GiB" if n >= 0.5 * GiB else f"{n / MiB:.3g} MiB"
+
+
+def format_time(t: float) -> str:
+    if t < 60:
+        return f"~{t:.2g} s"
+    if t < 3600:
+        return f"~{t / 60:.2g} min"
+    if t < 86400 * 2:
+        return f"~{t / 3600:.2g} h"
+    return f"~{t / 86400:.2g} days"
+
+
+def describe(est: Estimate, limit: float | None, source: str) -> str:
+    """One line: estimated peak memory (against the limit) and run time."""
+    text = f"estimated peak memory {format_bytes(est.peak_bytes)}"
+    if limit is not None:
+        text += f" (limit {format_bytes(limit)}, {source})"
+    text += (f", run time {format_time(est.time_s)} ({est.n_pulses} pulses x {est.channels}"
+             f" channels x {est.n_samples} samples")
+    if est.cells:
+        text += f", {est.cells} sea grid points"
+    return text + ")"
+
+
+def check_memory(scene, source: str, max_memory_gb: float | None = None,
+                 figures: bool = True) -> tuple[Estimate, str]:
+    """The estimate and its one-line description; :class:`SceneError` if it cannot fit.
+
+    The message names the largest terms of eq (M1) and the fields that drive them.
+    """
+    est = estimate(scene, figures=figures)
+    limit, where = memory_limit(max_memory_gb)
+    line = describe(est, limit, where)
+    if limit is not None and est.peak_bytes > limit:
+        reasons = "; ".join(f"{name} {format_bytes(SAFETY * est.terms[name])} (set by "
+                            f"{est.drivers[name]})" for name in est.largest_terms())
+        raise SceneError(
+            f"{source}: the run does not fit in memory: {line}. Largest terms: {reasons}. "
+            f"Reduce them, or raise the limit with --max-memory-gb or {ENV_LIMIT} if "
+            "more memory is free")
+    return est, line
+
+
+__all__ = [
+    "ENV_LIMIT",
+    "SAFETY",
+    "Estimate",
+    "available_memory",
+    "check_memory",
+    "describe",
+    "estimate",
+    "antenna_nodes",
+    "gauss_markov_steps",
+    "memory_limit",
+    "window_size",
+]
