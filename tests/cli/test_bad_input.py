@@ -312,6 +312,16 @@ def test_fetch_shorter_than_the_youngest_sea_is_refused(tmp_path, capsys, spectr
     assert rc == 2 and "[sea].fetch_m = 4.94066e-324" in err and "Elfouhaily" in err
 
 
+def test_jonswap_fetch_beyond_full_development_is_refused(tmp_path, capsys):
+    # Found by the fuzzing suite: JONSWAP's growth laws keep adding energy with fetch
+    # (H_s = 37 m at 19 m/s for 22,000 km); beyond full development the sea is
+    # Pierson-Moskowitz's
+    text = _replace("wind_speed_m_s = 5.0", 'wind_speed_m_s = 19.0\nspectrum = "jonswap"\n'
+                    "fetch_m = 22334041.0", SEA_ON)
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
+    assert rc == 2 and "[sea].fetch_m = 2.2334e+07" in err and "fully developed" in err
+
+
 def test_shortest_fetch_is_the_youngest_sea_of_the_fetch_law():
     """Elfouhaily et al. (1997): Omega_c = 0.84 tanh((X / 2.2e4)^0.4)^-0.75 spans 0.84
     (fully developed) to 5 (young); the shortest fetch accepted gives Omega_c = 5."""

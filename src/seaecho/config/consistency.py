@@ -97,23 +97,42 @@ def check_depth(scene) -> None:
             "height of the spectrum; waves break where H > 0.78 d, McCowan 1894)")
 
 
-#: Youngest sea of the fetch laws: inverse wave age Omega_c <= 5 (Elfouhaily et al. 1997:
-#: 0.84 fully developed, about 1 mature, 2 to 5 young), i.e. a dimensionless fetch
-#: g F / U10^2 >= X0 atanh((0.84 / 5)^(4/3))^(5/2) with X0 = 2.2e4 (their fetch law).
+#: Inverse wave age U10 / c_p of the fetch laws' seas: 0.84 fully developed to 5 young
+#: (Elfouhaily et al. 1997: 0.84 fully developed, about 1 mature, 2 to 5 young).
+OMEGA_RANGE = (0.84, 5.0)
+#: Elfouhaily's fetch law Omega_c = 0.84 tanh((X / X0)^0.4)^-0.75 reaches 5 at this
+#: dimensionless fetch X = g F / U10^2 (X0 = 2.2e4); it saturates at 0.84 for long fetch.
 MIN_DIMENSIONLESS_FETCH = 2.2e4 * float(np.arctanh((0.84 / 5.0) ** (4.0 / 3.0))) ** 2.5
 
 
-def check_fetch(scene) -> None:
-    """``[sea].fetch_m`` must give a sea no younger than the fetch laws describe.
+def fetch_range(sea) -> tuple[float, float]:
+    """Fetches [m] whose sea the ``[sea]`` spectrum's fetch law describes at its wind.
 
-    The JONSWAP and Elfouhaily spectra set their peak from the dimensionless fetch
-    X = g F / U10^2 (Hasselmann et al. 1973; Elfouhaily et al. 1997, whose fetch law
-    Omega_c = 0.84 tanh((X / X0)^0.4)^-0.75 spans 0.84 <= Omega_c <= 5 from fully
-    developed to young seas). A shorter fetch is outside them (a fetch of 1e-300 m
-    divided by zero).
+    JONSWAP's peak law U10 omega_p / g = 22 X^(-1/3) (Hasselmann et al. 1973) and
+    Elfouhaily's fetch law must give an inverse wave age within :data:`OMEGA_RANGE`:
+    younger than 5 is beyond the fitted seas; JONSWAP's law older than 0.84 overshoots
+    the fully developed sea (its energy keeps growing with fetch: H_s = 26 m at 19 m/s for
+    X = 1e5, where Pierson-Moskowitz gives 7.7 m).
+    """
+    from ..constants import G
+    from ..ocean.spectra import u10_from_u19_5
+
+    u10 = float(u10_from_u19_5(sea.wind_speed_m_s))
+    scale = u10**2 / G  # F = X U10^2 / g
+    if sea.spectrum == "jonswap":
+        lo, hi = OMEGA_RANGE
+        return (22.0 / hi) ** 3 * scale, (22.0 / lo) ** 3 * scale
+    return MIN_DIMENSIONLESS_FETCH * scale, float("inf")
+
+
+def check_fetch(scene) -> None:
+    """``[sea].fetch_m`` within :func:`fetch_range` (a fetch of 1e-300 m divided by zero;
+    a fetch of 20,000 km gave JONSWAP waves of 37 m at 19 m/s).
 
     References
     ----------
+    K. Hasselmann et al., "Measurements of wind-wave growth and swell decay during the
+    Joint North Sea Wave Project (JONSWAP)", Dtsch. Hydrogr. Z. A8(12), 1973.
     T. Elfouhaily, B. Chapron, K. Katsaros and D. Vandemark, "A unified directional
     spectrum for long and short wind-driven waves", J. Geophys. Res. 102(C7),
     15781-15796, 1997.
@@ -121,18 +140,15 @@ def check_fetch(scene) -> None:
     sea = scene.sea
     if sea.fetch_m is None or sea.spectrum == "pierson-moskowitz":
         return
-    from ..constants import G
-    from ..ocean.spectra import u10_from_u19_5
-
-    u10 = float(u10_from_u19_5(sea.wind_speed_m_s))
-    x = G * sea.fetch_m / u10**2
-    if x < MIN_DIMENSIONLESS_FETCH:
-        least = MIN_DIMENSIONLESS_FETCH * u10**2 / G
+    lo, hi = fetch_range(sea)
+    if not lo <= sea.fetch_m <= hi:
+        span = f"[{lo:.3g}, {hi:.3g}]" if np.isfinite(hi) else f">= {lo:.3g}"
         raise ValueError(
-            f"[sea].fetch_m = {sea.fetch_m:g}: too short for the fetch laws at U19.5 = "
-            f"{sea.wind_speed_m_s:g} m/s: g F / U10^2 = {x:.3g} < "
-            f"{MIN_DIMENSIONLESS_FETCH:.3g} (inverse wave age above 5, younger than the "
-            f"youngest sea of Elfouhaily et al. 1997); give at least {least:.3g} m")
+            f"[sea].fetch_m = {sea.fetch_m:g}: outside the fetches the {sea.spectrum} "
+            f"fetch law describes at U19.5 = {sea.wind_speed_m_s:g} m/s, {span} m (inverse "
+            "wave age from 5, a young sea, to 0.84, fully developed: Elfouhaily et al. "
+            "1997); for a fully developed sea use 'pierson-moskowitz', or 'elfouhaily' "
+            "without fetch_m")
 
 
 def check_scene(scene) -> None:
@@ -143,5 +159,6 @@ def check_scene(scene) -> None:
     check_depth(scene)
 
 
-__all__ = ["BREAKING_RATIO", "MIN_DIMENSIONLESS_FETCH", "allowed_channels", "check_channels",
-           "check_depth", "check_fetch", "check_objects", "check_scene", "significant_height"]
+__all__ = ["BREAKING_RATIO", "MIN_DIMENSIONLESS_FETCH", "OMEGA_RANGE", "allowed_channels",
+           "check_channels", "check_depth", "check_fetch", "check_objects", "check_scene",
+           "fetch_range", "significant_height"]
