@@ -333,3 +333,32 @@ def test_shortest_fetch_is_the_youngest_sea_of_the_fetch_law():
     u10 = float(u10_from_u19_5(u))
     fetch = MIN_DIMENSIONLESS_FETCH * u10**2 / G
     assert elfouhaily_parameters(u, fetch).omega_c == pytest.approx(5.0, rel=1e-6)
+
+
+@pytest.mark.parametrize(
+    ("ship", "named"),
+    [
+        # found by the fuzzing suite: `run` died in ZeroDivisionError in the Wigley hull's
+        # amplitude (length**2 and speed**2 underflow)
+        ("length_m = 1e-252\nbeam_m = 5e-324\ndraft_m = 1.0\nspeed_m_s = 5.0",
+         "[ship].length_m = 1e-252"),
+        ("length_m = 10.0\nbeam_m = 4.0\ndraft_m = 1.0\nspeed_m_s = 1e-300",
+         "speed_m_s = 1e-300"),
+        ("length_m = 10.0\nbeam_m = 4.0\ndraft_m = 1.0\nspeed_kn = 0.1", "speed_kn = 0.1"),
+    ],
+)
+def test_ship_too_small_or_too_slow_for_a_wave_wake(tmp_path, capsys, ship, named):
+    text = _replace("[run]", f"[ship]\n{ship}\n\n[run]", SEA_ON)
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
+    assert rc == 2 and named in err, err
+
+
+def test_slowest_water_wave():
+    """Lamb (1932), art. 268: capillary-gravity waves travel at least (4 g sigma/rho)^(1/4)
+    = 0.23 m/s; the minimum of our dispersion relation's phase speed is that speed."""
+    from seaecho.config.ship import MIN_WAVE_SPEED_M_S
+    from seaecho.ocean.dispersion import angular_frequency
+
+    k = np.geomspace(10.0, 10_000.0, 200_001)
+    c_min = float(np.min(angular_frequency(k) / k))
+    assert c_min == pytest.approx(MIN_WAVE_SPEED_M_S, rel=0.01)
