@@ -345,6 +345,9 @@ def test_shortest_fetch_is_the_youngest_sea_of_the_fetch_law():
         ("length_m = 10.0\nbeam_m = 4.0\ndraft_m = 1.0\nspeed_m_s = 1e-300",
          "speed_m_s = 1e-300"),
         ("length_m = 10.0\nbeam_m = 4.0\ndraft_m = 1.0\nspeed_kn = 0.1", "speed_kn = 0.1"),
+        # a 5e-324 m beam made the turbulent wake's edge 0 / 0 (NaN sea facets)
+        ("length_m = 1.0\nbeam_m = 5e-324\ndraft_m = 1.0\nspeed_kn = 0.0",
+         "beam_m = 4.94066e-324"),
     ],
 )
 def test_ship_too_small_or_too_slow_for_a_wave_wake(tmp_path, capsys, ship, named):

@@ -14,6 +14,9 @@ MIN_WAVE_SPEED_M_S = 0.23
 #: Shortest hull [m]: 37 capillary lengths sqrt(sigma / (rho g)) = 2.7 mm, so that the
 #: gravity-wave (thin-ship) theory of the wake applies.
 MIN_LENGTH_M = 0.1
+#: Most slender hull, B / L: below the slenderest real hulls (racing shells, ~0.03); a
+#: beam of 5e-324 m made the turbulent wake's edge 0 / 0.
+MIN_BEAM_RATIO = 0.01
 
 
 class ShipConfig(Section):
@@ -64,6 +67,11 @@ class ShipConfig(Section):
             raise ValueError(
                 f"beam_m = {self.beam_m} must be smaller than length_m = {self.length_m}"
             )
+        if self.beam_m < MIN_BEAM_RATIO * self.length_m:
+            raise ValueError(
+                f"beam_m = {self.beam_m:g}: below {MIN_BEAM_RATIO} x length_m = "
+                f"{MIN_BEAM_RATIO * self.length_m:g} m; no hull is that slender (racing "
+                "shells, the slenderest, have B / L of about 0.03)")
         return self
 
     @property
@@ -72,4 +80,4 @@ class ShipConfig(Section):
         return self.speed_m_s if self.speed_m_s is not None else self.speed_kn * KNOT
 
 
-__all__ = ["MIN_LENGTH_M", "MIN_WAVE_SPEED_M_S", "ShipConfig"]
+__all__ = ["MIN_BEAM_RATIO", "MIN_LENGTH_M", "MIN_WAVE_SPEED_M_S", "ShipConfig"]
