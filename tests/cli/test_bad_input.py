@@ -365,3 +365,15 @@ def test_slowest_water_wave():
     k = np.geomspace(10.0, 10_000.0, 200_001)
     c_min = float(np.min(angular_frequency(k) / k))
     assert c_min == pytest.approx(MIN_WAVE_SPEED_M_S, rel=0.01)
+
+
+def test_waypoints_faster_than_any_platform_are_refused(tmp_path, capsys):
+    # Found by the fuzzing suite: waypoint times 0 and 2.2e-311 s made the segment's
+    # velocity infinite, NaN pointing in `check` and an infinite tx_velocity written by
+    # `run` with exit status 0
+    text = _replace("position_m = [-500.0, 0.0, 300.0]",
+                    'motion = "waypoints"\nwaypoint_times_s = [0.0, 2.225073858507e-311, 3.0]\n'
+                    "waypoint_positions_m = [[-500.0, 0.0, 300.0], [-500.0, 0.0, 400.0], "
+                    "[-500.0, 0.0, 300.0]]")
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
+    assert rc == 2 and "[transmitter]: waypoints 0 and 1" in err and "+-10000" in err

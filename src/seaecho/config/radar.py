@@ -205,6 +205,13 @@ class PlatformConfig(Section):
             if any(b <= a for a, b in zip(t, t[1:], strict=False)):
                 raise ValueError(f"waypoint_times_s = {short_repr(t)}: must increase "
                                  "strictly")
+            for i in range(len(t) - 1):
+                v = [(b - a) / (t[i + 1] - t[i]) for a, b in zip(p[i], p[i + 1], strict=True)]
+                if any(not abs(c) <= _VEL for c in v):
+                    raise ValueError(
+                        f"waypoints {i} and {i + 1} (t = {t[i]:g} and {t[i + 1]:g} s): "
+                        f"velocity {short_repr(v)} m/s; each component must be within "
+                        f"+-{_VEL:g} (as velocity_m_s)")
             if self.position_m is not None or any(self.velocity_m_s):
                 raise ValueError("motion 'waypoints' takes no position_m/velocity_m_s")
         return self
