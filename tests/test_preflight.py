@@ -40,7 +40,10 @@ def platform_sections(draw, perturbed=False):
         gaps = draw(st.lists(st.floats(0.01, 0.5), min_size=n - 1, max_size=n - 1))
         t0 = draw(st.floats(-0.5, 0.5))
         d["waypoint_times_s"] = tuple(np.concatenate([[t0], t0 + np.cumsum(gaps)]))
-        d["waypoint_positions_m"] = tuple(draw(vec) for _ in range(n))
+        p = [np.array(draw(vec))]
+        for gap in gaps:  # segment velocities within the schema's +-1e4 m/s
+            p.append(p[-1] + gap * np.array(draw(st.tuples(*[st.floats(-3000, 3000)] * 3))))
+        d["waypoint_positions_m"] = tuple(tuple(float(c) for c in x) for x in p)
     if perturbed:
         d["perturbation"] = {"position_sigma_m": draw(st.tuples(*[st.floats(0, 50)] * 3)),
                              "position_tau_s": 0.05, "step_s": 1e-3}

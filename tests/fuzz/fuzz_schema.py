@@ -250,7 +250,12 @@ def _platform(draw: Draw, d: dict, get: Get) -> dict:
     else:
         # the run's pulses (t in [-1, 1.03] s with the caps) inside the waypoints, so that
         # no extrapolated segment dives into the sea
-        times = sorted({-3.0, *draw(get("waypoint_times_s")), 3.0})
+        times = [-3.0]
+        for t in sorted({*draw(get("waypoint_times_s")), 3.0}):
+            if t - times[-1] >= 0.5 or t == 3.0:  # <= 8 km/s across the capped box
+                times.append(t)
+        if times[-1] - times[-2] < 0.5:
+            del times[-2]
         d["waypoint_times_s"] = tuple(times)
         d["waypoint_positions_m"] = tuple(draw(get("position_m")) for _ in times)
     return d
