@@ -261,3 +261,20 @@ def test_non_finite_sea_facets_are_named(monkeypatch):
     monkeypatch.setattr(sim, "sea_echo", sea_echo)
     with pytest.raises(NonFiniteEchoError, match=r"pulse 1 .*1 sea facets \(first index 5\)"):
         sim.pulse(1)
+
+
+def test_non_finite_static_variable_stops_the_run(tmp_path, monkeypatch):
+    from seaecho.guards import NonFiniteEchoError
+
+    sim = Simulation(_scene(n_pulses=3))
+    real = sim.static_dataset
+
+    def static():
+        ds = real()
+        ds["tx_velocity"].values[1, 0] = np.inf
+        return ds
+
+    monkeypatch.setattr(sim, "static_dataset", static)
+    with pytest.raises(NonFiniteEchoError, match="tx_velocity"):
+        sim.run(tmp_path / "out.nc", progress=False)
+    assert list(tmp_path.iterdir()) == []

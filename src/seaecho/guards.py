@@ -6,8 +6,10 @@ echo came from. If a scatterer's delay or amplitude, or a sample of the summed p
 NaN or infinite, it raises :class:`NonFiniteEchoError` naming the pulse and the
 scatterers (sea facets with their count and first index, or the point targets by name);
 the CLI prints it and exits with status 2, and the run's temporary file is removed, so
-no file with NaN is left. The scene checks of ``seaecho.preflight`` refuse the degenerate
-geometries known to produce them; this guard catches any that remain.
+no file with NaN is left. :func:`check_dataset` does the same for everything else the run
+writes (tracks, surface, sigma maps), once, before writing. The scene checks of
+``seaecho.preflight`` refuse the degenerate geometries known to produce them; this guard
+catches any that remain.
 
 Cost: one sum per array on the usual (finite) path, O(K) for K scatterers, small against
 the pulse's own O(K) work; the per-element search only runs once something is wrong.
@@ -98,4 +100,17 @@ def check_pulse(sim, pulse: int, raw, echoes) -> None:
             "are outside what the models can evaluate (see `seaecho check`)")
 
 
-__all__ = ["NonFiniteEchoError", "check_pulse", "echo_kinds"]
+def check_dataset(ds) -> None:
+    """Raise :class:`NonFiniteEchoError` naming every float variable of the run's static
+    dataset (tracks, surface, sigma maps, ...) that holds NaN or Inf, before it is
+    written."""
+    bad = [name for name, v in ds.data_vars.items()
+           if v.dtype.kind in "fc" and not _finite(v.values)]
+    if bad:
+        raise NonFiniteEchoError(
+            f"non-finite values in {', '.join(bad[:8])}" + (" ..." if len(bad) > 8 else "")
+            + ". The run is stopped and no file is written: the scene's geometry or values "
+            "are outside what the models can evaluate (see `seaecho check`)")
+
+
+__all__ = ["NonFiniteEchoError", "check_dataset", "check_pulse", "echo_kinds"]

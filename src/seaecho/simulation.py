@@ -31,7 +31,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .constants import C0
-from .guards import check_pulse
+from .guards import check_dataset, check_pulse
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import generator
@@ -356,6 +356,7 @@ class Simulation:
         from .io.dataset import atomic_path
 
         ds = self.static_dataset()
+        check_dataset(ds)  # NaN/Inf in tracks, surface, maps: NonFiniteEchoError
         n_p, n_c, n_s = self.radar.n_pulses, len(self.radar.channels), self.radar.window.n_samples
         chunk = max(1, min(chunk, n_p))
         with atomic_path(path) as tmp, _quiet_invalid_netcdf():
