@@ -377,3 +377,19 @@ def test_waypoints_faster_than_any_platform_are_refused(tmp_path, capsys):
                     "[-500.0, 0.0, 300.0]]")
     rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
     assert rc == 2 and "[transmitter]: waypoints 0 and 1" in err and "+-10000" in err
+
+
+@pytest.mark.parametrize(("old", "new", "named"), [
+    ('name = "sphere10"', 'name = "sphere\\u000010"', "[targets][0].name"),
+    ('name = "calibration_point_target"', 'name = "cal\\u0007"', "name"),
+])
+def test_control_characters_in_names_are_refused(tmp_path, capsys, old, new, named):
+    # Found by the fuzzing suite: a target named with a NUL passed `check`, and `run`
+    # died with a traceback writing it ("VLEN strings do not support embedded NULLs")
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, _replace(old, new))))
+    assert rc == 2 and named in err and "control character" in err
+
+
+def test_line_breaks_are_allowed_in_the_description(tmp_path, capsys):
+    text = _replace('description = "', 'description = "two\\nlines, a\\ttab; ')
+    assert _cli(capsys, "check", str(_scene(tmp_path, text)))[0] == 0

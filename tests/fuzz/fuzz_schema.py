@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import Any
 
 from hypothesis import strategies as st
-from pydantic import BaseModel
+from pydantic import BaseModel, TypeAdapter, ValidationError
 
 from seaecho.config import Scene, parse_scene
 from seaecho.config.consistency import allowed_channels
@@ -128,7 +128,32 @@ def field_value(model: type[BaseModel], name: str, path: tuple = ()) -> st.Searc
     if cap is not None:
         return cap
     info = model.model_fields[name]
-    return value(info.annotation, info.metadata, path + (name,))
+    strategy = value(info.annotation, info.metadata, path + (name,))
+    if is_model(non_none(info.annotation)):
+        return strategy
+    # The field's own validators (e.g. no control characters in names), whatever they are
+    adapter = _adapter(model, name)
+    return strategy.filter(lambda v: _valid(adapter, v))
+
+
+_ADAPTERS: dict[tuple[str, str], TypeAdapter] = {}
+
+
+def _adapter(model: type[BaseModel], name: str) -> TypeAdapter:
+    key = (model.__name__, name)
+    if key not in _ADAPTERS:
+        info = model.model_fields[name]
+        _ADAPTERS[key] = TypeAdapter(typing.Annotated[info.annotation, *info.metadata]
+                                     if info.metadata else info.annotation)
+    return _ADAPTERS[key]
+
+
+def _valid(adapter: TypeAdapter, v: Any) -> bool:
+    try:
+        adapter.validate_python(v)
+    except ValidationError:
+        return False
+    return True
 
 
 def section(model: type[BaseModel], path: tuple = ()) -> st.SearchStrategy[dict]:
@@ -213,7 +238,7 @@ def _ship(draw: Draw, d: dict, get: Get) -> dict:
     if 0 < v < MIN_WAVE_SPEED_M_S:  # a wave wake needs the slowest water wave's speed
         d[speed] = 0.0
     if not 0.01 * d["length_m"] <= d["beam_m"] < d["length_m"]:
-        d["beam_m"] = d["length_m"] * draw(st.floats(0.02, 0.5))
+        d["beam_m"] = min(d["length_m"] * draw(st.floats(0.02, 0.5)), 80.0)
     return d
 
 

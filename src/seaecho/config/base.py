@@ -9,9 +9,9 @@ its allowed range as constraints, and a one-line description that error messages
 from __future__ import annotations
 
 import json
-from typing import Any
+from typing import Annotated, Any
 
-from pydantic import BaseModel, ConfigDict
+from pydantic import AfterValidator, BaseModel, ConfigDict
 
 
 class Section(BaseModel):
@@ -24,6 +24,24 @@ class Section(BaseModel):
         str_strip_whitespace=True,
         allow_inf_nan=False,
     )
+
+
+def _no_control(allowed: str = ""):
+    def check(text: str) -> str:
+        for i, c in enumerate(text):
+            if (ord(c) < 32 or ord(c) == 127) and c not in allowed:
+                raise ValueError(f"control character U+{ord(c):04X} at position {i}: not "
+                                 "allowed here (a NUL cannot even be written to the netCDF "
+                                 "file)")
+        return text
+
+    return AfterValidator(check)
+
+
+#: A name or a path: no control characters.
+Name = Annotated[str, _no_control()]
+#: Free text: no control characters but tab and line breaks.
+Text = Annotated[str, _no_control("\t\n\r")]
 
 
 #: Longest value an error message repeats [characters]; longer ones are cut.
@@ -77,4 +95,4 @@ def short_repr(value: Any, limit: int = MAX_VALUE_CHARS) -> str:
     return f"{text}... (cut{hint})"
 
 
-__all__ = ["MAX_VALUE_CHARS", "Section", "short_repr"]
+__all__ = ["MAX_VALUE_CHARS", "Name", "Section", "Text", "short_repr"]

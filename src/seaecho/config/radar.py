@@ -30,7 +30,7 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
-from .base import Section, short_repr
+from .base import Name, Section, short_repr
 
 Vec3 = tuple[float, float, float]
 
@@ -327,7 +327,7 @@ class TargetConfig(Section):
     given as (real, imaginary) pairs.
     """
 
-    name: str = Field("", max_length=200, description="a label for the target")
+    name: Name = Field("", max_length=200, description="a label for the target")
     position_m: Vec3 = Field(..., description="position (x, y, z) at t = 0 [m]")
     velocity_m_s: Vec3 = Field((0.0, 0.0, 0.0), description="constant velocity [m/s]")
     rcs_m2: float | None = Field(

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pydantic import Field, field_validator
 
-from .base import Section, short_repr
+from .base import Name, Section, short_repr
 
 
 class RunConfig(Section):
@@ -13,7 +13,7 @@ class RunConfig(Section):
     seed: int = Field(
         0, ge=0, lt=2**63, description="seed of every random draw (same seed, same bytes)"
     )
-    output: str | None = Field(
+    output: Name | None = Field(
         None, description="output file (netCDF); the CLI's -o overrides it"
     )
     surface_times_s: tuple[float, ...] = Field(

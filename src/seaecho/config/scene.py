@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from pydantic import Field, model_validator
 
-from .base import Section
+from .base import Name, Section, Text
 from .radar import PlatformConfig, RadarConfig, TargetConfig
 from .run import RunConfig
 from .sea import SeaConfig
@@ -25,8 +25,8 @@ from .tracing import ObjectConfig, TracingConfig
 class Scene(Section):
     """A validated scene file."""
 
-    name: str = Field("", max_length=200, description="a short name for the scene")
-    description: str = Field("", max_length=5000, description="free text")
+    name: Name = Field("", max_length=200, description="a short name for the scene")
+    description: Text = Field("", max_length=5000, description="free text")
     sea: SeaConfig = Field(..., description="the sea [sea]")
     ship: ShipConfig | None = Field(None, description="the ship and its wake [ship]")
     run: RunConfig = Field(default_factory=RunConfig, description="run options [run]")

@@ -16,7 +16,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from .base import Section, short_repr
+from .base import Name, Section, short_repr
 
 #: Mitsuba variants seaecho can trace with (polarised, differentiable, mono-spectral).
 VariantName = Literal["llvm_ad_mono_polarized", "cuda_ad_mono_polarized"]
@@ -73,7 +73,7 @@ class ObjectConfig(Section):
 
     name: str = Field(..., min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_-]+$",
                       description="unique object name (letters, digits, _ -)")
-    file: str = Field(..., min_length=1, max_length=1000,
+    file: Name = Field(..., min_length=1, max_length=1000,
                       description="mesh (.ply, .obj, .stl) or Mitsuba/Sionna scene (.xml), "
                       "relative to the scene file's folder")
     position_m: tuple[_Coord, _Coord, _Coord] = Field(
