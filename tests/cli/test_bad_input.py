@@ -150,9 +150,9 @@ def test_carrier_whose_radar_band_the_grid_resolves(tmp_path, capsys):
 
 
 def test_surface_of_a_grid_finer_than_every_tabulated_wave(tmp_path, capsys):
-    # 1 mm tile on 64 points: k_cut = pi / dx > 1e4 rad/m, the upper limit of the
+    # 1 cm tile on 1024 points: k_cut = pi / dx > 1e4 rad/m, the upper limit of the
     # unresolved band the surface file reports; an empty band has zero variance
-    scene = _scene(tmp_path, "[sea]\nwind_speed_m_s = 5.0\nsize_x_m = 0.001\nnx = 64\n")
+    scene = _scene(tmp_path, "[sea]\nwind_speed_m_s = 5.0\nsize_x_m = 0.01\nnx = 1024\n")
     out = tmp_path / "s.nc"
     assert _run_quietly("surface", str(scene), "-o", str(out)) == 0
     with xr.open_dataset(out, engine="h5netcdf") as ds:
@@ -393,3 +393,15 @@ def test_control_characters_in_names_are_refused(tmp_path, capsys, old, new, nam
 def test_line_breaks_are_allowed_in_the_description(tmp_path, capsys):
     text = _replace('description = "', 'description = "two\\nlines, a\\ttab; ')
     assert _cli(capsys, "check", str(_scene(tmp_path, text)))[0] == 0
+
+
+@pytest.mark.parametrize("size", ["5e-324", "1e-300", "0.009"])
+@pytest.mark.parametrize("command", ["check", "surface"])
+def test_tile_below_a_centimetre_is_refused(tmp_path, capsys, size, command):
+    # Found by the fuzzing suite: size_x_m = 5e-324 crashed check (infinite wavenumber)
+    # and surface (ZeroDivisionError); 1e-300 wrote a NaN surface
+    scene = _scene(tmp_path, f"[sea]\nwind_speed_m_s = 5.0\nsize_x_m = {size}\nnx = 4\n")
+    extra = ["-o", str(tmp_path / "s.nc")] if command == "surface" else []
+    rc, err = _cli(capsys, command, str(scene), *extra)
+    assert rc == 2 and "[sea].size_x_m" in err
+    assert sorted(tmp_path.iterdir()) == [scene]

@@ -2,6 +2,8 @@
 
 A mutation takes a valid scene dict (from :mod:`fuzz_schema`) and breaks one thing:
 
+- ``value``: another valid value of one field, over the schema's whole range (not the
+  caps of a tiny scene): the scene may be valid, or refused for what it asks of others;
 - ``type``: a value of another type (string, boolean, integer, float, array, table,
   date-time, huge integer);
 - ``range``: a number just outside its field's bounds (read from the schema), or an
@@ -28,6 +30,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from fuzz_schema import constraints, field_paths, non_none
+from fuzz_schema import value as schema_value
 from hypothesis import strategies as st
 
 from seaecho.config import Scene
@@ -143,7 +146,8 @@ def nested(depth: int) -> Any:
     return v
 
 
-KINDS = ("type", "range", "nonfinite", "missing", "unknown", "nesting", "geometry", "text")
+KINDS = ("value", "type", "range", "nonfinite", "missing", "unknown", "nesting", "geometry",
+         "text")
 
 
 @st.composite
@@ -197,6 +201,17 @@ def mutations(draw, scenes: st.SearchStrategy[dict], kinds=KINDS) -> Mutation:
             parent.pop(path[-1])
         return Mutation(kind, data, None, names)
     info = schema_info(path)
+    if kind == "value":
+        from fuzz_schema import is_model
+
+        fields = [q for q in paths if schema_info(q) is not None
+                  and not is_model(non_none(schema_info(q).annotation))]
+        if not fields:
+            return Mutation(kind, data, None, ())
+        path = draw(st.sampled_from(fields))
+        info = schema_info(path)
+        put(data, path, thaw(draw(schema_value(info.annotation, info.metadata))))
+        return Mutation(kind, data, None, ())
     if kind == "type":
         value = draw(other_type(get(data, path)))
     elif kind == "range":
