@@ -11,15 +11,15 @@ Model. The peak resident memory of ``seaecho run`` is
 .. math::
 
     M = M_0 + m_c N_{cells} + m_f C N_{fft} + m_w C n_{chunk} N_s + m_p N_p
-        + M_F(N_p C N_s) + m_g N_{gm} + m_t K                                    (M1)
+        + m_F N_p C N_s + m_g N_{gm} + m_t K                                     (M1)
 
 with M_0 the process (Python, numpy, h5py, Dr.Jit; Mitsuba with sea clutter), N_cells the
 sea grid's points (sea clutter on), C the channels, N_s the samples of the receive window
 and N_fft its NUFFT period (``seaecho.radar.echo``), n_chunk = min(16, N_p) pulses per
 write, N_p the pulses, N_gm the Gauss-Markov steps of the perturbed platforms, K the point
-targets, and M_F the figures drawn from the whole raw and compressed arrays (0 with
-``--no-figures``; piecewise linear, matplotlib's overhead per value being larger for
-small arrays), which adds to the rest (the run loop's memory is not all returned).
+targets, and m_F the figures drawn from the whole raw and compressed arrays (0 with
+``--no-figures``: matplotlib's meshes cost 45 to 155 bytes per value), which adds to the
+rest (the run loop's memory is not all returned to the system).
 
 Or, if larger, M_0 + M_A: the normalisation of a rectangular aperture's pattern (eq A1
 of ``seaecho.radar.antennas``, computed when the radar is built) integrates it on
@@ -36,7 +36,8 @@ scenes is in docs/resources.md; ``tests/test_resources.py`` runs a small scene a
 that its measured peak is below the estimate.
 
 Time (order of magnitude only, measured on one loaded 2-core machine): a start-up of a
-few seconds, then per pulse t_c N_cells + t_f C N_fft log2 N_fft + t_t K.
+few seconds plus a set-up per sea grid point (surface, wake, sigma maps), then per pulse
+t_c N_cells + t_f C N_fft log2 N_fft + t_t K, then the figures per value drawn.
 
 The memory a run may use is the smallest of the memory the system reports available
 (``MemAvailable`` of ``/proc/meminfo``), the cgroup's limit less its usage, and the
@@ -66,10 +67,7 @@ M_CELL = {"analytic": 2100.0, "raytraced": 2300.0}  #: per sea grid point
 M_FFT = 20.0  #: per channel and NUFFT bin (phasors, spectrum product, inverse FFT)
 M_WRITE = 70.0  #: per channel, sample and buffered pulse (buffer, range compression)
 M_PULSE = 1000.0  #: per pulse (tracks, times, per-pulse dataset variables)
-#: Per pulse, channel and sample when figures are drawn: the first 2e6 (matplotlib's
-#: per-cell overhead dominates), then the rest
-M_FIGURE = (140.0, 55.0)
-FIGURE_KNEE = 2.0e6
+M_FIGURE = 180.0  #: per pulse, channel and sample when figures are drawn
 M_GM = 200.0  #: per Gauss-Markov step and perturbed platform
 M_TARGET = 400.0  #: per point target
 M_ANTENNA = 40.0  #: per n_theta^2 of a rectangular aperture's normalisation
@@ -79,10 +77,13 @@ SAFETY = 1.15
 
 # Time coefficients [s] (order of magnitude)
 T_START = {"targets": 4.0, "analytic": 5.0, "raytraced": 8.0}
-T_CELL = {"analytic": 1.5e-6, "raytraced": 2.5e-6}
+T_CELL = {"analytic": 2.0e-6, "raytraced": 3.0e-6}  #: per sea grid point and pulse
+T_CELL_SETUP = {"analytic": 1.0e-5, "raytraced": 1.5e-5}  #: per grid point, once (surface,
+#: wake, the sigma-map pulse)
 T_FFT = 4.0e-9
 T_TARGET = 2.0e-6
-T_PULSE = 1.0e-2
+T_PULSE = 2.0e-2
+T_FIGURE = 4.0e-6  #: per pulse, channel and sample drawn
 T_ANTENNA = 3.0e-10  #: per n_theta^3 (Gauss-Legendre nodes: eigenvalues)
 T_ANTENNA_GRID = 2.0e-7  #: per direction of the normalisation grid
 
@@ -204,11 +205,6 @@ def gauss_markov_steps(scene) -> int:
     return steps
 
 
-def _figure_bytes(n: float) -> float:
-    """Memory of the figures drawn from n = pulses x channels x samples values [bytes]."""
-    return M_FIGURE[0] * min(n, FIGURE_KNEE) + M_FIGURE[1] * max(n - FIGURE_KNEE, 0.0)
-
-
 def antenna_nodes(scene) -> list[tuple[str, int]]:
     """(section, n_theta) of each rectangular antenna's pattern normalisation."""
     lam = C0 / scene.radar.carrier_frequency_hz
@@ -249,7 +245,7 @@ def estimate(scene, figures: bool = True) -> Estimate:
         "sea grid": M_CELL[mode] * cells,
         "receive window": M_FFT * c * n_fft + M_WRITE * c * chunk * n_s,
         "pulses": M_PULSE * n_p,
-        "figures": _figure_bytes(n_p * c * n_s) if figures else 0.0,
+        "figures": M_FIGURE * n_p * c * n_s if figures else 0.0,
         "perturbation": M_GM * gm,
         "targets": M_TARGET * k,
     }
@@ -277,8 +273,8 @@ def estimate(scene, figures: bool = True) -> Estimate:
     per_pulse = T_PULSE + T_TARGET * k + T_FFT * c * n_fft * math.log2(max(n_fft, 2))
     if sea:
         per_pulse += T_CELL[mode] * cells
-    start = T_START[mode] if sea else T_START["targets"]
-    time_s = start + n_p * per_pulse + sum(
+    start = T_START[mode] + T_CELL_SETUP[mode] * cells if sea else T_START["targets"]
+    time_s = start + n_p * per_pulse + (T_FIGURE * n_p * c * n_s if figures else 0.0) + sum(
         T_ANTENNA * n**3 + T_ANTENNA_GRID * 2 * n**2 for _, n in nodes)
     return Estimate(peak, time_s, terms, drivers, n_s, n_fft, n_p, c, cells)
 
