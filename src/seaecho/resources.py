@@ -330,6 +330,8 @@ def memory_limit(max_memory_gb: float | None = None) -> tuple[float | None, str]
 
 
 def format_bytes(n: float) -> str:
+    if n >= 1000 * GiB:
+        return f"{n / GiB:,.0f} GiB"
     return f"{n / GiB:.3g} GiB" if n >= 0.5 * GiB else f"{n / MiB:.3g} MiB"
 
 
