@@ -405,3 +405,12 @@ def test_tile_below_a_centimetre_is_refused(tmp_path, capsys, size, command):
     rc, err = _cli(capsys, command, str(scene), *extra)
     assert rc == 2 and "[sea].size_x_m" in err
     assert sorted(tmp_path.iterdir()) == [scene]
+
+
+def test_refresh_interval_shorter_than_any_pulse_interval_is_refused(tmp_path, capsys):
+    # Found by the fuzzing suite: refresh_interval_s = 5e-324 (>= 0, allowed) made
+    # floor(t / interval) overflow ("cannot convert float infinity to integer") in `run`
+    text = _replace("[transmitter]", "[tracing]\nrefresh_interval_s = 5e-324\n\n[transmitter]",
+                    SEA_ON)
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
+    assert rc == 2 and "refresh_interval_s = 4.94066e-324" in err and "1e-07" in err
