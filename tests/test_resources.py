@@ -137,3 +137,17 @@ def test_measured_peak_of_a_small_run_is_below_the_estimate(tmp_path):
     assert "estimated peak memory" in out
     assert peak_kb * 1024 < est.peak_bytes
     assert est.peak_bytes < 2.0 * peak_kb * 1024  # and not uselessly loose
+
+
+def test_perturbation_step_of_5e_324_is_refused(tmp_path, capsys):
+    # Found while fuzzing: the Gauss-Markov grid of a 5e-324 s step has infinitely many
+    # steps; int(ceil(inf)) raised OverflowError in the estimate itself
+    from seaecho.config.toml_writer import dumps
+
+    d = _cal()
+    d["transmitter"]["perturbation"] = {"position_sigma_m": [1.0, 1.0, 1.0], "step_s": 5e-324}
+    scene = tmp_path / "s.toml"
+    scene.write_text(dumps(d))
+    assert main(["check", str(scene)]) == 2
+    err = capsys.readouterr().err
+    assert "perturbation unbounded" in err and "step_s" in err and "Traceback" not in err

@@ -194,14 +194,16 @@ def window_size(scene) -> tuple[int, int, int]:
 
 
 # --------------------------------------------------------------------------- model
-def gauss_markov_steps(scene) -> int:
-    """Gauss-Markov steps drawn for the perturbed platforms (``draw_perturbation``)."""
+def gauss_markov_steps(scene) -> float:
+    """Gauss-Markov steps drawn for the perturbed platforms (``draw_perturbation``); a
+    float, which may be infinite (a step of 5e-324 s)."""
     r = scene.radar
     span = (r.n_pulses - 1) / r.prf_hz + 1.0e-3
-    steps = 0
+    steps = 0.0
     for cfg in (scene.transmitter, scene.receiver):
         if cfg is not None and cfg.perturbation is not None:
-            steps += int(np.ceil(span / cfg.perturbation.step_s)) + 2
+            steps += math.ceil(span / cfg.perturbation.step_s) + 2.0 if math.isfinite(
+                span / cfg.perturbation.step_s) else math.inf
     return steps
 
 
@@ -330,12 +332,16 @@ def memory_limit(max_memory_gb: float | None = None) -> tuple[float | None, str]
 
 
 def format_bytes(n: float) -> str:
+    if not math.isfinite(n):
+        return "unbounded"
     if n >= 1000 * GiB:
         return f"{n / GiB:,.0f} GiB"
     return f"{n / GiB:.3g} GiB" if n >= 0.5 * GiB else f"{n / MiB:.3g} MiB"
 
 
 def format_time(t: float) -> str:
+    if not math.isfinite(t):
+        return "unbounded"
     if t < 60:
         return f"~{t:.2g} s"
     if t < 3600:
@@ -366,7 +372,7 @@ def check_memory(scene, source: str, max_memory_gb: float | None = None,
     est = estimate(scene, figures=figures)
     limit, where = memory_limit(max_memory_gb)
     line = describe(est, limit, where)
-    if limit is not None and est.peak_bytes > limit:
+    if not (math.isfinite(est.peak_bytes) and (limit is None or est.peak_bytes <= limit)):
         reasons = "; ".join(f"{name} {format_bytes(SAFETY * est.terms[name])} (set by "
                             f"{est.drivers[name]})" for name in est.largest_terms())
         raise SceneError(

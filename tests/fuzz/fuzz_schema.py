@@ -326,6 +326,14 @@ def _target(draw: Draw, d: dict, get: Get) -> dict:
     return d
 
 
+def _tracing(draw: Draw, d: dict, get: Get) -> dict:
+    from seaecho.config.tracing import MIN_REFRESH_S
+
+    if 0 < d.get("refresh_interval_s", 0.0) < MIN_REFRESH_S:
+        d["refresh_interval_s"] = 0.0
+    return d
+
+
 def _object(draw: Draw, d: dict, get: Get) -> dict:
     if "relative_permittivity" in d or "conductivity_s_m" in d:
         d.pop("material", None)
@@ -364,6 +372,7 @@ COUPLINGS: dict[str, Callable[[Draw, dict, Get], dict]] = {
     "SeaConfig": _sea, "RunConfig": _run, "ShipConfig": _ship, "WaveformConfig": _waveform,
     "AntennaConfig": _antenna, "PlatformConfig": _platform, "RadarConfig": _radar,
     "GaussMarkovConfig": _perturbation, "TargetConfig": _target, "ObjectConfig": _object,
+    "TracingConfig": _tracing,
     "Scene": _scene,
 }
 
