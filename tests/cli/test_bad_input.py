@@ -414,3 +414,19 @@ def test_refresh_interval_shorter_than_any_pulse_interval_is_refused(tmp_path, c
                     SEA_ON)
     rc, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
     assert rc == 2 and "refresh_interval_s = 4.94066e-324" in err and "1e-07" in err
+
+
+@pytest.mark.parametrize(("old", "new", "named"), [
+    # an lfm pulse of 5e-324 s: B / T overflowed and the transmitted pulse was NaN
+    ("duration_s = 2.0e-6", "duration_s = 5e-324", "bandwidth_hz x duration_s"),
+    # a PRF of 5e-324 Hz: the second pulse at t = inf; check died on a NaN
+    ("prf_hz = 1000.0", "prf_hz = 5e-324", "the run would last"),
+])
+def test_waveform_and_pulse_train_extremes(tmp_path, capsys, old, new, named):
+    rc, err = _cli(capsys, "check", str(_scene(tmp_path, _replace(old, new))))
+    assert rc == 2 and named in err, err
+
+
+def test_lfm_time_bandwidth_product_of_one_is_accepted(tmp_path, capsys):
+    text = _replace("duration_s = 2.0e-6", "duration_s = 1.0e-8")  # B T = 1
+    assert _cli(capsys, "check", str(_scene(tmp_path, text)))[0] == 0

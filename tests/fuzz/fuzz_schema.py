@@ -245,6 +245,12 @@ def _ship(draw: Draw, d: dict, get: Get) -> dict:
 def _waveform(draw: Draw, d: dict, get: Get) -> dict:
     if d.get("kind", "lfm") == "lfm":
         d.setdefault("bandwidth_hz", draw(get("bandwidth_hz")))
+        b, t = d["bandwidth_hz"], d["duration_s"]
+        if b * t < 1.0:  # a chirp sweeps its band only if B T >= 1
+            if 1.0 / t <= 1.0e10:
+                d["bandwidth_hz"] = 1.0 / t * draw(st.floats(1.0, 2.0))
+            else:
+                d["duration_s"] = min(1.0 / b * draw(st.floats(1.0, 2.0)), 1.0e-2)
     else:
         d.pop("bandwidth_hz", None)
     return d

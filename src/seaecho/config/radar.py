@@ -43,6 +43,8 @@ WeightingName = Literal["none", "hamming", "taylor"]
 
 _POS = 1.0e8  # bound on coordinates [m]: beyond geostationary orbit
 _VEL = 1.0e4  # bound on speeds [m/s]: beyond orbital speed
+#: Longest run, (n_pulses - 1) / prf_hz [s] (116 days, as the range of start_time_s).
+MAX_RUN_S = 1.0e7
 
 
 class GaussMarkovConfig(Section):
@@ -235,6 +237,12 @@ class WaveformConfig(Section):
             raise ValueError("kind 'lfm' needs bandwidth_hz")
         if self.kind == "pulse" and self.bandwidth_hz is not None:
             raise ValueError("kind 'pulse' has bandwidth 1/duration_s; omit bandwidth_hz")
+        if self.kind == "lfm" and self.bandwidth_hz * self.duration_s < 1.0:
+            raise ValueError(
+                f"bandwidth_hz x duration_s = {self.bandwidth_hz * self.duration_s:.3g}: a "
+                "linear FM pulse sweeps its bandwidth only if B T >= 1 (below, its spectrum "
+                "is that of a plain pulse of width 1/T; Richards 2014, section 4.6); use "
+                "kind = 'pulse' or a longer pulse")
         return self
 
 
@@ -306,6 +314,11 @@ class RadarConfig(Section):
         if w.duration_s >= 1.0 / self.prf_hz:
             raise ValueError(f"pulse duration {w.duration_s:g} s is not shorter than the "
                              f"pulse repetition interval {1.0 / self.prf_hz:g} s")
+        span = (self.n_pulses - 1) / self.prf_hz
+        if not span <= MAX_RUN_S:
+            raise ValueError(f"n_pulses = {self.n_pulses} at prf_hz = {self.prf_hz:g}: the run "
+                             f"would last {span:.3g} s; at most {MAX_RUN_S:g} s (as "
+                             "start_time_s's range)")
         if self.sigma_map_pulse >= self.n_pulses:
             raise ValueError(f"sigma_map_pulse = {self.sigma_map_pulse} must be below "
                              f"n_pulses = {self.n_pulses}")
