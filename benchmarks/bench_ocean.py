@@ -1,4 +1,4 @@
-"""Benchmark: sea surface synthesis and evolution (issue: foundation).
+"""Benchmark: sea surface synthesis and evolution.
 
 Run: ``python benchmarks/bench_ocean.py [--repeat N]``. Prints, for named grid sizes,
 the time to synthesise a realisation (spectrum on the grid + random amplitudes), to evolve

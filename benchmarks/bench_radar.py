@@ -1,7 +1,7 @@
-"""Benchmark of the radar stage (issue 5): run as ``python benchmarks/bench_radar.py``.
+"""Benchmark of the radar stage: run as ``python benchmarks/bench_radar.py``.
 
-1. One bistatic quad-pol pulse over a 512 x 512 sea, ray traced (the paper's Simulation 1
-   scene), broken down by stage; best of ``--repeat`` runs.
+1. One bistatic quad-pol pulse over the paper's Simulation 1 sea (its scene's 648 x 648
+   grid, or ``--grid N``), ray traced, broken down by stage; best of ``--repeat`` runs.
 2. Echo accumulation: NUFFT (eq E2) against the paper's per-facet pulse write (eq E1,
    ``accumulate_pulse_write``) on the same facets, as a ratio.
 3. The SAR case: one monostatic quad-pol pulse of Simulation 2 (512 x 512 sea, ray traced,
@@ -11,6 +11,10 @@
    bounded memory means the two peaks are about equal.
 
 Timings on a shared machine are noisy: the load average is printed with them.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
@@ -41,22 +45,25 @@ def _best(fn, repeat):
     return min(times), out
 
 
-def bench_pulse(repeat: int, mode: str) -> None:
+def bench_pulse(repeat: int, mode: str, grid: int | None = None) -> None:
     from seaecho.config import load_scene
     from seaecho.geometry.mesh import to_facets
     from seaecho.scattering.facet import facet_terms, speckle_amplitudes
     from seaecho.simulation import Simulation
 
     scene = load_scene(SIM1)
-    scene = scene.model_copy(update={
-        "tracing": scene.tracing.model_copy(update={"mode": mode}),
-        "radar": scene.radar.model_copy(update={"n_pulses": 2 * repeat + 2})})
+    update = {"tracing": scene.tracing.model_copy(update={"mode": mode}),
+              "radar": scene.radar.model_copy(update={"n_pulses": 2 * repeat + 2})}
+    if grid is not None:
+        update["sea"] = scene.sea.model_copy(update={"nx": grid})
+    scene = scene.model_copy(update=update)
+    n_grid = scene.sea.nx
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         sim = Simulation(scene, base_dir=SIM1.parent)
     sim.compress(sim.pulse(0))  # JIT compilation, BVH, lazy imports: not timed
     radar = sim.radar
-    un = sim.unresolved
+    model = sim.sea_model.facet_model
     names = ["platforms+pointing", "sea state (ocean+wake)", f"facets ({mode})",
              "scattering (sigma + speckle)", "radar equation (Dr.Jit kernel)",
              "accumulation (NUFFT, 4 ch)", "range compression"]
@@ -75,9 +82,7 @@ def bench_pulse(repeat: int, mode: str) -> None:
         clock.append(time.perf_counter())
         idx = np.flatnonzero(f.visibility > 0)
         damping = to_facets(st.wake_mask).reshape(-1)
-        t = facet_terms(f.n_i, f.n_s, f.normal, sim.k, sim.eps_r, sim.bragg_spectrum,
-                        un.mss_upwind, un.mss_crosswind, sim.wind_direction,
-                        wake_damping=damping, local=f)
+        t = facet_terms(f.n_i, f.n_s, f.normal, *model, wake_damping=damping, local=f)
         amp = speckle_amplitudes(t, f.area * f.visibility, np.random.default_rng(p))
         clock.append(time.perf_counter())
         echo = radar.scatterer_echo(geo, f.centroid[idx], f.velocity[idx],
@@ -96,7 +101,8 @@ def bench_pulse(repeat: int, mode: str) -> None:
     numpy_t, _ = _best(lambda: radar.scatterer_echo_numpy(geo, f.centroid[idx],
                                                           f.velocity[idx],
                                                           amp[idx].reshape(-1, 2, 2)), 1)
-    print(f"\n[1] one bistatic quad-pol pulse, 512 x 512 sea ({idx.size} of {f.n_facets} "
+    print(f"\n[1] one bistatic quad-pol pulse, {n_grid} x {n_grid} sea ({idx.size} of "
+          f"{f.n_facets} "
           f"facets visible), {mode}, {repeat} new pulses, best / mean; "
           f"load {os.getloadavg()[0]:.2f}")
     for n in names:
@@ -153,7 +159,7 @@ def bench_sar(repeat: int, refresh: float, update: int, label: str) -> None:
         first = 40
         for p in (first, first + 1):  # JIT compilation, BVH, lazy imports: not timed
             sim.compress(sim.pulse(p))
-        radar, un = sim.radar, sim.unresolved
+        radar, model = sim.radar, sim.sea_model.facet_model
         names = ["platforms+pointing", "sea state (ocean+wake)", "facets (raytraced)",
                  "speckle draws + wake (per sea)", "scattering P1-P4 (fused Dr.Jit)",
                  "radar equation (Dr.Jit kernel)", "accumulation (NUFFT, 4 ch)",
@@ -172,8 +178,7 @@ def bench_sar(repeat: int, refresh: float, update: int, label: str) -> None:
             held = sim._block_quantities(p, st, f.visibility.size)
             clock.append(time.perf_counter())
             amp = speckled_facet_amplitudes(
-                f.n_i, f.n_s, f.normal, f.area * f.visibility, sim.k, sim.eps_r,
-                sim.bragg_spectrum, un.mss_upwind, un.mss_crosswind, sim.wind_direction,
+                f.n_i, f.n_s, f.normal, f.area * f.visibility, *model,
                 draws=held["draws"], wake_damping=held["damping"], local=f)
             clock.append(time.perf_counter())
             vis = f.visibility > 0
@@ -272,6 +277,9 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--mode", default="raytraced", choices=["raytraced", "analytic"])
+    ap.add_argument("--grid", type=int, default=None,
+                    help="grid points per side of the Simulation 1 case (default: the "
+                    "scene's, 648; 512 compares with earlier measurements)")
     ap.add_argument("--memory-grid", type=int, default=128)
     ap.add_argument("--refresh", type=float, default=0.1,
                     help="shadowing refresh interval of the SAR case [s]")
@@ -285,7 +293,7 @@ def main() -> None:
         return
     print(f"bench_radar: {os.cpu_count()} CPUs")
     if not args.skip_pulse:
-        bench_pulse(args.repeat, args.mode)
+        bench_pulse(args.repeat, args.mode, args.grid)
     if not args.skip_sar:
         bench_sar(args.repeat, 0.0, 160, "held sea, shadowing re-traced every pulse")
         bench_sar(args.repeat, args.refresh, 160, "held sea, shadowing refreshed")

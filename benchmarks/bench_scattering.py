@@ -3,7 +3,7 @@
 Run: ``python benchmarks/bench_scattering.py``. Prints, for named sizes, the best of
 several runs of ``facet_sigma`` (blend, all channels) and ``facet_amplitudes`` with the
 numpy and the Dr.Jit (LLVM) backends, the machine load, and the peak resident memory.
-Target (issue 3): 262,144 facets (a 512 x 512 sea) in <= 0.1 s on the 2-core machine.
+Target: 262,144 facets (a 512 x 512 sea) in <= 0.1 s on the 2-core machine.
 """
 
 from __future__ import annotations

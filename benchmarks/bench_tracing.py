@@ -7,7 +7,7 @@ of ``--repeat`` runs after a warm-up call (JIT compilation excluded; Dr.Jit cach
 on disk). The surface is a Gaussian random sea on a 1 m grid (rms height 0.5 m,
 correlation length 8 m); Tx and Rx at low grazing angles, bistatic.
 
-Targets (issue 4, 2-core CPU, 512 x 512 = 522k triangles): vertex update <= 0.2 s,
+Targets (2-core CPU, 512 x 512 = 522k triangles): vertex update <= 0.2 s,
 visibility from Tx and Rx with local angles <= 0.3 s.
 """
 

@@ -5,6 +5,10 @@ median wall time of ``KelvinWake.fields`` (elevation, slopes, dz/dt at a new tim
 of ``turbulent_wake_mask``, the number of plane waves used, and the peak Python-heap
 memory of one call (tracemalloc; finufft's own C buffers are not counted). The paper's
 10 m motor boat at 10 kt (L 10 m, B 4 m, T 1.5 m), heading 35 deg, at the tile centre.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

@@ -7,6 +7,10 @@ Pierson-Moskowitz spectrum with Longuet-Higgins s = 1 spreading (paper eqs 5-6) 
 paper, Gaussian slopes of the waves longer than k/3 for the Kirchhoff part; the
 two-scale model (Khenchaf & Airiau) is drawn as a reference in the SPM panel. Each panel
 shows HH, HV, VH, VV.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

@@ -5,6 +5,10 @@ Writes ``scattering_fig4.png``: theta_i = 39 deg, phi_i = 0, theta_s = 0..89 deg
 phi_s = 0..180 deg, U19.5 = 4.53 m/s, wind direction psi = 0, 10 GHz, 20 degC, 35 psu,
 Pierson-Moskowitz + Longuet-Higgins (s = 1) as in the paper; the Kirchhoff / SPM blend of
 eqs 10-11, four channels.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

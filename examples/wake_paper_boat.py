@@ -8,6 +8,10 @@ Run: ``python examples/wake_paper_boat.py [OUTDIR]`` (default ``docs/figures``).
 * ``wake_michell.png``: the Michell amplitude function |A(theta)| of that boat, and the
   wave-resistance coefficient of the standard Wigley hull (B/L = 0.1, T/L = 0.0625) from
   eq W6 against Froude number.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
@@ -75,7 +79,8 @@ def wake_map(outdir: Path) -> Path:
     ax.set_xlabel("x (east) [m]")
     ax.set_ylabel("y (north) [m]")
     ax.set_title(
-        "Kelvin wake, L 10 m, B 4 m, T 1.5 m, 10 kt, heading 35 deg (Michell/Wigley)\n"
+        "Kelvin wake, L 10 m, B 4 m, T 1.5 m, 10 kt, heading 35 deg "
+        "(Michell pattern, Kriebel-Seelig heights)\n"
         "thin lines: crests of eq 16 from the bow; dotted: cusp lines 19.47 deg; "
         "dashed: turbulent wake",
         fontsize=8,

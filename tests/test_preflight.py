@@ -8,6 +8,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from seaecho.build import _platforms as build_platforms
 from seaecho.config import parse_scene
 from seaecho.constants import G
 from seaecho.preflight import (
@@ -61,9 +62,7 @@ def _scene(section, n_pulses=200, prf=1000.0, start=0.0):
 
 
 def _platform(scene) -> Platform:
-    r = scene.radar
-    span = (r.start_time_s, r.start_time_s + (r.n_pulses - 1) / r.prf_hz + 1e-3)
-    return Platform.from_config(scene.transmitter, seed=scene.run.seed, t_span=span)
+    return build_platforms(scene)[0]  # the builder's transmitter, as the run has it
 
 
 @settings(max_examples=60, deadline=None)

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 
+from seaecho.build import build_radar
 from seaecho.cli import main
 from seaecho.config import SceneError, load_scene, parse_scene
 from seaecho.radar.system import RadarSystem
@@ -32,7 +33,7 @@ def test_window_size_is_the_radar_window(path):
     """Parity: the estimate's samples and NUFFT period are the radar's own, computed
     without building it (building it allocates the window)."""
     scene = load_scene(path)
-    radar = RadarSystem(scene)
+    radar = RadarSystem(build_radar(scene))
     n_s, n_fft, n_p = window_size(scene)
     assert (n_s, n_fft, n_p) == (radar.window.n_samples, radar.n_fft,
                                  radar.waveform.n_samples)
@@ -45,7 +46,7 @@ def test_window_size_is_the_radar_window(path):
 ])
 def test_window_size_variants(radar):
     scene = parse_scene(_cal(**radar))
-    r = RadarSystem(scene)
+    r = RadarSystem(build_radar(scene))
     assert window_size(scene)[:2] == (r.window.n_samples, r.n_fft)
 
 
@@ -53,22 +54,26 @@ def test_perturbed_window_is_bounded_above():
     d = _cal()
     d["transmitter"]["perturbation"] = {"position_sigma_m": [3.0, 3.0, 1.0]}
     scene = parse_scene(d)
-    assert window_size(scene)[0] >= RadarSystem(scene).window.n_samples
+    assert window_size(scene)[0] >= RadarSystem(build_radar(scene)).window.n_samples
 
 
 def test_run_refuses_what_cannot_fit_before_allocating(tmp_path, capsys):
-    # bandwidth_hz = 1 Hz on the calibration scene: the automatic window grows by
+    # bandwidth_hz = 1 Hz on the calibration scene: the automatic window grew by
     # 4 c / (2 B) = 600,000 km on each side, 8e8 samples per pulse; the run allocated
-    # ~12 GiB and, with no memory limit, grew to 24 GB until the system killed it
+    # ~12 GiB and, with no memory limit, grew to 24 GB until the system killed it. The
+    # schema now needs B T >= 1: the narrowest chirp it allows, B = 100 Hz over
+    # T = 10 ms, still widens the window by 6,000 km (1.6e7 samples per pulse, 2e6 in
+    # the pulse), which a 16 GB limit refuses
     d = _cal()
-    d["radar"]["waveform"]["bandwidth_hz"] = 1.0
+    d["radar"]["prf_hz"] = 50.0
+    d["radar"]["waveform"].update(bandwidth_hz=100.0, duration_s=1.0e-2)
     from seaecho.config.toml_writer import dumps
 
     scene = tmp_path / "s.toml"
     scene.write_text(dumps(d))
     for command in ("check", "run"):
         extra = ["-o", str(tmp_path / "x.nc"), "-q"] if command == "run" else []
-        assert main([command, str(scene), *extra]) == 2
+        assert main([command, str(scene), "--max-memory-gb", "16", *extra]) == 2
         err = capsys.readouterr().err
         assert "does not fit in memory" in err and "Traceback" not in err
         for field in ("[radar.waveform].bandwidth_hz", "[radar].sampling_rate_hz",

@@ -2,7 +2,7 @@
 
 Mitsuba's CPU variants JIT through the system's libLLVM. libLLVM 15 (Debian 12's default)
 aborts the process on ``dr.maximum``/``dr.minimum``/``dr.atan2`` ("Cannot select:
-fmaximum"); libLLVM >= 16 works (``../shared/DESIGN.md``, stack notes). The project's
+fmaximum"); libLLVM >= 16 works (docs/install.md). The project's
 set-up installs Debian's ``libllvm19``. Call :func:`configure_llvm` before importing drjit;
 it leaves a user's own ``DRJIT_LIBLLVM_PATH`` alone.
 """

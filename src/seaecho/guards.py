@@ -4,7 +4,8 @@
 (:meth:`seaecho.simulation.Simulation.pulse`), so it knows which scatterer set each
 echo came from. If a scatterer's delay or amplitude, or a sample of the summed pulse, is
 NaN or infinite, it raises :class:`NonFiniteEchoError` naming the pulse and the
-scatterers (sea facets with their count and first index, or the point targets by name);
+scatterers (sea facets with their count and first index, the point targets by name, or
+the scattering centres of a hull, ``[[objects]]`` with ``scatterer = true``, by name);
 the CLI prints it and exits with status 2, and the run's temporary file is removed, so
 no file with NaN is left. :func:`check_dataset` does the same for everything else the run
 writes (tracks, surface, sigma maps), once, before writing. The scene checks of
@@ -48,15 +49,26 @@ def _bad_columns(echo) -> np.ndarray:
     return np.flatnonzero(bad)
 
 
-def echo_kinds(sim) -> list[str]:
+def echo_kinds(sim, pulse: int) -> list[str]:
     """Names of the scatterer sets of :meth:`Simulation.pulse`, in its order: the sea
-    facets (if sea clutter is on), then the point targets (if any)."""
+    facets (if sea clutter is on), the point targets (if any), then one per hull
+    (``[[objects]]`` with ``scatterer = true``) that has scattering centres at ``pulse``."""
     kinds = []
     if getattr(sim, "sea", None) is not None:
         kinds.append("sea facets")
-    if sim.scene.targets:
+    targets = sim.models.radar.targets
+    if targets is not None and len(targets):
         kinds.append("point targets")
+    hulls = getattr(sim, "hulls", None)
+    if hulls is not None:  # HullEchoes.echoes skips the hulls without centres
+        kinds += [f"hull '{h.name}'" for i, h in enumerate(hulls.hulls)
+                  if len(hulls.signature(i, pulse).centres)]
     return kinds
+
+
+def _host(echo):
+    """A host (numpy) copy of a device echo (``DeviceEcho.to_host``), else the echo."""
+    return echo.to_host() if hasattr(echo, "to_host") else echo
 
 
 def check_pulse(sim, pulse: int, raw, echoes) -> None:
@@ -65,29 +77,39 @@ def check_pulse(sim, pulse: int, raw, echoes) -> None:
     Parameters
     ----------
     sim : seaecho.simulation.Simulation
-        The simulation (its scene names the targets).
+        The simulation (its radar model names the targets, its hulls the objects).
     pulse : int
         Pulse index.
     raw : ndarray (C, n_samples) complex
         The pulse's summed samples [sqrt(W)].
-    echoes : list of ScattererEcho
-        The scatterer sets summed into ``raw``, in the order of :func:`echo_kinds`.
+    echoes : list of ScattererEcho or DeviceEcho
+        The scatterer sets summed into ``raw``, in the order of :func:`echo_kinds`. A
+        device echo (GPU) is only examined, copied to the host, once ``raw`` is found
+        non-finite.
     """
+    raw_ok = _finite(raw)
     problems = []
-    kinds = echo_kinds(sim)
     for i, echo in enumerate(echoes):
+        if hasattr(echo, "to_host"):
+            if raw_ok:
+                continue
+            echo = _host(echo)
         if _finite(echo.tau) and _finite(echo.amplitudes):
             continue
+        kinds = echo_kinds(sim, pulse)
         kind = kinds[i] if i < len(kinds) else f"scatterer set {i}"
         cols = _bad_columns(echo)
         if kind == "point targets":
-            names = [sim.scene.targets[j].name or f"#{j}" for j in cols[:5]]
+            all_names = sim.models.radar.targets.names
+            names = [all_names[j] for j in cols[:5]]
             what = "point target" + ("s " if len(cols) > 1 else " ") + ", ".join(
                 short_repr(n) for n in names) + (" ..." if len(cols) > 5 else "")
+        elif kind.startswith("hull"):
+            what = f"{cols.size} scattering centres of {kind} ([[objects]] scatterer)"
         else:
             what = f"{cols.size} {kind} (first index {cols[0] if cols.size else '?'})"
         problems.append(f"non-finite delay or amplitude from {what}")
-    if not _finite(raw):
+    if not raw_ok:
         n_bad = int((~np.isfinite(np.asarray(raw))).sum())
         problems.append(f"{n_bad} non-finite samples in the summed echo"
                         + ("" if len(problems) else " (all scatterers were finite: the "

@@ -37,8 +37,9 @@ everything ``run`` would):
   tangent-plane approximation (paper section III: "the curvature of the waves [must be]
   large enough in front of the electromagnetic wavelength").
 
-- **Files and devices** the ray-traced sea needs: every ``[[objects]]`` file exists
-  beside the scene and loads; a CUDA variant has a CUDA GPU.
+- **Files and devices** the run needs: every ``[[objects]]`` file the ray-traced sea
+  or a hull's echo loads exists beside the scene and loads; the ``[tracing] variant``
+  can run here (a CUDA variant has a CUDA GPU).
 
 - **Something to receive**: sea clutter on, a target, or an explicit receive window.
 
@@ -57,53 +58,15 @@ from numpy.typing import NDArray
 from .config import SceneError
 from .config.base import short_repr
 from .constants import C0
+from .resources import PERTURBATION_SIGMAS, Segment, nominal_segments, perturbation_bound
 
-#: Perturbation bound in standard deviations (P(|x| > 8 sigma) = 1.2e-15 per sample).
-PERTURBATION_SIGMAS = 8.0
 #: Crest bound of a Gaussian sea in significant wave heights (2 H_s = 8 sigma).
 CREST_HS = 2.0
 #: Most distance evaluations spent on points checked at every pulse of a perturbed track.
 MAX_EXHAUSTIVE = 50_000_000
 
 
-# --------------------------------------------------------------------- nominal tracks
-@dataclass(frozen=True)
-class Segment:
-    """A piece of a nominal track: position c + v t for t in [t_a, t_b] [s]."""
-
-    t_a: float
-    t_b: float
-    c: NDArray[np.float64]  #: position extrapolated to t = 0 [m]
-    v: NDArray[np.float64]  #: velocity [m/s]
-
-
-def nominal_segments(cfg) -> list[Segment]:
-    """Segments of a ``[transmitter]`` / ``[receiver]`` section's nominal track.
-
-    The first and last segments extend to -inf / +inf, as ``seaecho.radar.platforms``
-    extrapolates them.
-    """
-    if cfg.motion in ("fixed", "linear"):
-        v = np.array(cfg.velocity_m_s if cfg.motion == "linear" else (0.0, 0.0, 0.0))
-        return [Segment(-np.inf, np.inf, np.array(cfg.position_m, dtype=float), v)]
-    t = np.array(cfg.waypoint_times_s, dtype=float)
-    p = np.array(cfg.waypoint_positions_m, dtype=float)
-    out = []
-    for i in range(t.size - 1):
-        v = (p[i + 1] - p[i]) / (t[i + 1] - t[i])
-        t_a = -np.inf if i == 0 else t[i]
-        t_b = np.inf if i == t.size - 2 else t[i + 1]
-        out.append(Segment(t_a, t_b, p[i] - v * t[i], v))
-    return out
-
-
-def perturbation_bound(cfg) -> float:
-    """Bound on how far the true track strays from the nominal one [m] (8 sigma)."""
-    if cfg.perturbation is None:
-        return 0.0
-    return PERTURBATION_SIGMAS * float(np.linalg.norm(cfg.perturbation.position_sigma_m))
-
-
+# ---------------------------------------------------------------------- pulse times
 @dataclass(frozen=True)
 class Pulses:
     """Emission times t_p = t_0 + p / PRF, p = 0 .. n - 1 [s]."""
@@ -272,12 +235,12 @@ def near_field_distance(antenna_cfg, wavelength: float) -> float:
 def crest_bound(scene) -> float:
     """2 H_s of the tile's sea [m]: H_s = 4 sqrt(m0), m0 the height variance of every
     wavenumber the grid holds (0 < K < sqrt(2) pi / min(dx, dy))."""
-    from .ocean.spectra import DirectionalSpectrum
+    from .build import sea_spectrum
     from .ocean.twoscale import height_variance
 
     sea = scene.sea
-    spectrum = DirectionalSpectrum.from_sea_config(sea)
-    (lx, ly), (nx, ny) = sea.size_m, sea.grid_shape
+    spectrum = sea_spectrum(scene)
+    (lx, ly), (ny, nx) = sea.size_m, sea.shape
     k_max = np.sqrt(2.0) * np.pi / min(lx / nx, ly / ny)
     m0 = height_variance(spectrum, 0.0, k_max)
     return CREST_HS * 4.0 * float(np.sqrt(m0))
@@ -285,9 +248,9 @@ def crest_bound(scene) -> float:
 
 def _platforms(scene) -> list[tuple[str, object, object]]:
     """[(section name, config, Platform)] of the transmitter and (if any) the receiver."""
-    from .radar.platforms import platforms_from_scene
+    from .build import _platforms as build_platforms
 
-    tx, rx = platforms_from_scene(scene)
+    tx, rx = build_platforms(scene)
     out = [("transmitter", scene.transmitter, tx)]
     if scene.receiver is not None:
         out.append(("receiver", scene.receiver, rx))
@@ -359,7 +322,7 @@ def two_scale_problems(scene) -> list[str]:
     if not scene.radar.sea_clutter:
         return []
     lam = C0 / scene.radar.carrier_frequency_hz
-    (lx, ly), (nx, ny) = scene.sea.size_m, scene.sea.grid_shape
+    (lx, ly), (ny, nx) = scene.sea.size_m, scene.sea.shape
     dx = max(lx / nx, ly / ny)
     if dx > lam / 4.0:
         return []
@@ -371,11 +334,23 @@ def two_scale_problems(scene) -> list[str]:
 
 
 def object_problems(scene, base_dir) -> list[str]:
-    """``[[objects]]`` the run would load (ray-traced sea clutter) and cannot: a missing
-    or unreadable file, a CUDA variant without a CUDA GPU."""
-    if not (scene.radar.sea_clutter and scene.tracing.mode == "raytraced"):
-        return []
+    """``[[objects]]`` the run would load and cannot (a missing or unreadable file), and a
+    ``[tracing] variant`` that cannot run here (a CUDA variant without a CUDA GPU).
+
+    The run loads every object for a ray-traced sea (occluders), and every object as soon
+    as one has ``scatterer = true`` (the hulls' echoes, whatever the facet mode:
+    :func:`seaecho.build.build_hulls`).
+    """
+    from .backend import check_variant
+
     out = []
+    try:
+        check_variant(scene.tracing.variant)
+    except ValueError as exc:
+        out.append(f"[tracing].variant = {short_repr(scene.tracing.variant)}: {exc}")
+    raytraced = scene.radar.sea_clutter and scene.tracing.mode == "raytraced"
+    if not (raytraced or any(o.scatterer for o in scene.objects)):
+        return out
     for i, obj in enumerate(scene.objects):
         path = Path(base_dir) / obj.file
         if not path.is_file():
@@ -388,12 +363,38 @@ def object_problems(scene, base_dir) -> list[str]:
             load_object(obj, base_dir=str(base_dir), ship=scene.ship)
         except ValueError as exc:
             out.append(f"[[objects]] #{i} ({obj.name}): {short_repr(str(exc), 300)[1:-1]}")
-    if scene.tracing.variant.startswith("cuda"):
-        from .tracing.variant import cuda_available
+    return out
 
-        if not cuda_available():
-            out.append(f"[tracing].variant = {short_repr(scene.tracing.variant)}: no CUDA GPU "
-                       "is usable here; use 'llvm_ad_mono_polarized'")
+
+def image_problems(scene) -> list[str]:
+    """``[image]`` the run cannot focus after writing the raw data (which would leave the
+    raw file and no image): no extent given and nothing that sets a default one (no sea
+    clutter, no targets); more pixels than the focusing takes; more looks than pixels."""
+    from .imaging.focus import MAX_PIXELS
+    from .resources import image_shape
+
+    cfg = scene.image
+    if cfg is None:
+        return []
+    if cfg.extent_m is None and not (scene.radar.sea_clutter or scene.targets):
+        return ["[image].extent_m: needed when there is neither sea clutter nor [[targets]] "
+                "(the default image is the sea tile, or the targets' box); give (x_min, "
+                "x_max, y_min, y_max) [m]"]
+    ny, nx = image_shape(scene)
+    out = []
+    if ny * nx > MAX_PIXELS:
+        out.append(f"[image].pixel_m = {short_repr(cfg.pixel_m)}, extent_m = "
+                   f"{short_repr(cfg.extent_m)}: {ny} x {nx} pixels, more than {MAX_PIXELS}; "
+                   "use a larger pixel or a smaller extent (without them: the sea tile or "
+                   "the targets' box at a quarter of the range resolution)")
+    from .resources import window_size
+
+    if window_size(scene)[0] < 2:
+        out.append("[image]: the receive window holds fewer than 2 samples per pulse: "
+                   "nothing to focus (widen window_start_m / window_end_m)")
+    if cfg.looks[0] > ny or cfg.looks[1] > nx:
+        out.append(f"[image].looks = {short_repr(cfg.looks)}: more looks (azimuth y, range "
+                   f"x) than the image's {ny} x {nx} pixels")
     return out
 
 
@@ -408,12 +409,13 @@ def receive_problems(scene) -> list[str]:
 
 def run_problems(scene, base_dir=".") -> list[str]:
     """Every problem of this module for a scene that has [radar] and [transmitter]."""
-    return (two_scale_problems(scene) + receive_problems(scene)
+    return (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
             + object_problems(scene, base_dir) + geometry_problems(scene))
 
 
 def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = None,
-              figures: bool = True) -> str:
+              figures: bool = True, workers: int | None = None,
+              block: int | None = None) -> str:
     """Refuse a scene `seaecho run` cannot simulate; return its resource estimate.
 
     The cheap checks and the memory estimate (``seaecho.resources``) come first, so that
@@ -432,18 +434,22 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
         Memory limit [GB] (``--max-memory-gb``); default the environment's.
     figures : bool
         The run draws figures.
+    workers, block : int, optional
+        ``--workers`` (a local cluster of that many processes) and ``--block-pulses``.
 
     Returns
     -------
     str
         One line: estimated peak memory against the limit, and run time.
     """
+
     from .resources import check_memory
 
-    problems = two_scale_problems(scene) + receive_problems(scene) + object_problems(
-        scene, base_dir)
+    problems = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
+                + object_problems(scene, base_dir))
     try:
-        _, line = check_memory(scene, source, max_memory_gb, figures)
+        _, line = check_memory(scene, source, max_memory_gb, figures, workers=workers,
+                               block=block, base_dir=base_dir)
     except SceneError as exc:
         raise SceneError("\n".join([str(exc), *problems])) from None
     problems += geometry_problems(scene)
@@ -462,6 +468,7 @@ __all__ = [
     "crest_bound",
     "exhaustive_min_distance",
     "geometry_problems",
+    "image_problems",
     "min_distance",
     "min_height",
     "nominal_segments",

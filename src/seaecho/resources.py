@@ -52,6 +52,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+from numpy.typing import NDArray
 from scipy.fft import next_fast_len
 
 from .config import SceneError
@@ -72,6 +73,13 @@ M_GM = 200.0  #: per Gauss-Markov step and perturbed platform
 M_TARGET = 400.0  #: per point target
 M_ANTENNA = 40.0  #: per n_theta^2 of a rectangular aperture's normalisation
 M_ANTENNA_GRID = 200 * MiB  #: its integration grid (chunks of 2e6 directions)
+M_SBR_BATCH = 300 * MiB  #: a hull trace's batch of 2^18 rays (about 1 kB per ray)
+M_SBR_CELL = 24.0  #: per cell of a hull trace's launch grid (coverage mask, indices)
+M_CENTRE = 200.0  #: per scattering centre of a cached hull signature
+M_PIXEL = 120.0  #: per image pixel (calibration maps, coverage, products' temporaries)
+M_PIXEL_CHANNEL = 160.0  #: per image pixel and channel (accumulator, image, sigma0...)
+M_UPSAMPLED = 40.0  #: per upsampled sample of the focusing's block of pulses
+M_IMAGE_FIGURE = 60.0  #: per image pixel and figure panel drawn
 #: Margin on the sum, so that the estimate stays above the measured peak.
 SAFETY = 1.15
 
@@ -86,11 +94,18 @@ T_PULSE = 2.0e-2
 T_FIGURE = 4.0e-6  #: per pulse, channel and sample drawn
 T_ANTENNA = 3.0e-10  #: per n_theta^3 (Gauss-Legendre nodes: eigenvalues)
 T_ANTENNA_GRID = 2.0e-7  #: per direction of the normalisation grid
+T_RAY = 6.0e-6  #: per launch-grid cell of a hull trace (docs/ship.md: ~12 us per hit)
+T_BACKPROJECTION = 2.0e-8  #: per pixel, pulse and channel of the focusing
 
 #: Environment variable that sets the memory limit [GB].
 ENV_LIMIT = "SEAECHO_MAX_MEMORY_GB"
-#: Pulses buffered per write by ``Simulation.run``.
-CHUNK = 16
+#: Most pulses per block of work (``seaecho.io.run.block_size``: at most twice its
+#: target of 16) when ``--block-pulses`` is not given.
+CHUNK = 32
+#: Hull signatures a run keeps (``seaecho.tracing.hull_echo``).
+SIGNATURE_CACHE = 256
+#: Pulses per block of the focusing (``seaecho.imaging.focus``).
+IMAGE_BLOCK = 32
 
 
 @dataclass(frozen=True)
@@ -108,8 +123,10 @@ class Estimate:
         ``drivers``.
     drivers : dict
         For each term, the scene fields that set it.
-    n_samples, n_fft, n_pulses, channels, cells : int
-        The sizes that enter the model.
+    n_samples, n_fft, n_pulses, channels, cells, pixels : int
+        The sizes that enter the model (``pixels``: of the ``[image]``).
+    hull_rays : float
+        Launch-grid cells over every trace of the hulls (:class:`HullSize`).
     """
 
     peak_bytes: float
@@ -121,6 +138,8 @@ class Estimate:
     n_pulses: int = 0
     channels: int = 0
     cells: int = 0
+    pixels: int = 0
+    hull_rays: float = 0.0
 
     def largest_terms(self, n: int = 2) -> list[str]:
         """Names of the ``n`` largest terms (the process base left out; the antenna
@@ -129,11 +148,51 @@ class Estimate:
         return [k for v, k in sorted(named, reverse=True)[:n] if v > 0]
 
 
+# --------------------------------------------------------------------- nominal tracks
+#: Perturbation bound in standard deviations (P(|x| > 8 sigma) = 1.2e-15 per sample).
+PERTURBATION_SIGMAS = 8.0
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A piece of a nominal track: position c + v t for t in [t_a, t_b] [s]."""
+
+    t_a: float
+    t_b: float
+    c: NDArray[np.float64]  #: position extrapolated to t = 0 [m]
+    v: NDArray[np.float64]  #: velocity [m/s]
+
+
+def nominal_segments(cfg) -> list[Segment]:
+    """Segments of a ``[transmitter]`` / ``[receiver]`` section's nominal track.
+
+    The first and last segments extend to -inf / +inf, as ``seaecho.radar.platforms``
+    extrapolates them.
+    """
+    if cfg.motion in ("fixed", "linear"):
+        v = np.array(cfg.velocity_m_s if cfg.motion == "linear" else (0.0, 0.0, 0.0))
+        return [Segment(-np.inf, np.inf, np.array(cfg.position_m, dtype=float), v)]
+    t = np.array(cfg.waypoint_times_s, dtype=float)
+    p = np.array(cfg.waypoint_positions_m, dtype=float)
+    out = []
+    for i in range(t.size - 1):
+        v = (p[i + 1] - p[i]) / (t[i + 1] - t[i])
+        t_a = -np.inf if i == 0 else t[i]
+        t_b = np.inf if i == t.size - 2 else t[i + 1]
+        out.append(Segment(t_a, t_b, p[i] - v * t[i], v))
+    return out
+
+
+def perturbation_bound(cfg) -> float:
+    """Bound on how far the true track strays from the nominal one [m] (8 sigma)."""
+    if cfg.perturbation is None:
+        return 0.0
+    return PERTURBATION_SIGMAS * float(np.linalg.norm(cfg.perturbation.position_sigma_m))
+
+
 # ----------------------------------------------------------------- receive window
 def _nominal_position(cfg, t: float) -> np.ndarray:
     """Nominal position of a platform section at time t [m] (``platforms`` semantics)."""
-    from .preflight import nominal_segments
-
     segs = nominal_segments(cfg)
     seg = next((s for s in segs if s.t_a <= t <= s.t_b), segs[-1])
     return seg.c + seg.v * t
@@ -146,7 +205,6 @@ def window_size(scene) -> tuple[int, int, int]:
     (parity-tested), on the nominal tracks; a perturbed track widens the window by its
     8-sigma bound on each side, so the estimate stays an upper bound.
     """
-    from .preflight import perturbation_bound
     from .radar.echo import GUARD
 
     r = scene.radar
@@ -221,7 +279,121 @@ def antenna_nodes(scene) -> list[tuple[str, int]]:
     return out
 
 
-def estimate(scene, figures: bool = True) -> Estimate:
+def nominal_positions(cfg, t: NDArray) -> NDArray[np.float64]:
+    """Nominal positions of a platform section at times ``t`` (P,) [m], shape (P, 3)."""
+    t = np.asarray(t, dtype=float)
+    out = np.empty(t.shape + (3,))
+    segs = nominal_segments(cfg)
+    for k, seg in enumerate(segs):
+        m = (t >= seg.t_a) & ((t < seg.t_b) | (k == len(segs) - 1))
+        out[m] = seg.c + np.multiply.outer(t[m], seg.v)
+    return out
+
+
+@dataclass(frozen=True)
+class HullSize:
+    """Sizes of one hull's SBR traces (``[[objects]]`` with ``scatterer = true``).
+
+    Attributes
+    ----------
+    name : str
+    radius : float
+        Bounding radius of its meshes about their origin [m].
+    grid : float
+        Launch-grid cells per launch, (2 radius / delta)^2 with delta = lambda / n the
+        ray spacing: the rectangle that holds the hull's projection, at most.
+    launches : int
+        Launches per trace: 1, or 2 with sea multipath (from T and from its image).
+    traces : int
+        Traces over the run (``seaecho.targets.centres.refresh_schedule`` on the nominal
+        tracks).
+    centres : float
+        Bound on the scattering centres of one trace: 4 path kinds x (2 radius / cell)^2.
+    """
+
+    name: str
+    radius: float
+    grid: float
+    launches: int
+    traces: int
+    centres: float
+
+
+def hull_sizes(scene, base_dir=".") -> list[HullSize]:
+    """:class:`HullSize` of each scatterer object whose files load (the others are
+    reported by ``seaecho.preflight.object_problems``)."""
+    if not any(o.scatterer for o in scene.objects):
+        return []
+    from .targets.centres import refresh_schedule
+    from .tracing.scene import load_object
+
+    r = scene.radar
+    lam = C0 / r.carrier_frequency_hz
+    t = r.start_time_s + np.arange(r.n_pulses) / r.prf_hz
+    tx = nominal_positions(scene.transmitter, t)
+    rx = nominal_positions(scene.receiver or scene.transmitter, t)
+    out = []
+    for cfg in scene.objects:
+        if not cfg.scatterer:
+            continue
+        try:
+            shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship)
+        except (ValueError, OSError):
+            continue
+        o = shapes[0]
+        radius = max(float(np.linalg.norm(s.world_vertices(0.0) - o.position, axis=-1).max())
+                     for s in shapes)
+        c = o.position + np.multiply.outer(t, o.velocity)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ut = (tx - c) / np.linalg.norm(tx - c, axis=-1, keepdims=True)
+            ur = (rx - c) / np.linalg.norm(rx - c, axis=-1, keepdims=True)
+        try:
+            traces = len(refresh_schedule(ut, ur, t, np.deg2rad(cfg.signature_refresh_deg),
+                                          cfg.signature_refresh_s))
+        except ValueError:
+            traces = r.n_pulses
+        delta = lam / cfg.rays_per_wavelength
+        out.append(HullSize(cfg.name, radius, (2.0 * radius / delta) ** 2,
+                            2 if cfg.sea_multipath else 1, traces,
+                            4.0 * (2.0 * radius / cfg.signature_cell_m) ** 2))
+    return out
+
+
+def image_shape(scene) -> tuple[int, int]:
+    """(ny, nx) pixels of the ``[image]`` grid ((0, 0) without one, or without an extent):
+    its extent, or the default the focusing takes (the sea tile, else the targets' box
+    plus 20 range resolutions), over the pixel size (default a quarter of the slant-range
+    resolution c / (2 B)); the arithmetic of ``seaecho.imaging.focus.ImageGrid``."""
+    cfg = scene.image
+    if cfg is None:
+        return 0, 0
+    r = scene.radar
+    w = r.waveform
+    bandwidth = w.bandwidth_hz if w.kind == "lfm" else 1.0 / w.duration_s
+    pixel = cfg.pixel_m if cfg.pixel_m is not None else C0 / (8.0 * bandwidth)
+    if cfg.extent_m is not None:
+        x0, x1, y0, y1 = cfg.extent_m
+    elif r.sea_clutter:
+        lx, ly = scene.sea.size_m
+        x0, x1, y0, y1 = -0.5 * lx, 0.5 * lx, -0.5 * ly, 0.5 * ly
+    elif scene.targets:
+        p = np.array([g.position_m for g in scene.targets], dtype=float)
+        m = 20.0 * C0 / (2.0 * bandwidth)
+        x0, x1 = p[:, 0].min() - m, p[:, 0].max() + m
+        y0, y1 = p[:, 1].min() - m, p[:, 1].max() + m
+    else:
+        return 0, 0  # no extent to focus on: seaecho.preflight.image_problems
+    return max(1, int(round((y1 - y0) / pixel))), max(1, int(round((x1 - x0) / pixel)))
+
+
+def image_pixels(scene) -> int:
+    """Pixels of the ``[image]`` grid (:func:`image_shape`), 0 without one."""
+    ny, nx = image_shape(scene)
+    return ny * nx
+
+
+def estimate(scene, figures: bool = True, *, workers: int | None = None,
+             block: int | None = None, base_dir=".") -> Estimate:
     """Peak memory and run time of ``seaecho run`` for a scene (eq M1).
 
     Parameters
@@ -230,39 +402,68 @@ def estimate(scene, figures: bool = True) -> Estimate:
         With [radar] and [transmitter].
     figures : bool
         The run draws its figures (``seaecho run`` without ``--no-figures``).
+    workers : int, optional
+        ``--workers N``: a local cluster of N worker processes, each holding the
+        simulation and a block of pulses (no figures, no image), besides this process.
+    block : int, optional
+        ``--block-pulses``: pulses per block (default at most :data:`CHUNK`).
+    base_dir : path
+        Folder of the scene file (the hulls' meshes are read to size their traces).
     """
     r = scene.radar
     sea = r.sea_clutter
     mode = scene.tracing.mode
-    nx, ny = scene.sea.grid_shape
+    ny, nx = scene.sea.shape
     cells = nx * ny if sea else 0
     n_s, n_fft, _ = window_size(scene)
     c = len(r.channels)
     n_p = r.n_pulses
-    chunk = min(CHUNK, n_p)
+    chunk = min(block or CHUNK, n_p)
     k = len(scene.targets)
     gm = gauss_markov_steps(scene)
+    hulls = hull_sizes(scene, base_dir)
+    pixels = image_pixels(scene)
+    raytracing = sea and mode == "raytraced" or bool(hulls)
     terms = {
-        "process": M0_SEA[mode] if sea else M0_TARGETS,
+        "process": (M0_SEA["raytraced" if raytracing else mode] if sea or hulls
+                    else M0_TARGETS),
         "sea grid": M_CELL[mode] * cells,
         "receive window": M_FFT * c * n_fft + M_WRITE * c * chunk * n_s,
         "pulses": M_PULSE * n_p,
         "figures": M_FIGURE * n_p * c * n_s if figures else 0.0,
         "perturbation": M_GM * gm,
         "targets": M_TARGET * k,
+        "hull traces": (max((M_SBR_BATCH + M_SBR_CELL * h.grid for h in hulls), default=0.0)
+                        + sum(M_CENTRE * h.centres * min(h.traces, SIGNATURE_CACHE)
+                              for h in hulls)),
     }
+    worker = sum(terms.values()) - terms["figures"]
+    if workers:
+        terms["workers"] = workers * worker
+    if pixels:
+        panels = 12 if scene.image.figures and figures else 0
+        up = IMAGE_BLOCK * c * scene.image.upsample * next_fast_len(n_s)
+        terms["image"] = (M_PIXEL * pixels + M_PIXEL_CHANNEL * c * pixels
+                          + M_UPSAMPLED * min(up, n_p * c * scene.image.upsample * n_fft)
+                          + M_IMAGE_FIGURE * panels * pixels)
     window_fields = ("[radar].sampling_rate_hz, [radar.waveform].bandwidth_hz and "
                      "duration_s, the window (window_start_m/window_end_m, or the tile "
                      "and targets it covers), [radar].channels")
     drivers = {
         "process": "(fixed)",
         "sea grid": "[sea].nx, [sea].ny ([radar].sea_clutter)",
-        "receive window": window_fields,
+        "receive window": window_fields + " (and --block-pulses)",
         "pulses": "[radar].n_pulses",
         "figures": "[radar].n_pulses x the receive window (use --no-figures)",
         "perturbation": "[transmitter/receiver.perturbation].step_s, [radar].n_pulses "
                         "and prf_hz",
         "targets": "[[targets]]",
+        "hull traces": "[[objects]] scatterer: the mesh's size against the ray spacing "
+                       "lambda / rays_per_wavelength, signature_cell_m, and the traces "
+                       "signature_refresh_deg / signature_refresh_s make",
+        "workers": "--workers (each worker holds the simulation and a block of pulses)",
+        "image": "[image].pixel_m and extent_m (pixels), [radar].channels, "
+                 "[image].upsample, figures",
     }
     nodes = antenna_nodes(scene)
     n_theta = max((n for _, n in nodes), default=0)
@@ -275,10 +476,16 @@ def estimate(scene, figures: bool = True) -> Estimate:
     per_pulse = T_PULSE + T_TARGET * k + T_FFT * c * n_fft * math.log2(max(n_fft, 2))
     if sea:
         per_pulse += T_CELL[mode] * cells
+    per_pulse += sum(T_TARGET * h.centres for h in hulls)
     start = T_START[mode] + T_CELL_SETUP[mode] * cells if sea else T_START["targets"]
-    time_s = start + n_p * per_pulse + (T_FIGURE * n_p * c * n_s if figures else 0.0) + sum(
+    pulses = n_p * per_pulse + sum(T_RAY * h.grid * h.launches * h.traces for h in hulls)
+    if workers:
+        pulses /= workers
+    time_s = start + pulses + (T_FIGURE * n_p * c * n_s if figures else 0.0) + sum(
         T_ANTENNA * n**3 + T_ANTENNA_GRID * 2 * n**2 for _, n in nodes)
-    return Estimate(peak, time_s, terms, drivers, n_s, n_fft, n_p, c, cells)
+    time_s += T_BACKPROJECTION * pixels * n_p * c
+    rays = sum(h.grid * h.launches * h.traces for h in hulls)
+    return Estimate(peak, time_s, terms, drivers, n_s, n_fft, n_p, c, cells, pixels, rays)
 
 
 # --------------------------------------------------------------------------- limits
@@ -360,16 +567,21 @@ def describe(est: Estimate, limit: float | None, source: str) -> str:
              f" channels x {est.n_samples} samples")
     if est.cells:
         text += f", {est.cells} sea grid points"
+    if est.hull_rays:
+        text += f", {est.hull_rays:.3g} hull rays"
+    if est.pixels:
+        text += f", {est.pixels} image pixels"
     return text + ")"
 
 
 def check_memory(scene, source: str, max_memory_gb: float | None = None,
-                 figures: bool = True) -> tuple[Estimate, str]:
+                 figures: bool = True, **kw) -> tuple[Estimate, str]:
     """The estimate and its one-line description; :class:`SceneError` if it cannot fit.
 
     The message names the largest terms of eq (M1) and the fields that drive them.
+    Keywords go to :func:`estimate` (``workers``, ``block``, ``base_dir``).
     """
-    est = estimate(scene, figures=figures)
+    est = estimate(scene, figures=figures, **kw)
     limit, where = memory_limit(max_memory_gb)
     line = describe(est, limit, where)
     if not (math.isfinite(est.peak_bytes) and (limit is None or est.peak_bytes <= limit)):
@@ -392,6 +604,12 @@ __all__ = [
     "estimate",
     "antenna_nodes",
     "gauss_markov_steps",
+    "hull_sizes",
+    "image_pixels",
+    "image_shape",
+    "nominal_positions",
+    "nominal_segments",
+    "perturbation_bound",
     "memory_limit",
     "window_size",
 ]

@@ -4,7 +4,7 @@ Every random draw in seaecho comes from a :class:`numpy.random.Generator` made h
 scene file and a seed give the same output bit for bit. Draws that belong to a pulse or a
 time step come from ``generator(seed, stream, index)``: a :class:`~numpy.random.SeedSequence`
 with a spawn key ``(stream id, index...)``, so pulses can be computed in any order, in
-parallel or on other machines, with identical results (``../shared/DESIGN.md``).
+parallel or on other machines, with identical results (docs/conventions.md).
 """
 
 from __future__ import annotations

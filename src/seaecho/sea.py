@@ -1,8 +1,8 @@
 """The sea of a scene: a random wind sea plus the ship's wake, at any time.
 
 This joins the ocean stage (:mod:`seaecho.ocean`) and the wake stage
-(:mod:`seaecho.wake`) for a :class:`~seaecho.config.Scene`; later stages (tracing, radar)
-take its :class:`SurfaceState` arrays.
+(:mod:`seaecho.wake`); :func:`seaecho.build.build_sea` makes the sea of a scene. Later
+stages (tracing, radar) take its :class:`SurfaceState` arrays.
 """
 
 from __future__ import annotations
@@ -68,21 +68,6 @@ class Sea:
     @property
     def y(self) -> NDArray[np.float64]:
         return self.surface.y
-
-    @classmethod
-    def from_scene(cls, scene) -> Sea:
-        """The sea of a scene: surface from the "surface" stream of its seed, plus wake."""
-        surface = SeaSurface.from_scene(scene)
-        ship = None
-        kelvin = False
-        length = None
-        if scene.ship is not None:
-            from .wake import Ship
-
-            ship = Ship.from_config(scene.ship)
-            kelvin = scene.ship.kelvin_wake
-            length = scene.ship.turbulent_wake_length_m
-        return cls(surface, ship, kelvin_wake=kelvin, turbulent_wake_length=length)
 
     def state(self, t: float = 0.0) -> SurfaceState:
         """Sea + wake at time ``t`` [s]."""

@@ -1,10 +1,13 @@
 """The simulation: every stage joined, pulse by pulse, streamed to a netCDF file.
 
-This is the only module that knows every stage (``shared/DESIGN.md``):
+This is the only module that knows every stage (docs/design.md). Its stage models come
+from the builder (:func:`seaecho.build.build_simulation`), the only code that reads the
+scene:
 
 ``Sea`` (ocean + wake) -> ``FacetEngine`` (ray-traced or analytic facets) ->
-``scattering.facet`` (per-facet 2x2 amplitudes with speckle) -> ``RadarSystem`` (antennas,
-radar equation, time of flight, NUFFT accumulation, noise) -> range compression -> file.
+``scattering.facet`` (per-facet 2x2 amplitudes with speckle, ``SeaModel``) ->
+``RadarSystem`` (antennas, radar equation, time of flight, NUFFT accumulation, noise) ->
+range compression -> file (:mod:`seaecho.io.run`).
 
 Per-pulse work is a pure function of (scene, pulse index): :meth:`Simulation.pulse`.
 Pulse p is emitted at t_p = t_start + p / PRF. The sea surface used by pulse p is that of
@@ -17,27 +20,30 @@ noise is drawn per pulse (``"noise"`` stream, pulse index).
 :meth:`Simulation.run` writes pulses to a temporary file beside the destination as they
 are computed (memory bounded by one block of pulses) and renames it into place at the end;
 an exception or an interrupt removes it (``seaecho.io.dataset.atomic_path``).
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
 
-import contextlib
 import os
-import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .constants import C0
+from .build import SimulationModels, build_simulation
+from .conventions import CHANNELS
 from .guards import check_dataset, check_pulse
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import generator
 
 #: Names of the 2x2 scattering channels, (h, v) order flattened.
-POLARISATIONS = ("HH", "HV", "VH", "VV")
+POLARISATIONS = CHANNELS
 
 
 @dataclass(frozen=True)
@@ -48,16 +54,31 @@ class SeaEcho:
     ----------
     echo : ScattererEcho
         Delays and amplitudes of the visible facets.
-    sigma : ndarray (N, 4) or None
-        Per-facet scattering coefficients sigma_mn (HH, HV, VH, VV) [m^2/m^2] times the
-        visibility, all facets, when asked for.
-    facets : seaecho.geometry.facets.Facets
-        The facets of the pulse.
+    sigma_facet : ndarray (N, 4) or None
+        Per-facet scattering coefficients sigma_mn (HH, HV, VH, VV) per unit *facet*
+        area [m^2/m^2] times the facet's visibility, all facets, when asked for:
+        ``area * sigma_facet`` is the facet's mean radar cross section [m^2].
+    facets : seaecho.geometry.facets.Facets or None
+        The facets of the pulse (None from the fused kernel, ``radar.resident``).
     """
 
     echo: ScattererEcho
-    sigma: NDArray[np.float64] | None
+    sigma_facet: NDArray[np.float64] | None
     facets: object
+
+    def sigma0_cells(self, cell_area: float) -> NDArray[np.float64]:
+        """Normalised radar cross section per unit *horizontal* area of each grid cell,
+        shape (4, ny - 1, nx - 1) [m^2/m^2]: the two triangles' ``area * sigma_facet``
+        summed and divided by the cell's horizontal area ``cell_area`` [m^2].
+
+        Its mean over the cells is the scene's NRCS sigma0 = <sigma> per unit horizontal
+        area, the quantity a radar measures and ``seaecho sigma`` predicts.
+        """
+        if self.sigma_facet is None:
+            raise ValueError("sea_echo(..., sigma=True) computes sigma_facet")
+        f = self.facets
+        rcs = self.sigma_facet * f.area[:, None]  # [m^2] per facet
+        return np.moveaxis(rcs.reshape(f.grid_shape + (4,)).sum(axis=2), -1, 0) / cell_area
 
 
 class Simulation:
@@ -66,61 +87,58 @@ class Simulation:
     Parameters
     ----------
     scene : seaecho.config.Scene
-        Needs ``[radar]`` and ``[transmitter]``.
+        Needs ``[radar]`` and ``[transmitter]``; read only by the builder.
     base_dir : path
         Folder of the scene file (``[[objects]]`` paths are relative to it).
     """
 
     def __init__(self, scene, base_dir: str | os.PathLike = ".") -> None:
-        self.scene = scene
-        self.radar = RadarSystem(scene)
-        self.config = scene.radar
-        self.block = scene.radar.sea_update_pulses
-        self.sea = None
+        self._setup(build_simulation(scene, base_dir))
+
+    @classmethod
+    def from_models(cls, models: SimulationModels) -> Simulation:
+        """A simulation of prebuilt stage models (:func:`seaecho.build.build_simulation`)."""
+        sim = cls.__new__(cls)
+        sim._setup(models)
+        return sim
+
+    def _setup(self, models: SimulationModels) -> None:
+        self.models = models
+        #: Mitsuba variant of the Dr.Jit kernels (``[tracing] variant``, checked by the builder)
+        self.variant = models.variant
+        self.radar = RadarSystem(models.radar)
+        self.block = models.radar.sea_update_pulses
+        #: the sea (surface + wake), None when sea clutter is off
+        self.sea = models.sea
+        #: the sea at the radar carrier: k, eps_r, sub-facet slopes, Bragg table
+        self.sea_model = models.sea_model
         self.engine = None
+        self._resident = None
         self._state_cache: tuple[float, object] | None = None
         # Per-sea-state quantities, computed once per block of held pulses and reused by
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
         # depends only on (scene, pulse): the cache holds what the block index determines.
         self._block_cache: tuple[int, dict] | None = None
-        if self.config.sea_clutter:
-            self._init_sea(base_dir)
+        if self.sea is not None:
+            from .tracing.engine import FacetEngine
+
+            r = models.radar
+            tx, rx = r.tx, r.rx
+            rx_fn = None if rx is tx else (lambda t: rx.state(t).position)
+            # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
+            self.engine = FacetEngine.from_model(models.tracing, self.surface_state_at,
+                                                 lambda t: tx.state(t).position, rx_fn)
+            from .radar.resident import resident_sea  # the fused pulse, where it applies
+
+            self._resident = resident_sea(self.radar, models.tracing, self.sea_model)
+        # Echoes of the [[objects]] with scatterer = true (docs/ship.md), or None
+        from .tracing.hull_echo import HullEchoes
+
+        self.hulls = HullEchoes.from_model(
+            models.hulls, self.radar, variant=self.variant,
+            surface=self.surface_state_at if self.sea is not None else None)
 
     # --------------------------------------------------------------------- the sea
-    def _init_sea(self, base_dir) -> None:
-        from .ocean.seawater import sea_water_permittivity
-        from .ocean.twoscale import unresolved_statistics
-        from .sea import Sea
-        from .tracing.engine import FacetEngine
-
-        scene = self.scene
-        self.sea = Sea.from_scene(scene)
-        self.engine = FacetEngine.from_scene(scene, base_dir=base_dir, sea=self.sea)
-        # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
-        self.engine.surface_state = self.surface_state_at
-        self.k = 2.0 * np.pi / self.radar.wavelength
-        self.eps_r = complex(sea_water_permittivity(self.radar.carrier,
-                                                    scene.sea.temperature_c,
-                                                    scene.sea.salinity_psu))
-        lx, ly = scene.sea.size_m
-        nx, ny = scene.sea.grid_shape
-        # Sub-facet slopes: waves between the grid's Nyquist and k/3 tilt the specular
-        # points (two-scale cut-off of Brown 1978); shorter ones are the Bragg roughness.
-        self.unresolved = unresolved_statistics(self.sea.spectrum, lx / nx, ly / ny,
-                                                self.k / 3.0)
-        self.wind_direction = np.deg2rad(scene.sea.wind_direction_deg)
-        # Bragg roughness: the height spectrum of the waves the grid does not resolve,
-        # tabulated once (it enables the scattering stage's Dr.Jit kernel)
-        from .scattering.spectrum_table import BraggSpectrumTable
-
-        self.bragg_spectrum = BraggSpectrumTable(self.sea.spectrum.height_spectrum,
-                                                 k_min=self.unresolved.k_cut,
-                                                 k_max=20.0 * self.k)
-        # Validity of the Bragg part, checked once here rather than at every pulse
-        from .scattering.twoscale import check_spm_validity
-
-        check_spm_validity(self.k, self.unresolved.height_variance)
-
     def surface_time(self, pulse: int) -> float:
         """Time of the sea surface used by ``pulse`` [s] (start of its block)."""
         return float(self.radar.emission_time((pulse // self.block) * self.block))
@@ -150,9 +168,11 @@ class Simulation:
 
         block = pulse // self.block
         if self._block_cache is None or self._block_cache[0] != block:
-            rng = generator(self.scene.run.seed, "speckle", block)
+            rng = generator(self.radar.seed, "speckle", block)
             q = {"damping": to_facets(state.wake_mask).reshape(-1),
                  "draws": speckle_draws(n_facets, rng)}
+            for a in (q["damping"], *q["draws"]):  # held: kept on the device
+                a.setflags(write=False)
             self._block_cache = (block, q)
         return self._block_cache[1]
 
@@ -174,31 +194,35 @@ class Simulation:
 
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
+        if self._resident is not None and not sigma:  # one kernel, the same numbers
+            held = self._block_quantities(pulse, st, self._resident.n_facets(st))
+            _, *hidden = self.engine.occlusion(geo.time, st)
+            echo = self._resident.echo(geo, st, hidden, held["draws"], held["damping"])
+            return SeaEcho(echo, None, None)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility
         held = self._block_quantities(pulse, st, vis.size)
         damping = held["damping"]
-        un = self.unresolved
         # All facets, so that facet j always gets the j-th speckle draw of its block
         # (visibility may change from pulse to pulse within a block). Eq P4 of
         # scattering.facet: |a|^2 is the facet's RCS [m^2]; visibility weights it. The
         # draws are the block's (drawn once per held surface); eqs P1-P4 run in one kernel
         args = (facets.n_i, facets.n_s, facets.normal)
-        model = (self.k, self.eps_r, self.bragg_spectrum, un.mss_upwind, un.mss_crosswind,
-                 self.wind_direction)
+        model = self.sea_model.facet_model
         amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,
                                         draws=held["draws"], wake_damping=damping,
-                                        local=facets)
+                                        local=facets, variant=self.variant)
         visible = vis > 0
         if visible.all():  # the usual case: no copies
             pos, vel = facets.centroid, facets.velocity
         else:
             pos, vel, amp = facets.centroid[visible], facets.velocity[visible], amp[visible]
-        echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2))
+        echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2),
+                                         variant=self.variant)
         sig = None
         if sigma:
-            sig = facet_terms(*args, *model, wake_damping=damping,
-                              local=facets).sigma() * vis[:, None]
+            sig = facet_terms(*args, *model, wake_damping=damping, local=facets,
+                              variant=self.variant).sigma() * vis[:, None]
         return SeaEcho(echo, sig, facets)
 
     # ------------------------------------------------------------------- one pulse
@@ -210,187 +234,125 @@ class Simulation:
         echoes = []
         if self.sea is not None:
             echoes.append(self.sea_echo(pulse, geo).echo)
-        t = self.radar.target_echo(geo)
+        t = self.radar.target_echo(geo, variant=self.variant)
         if t is not None:
             echoes.append(t)
+        if self.hulls is not None:
+            echoes += self.hulls.echoes(geo, pulse)
         raw = self.radar.receive(pulse, echoes)
         check_pulse(self, pulse, raw, echoes)  # NaN/Inf: NonFiniteEchoError (guards.py)
         return raw
 
+    def pulses(self, start: int, stop: int) -> tuple[NDArray[np.complex128],
+                                                     NDArray[np.complex128]]:
+        """Raw and range-compressed samples of pulses ``start`` to ``stop - 1``, each
+        (stop - start, channels, fast_time) [sqrt(W)]: :meth:`pulse` and :meth:`compress`."""
+        raw = np.stack([self.pulse(p) for p in range(start, stop)])
+        return raw, self.compress(raw)
+
+    def block_edges(self) -> NDArray[np.int64]:
+        """Pulse indices at which the held sea surface or the occlusion refresh time
+        changes, with 0 and ``n_pulses``: the pulses between two edges share every
+        per-block cache (surface, speckle, wake damping, traced occlusion)."""
+        p = np.arange(self.radar.n_pulses)
+        change = np.diff(p // self.block, prepend=-1) != 0
+        tr = self.models.tracing
+        if self.engine is not None and tr.mode == "raytraced" and tr.refresh_interval_s > 0:
+            # tracing.engine.reference_time, vectorised
+            ref = np.floor(self.radar.emission_time(p) / tr.refresh_interval_s + 1e-9)
+            change |= np.diff(ref, prepend=ref[0] - 1.0) != 0
+        return np.append(np.flatnonzero(change), p.size)
+
     def compress(self, raw: NDArray[np.complex128]) -> NDArray[np.complex128]:
-        """Range-compressed samples with the scene's weighting (same shape as ``raw``)."""
-        c = self.config
-        return range_compress(raw, self.radar.waveform.samples, c.range_weighting,
-                              nbar=c.taylor_nbar, sidelobe_db=c.taylor_sidelobe_db)
+        """Range-compressed samples with the model's weighting (same shape as ``raw``)."""
+        m = self.models.radar
+        return range_compress(raw, self.radar.waveform.samples, m.range_weighting,
+                              nbar=m.taylor_nbar, sidelobe_db=m.taylor_sidelobe_db)
 
     # ------------------------------------------------------------------ the dataset
-    def static_dataset(self):
-        """Everything but the pulses: coordinates, tracks, surface, sigma maps, truth."""
-        import xarray as xr
+    def sea_truth(self) -> dict:
+        """Surface, wake and NRCS maps at the sigma-map pulse, and the ship's track.
 
-        from .io.dataset import scene_attrs
-
-        radar, scene = self.radar, self.scene
-        pulses = np.arange(radar.n_pulses)
-        t = radar.emission_time(pulses)
-        fast = radar.window.fast_time
-        coords = {
-            "pulse": ("pulse", pulses, {"long_name": "pulse index"}),
-            "time": ("pulse", t, {"units": "s", "long_name": "emission time"}),
-            "channel": ("channel", np.array(radar.channel_names),
-                        {"long_name": "receive port, transmit port"}),
-            "fast_time": ("fast_time", fast,
-                          {"units": "s", "long_name": "delay after emission"}),
-            "range": ("fast_time", 0.5 * C0 * fast,
-                      {"units": "m", "long_name": "c * delay / 2 (half bistatic path)"}),
-            "xyz": ("xyz", np.array(["x", "y", "z"])),
-        }
-        data = {}
-        for name, platform in (("tx", radar.tx), ("rx", radar.rx)):
-            true, nominal = platform.state(t), platform.nominal_state(t)
-            for kind, st in (("", true), ("_nominal", nominal)):
-                data[f"{name}_position{kind}"] = (("pulse", "xyz"), st.position,
-                                                  {"units": "m"})
-                data[f"{name}_velocity{kind}"] = (("pulse", "xyz"), st.velocity,
-                                                  {"units": "m s-1"})
-                data[f"{name}_attitude{kind}"] = (
-                    ("pulse", "angle"), st.attitude,
-                    {"units": "rad", "long_name": "yaw, pitch, roll"})
-        coords["angle"] = ("angle", np.array(["yaw", "pitch", "roll"]))
-        if scene.targets:
-            data["target_position"] = (
-                ("target", "xyz"), np.array([g.position_m for g in scene.targets]),
-                {"units": "m", "long_name": "target position at t = 0"})
-            data["target_velocity"] = (
-                ("target", "xyz"), np.array([g.velocity_m_s for g in scene.targets]),
-                {"units": "m s-1"})
-            s = np.stack([g.scattering_matrix().reshape(4) for g in scene.targets])
-            data["target_scattering"] = (("target", "polarisation"), s,
-                                         {"units": "m", "long_name": "s_mn, |s|^2 = RCS"})
-            coords["target"] = ("target", np.array([g.name or f"target{i}" for i, g in
-                                                    enumerate(scene.targets)]))
-        if self.sea is not None:
-            data.update(self._sea_truth())
-            coords.update(x=("x", self.sea.x, {"units": "m"}),
-                          y=("y", self.sea.y, {"units": "m"}))
-            dx, dy = np.diff(self.sea.x[:2])[0], np.diff(self.sea.y[:2])[0]
-            coords.update(x_cell=("x_cell", self.sea.x[:-1] + 0.5 * dx, {"units": "m"}),
-                          y_cell=("y_cell", self.sea.y[:-1] + 0.5 * dy, {"units": "m"}))
-        coords["polarisation"] = ("polarisation", np.array(POLARISATIONS))
-        data["transmitted_pulse"] = (
-            ("pulse_sample",), radar.waveform.samples,
-            {"units": "1", "long_name": "transmitted pulse samples s[n] (unit amplitude), "
-             "the matched filter's reference"})
-        attrs = scene_attrs(scene)
-        attrs.update({
-            "carrier_frequency_hz": radar.carrier,
-            "wavelength_m": radar.wavelength,
-            "sampling_rate_hz": radar.window.sampling_rate,
-            "prf_hz": radar.prf,
-            "transmit_power_w": radar.transmit_power,
-            "window_t0_s": radar.window.t0,
-            "waveform_bandwidth_hz": radar.waveform.bandwidth,
-            "waveform_duration_s": radar.waveform.duration,
-            "monostatic": int(radar.monostatic),
-            "sea_clutter": int(self.sea is not None),
-            "sea_update_pulses": self.block,
-            "sea_update_interval_s": self.block / radar.prf,
-            "tracing_mode": scene.tracing.mode,
-            "tracing_refresh_interval_s": scene.tracing.refresh_interval_s,
-            "sigma_map_pulse": self.config.sigma_map_pulse,
-            "range_weighting": self.config.range_weighting,
-            "raw_units": "sqrt(W): |raw|^2 is the received power [W]",
-        })
-        return xr.Dataset(data, coords=coords, attrs=attrs)
-
-    def _sea_truth(self) -> dict:
-        """Surface and per-facet sigma maps at the sigma-map pulse, and the ship track."""
-        p = self.config.sigma_map_pulse
+        Returns
+        -------
+        dict
+            ``state`` (the SurfaceState), ``sigma0`` (4, ny - 1, nx - 1) NRCS per unit
+            horizontal area of each cell [m^2/m^2], ``visibility`` (ny - 1, nx - 1) cell
+            mean, ``ship_position`` (pulses, 2) [m] or None.
+        """
+        p = self.models.radar.sigma_map_pulse
         st = self.surface_state(p)
         se = self.sea_echo(p, sigma=True)
-        f = se.facets
-        grid = se.sigma.reshape(f.grid_shape + (4,)).mean(axis=2)  # 2 triangles per cell
-        vis = f.as_grid("visibility").mean(axis=2)
-        data = {
-            "elevation": (("y", "x"), st.elevation,
-                          {"units": "m", "long_name": "sea + wake height at the "
-                           "sigma-map pulse's surface time"}),
-            "wake_elevation": (("y", "x"), st.wake_elevation, {"units": "m"}),
-            "wake_mask": (("y", "x"), st.wake_mask,
-                          {"units": "1", "long_name": "turbulent wake, 1 = Bragg damped"}),
-            "sigma0": (("polarisation", "y_cell", "x_cell"), np.moveaxis(grid, -1, 0),
-                       {"units": "m2 m-2", "long_name": "per-facet sigma_mn times "
-                        "visibility (cell mean) at the sigma-map pulse"}),
-            "visibility": (("y_cell", "x_cell"), vis, {"units": "1"}),
-        }
+        dx, dy = float(self.sea.x[1] - self.sea.x[0]), float(self.sea.y[1] - self.sea.y[0])
+        ship = None
         if self.sea.ship is not None:
-            s = self.scene.ship
-            heading = np.deg2rad(s.heading_deg)
             t = self.radar.emission_time(np.arange(self.radar.n_pulses))
-            pos = np.array(s.position_m)[None, :] + s.speed * t[:, None] * np.array(
-                [np.cos(heading), np.sin(heading)])
-            data["ship_position"] = (("pulse", "xy"), pos,
-                                     {"units": "m", "long_name": "hull centre (x, y)"})
-        return data
+            ship = self.sea.ship.position(0.0)[None, :] + t[:, None] * self.sea.ship.velocity
+        return {"state": st, "sigma0": se.sigma0_cells(dx * dy),
+                "visibility": se.facets.cell_mean("visibility"), "ship_position": ship}
+
+    def static_dataset(self):
+        """Everything but the pulses: coordinates, tracks, surface, NRCS maps, truth
+        (:func:`seaecho.io.run.run_dataset`)."""
+        from .io.run import run_dataset
+
+        truth = self.sea_truth() if self.sea is not None else None
+        tracing = self.models.tracing
+        # The hulls' centres at the sigma-map pulse and their RCS against pulse
+        hulls = (self.hulls.truth(self.models.radar.sigma_map_pulse)
+                 if self.hulls is not None else None)
+        ds = run_dataset(self.radar, self.models.attrs, truth=truth, extra=hulls,
+                         x=None if self.sea is None else self.sea.x,
+                         y=None if self.sea is None else self.sea.y,
+                         extra_attrs={
+                             "sea_update_pulses": self.block,
+                             "sea_update_interval_s": self.block / self.radar.prf,
+                             "tracing_mode": tracing.mode if tracing else "none",
+                             "tracing_refresh_interval_s":
+                                 tracing.refresh_interval_s if tracing else 0.0,
+                             "sigma_map_pulse": self.models.radar.sigma_map_pulse,
+                             "range_weighting": self.models.radar.range_weighting})
+        check_dataset(ds)  # NaN/Inf in tracks, surface, maps: NonFiniteEchoError
+        return ds
 
     # ------------------------------------------------------------------------ run
-    def run(self, path: str | os.PathLike, progress: bool = True, chunk: int = 16) -> Path:
-        """Simulate every pulse and write the dataset to ``path`` atomically.
+    def run(self, path: str | os.PathLike, progress: bool = True, chunk: int | None = None,
+            resume: bool = False) -> Path:
+        """Simulate every pulse in this process and write the dataset to ``path``.
+
+        A ``.zarr`` path gets a Zarr store written block by block and resumable
+        (:mod:`seaecho.io.zarr_run`); any other path a netCDF file written atomically.
+        :func:`seaecho.distributed.run` does the same on a Dask cluster, with the same
+        bytes.
 
         Parameters
         ----------
         path : path
-            Output netCDF file (h5netcdf, complex variables as HDF5 compounds).
+            Output netCDF file (h5netcdf, complex variables as HDF5 compounds) or Zarr
+            store (``*.zarr``).
         progress : bool
-            Show a tqdm progress bar.
-        chunk : int
-            Pulses buffered per write (memory: chunk x channels x samples x 32 bytes).
+            Show a tqdm progress bar over the pulses.
+        chunk : int, optional
+            Pulses per block (memory: chunk x channels x samples x 32 bytes; the Zarr
+            chunk along ``pulse``); default :func:`seaecho.io.run.block_size` of
+            :meth:`block_edges`.
+        resume : bool
+            Zarr only: continue an interrupted run of the same scene, computing only the
+            blocks it lacks.
 
         Returns
         -------
         Path
         """
-        import h5netcdf
-        from tqdm import tqdm
+        from .io.run import SerialBlocks, block_size, write_run
 
-        from .io.dataset import atomic_path
-
-        ds = self.static_dataset()
-        check_dataset(ds)  # NaN/Inf in tracks, surface, maps: NonFiniteEchoError
-        n_p, n_c, n_s = self.radar.n_pulses, len(self.radar.channels), self.radar.window.n_samples
-        chunk = max(1, min(chunk, n_p))
-        with atomic_path(path) as tmp, _quiet_invalid_netcdf():
-            ds.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=True)
-            del ds
-            with h5netcdf.File(tmp, "a", invalid_netcdf=True) as f:
-                raw_v = f.create_variable("raw", ("pulse", "channel", "fast_time"),
-                                          dtype=np.complex128, chunks=(1, n_c, n_s))
-                raw_v.attrs.update(units="sqrt(W)", long_name="complex baseband raw echo")
-                rc_v = f.create_variable("compressed", ("pulse", "channel", "fast_time"),
-                                         dtype=np.complex128, chunks=(1, n_c, n_s))
-                rc_v.attrs.update(units="sqrt(W)", long_name="range-compressed echo",
-                                  weighting=self.config.range_weighting)
-                buf = np.empty((chunk, n_c, n_s), dtype=np.complex128)
-                bar = tqdm(total=n_p, unit="pulse", disable=not progress, desc="seaecho run")
-                try:
-                    for start in range(0, n_p, chunk):
-                        stop = min(start + chunk, n_p)
-                        for i, p in enumerate(range(start, stop)):
-                            buf[i] = self.pulse(p)
-                            bar.update(1)
-                        raw_v[start:stop] = buf[: stop - start]
-                        rc_v[start:stop] = self.compress(buf[: stop - start])
-                finally:
-                    bar.close()
-        return Path(path)
-
-
-@contextlib.contextmanager
-def _quiet_invalid_netcdf():
-    """Silence h5netcdf's notice that complex variables are not classic netCDF-4."""
-    with warnings.catch_warnings():
-        warnings.filterwarnings("ignore", message=".*invalid netcdf features.*")
-        yield
+        size = block_size(self.block_edges(), chunk)
+        return write_run(path, self.static_dataset, identity=self.models.attrs,
+                         shape=(self.radar.n_pulses, len(self.radar.channels),
+                                self.radar.window.n_samples), block=size,
+                         runner=SerialBlocks(self.pulses),
+                         weighting=self.models.radar.range_weighting, progress=progress,
+                         resume=resume)
 
 
 __all__ = ["POLARISATIONS", "SeaEcho", "Simulation"]

@@ -2,6 +2,10 @@
 
 Every warning that seaecho emits derives from :class:`SeaechoWarning`, so users can filter
 them as one family (``warnings.simplefilter("ignore", SeaechoWarning)``) or one by one.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 

@@ -269,8 +269,8 @@ def test_non_finite_pulse_is_exit_2_with_no_file(tmp_path, capsys, monkeypatch):
 
     real = RadarSystem.target_echo
 
-    def echo(self, geometry):
-        e = real(self, geometry)
+    def echo(self, geometry, *, variant=None):
+        e = real(self, geometry, variant=variant)
         if geometry.time >= self.emission_time(2):
             e.amplitudes[:, 2] = np.nan
         return e
@@ -294,13 +294,15 @@ def test_depth_too_shallow_for_the_waves_is_refused(tmp_path, capsys):
 def test_pierson_moskowitz_significant_height():
     """H_s = 0.21 U19.5^2 / g (Pierson & Moskowitz 1964; Stewart 2008, eq 16.26), which
     sets the breaking depth H_s / 0.78 (McCowan 1894) of the depth check."""
+    from seaecho.build import sea_spectrum
     from seaecho.config import parse_scene
-    from seaecho.config.consistency import significant_height
     from seaecho.constants import G
+    from seaecho.ocean.limits import significant_height
 
-    sea = parse_scene({"sea": {"spectrum": "pierson-moskowitz", "wind_speed_m_s": 12.0,
-                               "size_x_m": 64.0, "nx": 16}}).sea
-    assert significant_height(sea) == pytest.approx(0.21 * 12.0**2 / G, rel=0.01)
+    scene = parse_scene({"sea": {"spectrum": "pierson-moskowitz", "wind_speed_m_s": 12.0,
+                                 "size_x_m": 64.0, "nx": 16}})
+    assert significant_height(sea_spectrum(scene)) == pytest.approx(0.21 * 12.0**2 / G,
+                                                                     rel=0.01)
 
 
 @pytest.mark.parametrize("spectrum", ["jonswap", "elfouhaily"])
@@ -325,9 +327,10 @@ def test_jonswap_fetch_beyond_full_development_is_refused(tmp_path, capsys):
 def test_shortest_fetch_is_the_youngest_sea_of_the_fetch_law():
     """Elfouhaily et al. (1997): Omega_c = 0.84 tanh((X / 2.2e4)^0.4)^-0.75 spans 0.84
     (fully developed) to 5 (young); the shortest fetch accepted gives Omega_c = 5."""
-    from seaecho.config.consistency import MIN_DIMENSIONLESS_FETCH
     from seaecho.constants import G
-    from seaecho.ocean.spectra import elfouhaily_parameters, u10_from_u19_5
+    from seaecho.ocean.limits import MIN_DIMENSIONLESS_FETCH
+    from seaecho.ocean.spectra import elfouhaily_parameters
+    from seaecho.ocean.wind import u10_from_u19_5
 
     u = 8.0
     u10 = float(u10_from_u19_5(u))

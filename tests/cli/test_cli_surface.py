@@ -1,5 +1,6 @@
 """The CLI: `seaecho check`, `seaecho surface`; bad input exits 2 with no traceback or file."""
 
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -40,12 +41,17 @@ def small_scene(tmp_path):
     return path
 
 
-def test_check_valid(capsys):
+def test_check_valid(capsys, tmp_path):
     assert main(["check", str(SIM1)]) == 0
     out = capsys.readouterr().out
-    assert "valid scene" in out
-    # Sim 1's 0.125 m grid leaves k h_res = 0.38 > 0.3 at its 10 GHz carrier (docs/ocean.md)
-    assert "coarse against the radar wavelength" in out
+    assert "valid scene" in out and "warning" not in out
+    # Sim 1 on a 0.125 m grid would leave k h_res = 0.38 > 0.3 at its 10 GHz carrier
+    coarse = tmp_path / "sim1_512.toml"
+    shutil.copytree(SIM1.parent / "meshes", tmp_path / "meshes")  # its [[objects]]
+    text = SIM1.read_text()
+    coarse.write_text(text.replace("nx = 648", "nx = 512"))
+    assert main(["check", str(coarse)]) == 0
+    assert "coarse against the radar wavelength" in capsys.readouterr().out
 
 
 def test_surface_writes_dataset_and_figure(small_scene, tmp_path):

@@ -38,7 +38,7 @@ def test_run_calibration_scene(tmp_path, capsys):
         gains = []
         for name, pos in (("transmitter", tx), ("receiver", rx)):
             a = getattr(scene, name).antenna
-            ant = Antenna.from_config(a, lam)
+            ant = Antenna(a.pattern, lam, a.width_m, a.height_m)
             b = np.array(a.look_at_m) - pos
             b /= np.linalg.norm(b)
             w = np.cross([0, 0, 1.0], b)
@@ -81,3 +81,21 @@ def test_run_rejects_bad_channel(tmp_path, capsys):
 def test_run_rejects_missing_output_dir(tmp_path, capsys):
     assert main(["run", str(CAL), "-o", str(tmp_path / "no" / "x.nc"), "-q"]) == 2
     assert "does not exist" in capsys.readouterr().err
+
+
+def test_run_rejects_cuda_variant_without_gpu(tmp_path, capsys):
+    # [tracing] variant = "cuda_ad_mono_polarized" on a machine without a CUDA GPU: a
+    # clear error at the start naming the field (seaecho.backend.check_variant), exit 2,
+    # no traceback and no output file, not a failure in the first pulse's kernel
+    from seaecho.backend import cuda_available
+
+    if cuda_available():
+        pytest.skip("a CUDA GPU is present: the variant is valid here")
+    scene = tmp_path / "cuda.toml"
+    scene.write_text(CAL.read_text() + '\n[tracing]\nvariant = "cuda_ad_mono_polarized"\n')
+    out = tmp_path / "x.nc"
+    assert main(["run", str(scene), "-o", str(out), "-q"]) == 2
+    err = capsys.readouterr().err
+    assert "[tracing].variant" in err and "cuda_ad_mono_polarized" in err
+    assert "no CUDA GPU" in err and "Traceback" not in err
+    assert list(tmp_path.iterdir()) == [scene]

@@ -37,6 +37,11 @@ from seaecho.config.tracing import ObjectConfig
 
 ROOT = Path(__file__).resolve().parents[2]
 MESH = ROOT / "scenes" / "meshes" / "motor_boat_10m.ply"
+#: The mesh of echoing objects (scatterer = true): a 0.5 m trihedral, a cheap trace.
+SCATTERER_MESH = ROOT / "scenes" / "meshes" / "trihedral_0p5m.ply"
+#: Fields an object may set only with scatterer = true.
+SCATTERER_FIELDS = ("max_bounces", "rays_per_wavelength", "signature_refresh_deg",
+                    "signature_refresh_s", "signature_cell_m", "sea_multipath")
 
 #: Largest magnitude drawn for an unbounded number.
 UNBOUNDED = 1.0e6
@@ -205,17 +210,19 @@ def _sea(draw: Draw, d: dict, get: Get) -> dict:
     if d.get("spectrum") == "jonswap" and "fetch_m" not in d:
         d["fetch_m"] = draw(get("fetch_m"))
     if "fetch_m" in d:  # within what the spectrum's fetch law describes
-        from seaecho.config.consistency import fetch_range
         from seaecho.config.sea import SeaConfig
+        from seaecho.ocean.limits import fetch_range
 
-        lo, hi = fetch_range(SeaConfig.model_validate(d))
-        if not lo <= d["fetch_m"] <= hi:
+        sea = SeaConfig.model_validate(d)
+        lo, hi = fetch_range(sea.spectrum, sea.wind_speed_m_s)
+        if sea.spectrum != "pierson-moskowitz" and not lo <= d["fetch_m"] <= hi:
             d["fetch_m"] = draw(st.floats(lo, min(hi, 1.0e8, 100.0 * lo)))
     if "depth_m" in d:  # deep enough for the waves (McCowan's breaking limit)
-        from seaecho.config.consistency import BREAKING_RATIO, significant_height
+        from seaecho.build import section_spectrum
         from seaecho.config.sea import SeaConfig
+        from seaecho.ocean.limits import min_depth
 
-        least = significant_height(SeaConfig.model_validate(d)) / BREAKING_RATIO
+        least = min_depth(section_spectrum(SeaConfig.model_validate(d)))
         if d["depth_m"] < least:
             d["depth_m"] = min(least * draw(st.floats(1.01, 10.0)), 1.0e5)
     return d
@@ -345,6 +352,26 @@ def _object(draw: Draw, d: dict, get: Get) -> dict:
         d.pop("material", None)
         d.setdefault("relative_permittivity", draw(get("relative_permittivity")))
     d["file"] = str(MESH)
+    if d.get("scatterer"):
+        d["file"] = str(SCATTERER_MESH)
+        d["scale"] = min(d.get("scale", 1.0), 2.0)
+    else:
+        d = _only(d, drop=SCATTERER_FIELDS)
+    return d
+
+
+def _image(draw: Draw, d: dict, get: Get) -> dict:
+    if "filter_size" in d:
+        d["filter_size"] = min(d["filter_size"] | 1, 101)  # odd
+        if d.get("speckle_filter") == "refined-lee":
+            d["filter_size"] = max(d["filter_size"], 5)
+    if "extent_m" in d:
+        x0, x1, y0, y1 = d["extent_m"]
+        x0, x1, y0, y1 = min(x0, x1), max(x0, x1), min(y0, y1), max(y0, y1)
+        least = 2.0 * d.get("pixel_m", 1.0)  # room for the 2 x 2 looks the caps allow
+        d["extent_m"] = (x0, max(x1, x0 + least), y0, max(y1, y0 + least))
+    if "looks" in d:
+        d["looks"] = tuple(min(max(n, 1), 1000) for n in d["looks"])
     return d
 
 
@@ -357,6 +384,11 @@ def _scene(draw: Draw, d: dict, get: Get) -> dict:
         objects.append(obj)
     if objects:
         d["objects"] = tuple(objects)
+    image, radar = d.get("image"), d.get("radar")
+    if image is not None and "extent_m" not in image and not d.get("targets") and (
+            radar is None or not radar.get("sea_clutter", True)):
+        pixel = image.get("pixel_m", 1.0)  # nothing sets a default extent
+        image["extent_m"] = (-10.0, max(10.0, 2 * pixel), -10.0, max(10.0, 2 * pixel))
     radar, tx = d.get("radar"), d.get("transmitter")
     if radar is not None and tx is None:
         d["transmitter"] = tx = draw(get("transmitter"))
@@ -378,7 +410,7 @@ COUPLINGS: dict[str, Callable[[Draw, dict, Get], dict]] = {
     "SeaConfig": _sea, "RunConfig": _run, "ShipConfig": _ship, "WaveformConfig": _waveform,
     "AntennaConfig": _antenna, "PlatformConfig": _platform, "RadarConfig": _radar,
     "GaussMarkovConfig": _perturbation, "TargetConfig": _target, "ObjectConfig": _object,
-    "TracingConfig": _tracing,
+    "TracingConfig": _tracing, "ImageConfig": _image,
     "Scene": _scene,
 }
 
@@ -418,6 +450,14 @@ TINY: dict[tuple[str, str], st.SearchStrategy] = {
     ("TargetConfig", "velocity_m_s"): st.tuples(*[st.floats(-50.0, 50.0)] * 3),
     ("ShipConfig", "position_m"): st.tuples(_near, _near),
     ("TracingConfig", "variant"): st.just("llvm_ad_mono_polarized"),
+    ("ObjectConfig", "rays_per_wavelength"): st.floats(1.0, 2.0),
+    ("ObjectConfig", "max_bounces"): st.integers(1, 2),
+    ("ObjectConfig", "signature_cell_m"): st.floats(0.05, 1.0),
+    ("ImageConfig", "pixel_m"): st.floats(1.0, 20.0),
+    ("ImageConfig", "extent_m"): st.tuples(_near, _near, _near, _near),
+    ("ImageConfig", "upsample"): st.integers(1, 4),
+    ("ImageConfig", "filter_size"): st.integers(3, 9),
+    ("ImageConfig", "looks"): st.tuples(st.integers(1, 2), st.integers(1, 2)),
     ("Scene", "targets"): st.lists(section(TargetConfig, ("targets",)), max_size=3).map(tuple),
     ("Scene", "objects"): st.lists(section(ObjectConfig, ("objects",)), max_size=1).map(tuple),
 }

@@ -1,10 +1,10 @@
-"""Ranges/directions (float64) and global angles vs scattering.frames."""
+"""Ranges/directions (float64) and global angles vs geometry.frames."""
 
 import numpy as np
 import pytest
 
 from seaecho.geometry.bistatic import global_angles, ranges_directions
-from seaecho.scattering.frames import local_angles
+from seaecho.geometry.frames import local_angles
 
 
 def test_global_angles_equal_frames_local_angles_about_z():

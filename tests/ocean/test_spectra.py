@@ -1,4 +1,9 @@
-"""Wave spectra and spreading functions against closed forms and published numbers."""
+"""Wave spectra and spreading functions against closed forms and published numbers.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import warnings
 
@@ -22,6 +27,7 @@ from seaecho.ocean.spectra import (
     pierson_moskowitz_peak,
 )
 from seaecho.ocean.twoscale import slope_variances
+from seaecho.ocean.wind import u19_5_from_u10, wind_speed_at
 from seaecho.warnings import ValidityWarning
 
 
@@ -54,7 +60,7 @@ def test_pierson_moskowitz_peak_matches_frequency_form():
 def test_jonswap_peak_frequency_and_alpha():
     """JONSWAP (Hasselmann et al. 1973): peak at omega_p = 22 (g^2 / (U10 F))^(1/3) and
     alpha = 0.076 (U10^2 / (F g))^0.22 (Stewart 2008, eqs 16.28-16.29)."""
-    u19_5, fetch = 15.0 * 1.026, 100e3
+    u19_5, fetch = float(u19_5_from_u10(15.0)), 100e3  # the model sees U10 = 15 m/s
     alpha, omega_p = jonswap_parameters(15.0, fetch)
     assert alpha == pytest.approx(0.076 * (225 / (fetch * G)) ** 0.22)
     assert omega_p == pytest.approx(22 * (G**2 / (15.0 * fetch)) ** (1 / 3))
@@ -77,13 +83,13 @@ def test_elfouhaily_fully_developed_parameters():
     gamma = 1.7 for Omega_c < 1 (eq 3). alpha_p = 6e-3 Omega_c^0.55 = 5.451e-3: the value
     that independent implementations use (N. Laxague's Elfouhaily_omni.m, UNH; F. Fois's
     Elfouhaily code, TU Delft: ``alphap = 0.006*age^(0.55)``)."""
-    p = elfouhaily_parameters(10.0 * 1.026)
+    p = elfouhaily_parameters(float(u19_5_from_u10(10.0)))  # U10 = 10 m/s
     assert p.omega_c == 0.84
     assert p.k_p == pytest.approx(G * 0.84**2 / 100)
     assert p.alpha_p == pytest.approx(5.451e-3, rel=1e-3)
     assert p.gamma == 1.7
     # eq 37: a short fetch gives a young sea, Omega_c > 0.84, and a peak enhancement > 1.7
-    young = elfouhaily_parameters(10.0 * 1.026, fetch=20e3)
+    young = elfouhaily_parameters(float(u19_5_from_u10(10.0)), fetch=20e3)
     assert young.omega_c > 1.0 and young.gamma > 1.7
 
 
@@ -97,9 +103,9 @@ def test_elfouhaily_mss_against_cox_munk(u10):
     (5 m/s) to 14 % (10 m/s) above the fit, so the test allows 15 %: it catches factor
     errors (2 pi, 1/2, U10/U19.5 confusions) that shift mss by 40 % or more.
     """
-    spec = DirectionalSpectrum("elfouhaily", "elfouhaily", u19_5=1.026 * u10)
+    spec = DirectionalSpectrum("elfouhaily", "elfouhaily", u19_5=float(u19_5_from_u10(u10)))
     up, cross = slope_variances(spec, 1e-4, 1e4)
-    u12_5 = u10 * 1.013  # log profile between 10 and 12.5 m (Stewart 2008, sec 4.3)
+    u12_5 = float(wind_speed_at(u10, 10.0, 12.5))  # the same log profile (ocean.wind)
     assert up + cross == pytest.approx(0.003 + 5.12e-3 * u12_5, rel=0.15)
     # Cox & Munk: upwind slopes exceed crosswind ones
     assert up > cross
@@ -113,7 +119,7 @@ def test_longuet_higgins_unit_integral(s):
 
 
 def test_longuet_higgins_paper_s1_normalisation():
-    """DESIGN.md: the paper's 4/pi for s = 1 is a typo; the normalisation is 1/pi."""
+    """docs/ocean.md: the paper's 4/pi for s = 1 is a typo; the normalisation is 1/pi."""
     assert longuet_higgins_normalisation(1.0) == pytest.approx(1 / np.pi)
 
 

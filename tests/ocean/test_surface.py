@@ -15,7 +15,7 @@ def _surface(spec, size=(64.0, 64.0), shape=(128, 128), seed=0, **kw):
 
 @pytest.mark.parametrize("name", ["pierson-moskowitz", "jonswap", "elfouhaily"])
 def test_variance_matches_resolved_integral(name):
-    """E z^2 = iint over the resolved band of Psi (DESIGN.md, synthesis).
+    """E z^2 = iint over the resolved band of Psi (docs/ocean.md, synthesis).
 
     The sample variance of one realisation fluctuates (few independent modes carry the
     peak); over 24 seeds the standard error of the mean is ~3 % here, so 10 % is > 3 sigma.
@@ -40,7 +40,7 @@ def test_variance_matches_resolved_integral(name):
 
 def test_pierson_moskowitz_hs_full_band():
     """A tile and grid that hold almost the whole PM spectrum give Hs = 0.209 U^2 / g
-    (Pierson & Moskowitz 1964, in the standard wavenumber form of DESIGN.md).
+    (Pierson & Moskowitz 1964, in the standard wavenumber form of docs/ocean.md).
 
     U = 3 m/s: peak wavelength 8.6 m; a 200 m tile on 256 x 256 resolves K from
     0.03 to 4 rad/m, which holds 99.8 % of the variance. 16 seeds: standard error of the

@@ -1,11 +1,15 @@
-"""Two-scale split statistics and the paper's sampling advice (section IV-A, eqs 13-14)."""
+"""Two-scale split statistics and the paper's sampling advice (section IV-A, eqs 13-14).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import warnings
 
 import numpy as np
 import pytest
 
-from seaecho.config import parse_scene
 from seaecho.ocean.sampling import check_sampling, peak_band, pm_shape, suggest_sampling
 from seaecho.ocean.spectra import PM_A0, DirectionalSpectrum
 from seaecho.ocean.twoscale import height_variance, slope_variances, unresolved_statistics
@@ -28,9 +32,9 @@ def test_pm_tail_slope_variance_closed_form():
 def test_unresolved_statistics_of_a_grid():
     spec = DirectionalSpectrum("elfouhaily", "elfouhaily", u19_5=8.0)
     stats = unresolved_statistics(spec, dx=0.125, dy=0.125, k_max=70.0)
-    assert stats.k_cut == pytest.approx(np.pi / 0.125)
+    assert stats.k_grid == pytest.approx(np.pi / 0.125)
     assert stats.mss_upwind > stats.mss_crosswind > 0
-    assert stats.mss == pytest.approx(sum(slope_variances(spec, stats.k_cut, 70.0)))
+    assert stats.mss == pytest.approx(sum(slope_variances(spec, stats.k_grid, 70.0)))
     assert unresolved_statistics(spec, 1.0, 1.0, k_max=2.0).mss == 0.0
 
 
@@ -61,20 +65,20 @@ def test_suggested_tile_for_the_papers_sea_state_3():
     assert k_radar * h_res == pytest.approx(0.3)
 
 
-def _scene(**sea):
-    base = {"wind_speed_m_s": 10.0, "size_x_m": 500.0, "nx": 64}
-    base.update(sea)
-    return parse_scene({"sea": base})
+def _sea(size_x_m=500.0, nx=64):
+    """(spectrum, size, shape) of a U19.5 = 10 m/s Elfouhaily sea on a square tile."""
+    spec = DirectionalSpectrum("elfouhaily", "longuet-higgins", u19_5=10.0)
+    return spec, (size_x_m, size_x_m), (nx, nx)
 
 
 def test_sampling_warnings():
     with pytest.warns(SamplingWarning, match="peak wavelength"):
-        check_sampling(_scene(size_x_m=40.0))
+        check_sampling(*_sea(size_x_m=40.0))
     with pytest.warns(SamplingWarning, match="coarse against the radar wavelength"):
-        check_sampling(_scene(size_x_m=500.0, nx=64), frequency=10e9)
+        check_sampling(*_sea(size_x_m=500.0, nx=64), frequency=10e9)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        check_sampling(_scene(size_x_m=500.0, nx=8192), frequency=1e9)
+        check_sampling(*_sea(size_x_m=500.0, nx=8192), frequency=1e9)
 
 
 def test_empty_band_has_zero_variance():

@@ -7,13 +7,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from seaecho.build import build_radar
 from seaecho.config import parse_scene
-from seaecho.config.radar import GaussMarkovConfig, PlatformConfig
+from seaecho.config.radar import PlatformConfig
 from seaecho.radar.platforms import (
     Platform,
     draw_perturbation,
     gauss_markov,
-    platforms_from_scene,
     rotation_matrix,
 )
 
@@ -54,10 +54,17 @@ def test_rotation_sign_conventions():
     assert (rotation_matrix(0, 0, 0.1) @ [0, 1, 0])[2] == pytest.approx(np.sin(0.1))
 
 
+def _platform(**tx):
+    """The transmitter platform of a scene whose [transmitter] is ``tx`` (via the builder)."""
+    radar = {"carrier_frequency_hz": 1e10, "sampling_rate_hz": 1e8, "prf_hz": 1e3,
+             "waveform": {"kind": "lfm", "bandwidth_hz": 5e7, "duration_s": 1e-6}}
+    scene = parse_scene({"sea": {"wind_speed_m_s": 5.0, "size_x_m": 64.0, "nx": 64},
+                         "radar": radar, "transmitter": dict(tx, antenna=ANT)})
+    return build_radar(scene).tx
+
+
 def test_linear_platform_state_vectorised():
-    cfg = PlatformConfig(motion="linear", position_m=(0, -100, 3000),
-                         velocity_m_s=(0, 222, 0), antenna=ANT)
-    p = Platform.from_config(cfg)
+    p = _platform(motion="linear", position_m=(0, -100, 3000), velocity_m_s=(0, 222, 0))
     t = np.array([[0.0, 1.0], [2.0, -1.0]])
     s = p.state(t)
     assert s.position.shape == (2, 2, 3) and s.rotation.shape == (2, 2, 3, 3)
@@ -68,17 +75,15 @@ def test_linear_platform_state_vectorised():
 
 
 def test_fixed_platform():
-    p = Platform.from_config(PlatformConfig(position_m=(0, 0, 256.65), antenna=ANT))
+    p = _platform(position_m=(0, 0, 256.65))
     s = p.state(np.linspace(0, 10, 5))
     np.testing.assert_allclose(s.position, np.tile([0, 0, 256.65], (5, 1)))
     np.testing.assert_allclose(s.velocity, 0.0)
 
 
 def test_waypoints_piecewise_linear():
-    cfg = PlatformConfig(motion="waypoints", waypoint_times_s=(0, 10, 20),
-                         waypoint_positions_m=((0, 0, 100), (100, 0, 100), (100, 50, 100)),
-                         antenna=ANT)
-    p = Platform.from_config(cfg)
+    p = _platform(motion="waypoints", waypoint_times_s=(0, 10, 20),
+                  waypoint_positions_m=((0, 0, 100), (100, 0, 100), (100, 50, 100)))
     s = p.state(np.array([5.0, 15.0, 25.0]))
     np.testing.assert_allclose(s.position, [[50, 0, 100], [100, 25, 100], [100, 75, 100]])
     np.testing.assert_allclose(s.velocity, [[10, 0, 0], [0, 5, 0], [0, 5, 0]])
@@ -97,9 +102,9 @@ def test_gauss_markov_statistics():
 
 
 def test_perturbed_track_reproducible_and_nominal_kept():
-    pert = GaussMarkovConfig(position_sigma_m=(1, 1, 0.5), position_tau_s=2.0,
-                             attitude_sigma_deg=(0.1, 0.1, 0.1), step_s=0.01)
-    t_grid, dpos, datt = draw_perturbation(pert, (0, 5), np.random.default_rng(3))
+    t_grid, dpos, datt = draw_perturbation(
+        (0, 5), np.random.default_rng(3), step=0.01, position_sigma=(1, 1, 0.5),
+        position_tau=2.0, attitude_sigma=np.deg2rad((0.1, 0.1, 0.1)), attitude_tau=1.0)
     assert dpos.shape == datt.shape == (t_grid.size, 3)
     p = Platform(np.array([0.0, 1.0]), np.array([[0, 0, 1000], [100, 0, 1000]]),
                  perturbation=(t_grid, dpos, datt))
@@ -127,12 +132,13 @@ def _scene(extra):
 
 
 def test_scene_platforms_same_seed_same_track_monostatic_shares():
-    a_tx, a_rx = platforms_from_scene(_scene({}))
-    b_tx, _ = platforms_from_scene(_scene({}))
-    assert a_tx is a_rx
+    a = build_radar(_scene({}))
+    a_tx, a_rx = a.tx, a.rx
+    b_tx = build_radar(_scene({})).tx
+    assert a_tx is a_rx and a.monostatic
     t = np.linspace(0, 0.009, 10)
     np.testing.assert_array_equal(a_tx.state(t).position, b_tx.state(t).position)
-    c_tx, _ = platforms_from_scene(_scene({"run": {"seed": 7}}))
+    c_tx = build_radar(_scene({"run": {"seed": 7}})).tx
     assert not np.array_equal(a_tx.state(t).position, c_tx.state(t).position)
 
 

@@ -5,8 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from seaecho.build import build_radar
 from seaecho.config import parse_scene
-from seaecho.constants import C0, K_B, T0
+from seaecho.constants import C0
 from seaecho.processing.range_compression import range_compress
 from seaecho.radar.equation import bistatic_received_power, propagation_delay, time_of_flight
 from seaecho.radar.system import RadarSystem
@@ -44,7 +45,7 @@ def test_point_target_power_is_bistatic_radar_equation(position):
     # 3rd ed. 2008, eq 23.1; Willis, Bistatic Radar 2005, eq 3.1) within 0.1 dB, from the
     # range-compressed peak (upsampled 64x so the fractional delay does not bias it).
     sc = _scene([{"position_m": position, "rcs_m2": 10.0}])
-    radar = RadarSystem(sc)
+    radar = RadarSystem(build_radar(sc))
     geo = radar.geometry(0)
     echo = radar.target_echo(geo)
     raw = radar.receive(0, [echo])
@@ -72,7 +73,7 @@ def test_delay_lands_at_fractional_fast_time_position():
     for dx in (0.0, 0.2, 0.37, 0.61):
         sc = _scene([{"position_m": (dx, 0.0, 0.0), "rcs_m2": 1.0}],
                     window_start_m=380.0, window_end_m=440.0)
-        radar = RadarSystem(sc)
+        radar = RadarSystem(build_radar(sc))
         geo = radar.geometry(0)
         raw = radar.receive(0, [radar.target_echo(geo)])
         tau = (np.linalg.norm(np.array([dx, 0, 0]) - geo.tx.position)
@@ -97,7 +98,7 @@ def test_pulse_to_pulse_phase_follows_doppler(case):
         tx.update(motion="linear", velocity_m_s=tuple(3 * v))
     else:
         rx.update(motion="linear", velocity_m_s=tuple(3 * v))
-    radar = RadarSystem(_scene([target], tx=tx, rx=rx, prf_hz=4000.0))
+    radar = RadarSystem(build_radar(_scene([target], tx=tx, rx=rx, prf_hz=4000.0)))
     compressed = [range_compress(radar.receive(p, [radar.target_echo(radar.geometry(p))])[0],
                                  radar.waveform.samples) for p in range(3)]
     i0 = int(np.argmax(np.abs(compressed[0])))  # same range cell on every pulse
@@ -118,10 +119,10 @@ def test_pulse_to_pulse_phase_follows_doppler(case):
 
 def test_h_only_radar_sees_no_v_only_scatterer():
     # Ideal H ports on level platforms project to exactly zero on a scatterer with only
-    # s_vv (forward scattering alignment, DESIGN.md); VV sees it.
+    # s_vv (forward scattering alignment, docs/conventions.md); VV sees it.
     sc = _scene([{"position_m": (3.0, -2.0, 1.0), "s_vv": (2.0, 1.0)}],
                 channels=["HH", "VV"])
-    radar = RadarSystem(sc)
+    radar = RadarSystem(build_radar(sc))
     raw = radar.receive(0, [radar.target_echo(radar.geometry(0))])
     assert radar.channel_names == ["HH", "VV"]
     assert np.abs(raw[0]).max() == 0.0
@@ -132,7 +133,7 @@ def test_channels_quad_pol_map_scattering_matrix():
     # Each channel mn carries s_mn (m received, n transmitted), ordered HH, HV, VH, VV
     s = {"s_hh": (1.0, 0.0), "s_hv": (0.0, 0.5), "s_vh": (0.25, 0.0), "s_vv": (0.0, -2.0)}
     sc = _scene([{"position_m": (0.0, 0.0, 0.0), **s}])
-    radar = RadarSystem(sc)
+    radar = RadarSystem(build_radar(sc))
     echo = radar.target_echo(radar.geometry(0))
     a = echo.amplitudes[:, 0]
     ratio = a / a[0]
@@ -141,7 +142,7 @@ def test_channels_quad_pol_map_scattering_matrix():
 
 def test_monostatic_uses_transmitter_for_reception():
     sc = _scene([{"position_m": (0.0, 0.0, 0.0), "rcs_m2": 1.0}], rx=False)
-    radar = RadarSystem(sc)
+    radar = RadarSystem(build_radar(sc))
     assert radar.monostatic and radar.rx is radar.tx
     echo = radar.target_echo(radar.geometry(0))
     assert echo.r_t[0] == pytest.approx(echo.r_r[0], rel=1e-9)
@@ -149,14 +150,20 @@ def test_monostatic_uses_transmitter_for_reception():
 
 
 def test_thermal_noise_power_is_ktbf():
-    # E|n|^2 = k T0 F B (Skolnik 2008, eq 1.8); 4 x 431 samples x 20 pulses: the relative
-    # standard error of the mean power is 1/sqrt(34480) = 0.5 %, tolerance 3 %.
+    # E|n|^2 = k T0 F B (Skolnik 2008, eq 1.8) with the constants written out here, not
+    # taken from the package: k = 1.380649e-23 J/K (exact, SI 2019) and the standard
+    # reference temperature T0 = 290 K (IEEE Std 145 / Skolnik 2008, sec. 1.4); F = 3 dB,
+    # B = 200 MHz. 4 x 431 samples x 100 pulses: the relative standard error of the mean
+    # power is 1/sqrt(172400) = 0.24 %; tolerance 1.2 % (5 standard errors), while
+    # T0 = 300 K or a noise figure off by 0.15 dB would be 3.4 % off. (Compared as a
+    # ratio: pytest.approx on the pW values would add its default 1e-12 absolute
+    # tolerance, about 60 % here.)
     sc = _scene([], thermal_noise=True, noise_figure_db=3.0, window_start_m=500.0,
-                window_end_m=800.0, n_pulses=20)
-    radar = RadarSystem(sc)
-    powers = [np.mean(np.abs(radar.receive(p, [])) ** 2) for p in range(20)]
-    expected = K_B * T0 * 10 ** 0.3 * 200e6
-    assert np.mean(powers) == pytest.approx(expected, rel=0.03)
+                window_end_m=800.0, n_pulses=100)
+    radar = RadarSystem(build_radar(sc))
+    powers = [np.mean(np.abs(radar.receive(p, [])) ** 2) for p in range(100)]
+    expected = 1.380649e-23 * 290.0 * 10 ** (3.0 / 10.0) * 200e6
+    assert np.mean(powers) / expected == pytest.approx(1.0, abs=0.012)
     # same pulse, same draw; another pulse, another draw
     np.testing.assert_array_equal(radar.receive(3, []), radar.receive(3, []))
     assert not np.array_equal(radar.receive(3, []), radar.receive(4, []))
@@ -166,17 +173,18 @@ def test_time_of_flight_closed_form():
     # Static case: tau = |d| / c; receding scatterer at speed v along the line of sight:
     # c tau = |d| + v tau, i.e. tau = |d| / (c - v) (exact, eq R3)
     d = np.array([300.0, 400.0, 0.0])
-    assert propagation_delay(d, np.zeros(3)) == pytest.approx(500.0 / C0, rel=1e-15)
+    assert propagation_delay(d, np.zeros(3)) == pytest.approx(500.0 / C0, rel=1e-15, abs=0)
     u = d / 500.0
     assert propagation_delay(d, 1000.0 * u) == pytest.approx(500.0 / (C0 - 1000.0),
-                                                            rel=1e-13)
+                                                            rel=1e-13, abs=0)
     tau_t, tau_r, _ = time_of_flight(np.zeros(3), d, np.zeros(3), 2 * d, np.zeros(3))
-    assert tau_t == pytest.approx(tau_r, rel=1e-15)
+    assert tau_t == pytest.approx(tau_r, rel=1e-15, abs=0)  # delays [s]: no abs tol
 
 
 def test_bad_channel_names_rejected():
     with pytest.raises(ValueError, match="channel"):
-        RadarSystem(_scene([{"position_m": (0, 0, 0), "rcs_m2": 1.0}], channels=["HR"]))
+        RadarSystem(build_radar(_scene([{"position_m": (0, 0, 0), "rcs_m2": 1.0}],
+                                        channels=["HR"])))
 
 
 def test_circular_ports_on_a_monostatic_sphere():
@@ -188,10 +196,10 @@ def test_circular_ports_on_a_monostatic_sphere():
     sc = _scene([{"position_m": (0.0, 0.0, 0.0), "s_hh": (1.0, 0.0), "s_vv": (-1.0, 0.0)}],
                 tx={"position_m": (-500, 0, 300), "antenna": ant}, rx=False,
                 channels=["RR", "RL", "LR", "LL"])
-    radar = RadarSystem(sc)
+    radar = RadarSystem(build_radar(sc))
     a = np.abs(radar.target_echo(radar.geometry(0)).amplitudes[:, 0])
     assert a[0] < 1e-12 * a[1] and a[3] < 1e-12 * a[1]
-    assert a[1] == pytest.approx(a[2], rel=1e-12)
+    assert a[1] == pytest.approx(a[2], rel=1e-12, abs=0)  # amplitudes ~1e-9
 
 
 def test_cross_polar_isolation_two_way():
@@ -203,7 +211,7 @@ def test_cross_polar_isolation_two_way():
     sc = _scene([{"position_m": (0.0, 0.0, 0.0), "s_vv": (1.0, 0.0)}],
                 tx={"position_m": (-500, 0, 300), "antenna": ant_t},
                 rx={"position_m": (200, 100, 80), "antenna": ant_r}, channels=["HH", "VV"])
-    radar = RadarSystem(sc)
+    radar = RadarSystem(build_radar(sc))
     a = np.abs(radar.target_echo(radar.geometry(0)).amplitudes[:, 0])
     x2 = 10 ** (-x_db / 10)
     assert 20 * np.log10(a[0] / a[1]) == pytest.approx(20 * np.log10(x2), abs=0.01)
@@ -216,7 +224,7 @@ def test_true_track_drives_the_echo():
           "perturbation": {"position_sigma_m": (2.0, 2.0, 2.0), "position_tau_s": 1.0,
                            "attitude_sigma_deg": (0.5, 0.5, 0.5)}}
     sc = _scene([{"position_m": (0.0, 0.0, 0.0), "rcs_m2": 1.0}], tx=tx)
-    radar = RadarSystem(sc)
+    radar = RadarSystem(build_radar(sc))
     geo = radar.geometry(2)
     echo = radar.target_echo(geo)
     true = radar.tx.state(geo.time).position

@@ -1,4 +1,9 @@
-"""Blend weights (eqs 10-11) and the two-scale model."""
+"""Blend weights (eqs 10-11) and the two-scale model.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import numpy as np
 import pytest
@@ -29,12 +34,16 @@ def test_blend_weights_at_stated_angles():
 
 
 def test_blend_channels_use_their_weights():
+    # Paper eqs 10-11 at beta = 6 pi deg = 18.85 deg, written out: co-pol (HH, VV) take
+    # w1 = 10^-((beta / 6 pi)^8) = 0.1, cross-pol (HV, VH) w2 = 10^-((beta / 20 pi)^1.5)
+    # = 10^-(0.3^1.5) = 0.6846; sigma = (1 - w) sigma_SPM + w sigma_K per channel.
     s_spm = np.array([1.0, 2.0, 3.0, 4.0])
     s_k = np.array([10.0, 20.0, 30.0, 40.0])
-    out = blend(s_spm, s_k, 6 * np.pi)
-    w = channel_weights(6 * np.pi)
-    np.testing.assert_allclose(out, (1 - w) * s_spm + w * s_k)
-    np.testing.assert_allclose(w[[0, 3]], 0.1)
+    w2 = 10.0 ** (-(0.3**1.5))
+    expected = np.array([0.9 * 1.0 + 0.1 * 10.0, (1 - w2) * 2.0 + w2 * 20.0,
+                         (1 - w2) * 3.0 + w2 * 30.0, 0.9 * 4.0 + 0.1 * 40.0])
+    np.testing.assert_allclose(blend(s_spm, s_k, 6 * np.pi), expected, rtol=1e-12)
+    np.testing.assert_allclose(channel_weights(6 * np.pi), [0.1, w2, w2, 0.1], rtol=1e-12)
 
 
 def test_two_scale_tends_to_spm_as_slopes_vanish():

@@ -1,10 +1,21 @@
-"""The Dr.Jit facet kernel agrees with the numpy path; the spectrum table is accurate."""
+"""Parity: the scattering formulas run by numpy and by Dr.Jit (the same functions).
+
+Each formula is one function over an array namespace (``seaecho.backend``); the fused
+Dr.Jit kernel of :func:`facet_terms` / :func:`speckled_facet_amplitudes` and the numpy
+path evaluate the same code, so these tests check the two array back ends (float64
+rounding, Dr.Jit's own transcendental functions, its complex square root), degenerate
+geometries included. Physics against the literature is in test_facet.py (both back
+ends), test_fresnel.py, test_kirchhoff.py, test_spm.py and test_blend_twoscale.py.
+"""
 
 import numpy as np
 import pytest
 
+from seaecho import backend as _backend
+from seaecho.backend import NUMPY, Boundary
+from seaecho.geometry import frames
 from seaecho.ocean.spectra import DirectionalSpectrum
-from seaecho.scattering import frames
+from seaecho.scattering import blend, fresnel, kirchhoff, spm
 from seaecho.scattering.facet import _drjit_available, facet_terms
 from seaecho.scattering.slopes import cox_munk_parameters
 from seaecho.scattering.spectrum_table import BraggSpectrumTable
@@ -20,9 +31,9 @@ def _facets(n=3000, seed=2):
     n_i, n_s = frames.directions_from_angles(rng.uniform(0, 1.5, n), rng.uniform(-3, 3, n),
                                              rng.uniform(0, 1.5, n), rng.uniform(-3, 3, n))
     # Singular cases: nadir backscatter, forward specular, grazing, Tx = Rx off nadir,
-    # facet normal along the ray.
-    n_i[:5] = [[0, 0, -1], [0.6, 0, -0.8], [1, 0, 0], [0.6, 0, -0.8], -normal[4]]
-    n_s[:5] = [[0, 0, 1], [0.6, 0, 0.8], [1, 0, 0], [-0.6, 0, 0.8], normal[4]]
+    # facet normal along the ray, q = 0 (forward through a facet).
+    n_i[:6] = [[0, 0, -1], [0.6, 0, -0.8], [1, 0, 0], [0.6, 0, -0.8], -normal[4], [0.6, 0, -0.8]]
+    n_s[:6] = [[0, 0, 1], [0.6, 0, 0.8], [1, 0, 0], [-0.6, 0, 0.8], normal[4], [0.6, 0, -0.8]]
     normal[:4] = [0, 0, 1]
     return n_i, n_s, normal
 
@@ -61,6 +72,17 @@ def test_drjit_equals_numpy(table, model, cm):
     assert np.all(np.isfinite(b.sigma()))
 
 
+def test_table_is_periodic_across_the_azimuth_seam(table):
+    # psi = +pi and -pi are one azimuth (node 0 of eq T2): on the negative kx axis the
+    # sign of a zero ky must not move the look-up one azimuth step (2 deg at n_psi = 180).
+    spec = DirectionalSpectrum(u19_5=7.0, wind_direction=0.5)
+    kmag = np.exp(table.log_k0 + table.dlog_k * np.array([10, 300, 700]))
+    plus = table(-kmag, np.zeros(3))
+    minus = table(-kmag, np.full(3, -0.0))
+    np.testing.assert_array_equal(plus, minus)
+    np.testing.assert_allclose(plus, spec.height_spectrum(-kmag, np.zeros(3)), rtol=1e-9)
+
+
 def test_drjit_needs_a_table():
     n_i, n_s, normal = _facets(10)
     with pytest.raises(ValueError, match="BraggSpectrumTable"):
@@ -91,3 +113,101 @@ def test_fused_speckled_amplitudes_equal_terms_then_speckle(table, model):
     assert np.abs(a).max() > 0
     with pytest.raises(ValueError, match="draws of shape"):
         speckled_facet_amplitudes(*args, draws=(draws[0][1:], draws[1][1:]), backend="drjit")
+
+
+# ----------------------------------------------------- formula by formula, two namespaces
+def _both(fn, *arrays, n=None):
+    """fn(xp, *inputs) with numpy and with Dr.Jit; inputs: (N, 3) vectors or (N,) reals."""
+    out = []
+    for xp in (NUMPY, _backend.drjit_namespace()):
+        io = Boundary(xp, n or arrays[0].shape[0])
+        args = [io.vec3(a) if np.ndim(a) == 2 else (io.complex(a) if np.iscomplexobj(a)
+                                                      else io.array(a)) for a in arrays]
+        res = fn(xp, *args)
+        res = res if isinstance(res, tuple) else (res,)
+        out.append(io.numpy(*res))
+    return out
+
+
+def _close(ref, got, rtol, what):
+    for r, g in zip(ref, got, strict=True):
+        assert np.all(np.isfinite(g)), what
+        scale = np.max(np.abs(r)) + 1e-300
+        np.testing.assert_allclose(g, r, rtol=rtol, atol=rtol * scale, err_msg=what)
+
+
+needs_drjit = pytest.mark.skipif(not _drjit_available(), reason="Dr.Jit LLVM backend unavailable")
+
+
+@needs_drjit
+@pytest.mark.parametrize("eps", [EPS, 2.25 + 0j, 1e6 - 1e6j])
+def test_fresnel_formula_agrees(eps):
+    # cos in [0, 1] with normal incidence (1) and grazing (0) and out-of-range values
+    c = np.concatenate([[0.0, 1.0, -0.2, 1.3], np.linspace(0, 1, 200)])
+    ref, got = _both(lambda xp, c: fresnel.reflection(xp, c, xp.cconst(eps)), c)
+    _close(ref, got, 1e-13, "R_h, R_v")
+
+
+@needs_drjit
+def test_spm_alpha_formula_agrees():
+    rng = np.random.default_rng(1)
+    ti, ts, ph = rng.uniform(0, 1.55, 300), rng.uniform(0, 1.55, 300), rng.uniform(-3.2, 3.2, 300)
+    ti[:3], ts[:3], ph[:3] = [0.0, 0.0, 1.5707963], [0.0, 1.0, 1.5707963], [0.0, np.pi, 0.0]
+    args = [np.cos(ti), np.sin(ti), np.cos(ts), np.sin(ts), np.cos(ph), np.sin(ph)]
+    ref, got = _both(lambda xp, *a: spm.alpha(xp, *a, xp.cconst(EPS)), *args)
+    _close(ref, got, 1e-13, "alpha")
+
+
+@needs_drjit
+@pytest.mark.parametrize("cm", [None, cox_munk_parameters(9.0)])
+def test_specular_weight_formula_agrees(cm):
+    # eq K1 with the Gaussian (K3) or Cox-Munk Gram-Charlier (K4) density, including the
+    # specular normal along the plane (q_N = 0) and beyond it (gc = 0)
+    n_i, n_s, normal = _facets(600)
+    n_sp_fn = kirchhoff.specular_direction
+
+    def fn(xp, a, b, nn):
+        n_sp = n_sp_fn(xp, a, b, nn)
+        e_u, e_c = kirchhoff.wind_axes(xp, nn, xp.const(np.cos(0.4)), xp.const(np.sin(0.4)))
+        return kirchhoff.specular_weight(xp, n_sp, nn, e_u, e_c, xp.const(0.01),
+                                         xp.const(0.006), cm)
+
+    ref, got = _both(fn, n_i, n_s, normal)
+    # log_w: absolute 1e-9 (values up to 700); gc relative
+    np.testing.assert_allclose(got[0], ref[0], rtol=0, atol=1e-9)
+    _close(ref[1:], got[1:], 1e-12, "gc")
+
+
+@needs_drjit
+def test_specular_matrix_formula_agrees():
+    n_i, n_s, normal = _facets(600)
+
+    def fn(xp, a, b, nn):
+        z = xp.vec(0.0, 0.0, 1.0)
+        n_sp = kirchhoff.specular_direction(xp, a, b, nn)
+        return kirchhoff.specular_matrix(xp, a, b, n_sp, xp.cconst(EPS),
+                                         frames.fsa_basis(xp, a, z), frames.fsa_basis(xp, b, z))
+
+    ref, got = _both(fn, n_i, n_s, normal)
+    _close(ref, got, 1e-12, "F")
+
+
+@needs_drjit
+def test_blend_weights_formula_agrees():
+    beta = np.concatenate([[0.0, 6 * np.pi, 20 * np.pi, 90.0, 180.0], np.linspace(0, 180, 500)])
+    ref, got = _both(lambda xp, b: blend.blend_weights(b, xp=xp), beta)
+    _close(ref, got, 1e-13, "w1, w2")
+
+
+@needs_drjit
+def test_table_lookup_agrees_including_edges(table):
+    # inside, on both range ends, outside (0), on the azimuth seam (psi = +-pi) and at K = 0
+    rng = np.random.default_rng(3)
+    kmag = np.concatenate([[0.0, table.k_min, table.k_max, 0.5 * table.k_min, 2 * table.k_max,
+                            K, K], np.exp(rng.uniform(np.log(K / 3), np.log(20 * K), 400))])
+    psi = np.concatenate([[0.0, 0.3, -1.0, 2.0, 1.0, np.pi, -np.pi], rng.uniform(-np.pi, np.pi,
+                                                                                400)])
+    kx, ky = kmag * np.cos(psi), kmag * np.sin(psi)
+    ref, got = _both(lambda xp, a, b: table.lookup(xp, a, b), kx, ky)
+    _close(ref, got, 1e-12, "W")
+    assert ref[0][3] == 0.0 and ref[0][4] == 0.0

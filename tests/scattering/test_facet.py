@@ -1,4 +1,9 @@
-"""Per-facet sigma and speckled amplitudes (seaecho.scattering.facet)."""
+"""Per-facet sigma and speckled amplitudes (seaecho.scattering.facet).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import numpy as np
 import pytest
@@ -7,10 +12,11 @@ from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 from scattering_helpers import gaussian_spectrum
 
-from seaecho.scattering import frames
+from seaecho.geometry import frames
 from seaecho.scattering.blend import blend
 from seaecho.scattering.facet import (
     FacetTerms,
+    _drjit_available,
     bragg_vectors,
     facet_amplitudes,
     facet_sigma,
@@ -18,8 +24,11 @@ from seaecho.scattering.facet import (
     hhvv_coherence,
     speckle_amplitudes,
     speckle_draws,
+    speckled_facet_amplitudes,
 )
 from seaecho.scattering.kirchhoff import kirchhoff_sigma
+from seaecho.scattering.slopes import cox_munk_parameters
+from seaecho.scattering.spectrum_table import BraggSpectrumTable
 from seaecho.scattering.spm import spm_sigma
 from seaecho.scattering.validity import SPMValidityWarning
 
@@ -180,7 +189,7 @@ def test_no_nan_or_inf_for_any_geometry(a, b, c, model):
 
 
 def test_accepts_the_geometry_stage_facets():
-    # Integration with seaecho.geometry (issue 4): its analytic facets carry the local
+    # Integration with seaecho.geometry (analytic facets): its analytic facets carry the local
     # angles and basis rotations, which facet_sigma accepts as `local`.
     from seaecho.geometry.facets import analytic_facets
 
@@ -222,3 +231,100 @@ def test_speckle_draws_reused_give_the_plain_eq_p4_bytes():
         speckle_amplitudes(terms, area, draws=(g_k[:-1], g_b[:-1]))
     with pytest.raises(ValueError, match="rng or draws"):
         speckle_amplitudes(terms, area)
+
+
+# ---------------------------------------------- closed forms through both array back ends
+BACKENDS = ["numpy", pytest.param("drjit", marks=pytest.mark.skipif(
+    not _drjit_available(), reason="Dr.Jit LLVM backend unavailable"))]
+
+
+@pytest.fixture(scope="module")
+def gaussian_table():
+    return BraggSpectrumTable(gaussian_spectrum, K / 3, 20 * K, n_k=512, n_psi=180)
+
+
+def _backscatter(theta, n=3):
+    n_i = np.tile([np.sin(theta), 0.0, -np.cos(theta)], (n, 1))
+    return n_i, -n_i, np.tile(frames.Z_HAT, (n, 1))
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("cm", [False, True])
+def test_nadir_specular_is_barrick_closed_form(backend, cm, gaussian_table):
+    # Nadir backscatter on a flat facet, Kirchhoff/GO (Barrick 1968; kirchhoff.py):
+    # sigma = pi P(0, 0) |R(0)|^2 with P(0, 0) = 1 / (2 pi sigma_u sigma_c) (Cox & Munk
+    # 1954 eq 1) times, for the Gram-Charlier density, its value at zero slope
+    # 1 + c40 / 8 + c22 / 4 + c04 / 8 (eq 2 at xi = eta = 0), and the normal-incidence
+    # Fresnel coefficient R(0) = (1 - sqrt eps) / (1 + sqrt eps) (Born & Wolf 1999) on
+    # HH and VV, nothing on HV, VH.
+    n_i, n_s, nn = _backscatter(0.0)
+    p = cox_munk_parameters(7.0) if cm else None
+    mu, mc = (p.mss_upwind, p.mss_crosswind) if cm else (0.02, 0.012)
+    t = facet_terms(n_i, n_s, nn, K, EPS, gaussian_table, mu, mc, 0.4, model="kirchhoff",
+                    cox_munk=p, backend=backend)
+    r0 = abs((1 - np.sqrt(EPS)) / (1 + np.sqrt(EPS))) ** 2
+    peak = 1.0 + p.c40 / 8 + p.c22 / 4 + p.c04 / 8 if cm else 1.0
+    expected = r0 / (2.0 * np.sqrt(mu * mc)) * peak
+    sigma = t.sigma()
+    np.testing.assert_allclose(sigma[:, [0, 3]], expected, rtol=1e-12)
+    np.testing.assert_allclose(sigma[:, [1, 2]], 0.0, atol=1e-15 * expected)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("theta_deg", [8.0, 15.0, 25.0])
+def test_upwind_backscatter_is_the_geometric_optics_closed_form(backend, theta_deg,
+                                                                 gaussian_table):
+    # Monostatic GO looking upwind (Barrick 1968; Valenzuela 1978):
+    # sigma0 = |R(0)|^2 sec^4(theta) / (2 s_u s_c) exp(-tan^2(theta) / (2 s_u^2)),
+    # the specular facets being tilted by theta towards the radar (local incidence 0).
+    th = np.radians(theta_deg)
+    n_i, n_s, nn = _backscatter(th)
+    mu, mc = 0.02, 0.012
+    t = facet_terms(n_i, n_s, nn, K, EPS, gaussian_table, mu, mc, 0.0, model="kirchhoff",
+                    backend=backend)
+    r0 = abs((1 - np.sqrt(EPS)) / (1 + np.sqrt(EPS))) ** 2
+    expected = r0 / (2 * np.sqrt(mu * mc) * np.cos(th) ** 4) * np.exp(-np.tan(th) ** 2
+                                                                    / (2 * mu))
+    np.testing.assert_allclose(t.sigma()[:, [0, 3]], expected, rtol=1e-12)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("theta_deg", [25.0, 40.0, 60.0])
+def test_bragg_backscatter_is_the_classic_small_perturbation_formula(backend, theta_deg,
+                                                                      gaussian_table):
+    # Flat-facet SPM backscatter: sigma0_pp = 16 pi k^4 cos^4(theta) |g_pp|^2 W(2k sin, 0)
+    # for W normalised to the height variance (Valenzuela 1978; Plant 1990;
+    # docs/scattering.md), g_hh = (eps - 1) / (cos + r)^2,
+    # g_vv = (eps - 1) (eps (1 + sin^2) - sin^2) / (eps cos + r)^2, r = sqrt(eps - sin^2);
+    # no cross-polarisation. W is the table's value at the Bragg vector (the table's own
+    # accuracy is tested in test_drjit_kernel.py).
+    th = np.radians(theta_deg)
+    n_i, n_s, nn = _backscatter(th)
+    t = facet_terms(n_i, n_s, nn, K, EPS, gaussian_table, 0.01, 0.01, model="spm",
+                    backend=backend)
+    c, s2 = np.cos(th), np.sin(th) ** 2
+    r = np.sqrt(EPS - s2)
+    w = gaussian_table(np.array([-2 * K * np.sin(th)]), np.array([0.0]))[0]
+    g_hh = (EPS - 1) / (c + r) ** 2
+    g_vv = (EPS - 1) * (EPS * (1 + s2) - s2) / (EPS * c + r) ** 2
+    pref = 16 * np.pi * K**4 * c**4 * w
+    sigma = t.sigma()
+    np.testing.assert_allclose(sigma[:, 0], pref * abs(g_hh) ** 2, rtol=1e-12)
+    np.testing.assert_allclose(sigma[:, 3], pref * abs(g_vv) ** 2, rtol=1e-12)
+    np.testing.assert_allclose(sigma[:, [1, 2]], 0.0, atol=1e-15 * sigma[0, 3])
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_blend_weights_at_the_papers_angles(backend, gaussian_table):
+    # Paper eqs 10-11 (beta in degrees): at backscatter on a flat facet beta is the
+    # incidence angle; w1 = 0.1 at beta = 6 pi deg on HH, VV and w2 = 0.1 at 20 pi deg
+    # on HV, VH; and the speckled amplitudes are eq P4 with those weights.
+    for beta, channels in ((6 * np.pi, [0, 3]), (20 * np.pi, [1, 2])):
+        n_i, n_s, nn = _backscatter(np.radians(beta))
+        t = facet_terms(n_i, n_s, nn, K, EPS, gaussian_table, 0.01, 0.01, backend=backend)
+        np.testing.assert_allclose(t.weight[:, channels], 0.1, rtol=1e-12)
+        draws = speckle_draws(3, np.random.default_rng(4))
+        a = speckled_facet_amplitudes(n_i, n_s, nn, np.full(3, 2.0), K, EPS, gaussian_table,
+                                      0.01, 0.01, draws=draws, backend=backend)
+        np.testing.assert_allclose(a, speckle_amplitudes(t, np.full(3, 2.0), draws=draws),
+                                   rtol=1e-12, atol=1e-14 * np.abs(a).max())

@@ -5,7 +5,7 @@ import pytest
 from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from seaecho.scattering import frames
+from seaecho.geometry import frames
 from seaecho.scattering.fresnel import fresnel_coefficients
 from seaecho.scattering.kirchhoff import kirchhoff_matrix, kirchhoff_sigma
 from seaecho.scattering.slopes import (
@@ -99,6 +99,32 @@ def test_cox_munk_density_moments(u):
     assert abs((pdf * zc**2).sum() / p.mss_crosswind - 1) < 1e-2
     skew = (pdf * zu**3).sum() / p.mss_upwind**1.5
     assert abs(skew - p.c03) < 0.03
+
+
+@pytest.mark.parametrize("u", [2.0, 5.0, 8.0])
+def test_cox_munk_fourth_moments_are_the_published_peakedness(u):
+    # Cox & Munk (1954), eq 2 and sec. 6: the coefficients of the fourth-order terms are
+    # the excess moments of the normalised slopes, E[xi^4] - 3 = c40, E[xi^2 eta^2] - 1 =
+    # c22, E[eta^4] - 3 = c04, measured on the clean surface as c40 = 0.40 +- 0.23,
+    # c22 = 0.12 +- 0.06, c04 = 0.23 +- 0.41 (independent of the wind speed). The values
+    # are written here as published, not read from the code.
+    p = cox_munk_parameters(u)
+    x = np.linspace(-12, 12, 1201)
+    zu, zc = np.meshgrid(x * np.sqrt(p.mss_upwind), x * np.sqrt(p.mss_crosswind), indexing="ij")
+    dz = (x[1] - x[0]) ** 2 * np.sqrt(p.mss_upwind * p.mss_crosswind)
+    pdf = cox_munk_pdf(zu, zc, p) * dz
+    xi, eta = zc / np.sqrt(p.mss_crosswind), -zu / np.sqrt(p.mss_upwind)
+    assert (pdf * xi**4).sum() - 3.0 == pytest.approx(0.40, abs=0.02)
+    assert (pdf * xi**2 * eta**2).sum() - 1.0 == pytest.approx(0.12, abs=0.02)
+    assert (pdf * eta**4).sum() - 3.0 == pytest.approx(0.23, abs=0.02)
+    # At nadir backscatter the specular slope is 0, where the series is
+    # 1 + c40/8 + c22/4 + c04/8 = 1.10875 times the Gaussian of the same variances:
+    # sigma0 = |R(0)|^2 / (2 sigma_u sigma_c) x 1.10875 (Barrick 1968 with eq 2).
+    sig = kirchhoff_sigma(0.0, 0.0, 0.0, np.pi, EPS, 0.0, 0.0, cox_munk=p)
+    r0 = abs(fresnel_coefficients(1.0, EPS)[0]) ** 2
+    ref = r0 / (2 * np.sqrt(p.mss_upwind * p.mss_crosswind)) * (1 + 0.40 / 8 + 0.12 / 4
+                                                                 + 0.23 / 8)
+    np.testing.assert_allclose(sig[[0, 3]], ref, rtol=1e-12)
 
 
 def test_cox_munk_clean_surface_mss():

@@ -7,7 +7,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from scattering_helpers import gaussian_spectrum
 
-from seaecho.scattering import frames
+from seaecho.geometry import frames
 from seaecho.scattering.spm import spm_alpha, spm_matrix, spm_sigma
 
 EPS_SEA = 55.9 - 37.0j  # Meissner-Wentz, 10 GHz, 20 degC, 35 psu

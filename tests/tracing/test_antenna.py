@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from seaecho.constants import C0
-from seaecho.radar.antennas import Antenna
+from seaecho.radar.antennas import Antenna, aperture_radiated_power
 
 LAM = C0 / 10e9
 
@@ -18,7 +18,8 @@ def test_sionna_registration_matches_numpy():
     from seaecho.tracing.antenna import register_sionna_aperture
     from seaecho.tracing.variant import mitsuba_modules
 
-    name = register_sionna_aperture(0.18, 0.14, LAM)
+    name = register_sionna_aperture(0.18, 0.14, LAM,
+                                    aperture_radiated_power(0.18, 0.14, LAM))
     _, mi, _ = mitsuba_modules()
     from sionna.rt.antenna_pattern import antenna_pattern_registry
 
@@ -34,7 +35,7 @@ def test_sionna_registration_matches_numpy():
 
 
 def test_radar_stage_does_not_import_sionna():
-    # shared/DESIGN.md: only seaecho.tracing imports mitsuba / sionna.
+    # docs/design.md: only seaecho.tracing imports mitsuba / sionna.
     import seaecho.radar.antennas as ant
 
     assert not hasattr(ant, "register_sionna_aperture")

@@ -1,4 +1,4 @@
-"""Aligned buffers for the Dr.Jit kernels (seaecho.geometry.buffers)."""
+"""Aligned buffers for the Dr.Jit kernels (seaecho.backend.aligned)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from seaecho.geometry.buffers import ALIGNMENT, aligned
+from seaecho.backend import ALIGNMENT, aligned
 
 
 @settings(max_examples=30, deadline=None)
@@ -19,3 +19,4 @@ def test_aligned_copy_keeps_values_and_starts_on_a_cache_line(n, offset, dtype):
     assert out.dtype == dtype and out.flags.c_contiguous
     assert n == 0 or out.ctypes.data % ALIGNMENT == 0  # (an empty view has no data)
     np.testing.assert_array_equal(out, a.astype(dtype))
+

@@ -41,7 +41,7 @@ def scene_file(tmp_path):
 def test_trace_writes_dataset_and_maps(scene_file, tmp_path, capsys):
     out = tmp_path / "facets.nc"
     rc = main(["trace", str(scene_file), "-o", str(out), "--tx", "-200", "-150", "25",
-               "--rx", "150", "-180", "15", "--time", "0.5"])
+               "--rx", "150", "-180", "15", "--time", "0.5", "--frequency-ghz", "10"])
     assert rc == 0
     assert out.exists() and out.with_suffix(".png").exists()
     with xr.open_dataset(out, engine="h5netcdf") as f:
@@ -59,7 +59,8 @@ def test_trace_writes_dataset_and_maps(scene_file, tmp_path, capsys):
 
 def test_compare_writes_table_and_figures(scene_file, tmp_path):
     out = tmp_path / "cmp"
-    rc = main(["compare", str(scene_file), "-o", str(out), "--tx", "-200", "-150", "25"])
+    rc = main(["compare", str(scene_file), "-o", str(out), "--tx", "-200", "-150", "25",
+               "--frequency-ghz", "10"])
     assert rc == 0
     with open(out / "compare.csv", newline="") as fh:
         rows = {r["quantity"]: r for r in csv.DictReader(fh)}
@@ -80,3 +81,15 @@ def test_bad_input_exits_2(scene_file, tmp_path, capsys):
     assert main(["trace", str(scene_file), "-o", str(tmp_path / "nodir" / "a.nc"),
                  "--tx", "0", "0", "100"]) == 2
     assert not (tmp_path / "a.nc").exists()
+
+
+def test_scene_without_radar_needs_a_frequency(scene_file, tmp_path, capsys):
+    # No [radar], no --frequency-ghz: no carrier is assumed (the sea water's permittivity
+    # and the two-scale split depend on it); exit 2 with a message, no file.
+    capsys.readouterr()
+    for cmd in (["trace", str(scene_file), "-o", str(tmp_path / "a.nc")],
+                ["compare", str(scene_file), "-o", str(tmp_path / "cmp")]):
+        assert main(cmd + ["--tx", "-200", "-150", "25"]) == 2
+        err = capsys.readouterr().err
+        assert "no [radar]" in err and "--frequency-ghz" in err and "Traceback" not in err
+    assert not (tmp_path / "a.nc").exists() and not (tmp_path / "cmp").exists()

@@ -1,4 +1,9 @@
-"""FacetEngine (modes, refresh interval), [[objects]] loading, hull mesh, XML scenes."""
+"""FacetEngine (modes, refresh interval), [[objects]] loading, hull mesh, XML scenes.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import types
 from pathlib import Path
@@ -46,32 +51,53 @@ def test_reference_time():
 
 
 def test_raytraced_engine_matches_tracer_and_sees_shadowing():
+    from seaecho.tracing.tracer import FacetTracer
+
     sea = MovingSinusoidSea()
-    eng = FacetEngine(sea, lambda t: TX, mode="raytraced")
+    eng = FacetEngine(sea.state, lambda t: TX, mode="raytraced")
     f = eng.facets(0.5)
     assert f.mode == "raytraced" and f.time_s == 0.5 and f.visibility_time_s == 0.5
     assert 0.05 < 1 - f.lit.mean() < 0.9  # steep waves at 3.6 deg grazing: shadows
+    # the engine is the tracer on the provider's surface at t and the platform at t
+    st = MovingSinusoidSea().state(0.5)
+    ref = FacetTracer(st.x, st.y, st.elevation).facets(st.elevation, st.velocity, TX, t=0.5)
+    np.testing.assert_array_equal(f.lit, ref.lit)
+    np.testing.assert_array_equal(f.visibility, ref.visibility)
+    np.testing.assert_allclose(f.r_tx, ref.r_tx, rtol=1e-12)
+    # An independent method: the heights depend on x only, so between nodes the mesh is
+    # the linear interpolation of the node heights along x, and a straight segment to TX
+    # passes below it somewhere iff it does at a node: a facet is lit when it faces TX
+    # and its segment to TX is above every node it crosses within the tile. Every facet
+    # must agree.
+    c = f.centroid
+    d = TX[None, :] - c
+    s = (st.x[None, :] - c[:, :1]) / d[:, :1]  # segment parameter at each node's x
+    y = c[:, 1:2] + s * d[:, 1:2]
+    crossed = (s > 1e-9) & (s <= 1.0) & (y >= st.y[0]) & (y <= st.y[-1])
+    below = st.elevation[0][None, :] > c[:, 2:3] + s * d[:, 2:3] + 1e-6
+    facing = np.einsum("ij,ij->i", f.normal, d) > 0
+    np.testing.assert_array_equal(f.lit > 0, facing & ~np.any(crossed & below, axis=1))
     # velocity: the mean of the vertices' dz/dt
     assert np.abs(f.velocity[:, 2]).max() > 0
-    fa = FacetEngine(sea, lambda t: TX, mode="analytic", shadowing="none").facets(0.5)
+    fa = FacetEngine(sea.state, lambda t: TX, mode="analytic", shadowing="none").facets(0.5)
     np.testing.assert_allclose(fa.r_tx, f.r_tx)
     assert fa.lit.mean() > f.lit.mean()  # facing only: no shadows
 
 
 def test_refresh_interval_reuses_occlusion_deterministically():
     sea = MovingSinusoidSea()
-    eng = FacetEngine(sea, lambda t: TX, mode="raytraced", refresh_interval_s=1.0)
+    eng = FacetEngine(sea.state, lambda t: TX, mode="raytraced", refresh_interval_s=1.0)
     f1 = eng.facets(1.25)
     assert f1.visibility_time_s == 1.0
     f2 = eng.facets(1.75)  # same reference time: occlusion reused, geometry of t = 1.75
     assert f2.visibility_time_s == 1.0
     assert not np.allclose(f1.centroid[:, 2], f2.centroid[:, 2])
     # a fresh engine asked for t = 1.75 first gives the same facets (order-independent)
-    fresh = FacetEngine(MovingSinusoidSea(), lambda t: TX, mode="raytraced",
+    fresh = FacetEngine(MovingSinusoidSea().state, lambda t: TX, mode="raytraced",
                         refresh_interval_s=1.0).facets(1.75)
     np.testing.assert_array_equal(fresh.lit, f2.lit)
     # at the reference time itself the result is the plain ray-traced one
-    exact = FacetEngine(MovingSinusoidSea(), lambda t: TX, mode="raytraced").facets(1.0)
+    exact = FacetEngine(MovingSinusoidSea().state, lambda t: TX, mode="raytraced").facets(1.0)
     np.testing.assert_array_equal(eng.facets(1.0).lit, exact.lit)
 
 
@@ -192,17 +218,29 @@ def test_variant_is_explicit_and_cuda_needs_a_gpu():
 
 
 def test_subfacet_shadowing_from_scene_lowers_visibility():
+    from seaecho.build import build_engine, build_sea, build_sea_model
+
     scene = _scene(tracing={"mode": "analytic", "subfacet_shadowing": True})
     tx = np.array([-600.0, 0.0, 30.0])
-    on = FacetEngine.from_scene(scene, tx_position=tx)
-    off = FacetEngine.from_scene(_scene(tracing={"mode": "analytic"}), sea=on.sea,
-                                 tx_position=tx)
-    assert on.subfacet is not None and off.subfacet is None
+    sea = build_sea(scene)
+    on = build_engine(scene, sea.state, frequency=10e9, tx_position=tx)
+    off = build_engine(_scene(tracing={"mode": "analytic"}), sea.state, frequency=10e9,
+                       tx_position=tx)
+    # the engine's sub-facet slopes are the sea model's (the tilting band up to k/3)
+    assert on.subfacet == build_sea_model(scene, 10e9).subfacet and off.subfacet is None
     f_on, f_off = on.facets(0.0), off.facets(0.0)
     s = f_on.extra["subfacet_shadowing"]
     assert np.all((s >= 0) & (s <= 1)) and s.mean() < 1
     np.testing.assert_allclose(f_on.visibility, f_off.visibility * s)
     np.testing.assert_array_equal(f_on.lit, f_off.lit)
+
+
+def test_engine_of_a_scene_without_radar_needs_a_frequency():
+    from seaecho.build import build_engine, build_sea
+
+    scene = _scene(tracing={"mode": "analytic"})
+    with pytest.raises(ValueError, match=r"no \[radar\].*frequency"):
+        build_engine(scene, build_sea(scene).state, tx_position=[-600.0, 0.0, 30.0])
 
 
 def test_held_surface_does_not_rebuild_the_bvh():

@@ -6,6 +6,10 @@ section 6.17), the transverse wavelength 2 pi V^2 / g and the divergent waveleng
 2 pi V^2 cos^2(theta) / g (paper section IV-B), the energy per unit length of the
 pattern against Parseval's theorem applied to eq W4, and the steady translation with the
 ship (eqs W1, W12).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 import numpy as np
@@ -25,9 +29,10 @@ N = 512
 
 @pytest.fixture(scope="module")
 def image():
-    """A thin ship (B/L = 0.1) sailing towards +x; wake over 240 m behind it."""
+    """A thin ship (B/L = 0.1) sailing towards +x; wake over 240 m behind it (Michell's
+    heights as they are: these tests check the linear theory)."""
     ship = Ship(length=10.0, beam=1.0, draft=0.6, speed=SPEED, heading=0.0, position0=(X_SHIP, 0))
-    wake = KelvinWake(ship)
+    wake = KelvinWake(ship, amplitude="michell", breaking_limit=False)
     x = (np.arange(N) - N / 2) * DX
     y = x.copy()
     f = wake.fields(x, y, 0.0)

@@ -5,9 +5,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from seaecho.config.ship import ShipConfig
-from seaecho.constants import KNOT
-from seaecho.wake import Ship, turbulent_wake_mask, turbulent_wake_width
+from seaecho.build import build_sea
+from seaecho.config import parse_scene
+from seaecho.wake import Ship, turbulent_wake_mask, turbulent_wake_strip, turbulent_wake_width
 
 
 def test_straight_track_and_velocity():
@@ -17,22 +17,19 @@ def test_straight_track_and_velocity():
     np.testing.assert_allclose(ship.position(4.0), [1.0, -2.0] + 20.0 * ship.direction)
 
 
-def test_from_config_converts_knots_and_degrees():
-    cfg = ShipConfig(
-        length_m=10.0,
-        beam_m=4.0,
-        draft_m=1.5,
-        speed_kn=10.0,
-        heading_deg=35.0,
-        position_m=(3.0, 4.0),
-        turbulent_wake_length_m=150.0,
-    )
-    ship = Ship.from_config(cfg)
-    assert ship.speed == pytest.approx(10.0 * KNOT)
+def test_builder_converts_knots_and_degrees():
+    # [ship] in knots and degrees -> the wake stage's SI Ship (seaecho.build)
+    ship_cfg = {"length_m": 10.0, "beam_m": 4.0, "draft_m": 1.5, "speed_kn": 10.0,
+                "heading_deg": 35.0, "position_m": [3.0, 4.0],
+                "turbulent_wake_length_m": 150.0}
+    sea = {"wind_speed_m_s": 5.0, "size_x_m": 16.0, "nx": 16}
+    ship = build_sea(parse_scene({"sea": sea, "ship": ship_cfg})).ship
+    assert ship.speed == pytest.approx(10.0 * 1852.0 / 3600.0)  # 1 kn = 1852 m / h
     assert ship.heading == pytest.approx(np.deg2rad(35.0))
     assert ship.position0 == (3.0, 4.0)
     assert ship.wake_length == 150.0
-    default = Ship.from_config(cfg.model_copy(update={"turbulent_wake_length_m": None}))
+    del ship_cfg["turbulent_wake_length_m"]
+    default = build_sea(parse_scene({"sea": sea, "ship": ship_cfg})).ship
     assert default.wake_length == pytest.approx(200.0)
 
 
@@ -64,7 +61,7 @@ def mask_case():
     ship = Ship(10.0, 4.0, 1.5, 5.0, np.deg2rad(35.0), (50.0, 40.0))
     x = np.linspace(-200.0, 100.0, 601)
     y = np.linspace(-200.0, 100.0, 601)
-    return ship, x, y, turbulent_wake_mask(ship, x, y, 0.0)
+    return ship, x, y, turbulent_wake_strip(ship, x, y, 0.0)
 
 
 def _at(ship, x, y, m, xs, ys):
@@ -93,7 +90,7 @@ def test_mask_width_grows_as_one_fifth_power():
     xis = np.array([20.0, 200.0, 2000.0])
     for xi in xis:
         x = np.array([-(5.0 + xi)])  # sailing +x: x' = -x
-        prof = turbulent_wake_mask(ship, x, y, 0.0)[:, 0]
+        prof = turbulent_wake_strip(ship, x, y, 0.0)[:, 0]
         widths.append(y[prof >= 0.5].max() - y[prof >= 0.5].min())
     np.testing.assert_allclose(widths, turbulent_wake_width(xis, 4.0), rtol=2e-3)
     ratio = widths[2] / widths[1]
@@ -103,9 +100,9 @@ def test_mask_width_grows_as_one_fifth_power():
 def test_mask_length_default_and_explicit():
     ship = Ship(10.0, 4.0, 1.5, 5.0, 0.0, (0.0, 0.0))
     x = -np.array([5.0 + 150.0, 5.0 + 199.0, 5.0 + 250.0])
-    m = turbulent_wake_mask(ship, x, np.array([0.0]), 0.0)[0]
+    m = turbulent_wake_strip(ship, x, np.array([0.0]), 0.0)[0]
     assert m[0] == pytest.approx(1.0) and 0.0 < m[1] < 0.1 and m[2] == 0.0
-    m2 = turbulent_wake_mask(ship, x, np.array([0.0]), 0.0, length=100.0)[0]
+    m2 = turbulent_wake_strip(ship, x, np.array([0.0]), 0.0, length=100.0)[0]
     assert np.all(m2 == 0.0)
 
 
@@ -113,7 +110,7 @@ def test_mask_moves_with_the_ship(mask_case):
     ship, x, y, m = mask_case
     t = 12.0
     d = ship.velocity * t
-    moved = turbulent_wake_mask(ship, x + d[0], y + d[1], t)
+    moved = turbulent_wake_strip(ship, x + d[0], y + d[1], t)
     np.testing.assert_allclose(moved, m, atol=1e-12)
 
 
@@ -129,4 +126,5 @@ def test_mask_is_a_damping_fraction(length, beam_frac, heading, t):
     x = np.linspace(-3 * length, 3 * length, 41)
     m = turbulent_wake_mask(ship, x, x, t)
     assert m.shape == (41, 41)
-    assert np.all((m >= 0.0) & (m <= 1.0))
+    assert np.all((m >= 0.0) & (m < 1.0))
+    assert np.all(m <= turbulent_wake_strip(ship, x, x, t))

@@ -22,6 +22,8 @@ COMMANDS = (
     "check",
     "surface",
     "run",
+    "sweep",
+    "image",
     "trace",
     "compare",
     "sigma",

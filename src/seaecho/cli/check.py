@@ -21,8 +21,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 def run(args: argparse.Namespace) -> int:
     from pathlib import Path
 
+    from ..build import check_scene
     from ..config import load_scene
-    from ..ocean.sampling import check_sampling
     from ..preflight import check_run
     from . import check_memory_option
 
@@ -35,9 +35,9 @@ def run(args: argparse.Namespace) -> int:
                               max_memory_gb=args.max_memory_gb, figures=not args.no_figures)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        check_sampling(scene)
+        check_scene(scene)
     lx, ly = scene.sea.size_m
-    nx, ny = scene.sea.grid_shape
+    ny, nx = scene.sea.shape
     print(f"{args.scene}: valid scene '{scene.name}'")
     print(f"  sea: {scene.sea.spectrum} spectrum, U19.5 = {scene.sea.wind_speed_m_s} m/s "
           f"towards {scene.sea.wind_direction_deg} deg, tile {lx} x {ly} m on {nx} x {ny}")

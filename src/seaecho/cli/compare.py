@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-CHANNELS = ("HH", "HV", "VH", "VV")
+from ..conventions import CHANNELS
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -30,23 +30,12 @@ def _wrap(a):
     return np.angle(np.exp(1j * a))
 
 
-def summed_sigma(f, engine, scene):
-    """Sum over facets of area x visibility x sigma_mn (HH, HV, VH, VV) [m^2]."""
-    import numpy as np
-
-    from ..constants import C0
-    from ..ocean.twoscale import unresolved_statistics
+def summed_sigma(f, sea_model):
+    """Sum over facets of area x visibility x sigma_mn (HH, HV, VH, VV) [m^2], with the
+    simulation's own sea model (:func:`seaecho.build.build_sea_model`)."""
     from ..scattering.facet import facet_sigma
 
-    k = 2.0 * np.pi * engine.frequency_hz / C0
-    dx = float(engine.sea.x[1] - engine.sea.x[0])
-    dy = float(engine.sea.y[1] - engine.sea.y[0])
-    # sub-facet slopes of the band up to k/3 (the geometric-optics cut of two-scale models)
-    stats = unresolved_statistics(engine.sea.spectrum, dx, dy, k / 3.0)
-    sigma = facet_sigma(f.n_i, f.n_s, f.normal, k, engine.eps_r,
-                        engine.sea.spectrum.height_spectrum, max(stats.mss_upwind, 1e-6),
-                        max(stats.mss_crosswind, 1e-6),
-                        np.deg2rad(scene.sea.wind_direction_deg), local=f)
+    sigma = facet_sigma(f.n_i, f.n_s, f.normal, *sea_model.facet_model, local=f)
     return (f.area * f.visibility) @ sigma
 
 
@@ -59,20 +48,26 @@ def run(args: argparse.Namespace) -> int:
     import matplotlib.pyplot as plt
     import numpy as np
 
+    from ..build import build_engine as build_facet_engine
+    from ..build import build_sea_model
     from ..io.dataset import atomic_path, atomic_savefig
-    from ..tracing import FacetEngine
-    from ..tracing.output import visibility_summary
+    from ..io.facets import visibility_summary
     from . import UsageError
     from .trace import build_engine
 
     out = Path(args.output)
     if out.exists() and not out.is_dir():
         raise UsageError(f"-o {out}: exists and is not a folder")
-    scene, traced = build_engine(args, mode="raytraced")
-    analytic = FacetEngine.from_scene(scene, base_dir=Path(args.scene).resolve().parent,
-                                      sea=traced.sea, mode="analytic", tx_position=args.tx,
-                                      rx_position=args.rx)
-    st = traced.sea.state(args.time)
+    scene, sea, traced = build_engine(args, mode="raytraced")
+    freq = None if args.frequency_ghz is None else args.frequency_ghz * 1e9
+    try:
+        sea_model = build_sea_model(scene, freq)
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
+    analytic = build_facet_engine(scene, sea.state, Path(args.scene).resolve().parent,
+                                  frequency=freq, mode="analytic", tx_position=args.tx,
+                                  rx_position=args.rx, sea_model=sea_model)
+    st = sea.state(args.time)
     ft = traced.facets(args.time, state=st)
     fa = analytic.facets(args.time, state=st)
     out.mkdir(parents=True, exist_ok=True)
@@ -96,7 +91,7 @@ def run(args: argparse.Namespace) -> int:
                      float(np.sqrt(np.mean(d**2)))))
         rows.append((f"{name}_difference_max_abs", "deg", np.nan, np.nan,
                      float(np.abs(d).max())))
-    st_sig, sa_sig = summed_sigma(ft, traced, scene), summed_sigma(fa, analytic, scene)
+    st_sig, sa_sig = summed_sigma(ft, sea_model), summed_sigma(fa, sea_model)
     for c, a, b in zip(CHANNELS, st_sig, sa_sig, strict=True):
         rows.append((f"sigma_sum_{c}", "m2", float(a), float(b), float(b - a)))
         rows.append((f"sigma_sum_{c}_db", "dB", float(10 * np.log10(a)),
@@ -109,7 +104,7 @@ def run(args: argparse.Namespace) -> int:
         for r in rows:
             w.writerow([r[0], r[1]] + [f"{v:.6g}" for v in r[2:]])
 
-    x, y = traced.sea.x, traced.sea.y
+    x, y = sea.x, sea.y
     ext = (x[0], x[-1], y[0], y[-1])
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.6), constrained_layout=True)
     for ax, (a, title, cmap, lim) in zip(axes, [

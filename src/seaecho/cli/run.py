@@ -1,8 +1,15 @@
-"""``seaecho run SCENE.toml -o OUT.nc``: simulate the radar echoes of a scene."""
+"""``seaecho run SCENE.toml -o OUT.nc``: simulate the radar echoes of a scene.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 
 import argparse
+import shutil
+import sys
 from pathlib import Path
 
 
@@ -14,8 +21,8 @@ def register(sub: argparse._SubParsersAction) -> None:
         "atomically) and draw the paper's Fig. 6 panels.",
     )
     p.add_argument("scene", help="scene file (TOML)")
-    p.add_argument("-o", "--output", help="output netCDF file (default: [run] output, "
-                   "else <scene>.nc)")
+    p.add_argument("-o", "--output", help="output netCDF file, or Zarr store if it ends in "
+                   ".zarr (default: [run] output, else <scene>.nc)")
     p.add_argument("--pulses", type=int, metavar="N",
                    help="simulate only the first N pulses (quick look)")
     p.add_argument("--no-figures", action="store_true", help="do not write PNG figures")
@@ -23,15 +30,40 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--max-memory-gb", type=float, metavar="GB", help="refuse a run whose "
                    "estimated peak memory exceeds this (default: what is available, or "
                    "SEAECHO_MAX_MEMORY_GB)")
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--workers", type=int, metavar="N",
+                   help="run the blocks of pulses on a local Dask cluster of N worker "
+                   "processes (default: serially in this process; same bytes)")
+    g.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run on an existing Dask cluster (e.g. tcp://host:8786); a Zarr "
+                   "output and the scene's meshes must be on a file system the workers see")
+    p.add_argument("--resume", action="store_true",
+                   help="Zarr output: continue an interrupted run of the same scene, "
+                   "computing only the missing blocks")
+    p.add_argument("--block-pulses", type=int, metavar="N",
+                   help="pulses per block of work and per Zarr chunk (default: about 16, "
+                   "aligned with the held sea and the occlusion refresh)")
     p.set_defaults(func=run)
 
 
-def run(args: argparse.Namespace) -> int:
-    import xarray as xr
+def first_pulses(scene, n: int):
+    """The scene limited to its first ``n`` pulses (``--pulses``)."""
+    from . import UsageError
 
+    if n < 1:
+        raise UsageError(f"--pulses {n}: must be >= 1")
+    n = min(n, scene.radar.n_pulses)
+    radar = scene.radar.model_copy(update={
+        "n_pulses": n, "sigma_map_pulse": min(scene.radar.sigma_map_pulse, n - 1)})
+    return scene.model_copy(update={"radar": radar})
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..build import build_simulation, check_scene
     from ..config import SceneError, load_scene
-    from ..ocean.sampling import check_sampling
-    from ..radar.figures import run_figures
+    from ..guards import NonFiniteEchoError
+    from ..io.figures import run_figures
+    from ..io.zarr_run import StoreError, is_zarr, open_run, part_path
     from ..simulation import Simulation
     from . import UsageError
 
@@ -40,18 +72,7 @@ def run(args: argparse.Namespace) -> int:
         raise SceneError(f"{args.scene}: `seaecho run` needs [radar] and [transmitter] "
                          "sections")
     if args.pulses is not None:
-        if args.pulses < 1:
-            raise UsageError(f"--pulses {args.pulses}: must be >= 1")
-        n = min(args.pulses, scene.radar.n_pulses)
-        radar = scene.radar.model_copy(update={
-            "n_pulses": n, "sigma_map_pulse": min(scene.radar.sigma_map_pulse, n - 1)})
-        scene = scene.model_copy(update={"radar": radar})
-    from ..preflight import check_run
-    from . import check_memory_option
-
-    check_memory_option(args.max_memory_gb)  # memory estimate, degenerate geometry...
-    print(check_run(scene, args.scene, base_dir=Path(args.scene).parent,
-                    max_memory_gb=args.max_memory_gb, figures=not args.no_figures))
+        scene = first_pulses(scene, args.pulses)
     if args.output:
         out = Path(args.output)
     elif scene.run.output:
@@ -60,18 +81,64 @@ def run(args: argparse.Namespace) -> int:
         out = Path(Path(args.scene).stem + ".nc")
     if str(out.parent) and not out.parent.is_dir():
         raise UsageError(f"output directory {out.parent} does not exist")
+    zarr_out = is_zarr(out)
+    if args.resume and not zarr_out:
+        raise UsageError(f"--resume: {out} is not a Zarr store (*.zarr); a netCDF run is "
+                         "written atomically and starts over")
+    if zarr_out and scene.image is not None:
+        raise UsageError(f"{args.scene} has [image]: focusing reads a netCDF run; write "
+                         "the run to a .nc file")
+    if args.workers is not None and args.workers < 1:
+        raise UsageError(f"--workers {args.workers}: must be >= 1")
+    if args.block_pulses is not None and args.block_pulses < 1:
+        raise UsageError(f"--block-pulses {args.block_pulses}: must be >= 1")
+    from ..preflight import check_run
+    from . import check_memory_option
+
+    check_memory_option(args.max_memory_gb)  # memory estimate, degenerate geometry...
+    base_dir = Path(args.scene).parent
+    print(check_run(scene, args.scene, base_dir=base_dir, max_memory_gb=args.max_memory_gb,
+                    figures=not args.no_figures, workers=args.workers,
+                    block=args.block_pulses))
     if scene.radar.sea_clutter:
-        check_sampling(scene)  # SamplingWarning on stderr if the tile / grid is too coarse
+        check_scene(scene)  # SamplingWarning on stderr if the tile / grid is too coarse
     try:
-        sim = Simulation(scene, base_dir=Path(args.scene).parent)
+        sim = Simulation.from_models(build_simulation(scene, base_dir=base_dir))
     except ValueError as exc:
         raise SceneError(f"{args.scene}: {exc}") from None
-    sim.run(out, progress=not args.quiet)
+    try:
+        if args.workers is None and args.scheduler is None:
+            sim.run(out, progress=not args.quiet, chunk=args.block_pulses,
+                    resume=args.resume)
+        else:
+            from .. import distributed
+
+            with distributed.cluster(args.workers, args.scheduler) as client:
+                distributed.run(scene, out, client=client, base_dir=base_dir,
+                                block=args.block_pulses, resume=args.resume,
+                                progress=not args.quiet, simulation=sim)
+    except StoreError as exc:
+        raise UsageError(str(exc)) from None
+    except NonFiniteEchoError:
+        if zarr_out:  # a NaN pulse comes back on --resume: nothing worth keeping
+            shutil.rmtree(part_path(out), ignore_errors=True)
+        raise
+    except KeyboardInterrupt:
+        if not zarr_out:
+            raise
+        print(f"seaecho: interrupted; the blocks written so far are kept in "
+              f"{part_path(out)}: continue with --resume", file=sys.stderr)
+        return 130
     r = sim.radar
     print(f"wrote {out} ({r.n_pulses} pulses x {len(r.channels)} channels x "
           f"{r.window.n_samples} samples)")
     if not args.no_figures:
-        with xr.open_dataset(out, engine="h5netcdf") as ds:
+        with open_run(out) as ds:
             for png in run_figures(ds, out.with_suffix("")):
                 print(f"wrote {png}")
+    if scene.image is not None:  # [image]: focus the raw data just written (seaecho image)
+        from .image import focus_to_files
+
+        focus_to_files(out, out.with_name(out.stem + "_image.nc"), scene.image,
+                       progress=not args.quiet, figures=not args.no_figures)
     return 0

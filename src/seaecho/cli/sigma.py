@@ -5,6 +5,10 @@ phi_s_deg, sigma_hh_db, sigma_hv_db, sigma_vh_db, sigma_vv_db``) and a PNG besid
 Each angle option takes a value or an inclusive ``start:stop:step`` range; the rows are
 the Cartesian product of the four angle lists. Monostatic: ``--phi-s-deg 180`` (with
 ``--phi-i-deg 0``) and ``--theta-s-deg`` equal to ``--theta-i-deg``.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
@@ -45,34 +49,40 @@ def parse_range(text: str, name: str, lo: float, hi: float):
 
 def register(sub: argparse._SubParsersAction) -> None:
     from ..ocean.seawater import PERMITTIVITY_MODELS
+    from ..ocean.twoscale import TWO_SCALE_CUT_RATIO
     from ..scattering.models import MEAN_PLANE_MODELS, SLOPE_MODELS
 
     p = sub.add_parser(
         "sigma", help="bistatic polarimetric sigma_mn of the sea for angle sweeps (CSV + PNG)",
         description="Mean-plane bistatic scattering coefficients sigma_mn of a wind sea "
         "(paper eqs 7-11) for angle sweeps. Angles: a value or start:stop:step (inclusive). "
-        "Monostatic: --phi-s-deg 180 and --theta-s-deg equal to --theta-i-deg.")
+        "Monostatic: --phi-s-deg 180 and --theta-s-deg equal to --theta-i-deg. With --scene, "
+        "the sea state, the water and the carrier are the scene's.")
+    p.add_argument("--scene", metavar="SCENE.toml",
+                   help="take the sea state ([sea]: spectrum, spreading, wind, fetch, "
+                   "temperature, salinity) and the carrier ([radar]) from a scene file; "
+                   "the sea options below are then not allowed")
     p.add_argument("--model", choices=MEAN_PLANE_MODELS, default="blend",
                    help="scattering model (default: blend, eqs 10-11)")
-    p.add_argument("--frequency-ghz", type=float, default=10.0, help="radar frequency [GHz]")
-    p.add_argument("--wind-speed", type=float, default=4.53,
+    p.add_argument("--frequency-ghz", type=float,
+                   help="radar frequency [GHz] (default 10, or the scene's carrier)")
+    p.add_argument("--wind-speed", type=float,
                    help="wind speed U19.5 at 19.5 m [m/s] (default 4.53, paper Fig. 3)")
-    p.add_argument("--wind-direction-deg", type=float, default=0.0,
-                   help="direction the wind blows towards, CCW from +x [deg]")
-    p.add_argument("--spectrum", default="elfouhaily",
-                   choices=("elfouhaily", "pierson-moskowitz", "jonswap"),
+    p.add_argument("--wind-direction-deg", type=float,
+                   help="direction the wind blows towards, CCW from +x [deg] (default 0)")
+    p.add_argument("--spectrum", choices=("elfouhaily", "pierson-moskowitz", "jonswap"),
                    help="omnidirectional wave spectrum (default elfouhaily)")
-    p.add_argument("--spreading", default="elfouhaily", choices=("elfouhaily",
-                                                                 "longuet-higgins"),
+    p.add_argument("--spreading", choices=("elfouhaily", "longuet-higgins"),
                    help="directional spreading (default elfouhaily)")
     p.add_argument("--fetch-m", type=float, default=None, help="fetch [m] (jonswap)")
     p.add_argument("--slopes", choices=SLOPE_MODELS, default="gaussian",
                    help="slope density of the Kirchhoff part (default gaussian)")
-    p.add_argument("--cut-ratio", type=float, default=1.0 / 3.0,
-                   help="two-scale split k_cut / k [-] (default 1/3): slopes of the longer "
-                   "waves for Kirchhoff and two-scale tilts")
-    p.add_argument("--temperature-c", type=float, default=20.0, help="sea temperature [degC]")
-    p.add_argument("--salinity-psu", type=float, default=35.0, help="salinity [psu]")
+    p.add_argument("--cut-ratio", type=float, default=TWO_SCALE_CUT_RATIO,
+                   help="two-scale split k_cut / k [-] (default 1/3, the split every stage "
+                   "uses): slopes of the longer waves for Kirchhoff and two-scale tilts")
+    p.add_argument("--temperature-c", type=float,
+                   help="sea temperature [degC] (default 20)")
+    p.add_argument("--salinity-psu", type=float, help="salinity [psu] (default 35)")
     p.add_argument("--permittivity-model", choices=sorted(PERMITTIVITY_MODELS),
                    default="meissner-wentz", help="sea-water permittivity model")
     p.add_argument("--theta-i-deg", default="20", help="incidence angle(s) [deg], 0..90")
@@ -139,6 +149,36 @@ def run(args: argparse.Namespace) -> int:
     from ..scattering.models import sea_sigma
     from . import UsageError
 
+    sea_options = {"wind_speed": "--wind-speed", "wind_direction_deg": "--wind-direction-deg",
+                   "spectrum": "--spectrum", "spreading": "--spreading",
+                   "fetch_m": "--fetch-m", "temperature_c": "--temperature-c",
+                   "salinity_psu": "--salinity-psu"}
+    scene_spec = None
+    if args.scene is not None:
+        from ..build import carrier_frequency, sea_spectrum
+        from ..config import load_scene
+
+        given = [flag for name, flag in sea_options.items() if getattr(args, name) is not None]
+        if given:
+            raise UsageError(f"--scene takes the sea state from the scene file; do not give "
+                             f"{', '.join(given)}")
+        scene = load_scene(args.scene)
+        scene_spec = sea_spectrum(scene)
+        freq = None if args.frequency_ghz is None else args.frequency_ghz * 1e9
+        try:
+            args.frequency_ghz = carrier_frequency(scene, freq) / 1e9
+        except ValueError as exc:
+            raise UsageError(f"{args.scene}: {exc}") from None
+        args.temperature_c, args.salinity_psu = scene.sea.temperature_c, scene.sea.salinity_psu
+        args.wind_speed = scene_spec.u19_5
+        args.wind_direction_deg = float(np.degrees(scene_spec.wind_direction))
+        args.spectrum = scene_spec.spectrum
+    defaults = {"frequency_ghz": 10.0, "wind_speed": 4.53, "wind_direction_deg": 0.0,
+                "spectrum": "elfouhaily", "spreading": "elfouhaily", "temperature_c": 20.0,
+                "salinity_psu": 35.0}
+    for name, value in defaults.items():
+        if getattr(args, name) is None:
+            setattr(args, name, value)
     if not 0.1 <= args.frequency_ghz <= 100.0:
         raise UsageError(f"--frequency-ghz = {args.frequency_ghz}: must be in [0.1, 100] GHz")
     if not 0.0 < args.wind_speed <= 40.0:
@@ -164,10 +204,9 @@ def run(args: argparse.Namespace) -> int:
     try:
         eps = complex(sea_water_permittivity(args.frequency_ghz * 1e9, args.temperature_c,
                                              args.salinity_psu, model=args.permittivity_model))
-        spec = DirectionalSpectrum(spectrum=args.spectrum, spreading=args.spreading,
-                                   u19_5=args.wind_speed,
-                                   wind_direction=float(np.radians(args.wind_direction_deg)),
-                                   fetch=args.fetch_m)
+        spec = scene_spec if scene_spec is not None else DirectionalSpectrum(
+            spectrum=args.spectrum, spreading=args.spreading, u19_5=args.wind_speed,
+            wind_direction=float(np.radians(args.wind_direction_deg)), fetch=args.fetch_m)
     except ValueError as exc:
         raise UsageError(str(exc)) from None
 

@@ -1,4 +1,9 @@
-"""``seaecho surface SCENE.toml -o OUT.nc``: the sea (+ wake) at one or several times."""
+"""``seaecho surface SCENE.toml -o OUT.nc``: the sea (+ wake) at one or several times.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 
@@ -25,11 +30,11 @@ def run(args: argparse.Namespace) -> int:
     import math
     import warnings
 
+    from ..build import build_sea, check_scene, scene_attrs
     from ..config import load_scene
     from ..io.dataset import write_dataset_atomic
     from ..io.figures import elevation_map
     from ..io.surface import surface_dataset
-    from ..ocean.sampling import check_sampling
     from . import UsageError
 
     scene = load_scene(args.scene)
@@ -46,8 +51,8 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"--time {times}: times must be finite numbers of seconds")
     with warnings.catch_warnings():
         warnings.simplefilter("always")
-        check_sampling(scene)
-    ds = surface_dataset(scene, times)
+        check_scene(scene)
+    ds = surface_dataset(build_sea(scene), times, attrs=scene_attrs(scene), name=scene.name)
     write_dataset_atomic(ds, out)
     print(f"wrote {out} ({len(times)} time(s), {ds.sizes['y']} x {ds.sizes['x']} grid, "
           f"Hs of resolved band {ds.attrs['expected_hs_resolved_m']:.3f} m)")

@@ -17,6 +17,9 @@ def add_geometry_options(p: argparse.ArgumentParser) -> None:
                    "and no --rx: monostatic)")
     p.add_argument("--variant", choices=("llvm_ad_mono_polarized", "cuda_ad_mono_polarized"),
                    help="Mitsuba variant (default: [tracing] variant)")
+    p.add_argument("--frequency-ghz", type=float, metavar="F",
+                   help="radar carrier [GHz] (default: [radar] carrier_frequency_hz; needed "
+                   "when the scene has no [radar]): sea-water permittivity and two-scale split")
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -37,9 +40,11 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def build_engine(args: argparse.Namespace, mode: str | None = None):
-    """(scene, engine) of the CLI arguments; bad input -> SceneError / UsageError."""
+    """(scene, sea, engine) of the CLI arguments; bad input -> SceneError / UsageError."""
     import math
 
+    from ..build import build_engine as build_facet_engine
+    from ..build import build_sea
     from ..config import load_scene
     from . import UsageError
 
@@ -50,36 +55,37 @@ def build_engine(args: argparse.Namespace, mode: str | None = None):
         raise UsageError("--rx needs --tx")
     if args.tx is None and scene.transmitter is None:
         raise UsageError(f"{args.scene}: no [transmitter] section; give --tx X Y Z")
-    from ..tracing import FacetEngine
-
+    freq = None if args.frequency_ghz is None else args.frequency_ghz * 1e9
     try:
-        engine = FacetEngine.from_scene(scene, base_dir=Path(args.scene).resolve().parent,
-                                        mode=mode, variant=args.variant,
-                                        tx_position=args.tx, rx_position=args.rx)
+        sea = build_sea(scene)
+        engine = build_facet_engine(scene, sea.state, Path(args.scene).resolve().parent,
+                                    frequency=freq, mode=mode, variant=args.variant,
+                                    tx_position=args.tx, rx_position=args.rx)
     except ValueError as exc:
         raise UsageError(str(exc)) from None
-    return scene, engine
+    return scene, sea, engine
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..io.dataset import scene_attrs, write_dataset_atomic
-    from ..tracing.output import facet_maps, facets_dataset, visibility_summary
+    from ..build import scene_attrs
+    from ..io.dataset import write_dataset_atomic
+    from ..io.facets import facet_maps, facets_dataset, visibility_summary
     from . import UsageError
 
     out = Path(args.output)
     if str(out.parent) and not out.parent.is_dir():
         raise UsageError(f"output directory {out.parent} does not exist")
-    scene, engine = build_engine(args, mode=args.mode)
+    scene, sea, engine = build_engine(args, mode=args.mode)
     f = engine.facets(args.time)
     tx, rx = engine.positions(args.time)
-    ds = facets_dataset(f, engine.sea.x, engine.sea.y, tx, rx, attrs=scene_attrs(scene))
+    ds = facets_dataset(f, sea.x, sea.y, tx, rx, attrs=scene_attrs(scene))
     write_dataset_atomic(ds, out)
     s = visibility_summary(f)
     print(f"wrote {out} ({f.mode}, {f.n_facets} facets at t = {f.time_s:g} s; lit from Tx "
           f"{s['lit_fraction_tx']:.4f}, seen from Rx {s['seen_fraction_rx']:.4f}, both "
           f"{s['visible_fraction']:.4f})")
     if not args.no_figure:
-        png = facet_maps(f, engine.sea.x, engine.sea.y, out.with_suffix(".png"),
+        png = facet_maps(f, sea.x, sea.y, out.with_suffix(".png"),
                          title=f"{scene.name}: {f.mode} facets at t = {f.time_s:g} s")
         print(f"wrote {png}")
     return 0

@@ -5,6 +5,7 @@ hands to the stages is SI.
 """
 
 from .loading import SceneError, format_validation_error, load_scene, parse_scene
+from .overrides import parse_assignment, parse_assignments, with_overrides
 from .run import RunConfig
 from .scene import Scene
 from .sea import SeaConfig
@@ -18,5 +19,8 @@ __all__ = [
     "ShipConfig",
     "format_validation_error",
     "load_scene",
+    "parse_assignment",
+    "parse_assignments",
     "parse_scene",
+    "with_overrides",
 ]

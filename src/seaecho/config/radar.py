@@ -12,7 +12,7 @@ Sections (TOML tables):
 - ``[[targets]]``             point targets: position, velocity, RCS or a 2x2 scattering
   matrix.
 
-Conventions (``shared/DESIGN.md``): SI inside, degrees and dB only in names ending
+Conventions (docs/conventions.md): SI inside, degrees and dB only in names ending
 ``_deg``/``_db``; world frame x east, y north, z up. A platform's body frame is x forward,
 y left, z up; its attitude (yaw, pitch, roll) turns the body frame into the world frame
 as R = Rz(yaw) Ry(-pitch) Rx(roll): yaw counter-clockwise from +x (east), pitch positive
@@ -22,6 +22,10 @@ Polarisation ports. An antenna has two orthogonal ports, named by its ``basis``:
 ``hv`` (ports H and V), ``slant`` (ports P = +45 deg and M = -45 deg) or ``circular``
 (ports R and L, IEEE handedness). A channel ``"mn"`` is receive port m, transmit port n
 (S_mn: m received, n transmitted), e.g. ``"HV"`` receives H and transmits V.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
@@ -30,12 +34,11 @@ from typing import Literal
 
 from pydantic import Field, model_validator
 
+from ..conventions import PORTS
 from .base import Name, Section, short_repr
 
 Vec3 = tuple[float, float, float]
 
-#: Port letters of each antenna polarisation basis (first letter, second letter).
-PORTS: dict[str, tuple[str, str]] = {"hv": ("H", "V"), "slant": ("P", "M"), "circular": ("R", "L")}
 
 PatternName = Literal["rectangular", "isotropic", "dipole", "hw_dipole", "tr38901"]
 BasisName = Literal["hv", "slant", "circular"]
@@ -336,7 +339,7 @@ class TargetConfig(Section):
     """A point target: position, velocity and its RCS or 2x2 scattering matrix.
 
     The scattering amplitudes s_mn are in metres, |s_mn|^2 = sigma_mn [m^2], in the
-    forward-scattering-alignment bases of ``shared/DESIGN.md`` (m received, n transmitted),
+    forward-scattering-alignment bases of docs/conventions.md (m received, n transmitted),
     given as (real, imaginary) pairs.
     """
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 from pydantic import Field, model_validator
 
 from .base import Name, Section, Text
+from .image import ImageConfig
 from .radar import PlatformConfig, RadarConfig, TargetConfig
 from .run import RunConfig
 from .sea import SeaConfig
@@ -47,6 +48,9 @@ class Scene(Section):
     )
     objects: tuple[ObjectConfig, ...] = Field(
         (), max_length=1000, description="meshes / XML scenes that occlude the sea [[objects]]"
+    )
+    image: ImageConfig | None = Field(
+        None, description="SAR focusing after the raw data [image]; omit for raw data only"
     )
 
     @model_validator(mode="after")

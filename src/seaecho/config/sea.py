@@ -1,4 +1,9 @@
-"""``[sea]`` section: sea state, wave spectrum, tile and grid, sea water."""
+"""``[sea]`` section: sea state, wave spectrum, tile and grid, sea water.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 
@@ -95,9 +100,9 @@ class SeaConfig(Section):
         return self
 
     @property
-    def grid_shape(self) -> tuple[int, int]:
-        """(nx, ny) grid points."""
-        return self.nx, self.ny if self.ny is not None else self.nx
+    def shape(self) -> tuple[int, int]:
+        """Grid nodes (ny, nx) in array order, the shape of every gridded field."""
+        return self.ny if self.ny is not None else self.nx, self.nx
 
     @property
     def size_m(self) -> tuple[float, float]:

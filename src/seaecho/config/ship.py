@@ -1,6 +1,13 @@
-"""``[ship]`` section: the ship that makes the wake (and, later, the hull echo)."""
+"""``[ship]`` section: the ship that makes the wake (and, later, the hull echo).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
+
+from typing import Literal
 
 from pydantic import Field, model_validator
 
@@ -50,6 +57,19 @@ class ShipConfig(Section):
         le=1.0e5,
         description="length of the turbulent (damped) wake strip behind the stern [m]; "
         "default 20 ship lengths",
+    )
+    wake_amplitude: Literal["kriebel-seelig", "michell"] = Field(
+        "kriebel-seelig",
+        description="Kelvin-wake heights: Michell's thin-ship theory scaled to the empirical "
+        "maximum height of Kriebel & Seelig (2005), or as Michell's theory gives them",
+    )
+    wake_breaking_limit: bool = Field(
+        True, description="cap the Kelvin wake's waves at the breaking steepness H/L = 0.1412"
+    )
+    turbulent_wake_film_contrast_db: float = Field(
+        -3.0, ge=-30.0, le=0.0,
+        description="persistent Bragg contrast of the turbulent wake's surfactant film [dB]; "
+        "the turbulence adds complete damping at the stern decaying as (1 + xi/B)^-3/5",
     )
 
     @model_validator(mode="after")

@@ -7,7 +7,8 @@
 ``[[objects]]`` adds geometry that occludes the sea in ray-traced mode: a mesh file
 (PLY/OBJ/STL, through trimesh) or a Mitsuba/Sionna XML scene, placed by position,
 orientation and velocity, with a radio material (an ITU name or a custom permittivity).
-Paths are relative to the scene file's folder.
+Paths are relative to the scene file's folder. With ``scatterer = true`` the object also
+echoes (shooting and bouncing rays with physical optics, sea multipath; docs/ship.md).
 """
 
 from __future__ import annotations
@@ -115,6 +116,25 @@ class ObjectConfig(Section):
     conductivity_s_m: float | None = Field(
         None, ge=0.0, le=1.0e8, description="custom conductivity [S/m] (with "
         "relative_permittivity)")
+    # The object's own echo (docs/ship.md): shooting and bouncing rays + physical optics
+    scatterer: bool = Field(False, description="add the object's own echo (SBR + physical "
+                            "optics, with sea multipath) to the sea's, in every pulse")
+    max_bounces: int = Field(3, ge=1, le=10, description="scatterer: hits followed per ray "
+                             "(3: plates, dihedrals, trihedrals) [-]")
+    rays_per_wavelength: float = Field(4.0, ge=1.0, le=32.0, description="scatterer: launch "
+                                       "rays per wavelength along each axis (4: 16 per "
+                                       "lambda^2) [-]")
+    signature_refresh_deg: float = Field(1.0, gt=0.0, le=90.0, description="scatterer: trace "
+                                         "again when the direction to the transmitter or "
+                                         "receiver has turned by this much; between traces "
+                                         "the centres move rigidly [deg]")
+    signature_refresh_s: float = Field(0.0, ge=0.0, le=3600.0, description="scatterer: also "
+                                       "trace again after this time (0 = by aspect only) [s]")
+    signature_cell_m: float = Field(0.1, gt=0.0, le=10.0, description="scatterer: side of "
+                                    "the cells ray contributions are summed in (scattering "
+                                    "centres) [m]")
+    sea_multipath: bool = Field(True, description="scatterer: add the paths that bounce on "
+                                "the mean sea (Fresnel x rough-sea factor, image method)")
 
     @model_validator(mode="after")
     def _material(self) -> ObjectConfig:
@@ -124,6 +144,11 @@ class ObjectConfig(Section):
                              "conductivity_s_m, not both")
         if self.conductivity_s_m is not None and self.relative_permittivity is None:
             raise ValueError("conductivity_s_m needs relative_permittivity")
+        own = {"max_bounces", "rays_per_wavelength", "signature_refresh_deg",
+               "signature_refresh_s", "signature_cell_m", "sea_multipath"}
+        if not self.scatterer and own & self.model_fields_set:
+            raise ValueError(f"{', '.join(sorted(own & self.model_fields_set))}: only with "
+                             "scatterer = true")
         suffix = self.file.rsplit(".", 1)[-1].lower() if "." in self.file else ""
         if suffix not in ("ply", "obj", "stl", "xml"):
             raise ValueError(f"file = {short_repr(self.file)}: allowed extensions .ply, .obj, "

@@ -19,18 +19,24 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field, fields
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 
-from ..scattering.frames import local_angles, tilt_rotation
-from .bistatic import global_angles, ranges_directions
+from ..backend import NUMPY, Boundary
+from . import frames as _frames
+from .bistatic import azimuths, ranges
 from .mesh import facet_geometry, grid_vertices, to_facets
 from .shadowing import directional_slope_std, height_cdf, smith_lambda, smith_nu
 
 _BACKSCATTER_TOL = 1e-9
 
-__all__ = ["Facets", "analytic_facets", "facet_frames", "smith_weights", "subfacet_shadowing"]
+__all__ = ["FRAME_NAMES", "Facets", "analytic_facets", "facet_frames", "facet_frames_in",
+           "frames_of_facets", "smith_weights", "subfacet_shadowing"]
+
+#: Keys of :func:`facet_frames`, in order.
+FRAME_NAMES = ("r_tx", "r_rx", "n_i", "n_s", "theta_i", "theta_s", "phi", "theta_i_global",
+               "theta_s_global", "phi_global", "rot_i", "rot_s")
 
 
 @dataclass(frozen=True)
@@ -66,7 +72,7 @@ class Facets:
         The same about the mean-plane normal +z [rad].
     rot_i, rot_s : (N, 2, 2)
         Rotations from the global to the local polarisation bases of the incident and
-        scattered waves, (h, v) order (:func:`seaecho.scattering.frames.tilt_rotation`):
+        scattered waves, (h, v) order (:func:`seaecho.geometry.frames.tilt_rotation`):
         ``S_global = frames.to_global(S_local, rot_i, rot_s)`` (eq F4 there).
     lit, seen : (N,)
         Illuminated by the transmitter / visible from the receiver, in [0, 1] [-].
@@ -120,9 +126,49 @@ class Facets:
         return [f.name for f in fields(self) if isinstance(getattr(self, f.name), np.ndarray)]
 
 
+def frames_of_facets(xp, centroid: Any, normal: Any, p_tx: Any, p_rx: Any,
+                     monostatic: bool) -> dict[str, Any]:
+    """Ranges, directions, local and global angles and basis rotations of facets.
+
+    Eq G1 (:func:`seaecho.geometry.bistatic.ranges`), the local angles
+    (:func:`seaecho.geometry.frames.bistatic_angles`), the global angles
+    (:func:`seaecho.geometry.bistatic.azimuths`) and the rotations of eq F3 from the
+    global (+z) to the facets' polarisation bases (:func:`seaecho.geometry.frames.tilt`),
+    over an array namespace (:mod:`seaecho.backend`): the numpy :func:`facet_frames` and
+    the tracing stage's Dr.Jit kernel both evaluate this function.
+
+    Returns
+    -------
+    dict
+        Namespace values under the names of :data:`FRAME_NAMES`.
+    """
+    r_tx, r_rx, n_i, n_s = ranges(xp, centroid, p_tx, p_rx, monostatic)
+    theta_i, theta_s, phi = _frames.bistatic_angles(xp, n_i, n_s, normal)
+    tig, tsg, phig = azimuths(xp, n_i, n_s)
+    rot_i, rot_s = _frames.tilt(xp, n_i, n_s, normal, xp.vec(0.0, 0.0, 1.0))
+    return dict(zip(FRAME_NAMES, (r_tx, r_rx, n_i, n_s, theta_i, theta_s, phi, tig, tsg,
+                                  phig, rot_i, rot_s), strict=True))
+
+
+def facet_frames_in(xp, centroid: np.ndarray, normal: np.ndarray, tx: np.ndarray,
+                    rx: np.ndarray) -> dict[str, np.ndarray]:
+    """:func:`frames_of_facets` of numpy facets, evaluated in namespace ``xp``.
+
+    One kernel in Dr.Jit (the Tx/Rx positions as opaque per-pulse constants, so that a
+    new position does not recompile it); numpy arrays in and out.
+    """
+    tx = np.asarray(tx, dtype=np.float64).reshape(3)
+    rx = np.asarray(rx, dtype=np.float64).reshape(3)
+    n = np.shape(centroid)[0]
+    io = Boundary(xp, n)
+    out = frames_of_facets(xp, io.vec3(centroid), io.vec3(normal), xp.vconst(tx),
+                           xp.vconst(rx), bool(np.array_equal(tx, rx)))
+    return dict(zip(FRAME_NAMES, io.numpy(*out.values()), strict=True))
+
+
 def facet_frames(centroid: np.ndarray, normal: np.ndarray, tx: np.ndarray, rx: np.ndarray
                  ) -> dict[str, np.ndarray]:
-    """Ranges, directions, local/global angles and basis rotations of facets.
+    """Ranges, directions, local/global angles and basis rotations of facets (numpy).
 
     Parameters
     ----------
@@ -137,15 +183,16 @@ def facet_frames(centroid: np.ndarray, normal: np.ndarray, tx: np.ndarray, rx: n
     -------
     dict
         ``r_tx, r_rx, n_i, n_s, theta_i, theta_s, phi, theta_i_global, theta_s_global,
-        phi_global, rot_i, rot_s`` (see :class:`Facets`).
+        phi_global, rot_i, rot_s`` (see :class:`Facets`). Formula:
+        :func:`frames_of_facets`.
     """
-    r_tx, r_rx, n_i, n_s = ranges_directions(centroid, tx, rx)
-    theta_i, theta_s, phi = local_angles(n_i, n_s, normal)
-    tig, tsg, phig = global_angles(n_i, n_s)
-    rot_i, rot_s = tilt_rotation(n_i, n_s, normal)
-    return dict(r_tx=r_tx, r_rx=r_rx, n_i=n_i, n_s=n_s, theta_i=theta_i, theta_s=theta_s,
-                phi=phi, theta_i_global=tig, theta_s_global=tsg, phi_global=phig,
-                rot_i=rot_i, rot_s=rot_s)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = facet_frames_in(NUMPY, centroid, normal, tx, rx)
+    if np.any(out["r_tx"] == 0.0):
+        raise ValueError("the transmitter lies on a facet centroid (zero range)")
+    if np.any(out["r_rx"] == 0.0):
+        raise ValueError("the receiver lies on a facet centroid (zero range)")
+    return out
 
 
 def smith_weights(height: np.ndarray, n_i: np.ndarray, n_s: np.ndarray, sigma_h: float,

@@ -7,6 +7,10 @@ transom stern, a pointed bow with a rising keel, a V bottom with a chine, a flat
 port, z up, waterline z = 0, the hull centred on the origin in x and y. The bundled
 ``scenes/meshes/motor_boat_10m.ply`` is ``motor_boat_hull()`` written by
 ``python -m seaecho.geometry.hull scenes/meshes/motor_boat_10m.ply``.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations

@@ -19,18 +19,31 @@ numbered ``(j * (nx - 1) + i) * 2 + k``; an array of facet values reshapes to
 The facet's centroid, area and normal are those of the flat triangle (computed in float64);
 its velocity is the mean of its three vertices' velocities, i.e. the velocity of the
 centroid under linear interpolation.
+
+The formulas (:func:`triangle`, :func:`vertex_mean`) are written over an array namespace
+(:mod:`seaecho.backend`): :func:`facet_geometry` evaluates them with numpy on the grid's
+slices, :func:`facet_geometry_in` in a Dr.Jit kernel that gathers each facet's vertices
+from the node arrays (the fused per-pulse sea kernel, ``seaecho.radar.resident``), with the
+same numbers.
 """
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
+
+from ..backend import NUMPY, Vec3
 
 __all__ = [
     "facet_count",
     "facet_geometry",
+    "facet_geometry_in",
     "grid_faces",
     "grid_vertices",
     "to_facets",
+    "triangle",
+    "vertex_mean",
 ]
 
 
@@ -106,6 +119,50 @@ def _corners(v: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndar
     return v[:-1, :-1], v[:-1, 1:], v[1:, 1:], v[1:, :-1]
 
 
+def _divide(xp, v: Any, s: Any) -> Any:
+    """A vector divided by a scalar, component by component (a true division in every
+    namespace; Dr.Jit would multiply a vector by the reciprocal)."""
+    return xp.vec(v.x / s, v.y / s, v.z / s)
+
+
+def vertex_mean(xp, p00: Any, p11: Any, other: Any) -> Any:
+    """Mean of a node quantity over a facet's vertices, ``(P00 + P11 + other) / 3``.
+
+    ``other`` is P10 for triangle 0, P01 for triangle 1 (namespace values; vectors, or
+    scalar arrays).
+    """
+    s = p00 + p11 + other
+    three = xp.const(3.0)
+    return _divide(xp, s, three) if xp.is_vector(s) else s / three
+
+
+def triangle(xp, p00: Any, p10: Any, p11: Any, p01: Any, upper: Any
+             ) -> tuple[Any, Any, Any]:
+    """Centroid [m], twice the area [m^2] and unit normal [-] of a cell's triangle.
+
+    Triangle 0 is (P00, P10, P11), triangle 1 (``upper``) is (P00, P11, P01); for a
+    triangle (A, B, C) the vector ``(B - A) x (C - A)`` is normal to it with length twice
+    its area, pointing up for these counter-clockwise triangles.
+
+    Parameters
+    ----------
+    xp : array namespace
+    p00, p10, p11, p01 : vectors
+        The cell's corners P(j, i), P(j, i+1), P(j+1, i+1), P(j+1, i) [m].
+    upper : bool or namespace Bool
+        Which triangle (a Python bool, or one per entry).
+    """
+    d11 = p11 - p00
+    if isinstance(upper, bool):
+        cross = xp.cross(d11, p01 - p00) if upper else xp.cross(p10 - p00, d11)
+        other = p01 if upper else p10
+    else:
+        cross = xp.select(upper, xp.cross(d11, p01 - p00), xp.cross(p10 - p00, d11))
+        other = xp.select(upper, p01, p10)
+    twice_area = xp.sqrt(xp.dot(cross, cross))
+    return vertex_mean(xp, p00, p11, other), twice_area, _divide(xp, cross, twice_area)
+
+
 def to_facets(node_values: np.ndarray) -> np.ndarray:
     """Mean of a node quantity over the three vertices of each facet.
 
@@ -117,16 +174,14 @@ def to_facets(node_values: np.ndarray) -> np.ndarray:
     Returns
     -------
     (N, ...) array
-        Its value at the facet centroids under linear interpolation, N = 2 (nx-1) (ny-1).
+        Its value at the facet centroids under linear interpolation, N = 2 (nx-1) (ny-1)
+        (:func:`vertex_mean`).
     """
     a = np.asarray(node_values)
     p00, p10, p11, p01 = _corners(a)
     out = np.empty((a.shape[0] - 1, a.shape[1] - 1, 2) + a.shape[2:], dtype=np.result_type(a, 1.0))
-    # centroid of triangle 0 = (P00 + P10 + P11) / 3, of triangle 1 = (P00 + P11 + P01) / 3
-    s = p00 + p11
-    np.add(s, p10, out=out[:, :, 0])
-    np.add(s, p01, out=out[:, :, 1])
-    out /= 3.0
+    out[:, :, 0] = vertex_mean(NUMPY, p00, p11, p10)
+    out[:, :, 1] = vertex_mean(NUMPY, p00, p11, p01)
     return out.reshape((-1,) + a.shape[2:])
 
 
@@ -149,20 +204,69 @@ def facet_geometry(vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nda
 
     Notes
     -----
-    For a triangle (A, B, C) the vector ``(B - A) x (C - A)`` is normal to it with length
-    twice its area; the triangles of :func:`grid_faces` are counter-clockwise from above,
-    so this normal points up.
+    :func:`triangle` on the cells' corners; the triangles of :func:`grid_faces` are
+    counter-clockwise from above, so the normals point up.
     """
     v = np.asarray(vertices, dtype=np.float64)
-    p00, p10, p11, p01 = _corners(v)
-    shape = (v.shape[0] - 1, v.shape[1] - 1, 2, 3)
-    cross = np.empty(shape)
-    d11 = p11 - p00
-    cross[:, :, 0] = np.cross(p10 - p00, d11)  # triangle 0: (B - A) x (C - A)
-    cross[:, :, 1] = np.cross(d11, p01 - p00)  # triangle 1
-    cross = cross.reshape(-1, 3)
-    twice_area = np.sqrt(np.einsum("ij,ij->i", cross, cross))
+    corners = [Vec3(c[..., 0], c[..., 1], c[..., 2]) for c in _corners(v)]
+    shape = (v.shape[0] - 1, v.shape[1] - 1, 2)
+    centroid, normal = np.empty(shape + (3,)), np.empty(shape + (3,))
+    twice_area = np.empty(shape)
+    for k in (0, 1):
+        c, t, nrm = triangle(NUMPY, *corners, bool(k))
+        twice_area[:, :, k] = t
+        for j in range(3):
+            centroid[:, :, k, j] = c[j]
+            normal[:, :, k, j] = nrm[j]
+    twice_area = twice_area.reshape(-1)
     if np.any(twice_area <= 0.0):
         raise ValueError("degenerate facet (zero area): vertices must form a height field")
-    normal = cross / twice_area[:, None]
-    return to_facets(v), 0.5 * twice_area, normal
+    return centroid.reshape(-1, 3), 0.5 * twice_area, normal.reshape(-1, 3)
+
+
+def facet_geometry_in(xp, x: Any, y: Any, elevation: Any, velocity: Any, nx: int, ny: int
+                      ) -> dict[str, Any]:
+    """:func:`facet_geometry` and the facets' velocities (:func:`to_facets`) in a kernel.
+
+    Each facet gathers its vertices from the node arrays, so only the nodes need to be
+    on the device (a quarter of the per-facet arrays' size).
+
+    Parameters
+    ----------
+    xp : Dr.Jit namespace
+    x, y : namespace arrays (nx,), (ny,)
+        Node coordinates [m].
+    elevation : namespace array (ny nx,)
+        Node heights [m], row-major (node (j, i) at j nx + i).
+    velocity : namespace vector (ny nx,)
+        Node velocities [m/s].
+    nx, ny : int
+        Grid nodes per row and per column.
+
+    Returns
+    -------
+    dict
+        ``centroid`` [m], ``area`` [m^2], ``normal`` [-], ``velocity`` [m/s] of the
+        2 (nx - 1) (ny - 1) facets, in the order of the module docstring.
+    """
+    j = xp.arange(facet_count(nx, ny))
+    cell = j // 2
+    upper = (j - cell * 2) == 1
+    iy = cell // (nx - 1)
+    ix = cell - iy * (nx - 1)
+    v00 = iy * nx + ix
+    v11 = v00 + (nx + 1)
+    v_other = xp.select(upper, v00 + nx, v00 + 1)
+    x0, x1 = xp.gather(x, ix), xp.gather(x, ix + 1)
+    y0, y1 = xp.gather(y, iy), xp.gather(y, iy + 1)
+    p00 = xp.vec(x0, y0, xp.gather(elevation, v00))
+    p10 = xp.vec(x1, y0, xp.gather(elevation, v00 + 1))
+    p11 = xp.vec(x1, y1, xp.gather(elevation, v11))
+    p01 = xp.vec(x0, y1, xp.gather(elevation, v00 + nx))
+    centroid, twice_area, normal = triangle(xp, p00, p10, p11, p01, upper)
+
+    def node(v, idx):
+        return xp.vec(*(xp.gather(c, idx) for c in (v.x, v.y, v.z)))
+
+    vel = vertex_mean(xp, node(velocity, v00), node(velocity, v11), node(velocity, v_other))
+    return dict(centroid=centroid, area=0.5 * twice_area, normal=normal, velocity=vel)

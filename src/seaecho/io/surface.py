@@ -1,4 +1,9 @@
-"""The surface dataset that ``seaecho surface`` writes."""
+"""The surface dataset that ``seaecho surface`` writes.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 
@@ -9,22 +14,37 @@ import xarray as xr
 from tqdm.auto import tqdm
 
 from ..ocean.twoscale import height_variance
-from .dataset import scene_attrs
+
+#: Upper end of the band whose height variance the dataset reports as unresolved
+#: [rad/m] (0.6 mm waves: beyond any radar's Bragg wavenumber, so "all of it").
+_K_TOP = 1.0e4
 
 
-def surface_dataset(scene, times: Sequence[float], progress: bool = True) -> xr.Dataset:
-    """Sea + wake of ``scene`` at ``times`` [s] as a self-describing dataset.
+def surface_dataset(sea, times: Sequence[float], attrs: dict | None = None,
+                    name: str = "", progress: bool = True) -> xr.Dataset:
+    """Sea + wake at ``times`` [s] as a self-describing dataset.
 
     Dimensions ``time``, ``y``, ``x`` (SI coordinates); variables ``elevation`` (sea +
     wake), ``wake_elevation``, ``wake_mask``, ``slope_x``, ``slope_y``, ``velocity_x``,
     ``velocity_y``, ``velocity_z``, and the ship's track ``ship_x``, ``ship_y`` when there is
-    a ship. Attributes carry the full scene (JSON), the package version and the sea's
-    statistics (resolved variance, expected and realised significant wave height).
-    """
-    from ..sea import Sea
+    a ship. Attributes carry ``attrs`` (the full scene as JSON and the package version,
+    ``seaecho.build.scene_attrs``) and the sea's statistics (resolved variance, expected
+    and realised significant wave height).
 
+    Parameters
+    ----------
+    sea : seaecho.sea.Sea
+        The sea (``seaecho.build.build_sea(scene)``).
+    times : sequence of float
+        Times [s].
+    attrs : dict, optional
+        Attributes saying how the file was made.
+    name : str
+        The scene's name.
+    progress : bool
+        Show a progress bar.
+    """
     times = np.asarray(times, dtype=np.float64)
-    sea = Sea.from_scene(scene)
     ny, nx = sea.y.size, sea.x.size
     names = ("elevation", "wake_elevation", "wake_mask", "slope_x", "slope_y",
              "velocity_x", "velocity_y", "velocity_z")
@@ -65,15 +85,15 @@ def surface_dataset(scene, times: Sequence[float], progress: bool = True) -> xr.
         ds["ship_y"] = ("time", track[:, 1], {"units": "m", "long_name": "ship hull centre y"})
     surf = sea.surface
     k_cut = np.pi / max(surf.dx, surf.dy)
-    ds.attrs.update(scene_attrs(scene))
+    ds.attrs.update(attrs or {})
     ds.attrs.update({
         "title": "seaecho sea surface",
-        "scene_name": scene.name,
+        "scene_name": name,
         "resolved_variance_m2": surf.resolved_variance,
         "expected_hs_resolved_m": 4.0 * np.sqrt(surf.resolved_variance),
         "realised_hs_m": 4.0 * float(np.std(data["elevation"][0] - data["wake_elevation"][0])),
         "grid_cutoff_wavenumber_rad_m": k_cut,
-        "unresolved_height_variance_m2": height_variance(sea.spectrum, k_cut, 1.0e4),
+        "unresolved_height_variance_m2": height_variance(sea.spectrum, k_cut, _K_TOP),
         "dispersion": "omega^2 = (g K + tau/rho K^3) tanh(K d), paper eq 15 with capillarity",
         "depth_m": "deep" if surf.depth is None else surf.depth,
     })

@@ -8,6 +8,10 @@ The paper's eq 15 is the gravity-wave form (tau = 0). The capillary term (Lamb 1
 Hydrodynamics, art. 267) matters for the short waves that Bragg scattering sees; it is on
 by default and changes the phase speed by (tau/rho) K^2 / (2 g): 0.5 % at K = 25 rad/m.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] H. Lamb, *Hydrodynamics*, 6th ed., Cambridge University Press, 1932, arts. 228, 267.

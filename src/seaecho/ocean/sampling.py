@@ -18,6 +18,10 @@ h_res of the unresolved waves, using the asymptote of eq 13 for K >> K_p:
 h_res^2 = int_{k_c}^inf (a0/2) K^-3 dK = a0 / (4 k_c^2), so k_c = sqrt(a0) k_radar / (2 x 0.3)
 and dx = pi / k_c.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] E. I. Thorsos and D. R. Jackson, "The validity of the perturbation approximation
@@ -39,9 +43,8 @@ from scipy.optimize import brentq
 from ..constants import C0
 from ..warnings import SamplingWarning
 from .spectra import PM_A0, DirectionalSpectrum, pierson_moskowitz, pierson_moskowitz_peak
+from .twoscale import ROUGHNESS_K_MAX_RATIO, SPM_KH_MAX, height_variance
 
-#: SPM validity bound on k_radar x rms height of the unresolved waves.
-KH_MAX = 0.3
 _U_REF = 10.0
 
 
@@ -84,7 +87,7 @@ class SamplingAdvice:
     k_cut: float  #: grid cut-off wavenumber [rad/m]
 
 
-def suggest_sampling(u19_5: float, frequency: float = 10e9) -> SamplingAdvice:
+def suggest_sampling(u19_5: float, frequency: float) -> SamplingAdvice:
     """Tile size and grid spacing for a wind (paper section IV-A, eqs 13-14).
 
     Parameters
@@ -98,62 +101,68 @@ def suggest_sampling(u19_5: float, frequency: float = 10e9) -> SamplingAdvice:
     dk = (k_hi - k_lo) / 4.0  # paper: a quarter of the -3 dB width
     tile = 2 * np.pi / dk
     k_radar = 2 * np.pi * frequency / C0
-    k_cut = np.sqrt(PM_A0) * k_radar / (2 * KH_MAX)  # h_res = sqrt(a0) / (2 k_c)
+    k_cut = np.sqrt(PM_A0) * k_radar / (2 * SPM_KH_MAX)  # h_res = sqrt(a0) / (2 k_c)
     dx = np.pi / k_cut
     n = int(2 ** np.ceil(np.log2(tile / dx)))
     return SamplingAdvice(tile_size=float(tile), spacing=float(dx), n=n, k_step=float(dk),
                           k_cut=float(k_cut))
 
 
-def check_sampling(scene, frequency: float | None = None) -> None:
-    """Warn (:class:`~seaecho.warnings.SamplingWarning`) if a scene's sea is under-sampled.
+def check_sampling(spectrum: DirectionalSpectrum, size: tuple[float, float],
+                   shape: tuple[int, int], frequency: float | None = None) -> None:
+    """Warn (:class:`~seaecho.warnings.SamplingWarning`) if a sea tile is under-sampled.
 
     The tile must hold the peak wavelength and its wavenumber step must resolve the -3 dB
-    band of the peak; with a radar ``frequency`` [Hz] (by default the carrier of the
-    scene's ``[radar]`` section, if it has one), the unresolved waves must satisfy
-    k_radar h_res <= 0.3 (see module docstring).
+    band of the peak; with a radar ``frequency`` the unresolved waves (the Bragg
+    roughness band of :mod:`seaecho.ocean.twoscale`, from the grid's Nyquist wavenumber
+    to 20 k) must satisfy k_radar h_res <= 0.3 (see module docstring).
+
+    Parameters
+    ----------
+    spectrum : DirectionalSpectrum
+        The sea's spectrum.
+    size : (float, float)
+        Tile extents (Lx, Ly) [m].
+    shape : (int, int)
+        Grid nodes (ny, nx), array order.
+    frequency : float, optional
+        Radar carrier frequency [Hz]; None skips the grid-spacing check.
     """
-    if frequency is None and getattr(scene, "radar", None) is not None:
-        frequency = scene.radar.carrier_frequency_hz
-    sea = scene.sea
-    spectrum = DirectionalSpectrum.from_sea_config(sea)
     k_p = spectrum.peak_wavenumber()
-    lx, ly = sea.size_m
-    nx, ny = sea.grid_shape
+    lx, ly = size
+    ny, nx = shape
     dk = 2 * np.pi / min(lx, ly)
     if min(lx, ly) < 2 * np.pi / k_p:
         warnings.warn(
-            f"[sea] tile {lx} x {ly} m is smaller than the peak wavelength "
-            f"{2 * np.pi / k_p:.1f} m of the {sea.spectrum} spectrum at U19.5 = "
-            f"{sea.wind_speed_m_s} m/s: the longest waves are missing",
+            f"sea tile {lx} x {ly} m is smaller than the peak wavelength "
+            f"{2 * np.pi / k_p:.1f} m of the {spectrum.spectrum} spectrum at U19.5 = "
+            f"{spectrum.u19_5} m/s: the longest waves are missing",
             SamplingWarning, stacklevel=2,
         )
     else:
-        k_lo, k_hi = peak_band(sea.wind_speed_m_s)
+        k_lo, k_hi = peak_band(spectrum.u19_5)
         if dk > (k_hi - k_lo):
+            tile = 2 * np.pi / ((k_hi - k_lo) / 4.0)  # suggest_sampling's tile size
             warnings.warn(
-                f"[sea] wavenumber step {dk:.4g} rad/m of a {min(lx, ly)} m tile is wider "
+                f"sea wavenumber step {dk:.4g} rad/m of a {min(lx, ly)} m tile is wider "
                 f"than the -3 dB band of the spectral peak ({k_hi - k_lo:.4g} rad/m): the "
-                f"peak is not resolved; suggested tile >= "
-                f"{suggest_sampling(sea.wind_speed_m_s).tile_size:.0f} m",
+                f"peak is not resolved; suggested tile >= {tile:.0f} m",
                 SamplingWarning, stacklevel=2,
             )
     if frequency is not None:
-        from .twoscale import height_variance
-
         k_radar = 2 * np.pi * frequency / C0
         dx = max(lx / nx, ly / ny)
-        h_res = np.sqrt(height_variance(spectrum, np.pi / dx, 50 * k_radar))
-        if k_radar * h_res > KH_MAX:
-            advice = suggest_sampling(sea.wind_speed_m_s, frequency)
+        h_res = np.sqrt(height_variance(spectrum, np.pi / dx, ROUGHNESS_K_MAX_RATIO * k_radar))
+        if k_radar * h_res > SPM_KH_MAX:
+            advice = suggest_sampling(spectrum.u19_5, frequency)
             warnings.warn(
-                f"[sea] grid spacing {dx:.3g} m is coarse against the radar wavelength "
+                f"sea grid spacing {dx:.3g} m is coarse against the radar wavelength "
                 f"{2 * np.pi / k_radar:.3g} m: unresolved waves have k h = "
-                f"{k_radar * h_res:.2f} > {KH_MAX}; suggested spacing <= "
+                f"{k_radar * h_res:.2f} > {SPM_KH_MAX}; suggested spacing <= "
                 f"{advice.spacing:.3g} m",
                 SamplingWarning, stacklevel=2,
             )
 
 
-__all__ = ["KH_MAX", "SamplingAdvice", "check_sampling", "peak_band", "suggest_sampling"]
+__all__ = ["SamplingAdvice", "check_sampling", "peak_band", "suggest_sampling"]
 

@@ -15,6 +15,10 @@ Symbols: ``f`` frequency [Hz], ``t`` temperature [degC], ``s`` salinity [psu],
 ``eps_s`` static permittivity, ``eps_inf`` high-frequency permittivity, ``tau``
 relaxation time [s], ``sigma`` ionic conductivity [S/m].
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] Klein, L. A. and Swift, C. T. (1977). An improved model for the dielectric

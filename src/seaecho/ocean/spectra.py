@@ -1,7 +1,7 @@
 """Sea wave spectra: omnidirectional spectra, spreading functions, directional spectrum.
 
 The directional wavenumber spectrum is built as in the paper's eq 4 (with the
-normalisation of ``../shared/DESIGN.md``):
+normalisation of docs/conventions.md):
 
 .. math::
 
@@ -28,6 +28,10 @@ Spreading functions (registry :data:`SPREADINGS`): ``"longuet-higgins"`` cos^2s(
 (paper eq 6, normalised to unit integral: N(1) = 1/pi), and ``"elfouhaily"`` (Elfouhaily
 et al. 1997).
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] W. J. Pierson and L. Moskowitz, "A proposed spectral form for fully developed wind
@@ -42,7 +46,7 @@ References
    directional spectrum of sea waves using the motions of a floating buoy", in Ocean Wave
    Spectra, Prentice-Hall, 1963, pp. 111-136.
 .. [5] R. H. Stewart, *Introduction to Physical Oceanography*, Texas A&M, 2008, ch. 16
-   (U19.5 = 1.026 U10; JONSWAP parameters).
+   (JONSWAP parameters). Wind heights are converted by :mod:`seaecho.ocean.wind`.
 """
 
 from __future__ import annotations
@@ -58,22 +62,14 @@ from scipy.special import gammaln
 
 from ..constants import G
 from ..warnings import ValidityWarning
+from .wind import KAPPA, u10_from_u19_5
 
-#: U19.5 / U10 for a neutral logarithmic wind profile (Stewart 2008, section 16.3).
-U19_5_OVER_U10 = 1.026
 #: Pierson-Moskowitz constants (paper eq 5; Pierson & Moskowitz 1964).
 PM_A0 = 8.1e-3
 PM_B0 = 0.74
-#: von Karman constant [-].
-KAPPA = 0.41
 #: Wavenumber of the minimum phase speed [rad/m] and that speed [m/s] (Elfouhaily et al.).
 K_M = 370.0
 C_M = 0.23
-
-
-def u10_from_u19_5(u19_5: ArrayLike) -> NDArray[np.float64]:
-    """Wind speed at 10 m from the one at 19.5 m [m/s] (Stewart 2008, sec. 16.3)."""
-    return np.asarray(u19_5, dtype=np.float64) / U19_5_OVER_U10
 
 
 class OmniSpectrum(Protocol):
@@ -171,7 +167,7 @@ def pierson_moskowitz(
 
     References
     ----------
-    Pierson & Moskowitz (1964); paper eq 5; ``../shared/DESIGN.md``.
+    Pierson & Moskowitz (1964); paper eq 5 (with the standard 1/2, docs/ocean.md).
     """
     k, pos, ks = _positive(k)
     out = 0.5 * PM_A0 * ks**-3 * np.exp(-PM_B0 * G**2 / (ks**2 * u19_5**4))  # Eq. 5 (x 1/2)
@@ -219,7 +215,7 @@ def jonswap(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArray[n
     k : array_like
         Wavenumber K [rad/m].
     u19_5 : float
-        Wind speed at 19.5 m [m/s] (converted to U10 with U19.5 = 1.026 U10).
+        Wind speed at 19.5 m [m/s] (U10 from :func:`seaecho.ocean.wind.u10_from_u19_5`).
     fetch : float
         Fetch F [m] (required).
 
@@ -338,7 +334,7 @@ def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArra
     k : array_like
         Wavenumber [rad/m].
     u19_5 : float
-        Wind speed at 19.5 m [m/s] (U10 = U19.5 / 1.026).
+        Wind speed at 19.5 m [m/s] (U10 from :func:`seaecho.ocean.wind.u10_from_u19_5`).
     fetch : float or None
         Fetch [m]; None for a fully developed sea (Omega_c = 0.84).
 
@@ -386,7 +382,7 @@ def longuet_higgins(
     """Longuet-Higgins et al. (1963) spreading N(s) cos^2s(psi / 2) (paper eq 6).
 
     Normalised so that its integral over psi in (-pi, pi] is 1 (for s = 1, N = 1/pi; the
-    paper's 4/pi is a typo, see ``../shared/DESIGN.md``). Independent of k.
+    paper's 4/pi is a typo, see docs/ocean.md). Independent of k.
 
     Parameters
     ----------
@@ -490,18 +486,6 @@ class DirectionalSpectrum:
             raise ValueError(f"u19_5 = {self.u19_5} m/s: must be > 0")
         if self.fetch is not None and not self.fetch > 0:
             raise ValueError(f"fetch = {self.fetch} m: must be > 0 or None")
-
-    @classmethod
-    def from_sea_config(cls, sea) -> DirectionalSpectrum:
-        """From a :class:`seaecho.config.sea.SeaConfig` (degrees -> radians)."""
-        return cls(
-            spectrum=sea.spectrum,
-            spreading=sea.spreading,
-            u19_5=sea.wind_speed_m_s,
-            wind_direction=float(np.deg2rad(sea.wind_direction_deg)),
-            fetch=sea.fetch_m,
-            s=sea.spreading_s,
-        )
 
     def omni(self, k: ArrayLike) -> NDArray[np.float64]:
         """Omnidirectional spectrum S_1d(k) [m^3]."""

@@ -12,8 +12,8 @@ A realisation is drawn once, in the Fourier domain, and evolved to any time t ex
     z(\\mathbf r, t) = \\sum_{\\mathbf K} \\hat z(\\mathbf K, t) e^{j \\mathbf K\\cdot\\mathbf r}
 
 with xi zero-mean circular complex Gaussian of unit variance (the paper's uniform [0, 1]
-draws of eq 12 have a non-zero mean and the wrong distribution, see
-``../shared/DESIGN.md``), omega(K) from the dispersion relation (eq 15) and
+draws of eq 12 have a non-zero mean and the wrong distribution, see docs/ocean.md),
+omega(K) from the dispersion relation (eq 15) and
 :math:`\\bar\\Psi` the spectrum averaged over each grid cell. The first term is the wave
 that travels along +K, the second the one along -K; the sum is Hermitian
 (:math:`\\hat z(-K) = \\hat z^*(K)`) so z is real, and
@@ -25,6 +25,10 @@ dz/dt; the horizontal orbital velocity at the surface follows linear wave theory
 u = (K / K) omega coth(K d) z for a wave travelling along K (Lamb 1932, art. 228).
 
 The tessellated FFT approach is that of Tessendorf (2001) and Mastin et al. (1987).
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 
 References
 ----------
@@ -136,7 +140,7 @@ class SeaSurface:
     size : (float, float)
         Tile extents (Lx, Ly) [m].
     shape : (int, int)
-        Grid points (nx, ny), each even.
+        Grid nodes (ny, nx) in array order (as every gridded field), each even.
     rng : numpy.random.Generator
         Source of the random amplitudes (see :mod:`seaecho.rng`).
     depth : float or None
@@ -161,14 +165,15 @@ class SeaSurface:
         surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
     ) -> None:
         lx, ly = (float(v) for v in size)
-        nx, ny = (int(v) for v in shape)
+        ny, nx = (int(v) for v in shape)
         if nx < 4 or ny < 4 or nx % 2 or ny % 2:
             raise ValueError(f"shape = {shape}: grid sizes must be even and >= 4")
         if not (lx > 0 and ly > 0):
             raise ValueError(f"size = {size} m: tile extents must be > 0")
         self.spectrum = spectrum
         self.size = (lx, ly)
-        self.shape = (nx, ny)
+        #: grid nodes (ny, nx), the shape of every field
+        self.shape = (ny, nx)
         self.depth = depth
         self.dx, self.dy = lx / nx, ly / ny
         self.x = grid_coordinates(lx, nx)
@@ -186,9 +191,11 @@ class SeaSurface:
         #: expected variance of z: the integral of Psi over the resolved band [m^2]
         self.resolved_variance = float(psi.sum() * self.dkx * self.dky)
 
-        # unit circular complex Gaussian: (N(0, 1/2) + j N(0, 1/2)), drawn as pairs
-        xi = rng.standard_normal((ny, nx, 2)).view(np.complex128)[..., 0]
-        h0 = xi * np.sqrt(0.25 * self.dkx * self.dky * psi)  # Eq. 12': sqrt(Psi dK^2 / 2) / sqrt 2
+        # a + j b with a, b ~ N(0, 1) drawn as pairs: variance 2, i.e. sqrt(2) times the
+        # unit circular Gaussian xi of eq 12'; hence sqrt(Psi dK^2 / 4) for the
+        # sqrt(Psi dK^2 / 2) of eq 12' (E |h0|^2 = Psi dK^2 / 2 either way)
+        xi2 = rng.standard_normal((ny, nx, 2)).view(np.complex128)[..., 0]
+        h0 = xi2 * np.sqrt(0.25 * self.dkx * self.dky * psi)  # Eq. 12'
 
         # keep the half plane kx >= 0 for real inverse FFTs (axis 1 = x is the rfft axis)
         half = nx // 2 + 1
@@ -207,22 +214,8 @@ class SeaSurface:
         self._ux = self._kx * speed
         self._uy = self._ky * speed
 
-    @classmethod
-    def from_scene(cls, scene, rng: np.random.Generator | None = None) -> SeaSurface:
-        """The surface of a :class:`seaecho.config.Scene` (stream "surface" of its seed)."""
-        from ..rng import generator
-
-        sea = scene.sea
-        return cls(
-            DirectionalSpectrum.from_sea_config(sea),
-            size=sea.size_m,
-            shape=sea.grid_shape,
-            rng=rng if rng is not None else generator(scene.run.seed, "surface"),
-            depth=sea.depth_m,
-        )
-
     def _irfft(self, spec: NDArray[np.complex128]) -> NDArray[np.float64]:
-        ny, nx = self.shape[1], self.shape[0]
+        ny, nx = self.shape
         return scipy.fft.irfft2(spec, s=(ny, nx), norm="forward", workers=-1)
 
     def _travelling(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:

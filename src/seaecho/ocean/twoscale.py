@@ -2,7 +2,7 @@
 
 The grid resolves wavenumbers up to its Nyquist wavenumber
 k_N = pi / max(dx, dy); shorter waves are the sub-facet roughness that the scattering
-models treat statistically (``../shared/DESIGN.md``, "Two scales"). For a band
+models treat statistically (docs/conventions.md, "Two scales"). For a band
 k_min < K < k_max of the directional spectrum Psi (paper eq 4):
 
 .. math::
@@ -16,11 +16,39 @@ k_min < K < k_max of the directional spectrum Psi (paper eq 4):
 the height variance and the upwind / crosswind slope variances (Cox & Munk 1954
 definitions; e.g. Elfouhaily et al. 1997).
 
+The bands every stage uses are fixed here, once (with k the radar wavenumber):
+
+- the *tilting* band k_N < K < k_cut, k_cut = :data:`TWO_SCALE_CUT_RATIO` k = k / 3:
+  waves long against the radar wavelength, whose slopes tilt the specular points of the
+  Kirchhoff / geometric-optics part and shadow each other (sub-facet shadowing). The
+  split at a third of the radar wavenumber is a modelling choice common to two-scale
+  models (Brown 1978 discusses how the result depends on it; Valenzuela 1978 reviews
+  the model), not a measured constant; ``seaecho sigma --cut-ratio`` varies it for the
+  mean-plane models;
+- the *Bragg roughness* k_N < K < k_max, k_max = :data:`ROUGHNESS_K_MAX_RATIO` k = 20 k:
+  the height spectrum the small-perturbation part reads at the Bragg wavenumber. The
+  local Bragg wavenumber never exceeds 2 k (back-scatter at grazing incidence); the table
+  reaches ten times further so that no geometry reads its edge; for a tail
+  S_1d ~ K^-3 the variance above 20 k is (1/60)^2 of the variance above k/3;
+- the small-perturbation validity bound k h <= :data:`SPM_KH_MAX` = 0.3 on the rms
+  height h of the Bragg roughness (Thorsos & Jackson 1989; Ulaby, Moore & Fung 1982).
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] C. Cox and W. Munk, "Measurement of the roughness of the sea surface from
    photographs of the sun's glitter", J. Opt. Soc. Am. 44(11), 838-850, 1954.
 .. [2] T. Elfouhaily et al., J. Geophys. Res. 102(C7), 15781-15796, 1997.
+.. [3] G. S. Brown, "Backscattering from a Gaussian-distributed perfectly conducting
+   rough surface", IEEE Trans. Antennas Propag. 26(3), 472-482, 1978.
+.. [4] G. R. Valenzuela, "Theories for the interaction of electromagnetic and oceanic
+   waves - a review", Boundary-Layer Meteorol. 13, 61-85, 1978.
+.. [5] E. I. Thorsos and D. R. Jackson, "The validity of the perturbation approximation
+   for rough surface scattering using a Gaussian roughness spectrum", J. Acoust. Soc. Am.
+   86(1), 261-277, 1989.
 """
 
 from __future__ import annotations
@@ -30,6 +58,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from .spectra import DirectionalSpectrum
+
+#: Two-scale split k_cut / k [-]: waves with K < k_cut tilt, shorter ones are Bragg
+#: roughness (module docstring; Brown 1978).
+TWO_SCALE_CUT_RATIO = 1.0 / 3.0
+#: Upper end of the Bragg roughness band k_max / k [-] (module docstring).
+ROUGHNESS_K_MAX_RATIO = 20.0
+#: Small-perturbation validity bound on k h [-] (Thorsos & Jackson 1989).
+SPM_KH_MAX = 0.3
 
 _N_K = 2000
 _N_PSI = 360
@@ -91,9 +127,9 @@ def slope_variances(
 
 @dataclass(frozen=True)
 class UnresolvedStatistics:
-    """Statistics of the sub-grid band k_cut < K < k_max of a sea surface (SI)."""
+    """Statistics of the sub-grid band k_grid < K < k_max of a sea surface (SI)."""
 
-    k_cut: float  #: grid cut-off wavenumber pi / max(dx, dy) [rad/m]
+    k_grid: float  #: grid Nyquist wavenumber pi / max(dx, dy) [rad/m], lower band limit
     k_max: float  #: upper band limit [rad/m]
     height_variance: float  #: [m^2]
     mss_upwind: float  #: slope variance along the wind [-]
@@ -119,16 +155,17 @@ def unresolved_statistics(
         Upper limit of the band [rad/m], e.g. a fraction of the radar wavenumber for the
         slopes that geometric optics sees.
     """
-    k_cut = np.pi / max(dx, dy)
-    if k_max <= k_cut:
-        return UnresolvedStatistics(k_cut, k_max, 0.0, 0.0, 0.0)
-    up, cross = slope_variances(spectrum, k_cut, k_max)
+    k_grid = np.pi / max(dx, dy)
+    if k_max <= k_grid:
+        return UnresolvedStatistics(float(k_grid), float(k_max), 0.0, 0.0, 0.0)
+    up, cross = slope_variances(spectrum, k_grid, k_max)
     return UnresolvedStatistics(
-        k_cut=float(k_cut), k_max=float(k_max),
-        height_variance=height_variance(spectrum, k_cut, k_max),
+        k_grid=float(k_grid), k_max=float(k_max),
+        height_variance=height_variance(spectrum, k_grid, k_max),
         mss_upwind=up, mss_crosswind=cross,
     )
 
 
-__all__ = ["UnresolvedStatistics", "height_variance", "slope_variances",
+__all__ = ["ROUGHNESS_K_MAX_RATIO", "SPM_KH_MAX", "TWO_SCALE_CUT_RATIO",
+           "UnresolvedStatistics", "height_variance", "slope_variances",
            "unresolved_statistics"]

@@ -32,13 +32,17 @@ towards the scatterer, n = -d arriving at a receiving one) the antenna's own bas
     \\hat h_a = \\frac{\\hat z_a \\times \\hat n}{|\\hat z_a \\times \\hat n|},\\quad
     \\hat v_a = \\hat h_a \\times \\hat n                                               (A2)
 
-(the forward scattering alignment of ``shared/DESIGN.md`` with the platform's vertical
+(the forward scattering alignment of docs/conventions.md with the platform's vertical
 z_a, body z in the world, in place of the world z: on a level platform a port H excites
 exactly the world basis h of eq F1 in every direction; roll and attitude errors mix the
 ports). Port states: H = h_a, V = v_a, P = (v_a + h_a)/sqrt 2 (+45 deg),
 M = (v_a - h_a)/sqrt 2 (-45 deg), R = (v_a - j h_a)/sqrt 2, L = (v_a + j h_a)/sqrt 2
 (IEEE handedness for exp(+j omega t), (v, h, n) right-handed). A cross-polar isolation
 X [dB] mixes in x = 10^(-X/20) of the other port: e_1' = (e_1 + x e_2)/sqrt(1 + x^2).
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 
 References
 ----------
@@ -57,7 +61,8 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..config.radar import PORTS, AntennaConfig
+from ..backend import NUMPY, Boundary
+from ..conventions import PORTS
 
 _SQRT_HALF = np.sqrt(0.5)
 _DEGENERATE = 1e-12
@@ -68,8 +73,22 @@ def _normalise(a: NDArray) -> NDArray:
 
 
 # --------------------------------------------------------------------------- patterns
-def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: float
-                   ) -> NDArray[np.float64]:
+def _local(d_local, xp):
+    """(namespace, direction vector): numpy (..., 3) arrays become a numpy Vec3."""
+    if xp is None:
+        return NUMPY, Boundary(NUMPY).vec3(d_local)
+    return xp, d_local
+
+
+def _sinc(xp, t):
+    """sin(pi t) / (pi t), 1 at 0 (numpy's ``sinc``)."""
+    arg = np.pi * t
+    small = xp.abs(arg) < 1e-8
+    return xp.select(small, 1.0, xp.sin(arg) / xp.select(small, 1.0, arg))
+
+
+def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: float, *,
+                   xp=None) -> NDArray[np.float64]:
     """Un-normalised far-field amplitude F of a uniform rectangular aperture, eq (A1).
 
     Parameters
@@ -90,11 +109,14 @@ def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: 
     ----------
     Balanis (2016), section 12.5: the uniform aperture's sinc pattern; the Huygens
     obliquity (1 + cos theta)/2 of section 12.2.
+
+    ``xp``: array namespace of ``d_local`` (a vector of :mod:`seaecho.backend`), numpy
+    (..., 3) arrays by default; the radar kernel calls this same formula on Dr.Jit arrays.
     """
-    d = np.asarray(d_local, dtype=float)
+    xp, d = _local(d_local, xp)
     # Eq (A1): sinc in the two direction cosines, Huygens obliquity factor
-    return (0.5 * (1.0 + d[..., 0]) * np.sinc(width * d[..., 1] / wavelength)
-            * np.sinc(height * d[..., 2] / wavelength))
+    return (0.5 * (1.0 + d.x) * _sinc(xp, width * d.y / wavelength)
+            * _sinc(xp, height * d.z / wavelength))
 
 
 @lru_cache(maxsize=64)
@@ -132,7 +154,7 @@ def aperture_radiated_power(width: float, height: float, wavelength: float) -> f
     return total * 2.0 * np.pi / n_phi
 
 
-def builtin_gain(name: str, d_local: ArrayLike) -> NDArray[np.float64]:
+def builtin_gain(name: str, d_local: ArrayLike, *, xp=None) -> NDArray[np.float64]:
     """Power gain of the isotropic and Sionna RT built-in patterns [-].
 
     Parameters
@@ -145,27 +167,33 @@ def builtin_gain(name: str, d_local: ArrayLike) -> NDArray[np.float64]:
     ----------
     Balanis (2016) eqs 4-26a (short dipole), 4-84 (half-wave dipole); 3GPP TR 38.901
     Table 7.3-1; the same formulas as ``sionna.rt.antenna_pattern``.
+
+    ``xp``: array namespace of ``d_local`` (a vector of :mod:`seaecho.backend`), numpy
+    (..., 3) arrays by default; the radar kernel calls this same formula on Dr.Jit arrays.
     """
-    d = np.asarray(d_local, dtype=float)
-    cos_t = np.clip(d[..., 2], -1.0, 1.0)
-    sin2_t = np.maximum(1.0 - cos_t**2, 0.0)
+    shape = np.shape(d_local)[:-1] if xp is None else None
+    xp, d = _local(d_local, xp)
+    cos_t = xp.clip(d.z, -1.0, 1.0)
+    sin2_t = xp.maximum(1.0 - cos_t * cos_t, 0.0)
     if name == "isotropic":
-        return np.ones(d.shape[:-1])
+        return np.ones(shape) if shape is not None else 1.0
     if name == "dipole":
         return 1.5 * sin2_t  # Balanis eq 4-26a, D = 1.5
     if name == "hw_dipole":
-        safe = np.where(sin2_t < 1e-10, 1.0, sin2_t)
-        g = 1.643 * np.cos(0.5 * np.pi * cos_t) ** 2 / safe  # Balanis eq 4-84
-        return np.where(sin2_t < 1e-10, 0.0, g)
+        small = sin2_t < 1e-10
+        c = xp.cos(0.5 * np.pi * cos_t)
+        g = 1.643 * c * c / xp.select(small, 1.0, sin2_t)  # Balanis eq 4-84
+        return xp.select(small, 0.0, g)
     if name == "tr38901":
-        theta = np.arccos(cos_t)
-        phi = np.arctan2(d[..., 1], d[..., 0])
+        theta = xp.acos(cos_t)
+        phi = xp.atan2(d.y, d.x)
         t3 = np.deg2rad(65.0)
         # 3GPP TR 38.901 Table 7.3-1: vertical and horizontal cuts, 30 dB floor, 8 dBi
-        a_v = -np.minimum(12.0 * ((theta - 0.5 * np.pi) / t3) ** 2, 30.0)
-        a_h = -np.minimum(12.0 * (phi / t3) ** 2, 30.0)
-        a_db = -np.minimum(-(a_v + a_h), 30.0) + 8.0
-        return 10.0 ** (a_db / 10.0)
+        u = (theta - 0.5 * np.pi) / t3
+        a_v = -xp.minimum(12.0 * u * u, 30.0)
+        a_h = -xp.minimum(12.0 * (phi / t3) * (phi / t3), 30.0)
+        a_db = -xp.minimum(-(a_v + a_h), 30.0) + 8.0
+        return xp.exp(a_db * (np.log(10.0) / 10.0))
     raise ValueError(f"pattern = {name!r}: unknown; allowed: isotropic, dipole, hw_dipole, "
                      f"tr38901, rectangular")
 
@@ -219,29 +247,23 @@ def port_states(basis: str, h: NDArray, v: NDArray, cross_polar_isolation_db: fl
     Returns
     -------
     ndarray (..., 2, 3) complex
-        Port 1 and port 2 unit polarisation vectors, in the order of ``PORTS[basis]``.
+        Port 1 and port 2 unit polarisation vectors, in the order of ``PORTS[basis]``:
+        ``e_p = C[p, 0] h + C[p, 1] v`` with ``C`` of :func:`port_coefficients`.
     """
-    if basis == "hv":
-        e1, e2 = h.astype(complex), v.astype(complex)
-    elif basis == "slant":
-        e1, e2 = _SQRT_HALF * (v + h) + 0j, _SQRT_HALF * (v - h) + 0j
-    elif basis == "circular":
-        # IEEE right-hand circular for exp(+j omega t) with (v, h, n) right-handed
-        e1, e2 = _SQRT_HALF * (v - 1j * h), _SQRT_HALF * (v + 1j * h)
-    else:
-        raise ValueError(f"basis = {basis!r}: unknown; allowed: {sorted(PORTS)}")
-    if cross_polar_isolation_db is not None:
-        x = 10.0 ** (-cross_polar_isolation_db / 20.0)
-        e1, e2 = (e1 + x * e2) / np.sqrt(1 + x * x), (e2 + x * e1) / np.sqrt(1 + x * x)
-    return np.stack([e1, e2], axis=-2)
+    c = port_coefficients(basis, cross_polar_isolation_db)
+    h = np.asarray(h, dtype=float)[..., None, :]
+    v = np.asarray(v, dtype=float)[..., None, :]
+    return c[:, 0, None] * h + c[:, 1, None] * v
 
 
 def port_coefficients(basis: str, cross_polar_isolation_db: float | None
                       ) -> NDArray[np.complex128]:
     """Port states as coefficients on (h_a, v_a): C[port, (h, v)], so e_p = C[p] . (h, v).
 
-    The same states as :func:`port_states` (which builds the vectors directly); used by
-    the fused Dr.Jit kernel (``seaecho.radar.kernels``).
+    H = h_a, V = v_a, P = (v_a + h_a)/sqrt 2, M = (v_a - h_a)/sqrt 2,
+    R = (v_a - j h_a)/sqrt 2, L = (v_a + j h_a)/sqrt 2 (module docstring), then the
+    cross-polar mixing. :func:`port_states` and the radar kernel
+    (``seaecho.radar.kernels``) both build the states from these.
     """
     r = _SQRT_HALF
     table = {"hv": [[1.0, 0.0], [0.0, 1.0]],
@@ -259,6 +281,10 @@ def port_coefficients(basis: str, cross_polar_isolation_db: float | None
 def wave_basis(n: NDArray, up: NDArray) -> tuple[NDArray, NDArray]:
     """Eq (A2): h = up x n / |up x n|, v = h x n, with a fallback at n parallel to up.
 
+    Eqs F1-F2 with the antenna's reference axis as the normal
+    (:func:`seaecho.geometry.frames.polarisation_basis`, the same formula as the world
+    bases; at ``n`` along ``up``, the limit from the reference azimuth).
+
     Parameters
     ----------
     n : ndarray (..., 3)
@@ -266,18 +292,9 @@ def wave_basis(n: NDArray, up: NDArray) -> tuple[NDArray, NDArray]:
     up : ndarray (..., 3) or (3,)
         Reference (antenna height) axis [-].
     """
-    up = np.broadcast_to(up, n.shape)
-    h = np.cross(up, n)
-    norm = np.linalg.norm(h, axis=-1, keepdims=True)
-    if np.any(norm < 1e-9):
-        # Limit along the reference azimuth (the antenna's boresight side)
-        ref = np.cross(up, np.cross(np.broadcast_to([1.0, 0.0, 0.0], n.shape), up))
-        ref = np.where(np.linalg.norm(ref, axis=-1, keepdims=True) < 1e-9,
-                       np.broadcast_to([0.0, 1.0, 0.0], n.shape), ref)
-        h = np.where(norm < 1e-9, np.cross(up, ref), h)
-        norm = np.linalg.norm(h, axis=-1, keepdims=True)
-    h = h / norm
-    return h, np.cross(h, n)
+    from ..geometry.frames import polarisation_basis
+
+    return polarisation_basis(n, up)
 
 
 # ---------------------------------------------------------------------------- antenna
@@ -306,12 +323,6 @@ class Antenna:
     basis: str = "hv"
     cross_polar_isolation_db: float | None = None
 
-    @classmethod
-    def from_config(cls, cfg: AntennaConfig, wavelength: float) -> Antenna:
-        """Antenna of a ``[<platform>.antenna]`` section at carrier wavelength [m]."""
-        return cls(cfg.pattern, wavelength, cfg.width_m, cfg.height_m, cfg.basis,
-                   cfg.cross_polar_isolation_db)
-
     @property
     def ports(self) -> tuple[str, str]:
         """Port letters, e.g. ('H', 'V')."""
@@ -322,14 +333,17 @@ class Antenna:
         """Directivity at boresight [-] (1 for isotropic)."""
         return float(self.gain_local(np.array([1.0, 0.0, 0.0])))
 
-    def gain_local(self, d_local: ArrayLike) -> NDArray[np.float64]:
-        """Power gain G [-] for unit directions in the antenna frame (..., 3), eq (A1)."""
+    def gain_local(self, d_local: ArrayLike, *, xp=None) -> NDArray[np.float64]:
+        """Power gain G [-] for unit directions in the antenna frame (..., 3), eq (A1).
+
+        ``xp``: array namespace of ``d_local`` (:mod:`seaecho.backend`), numpy by default.
+        """
         if self.pattern == "rectangular":
-            f = aperture_field(d_local, self.width, self.height, self.wavelength)
+            f = aperture_field(d_local, self.width, self.height, self.wavelength, xp=xp)
             norm = 4.0 * np.pi / aperture_radiated_power(self.width, self.height,
                                                          self.wavelength)
             return norm * f * f
-        return builtin_gain(self.pattern, d_local)
+        return builtin_gain(self.pattern, d_local, xp=xp)
 
     def response(self, d_world: ArrayLike, axes: ArrayLike, receive: bool,
                  up: ArrayLike | None = None

@@ -27,6 +27,19 @@ Scatterers whose echo cannot reach the window (tau outside
 [t_0 - T - guard, t_0 + T_w + guard]) are dropped before the sum; the period N leaves
 ``guard`` samples on both sides so that no kept echo wraps around into the window.
 
+Evaluation. :func:`accumulate` sums the phasors of eq (E2) directly when there are few
+terms (scatterers x modes <= :data:`DIRECT_TERMS`: point targets), and otherwise by
+finufft, each channel a single-threaded transform, the channels spread over worker
+threads: the numbers are then those of the single-threaded library whatever the number
+of cores (bit for bit), and the work parallelises over the channels (finufft's own
+threads contend for the few hundred grid points of a pulse and cost twice the CPU time,
+``docs/performance.md``). :func:`accumulate_cuda` does the same sum on a GPU with
+cufinufft (imported only there) from arrays that never leave the device.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] A. Dutt and V. Rokhlin, "Fast Fourier transforms for nonequispaced data",
@@ -38,7 +51,10 @@ References
 
 from __future__ import annotations
 
+import functools
+import os
 from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
@@ -49,6 +65,10 @@ from ..constants import C0
 
 #: Guard samples on each side of the window in the NUFFT period.
 GUARD = 32
+
+#: Scatterers x modes up to which eq (E2) is summed directly (exact; a handful of point
+#: targets takes microseconds, where a NUFFT's set-up takes milliseconds).
+DIRECT_TERMS = 1 << 16
 
 
 @dataclass(frozen=True)
@@ -103,22 +123,29 @@ class ReceiveWindow:
         """NUFFT period N: window + pulse + 2 guards, rounded up to a fast FFT size."""
         return int(next_fast_len(self.n_samples + pulse_samples + 2 * GUARD))
 
-    def keep(self, tau: NDArray[np.float64], pulse_samples: int) -> NDArray[np.bool_]:
-        """Scatterers whose echo overlaps the window (with the guards)."""
+    def bounds(self, pulse_samples: int) -> tuple[float, float]:
+        """Delays (lo, hi) [s] strictly between which an echo overlaps the window (with
+        the guards)."""
         lo = self.t0 - (pulse_samples + GUARD // 2) / self.sampling_rate
         hi = self.t0 + (self.n_samples + GUARD // 2) / self.sampling_rate
+        return lo, hi
+
+    def keep(self, tau: NDArray[np.float64], pulse_samples: int) -> NDArray[np.bool_]:
+        """Scatterers whose echo overlaps the window (with the guards)."""
+        lo, hi = self.bounds(pulse_samples)
         return (tau > lo) & (tau < hi)
 
 
 def accumulate(tau: ArrayLike, amplitudes: ArrayLike, pulse_spectrum: ArrayLike,
-               window: ReceiveWindow, eps: float = 1e-9) -> NDArray[np.complex128]:
-    """Sum of delayed pulse copies on the window's samples, eq (E2), by finufft type 1.
+               window: ReceiveWindow, eps: float = 1e-9, *, method: str = "auto",
+               workers: int | None = None) -> NDArray[np.complex128]:
+    """Sum of delayed pulse copies on the window's samples, eq (E2).
 
     Parameters
     ----------
     tau : array_like (K,)
         Delays [s] (float64), all within ``window.keep``.
-    amplitudes : array_like (C, K) or (K,) complex
+    amplitudes : array_like (C, K) or (K,) complex, or a list of C (K,) arrays
         Complex amplitudes a_k per channel [sqrt(W)], carrier phase included.
     pulse_spectrum : array_like (N,) complex
         DFT of the pulse zero-padded to the period N (``Waveform.spectrum(N)``).
@@ -126,29 +153,144 @@ def accumulate(tau: ArrayLike, amplitudes: ArrayLike, pulse_spectrum: ArrayLike,
         Fast-time sampling.
     eps : float
         NUFFT relative tolerance.
+    method : {"auto", "nufft", "direct"}
+        finufft type 1, the direct sum of the phasors (exact, O(K N)), or the direct sum
+        when K N <= :data:`DIRECT_TERMS` and the NUFFT otherwise.
+    workers : int, optional
+        Threads over which the channels are spread (default: the CPUs this process may
+        use, at most C). The result does not depend on it.
 
     Returns
     -------
     ndarray (C, n_samples) or (n_samples,) complex
         r_m [sqrt(W)].
     """
-    import finufft
-
+    if method not in ("auto", "nufft", "direct"):
+        raise ValueError(f"method = {method!r}: allowed 'auto', 'nufft', 'direct'")
     tau = np.ascontiguousarray(tau, dtype=np.float64)
-    a = np.asarray(amplitudes, dtype=np.complex128)
-    squeeze = a.ndim == 1
-    a = np.ascontiguousarray(np.atleast_2d(a))
+    if isinstance(amplitudes, list | tuple):  # one (K,) array per channel
+        squeeze = False
+        rows = [np.ascontiguousarray(a, dtype=np.complex128) for a in amplitudes]
+    else:
+        a = np.asarray(amplitudes, dtype=np.complex128)
+        squeeze = a.ndim == 1
+        a = np.ascontiguousarray(np.atleast_2d(a))
+        rows = list(a)
     spec = np.asarray(pulse_spectrum)
     n = spec.size
     if tau.size == 0:
-        out = np.zeros((a.shape[0], window.n_samples), dtype=np.complex128)
+        out = np.zeros((len(rows), window.n_samples), dtype=np.complex128)
         return out[0] if squeeze else out
     # Eq (E2): phasor points x_k = 2 pi (tau_k - t0) f_s / N folded into [-pi, pi)
     x = 2.0 * np.pi * ((tau - window.t0) * window.sampling_rate / n)
     x = np.mod(x + np.pi, 2.0 * np.pi) - np.pi
-    phasors = finufft.nufft1d1(x, a, n_modes=n, eps=eps, isign=-1, modeord=1)
+    if method == "direct" or (method == "auto" and tau.size * n <= DIRECT_TERMS):
+        phasors = _phasors_direct(x, np.stack(rows), n)
+    else:
+        phasors = _phasors_nufft(x, rows, n, eps, workers)
     out = np.fft.ifft(phasors * spec, axis=-1)[:, :window.n_samples]
     return out[0] if squeeze else out
+
+
+def _phasors_direct(x: NDArray, a: NDArray, n: int) -> NDArray[np.complex128]:
+    """sum_k a_ck exp(-j l x_k) for the N integer modes l in FFT order, (C, N)."""
+    modes = np.fft.fftfreq(n, 1.0 / n)
+    return a @ np.exp(-1j * np.outer(x, modes))
+
+
+def _phasors_nufft(x: NDArray, rows: list[NDArray], n: int, eps: float,
+                   workers: int | None) -> NDArray[np.complex128]:
+    """The same sums by finufft type 1: one single-threaded transform per channel, the
+    channels on worker threads (finufft releases the GIL)."""
+    import finufft
+
+    c = len(rows)
+    if workers is None:
+        workers = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (
+            os.cpu_count() or 1)
+    workers = max(1, min(int(workers), c))
+
+    def run(a: NDArray) -> NDArray[np.complex128]:
+        return finufft.nufft1d1(x, a, n_modes=n, eps=eps, isign=-1, modeord=1, nthreads=1)
+
+    if workers == 1:
+        return np.stack([run(a) for a in rows])
+    return np.stack(list(_pool(workers).map(run, rows)))
+
+
+@functools.cache
+def _pool(workers: int) -> ThreadPoolExecutor:
+    return ThreadPoolExecutor(workers, thread_name_prefix="seaecho-nufft")
+
+
+if hasattr(os, "register_at_fork"):  # a forked worker process gets pools of its own
+    os.register_at_fork(after_in_child=_pool.cache_clear)
+
+
+def accumulate_cuda(xp, tau: object, amplitudes: tuple, pulse_spectrum: ArrayLike,
+                    window: ReceiveWindow, eps: float = 1e-9) -> NDArray[np.complex128]:
+    """Eq (E2) on a GPU: cufinufft type 1 on arrays that stay on the device.
+
+    Parameters
+    ----------
+    xp : seaecho.backend.DrJitNamespace
+        The ``drjit.cuda`` namespace holding the inputs.
+    tau : Dr.Jit Float64 (K,)
+        Delays [s], all within ``window.keep``.
+    amplitudes : tuple of C Dr.Jit Float64 (2 K,)
+        Complex amplitudes [sqrt(W)] per channel, interleaved (re, im): the memory of a
+        complex (K,) array each.
+    pulse_spectrum : array_like (N,) complex
+        As :func:`accumulate`.
+    window : ReceiveWindow
+    eps : float
+        NUFFT relative tolerance.
+
+    Returns
+    -------
+    ndarray (C, n_samples) complex
+        r_m [sqrt(W)]; only the C x N mode sums come back to the host.
+
+    Notes
+    -----
+    cufinufft accumulates with atomic additions: the last bits of the sums depend on
+    the order in which the GPU's threads run (results agree with :func:`accumulate` to
+    the NUFFT tolerance, not bit for bit).
+    """
+    import cufinufft
+
+    from ..backend import cuda_array, cuda_synchronize
+
+    spec = np.asarray(pulse_spectrum)
+    n, c = spec.size, len(amplitudes)
+    k = xp.width(tau)
+    if k == 0:
+        return np.zeros((c, window.n_samples), dtype=np.complex128)
+    # Eq (E2): the phasor points, folded into [-pi, pi)
+    u = (tau - xp.const(window.t0)) * (window.sampling_rate / n) + 0.5
+    x = (2.0 * np.pi) * (u - xp.floor(u)) - np.pi
+    out = [xp.empty(2 * n) for _ in range(c)]
+    xp.eval(x, *amplitudes, *out)
+    cuda_synchronize()
+    plan = _cuda_plan(cufinufft, n, float(eps))
+    plan.setpts(cuda_array(x, np.float64, (k,)))
+    for a, o in zip(amplitudes, out, strict=True):
+        plan.execute(cuda_array(a, np.complex128, (k,)), out=cuda_array(o, np.complex128, (n,)))
+    cuda_synchronize()
+    phasors = np.stack([np.asarray(xp.host(o)).view(np.complex128) for o in out])
+    return np.fft.ifft(phasors * spec, axis=-1)[:, :window.n_samples]
+
+
+_CUDA_PLANS: dict[tuple[int, float], object] = {}
+
+
+def _cuda_plan(cufinufft, n: int, eps: float):
+    """A cufinufft type-1 plan for N modes (made once, reused by every pulse and channel)."""
+    key = (n, eps)
+    if key not in _CUDA_PLANS:
+        _CUDA_PLANS[key] = cufinufft.Plan(1, (n,), n_trans=1, eps=eps, isign=-1,
+                                          dtype="complex128", modeord=1)
+    return _CUDA_PLANS[key]
 
 
 def accumulate_direct(tau: ArrayLike, amplitudes: ArrayLike, pulse_spectrum: ArrayLike,
@@ -210,7 +352,9 @@ def accumulate_pulse_write(tau: ArrayLike, amplitudes: ArrayLike,
 __all__ = [
     "GUARD",
     "ReceiveWindow",
+    "DIRECT_TERMS",
     "accumulate",
+    "accumulate_cuda",
     "accumulate_direct",
     "accumulate_pulse_write",
 ]

@@ -40,6 +40,10 @@ the outbound delay solves |p_k + v_k tau_t - p_t| = c tau_t and the return delay
 so that the pulse-to-pulse phase of eq (R1) carries the Doppler frequency
 f_D = -(1/lambda) d(r_t + r_r)/dt of platform and wave motion (Willis 2005, eq 3.23).
 Everything here is float64: at 10 GHz, float32 k r over kilometres is off by degrees.
+The formulas are written once over an array namespace (:func:`delay`, :func:`flight`,
+:func:`amplitude_factor`, :func:`carrier`, :func:`polarimetric_factor`;
+:mod:`seaecho.backend`): the numpy functions below and the fused Dr.Jit radar kernel
+(``seaecho.radar.kernels``) call them.
 
 References
 ----------
@@ -48,14 +52,77 @@ References
 .. [2] N. J. Willis, *Bistatic Radar*, SciTech, 2005, eqs 3.1 and 3.23.
 .. [3] J. A. Kong, *Electromagnetic Wave Theory*, EMW, 2000 (effective aperture
    A_e = G lambda^2 / 4 pi).
+.. [4] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations
 
+import math
+from typing import Any
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..backend import NUMPY, Boundary, Mat2
 from ..constants import C0, K_B, T0
+
+
+# ------------------------------------------------------------- formulas (any namespace)
+def delay(xp, d: Any, v: Any) -> Any:
+    """Positive root tau of ``|D + V tau| = c tau``, eq (R3) [s] (namespace vectors)."""
+    dv = xp.dot(d, v)
+    a = C0 * C0 - xp.dot(v, v)
+    # Eq (R3): the root that is positive for any |v| < c
+    return (dv + xp.sqrt(dv * dv + a * xp.dot(d, d))) / a
+
+
+def flight(xp, p_tx: Any, p_sc: Any, v_sc: Any, p_rx: Any, v_rx: Any
+           ) -> tuple[Any, Any, Any]:
+    """Outbound and return delays [s] and the bounce point [m] of eq (R3) (namespace).
+
+    The scatterer moves as ``p_sc + v_sc t`` and the receiver as ``p_rx + v_rx t`` from
+    the emission at ``t = 0`` by the transmitter at ``p_tx``.
+    """
+    tau_t = delay(xp, p_sc - p_tx, v_sc)
+    p_b = p_sc + v_sc * tau_t
+    tau_r = delay(xp, p_rx + v_rx * tau_t - p_b, v_rx)
+    return tau_t, tau_r, p_b
+
+
+def amplitude_factor(xp, transmit_power: float, g_t: Any, g_r: Any, wavelength: float,
+                     r_t: Any, r_r: Any) -> Any:
+    """Real factor of eq (R1): ``sqrt(P_t G_t G_r) lambda / ((4 pi)^1.5 r_t r_r)``.
+
+    [sqrt(W) / m]: times a scattering amplitude [m] gives sqrt(W); squared with
+    ``|S|^2 = sigma`` it is eq (R2).
+    """
+    return (math.sqrt(transmit_power) * wavelength / (4.0 * math.pi) ** 1.5) * xp.sqrt(
+        g_t * g_r) / (r_t * r_r)
+
+
+def carrier(xp, frequency: float, tau: Any) -> Any:
+    """The carrier phase factor ``exp(-j 2 pi f_c tau)`` of eq (R1) [-].
+
+    ``f_c tau`` (about 1e5 cycles) is reduced modulo one cycle before its sine and
+    cosine, which keeps the phase exact to about 1e-11 rad in float64.
+    """
+    cycles = frequency * tau
+    phase = (-2.0 * math.pi) * (cycles - xp.floor(cycles))
+    return xp.complex(xp.cos(phase), xp.sin(phase))
+
+
+def polarimetric_factor(rx_ports: Mat2, s: Mat2, tx_ports: Mat2) -> Mat2:
+    """``r_m^T S t_n`` of eq (R1) for all port pairs: ``R S T^T`` [m].
+
+    ``rx_ports[m, p]``: receive port m on the FSA basis of ``n_s``; ``tx_ports[n, q]``:
+    transmit port n on the basis of ``n_i``; ``s[p, q]`` (p scattered, q incident).
+    """
+    return rx_ports @ s @ tx_ports.T
+
+
+# ---------------------------------------------------------------------- numpy API
 
 
 def propagation_delay(d: ArrayLike, v: ArrayLike) -> NDArray[np.float64]:
@@ -68,13 +135,8 @@ def propagation_delay(d: ArrayLike, v: ArrayLike) -> NDArray[np.float64]:
     v : array_like (..., 3)
         Velocity of the receiving end relative to that frame [m/s], |v| < c.
     """
-    d = np.asarray(d, dtype=np.float64)
-    v = np.asarray(v, dtype=np.float64)
-    dv = np.einsum("...i,...i->...", d, v)
-    dd = np.einsum("...i,...i->...", d, d)
-    a = C0 * C0 - np.einsum("...i,...i->...", v, v)
-    # Eq (R3): the root that is positive for any |v| < c
-    return (dv + np.sqrt(dv * dv + a * dd)) / a
+    io = Boundary(NUMPY)
+    return np.asarray(delay(NUMPY, io.vec3(d), io.vec3(v)))
 
 
 def time_of_flight(
@@ -99,14 +161,10 @@ def time_of_flight(
     p_bounce : ndarray (..., 3)
         Scatterer position when the pulse reaches it [m].
     """
-    p_sc = np.asarray(p_sc, dtype=np.float64)
-    v_sc = np.asarray(v_sc, dtype=np.float64)
-    tau_t = propagation_delay(p_sc - p_tx, v_sc)
-    p_bounce = p_sc + v_sc * tau_t[..., None]
-    p_rx_b = np.asarray(p_rx, dtype=np.float64) + np.asarray(v_rx, dtype=np.float64) \
-        * tau_t[..., None]
-    tau_r = propagation_delay(p_rx_b - p_bounce, v_rx)
-    return tau_t, tau_r, p_bounce
+    io = Boundary(NUMPY)
+    tau_t, tau_r, p_b = flight(NUMPY, *(io.vec3(a) for a in (p_tx, p_sc, v_sc, p_rx, v_rx)))
+    tau_t, tau_r = np.broadcast_arrays(tau_t, tau_r)
+    return np.array(tau_t), np.array(tau_r), np.stack(np.broadcast_arrays(*p_b), axis=-1)
 
 
 def path_amplitude(transmit_power: float, g_t: ArrayLike, g_r: ArrayLike,
@@ -129,11 +187,10 @@ def path_amplitude(transmit_power: float, g_t: ArrayLike, g_r: ArrayLike,
     ndarray
         [sqrt(W) / m]: times a scattering amplitude [m] gives sqrt(W).
     """
-    g = np.asarray(g_t, dtype=np.float64) * np.asarray(g_r, dtype=np.float64)
     # Eq (R1) without S and the phase; squared with |S|^2 = sigma it is eq (R2)
-    return np.sqrt(transmit_power * g) * wavelength / (
-        (4.0 * np.pi) ** 1.5 * np.asarray(r_t, dtype=np.float64)
-        * np.asarray(r_r, dtype=np.float64))
+    return np.asarray(amplitude_factor(NUMPY, transmit_power, *(
+        np.asarray(a, dtype=np.float64) for a in (g_t, g_r)), wavelength, *(
+        np.asarray(a, dtype=np.float64) for a in (r_t, r_r))))
 
 
 def bistatic_received_power(transmit_power: float, g_t: ArrayLike, g_r: ArrayLike,
@@ -169,7 +226,13 @@ def channel_matrix(s: ArrayLike, rx_ports: ArrayLike, tx_ports: ArrayLike
     ndarray (..., 2, 2) complex
         [..., m, n] [m]: receive port m, transmit port n.
     """
-    return np.einsum("...mp,...pq,...nq->...mn", rx_ports, s, tx_ports)
+    def mat(a):
+        a = np.asarray(a)
+        return Mat2(a[..., 0, 0], a[..., 0, 1], a[..., 1, 0], a[..., 1, 1])
+
+    m = polarimetric_factor(mat(rx_ports), mat(s), mat(tx_ports))
+    e = np.broadcast_arrays(*m.flat())
+    return np.stack(e, axis=-1).reshape(e[0].shape + (2, 2))
 
 
 def noise_power(noise_figure_db: float, bandwidth: float) -> float:
@@ -193,10 +256,15 @@ def thermal_noise(shape: tuple[int, ...], power: float, rng: np.random.Generator
 
 
 __all__ = [
+    "amplitude_factor",
     "bistatic_received_power",
+    "carrier",
     "channel_matrix",
+    "delay",
+    "flight",
     "noise_power",
     "path_amplitude",
+    "polarimetric_factor",
     "propagation_delay",
     "thermal_noise",
     "time_of_flight",

@@ -1,144 +1,142 @@
-"""The per-scatterer radar equation as one fused Dr.Jit kernel (float64, LLVM or CUDA).
+"""The per-scatterer radar equation, written once, run by numpy or as one Dr.Jit kernel.
 
-:func:`scatterer_echo_drjit` computes what :meth:`RadarSystem.scatterer_echo_numpy`
-computes with numpy — time of flight (eq R3), directions, antenna gains (eq A1 and the
-built-ins), port states on the FSA bases (eq A2), the polarimetric factor and the
-amplitude with the carrier phase (eq R1) — in one kernel, about 20x faster on 2 cores at
-half a million facets (``benchmarks/bench_radar.py``). Every operation is float64: ranges
-keep sub-micrometre precision and the carrier phase 2 pi f_c tau is reduced modulo one
-cycle before its sine and cosine. The tests check it against the numpy path.
+:func:`echo_terms` is eqs (R1) and (R3) for a set of scatterers over an array namespace
+(:mod:`seaecho.backend`): time of flight (eq R3, :func:`seaecho.radar.equation.flight`),
+directions, antenna gains (eq A1 and the built-in patterns of
+:mod:`seaecho.radar.antennas`), port states on the FSA bases (eq A2 against eq F1, both
+:func:`seaecho.geometry.frames.fsa_basis`, rotated by eq F3), the polarimetric factor
+and the amplitude with the carrier phase (eq R1). :func:`scatterer_echo` evaluates it
+with numpy (``RadarSystem.scatterer_echo_numpy``) or as one fused Dr.Jit kernel on the
+CPU (``drjit.llvm``) or a CUDA GPU (``drjit.cuda``), about 20x faster than numpy on 2
+cores at half a million facets (``benchmarks/bench_radar.py``). Every operation is
+float64: ranges keep sub-micrometre precision and the carrier phase 2 pi f_c tau is
+reduced modulo one cycle before its sine and cosine. Per-pulse values (platform
+positions, velocities, antenna axes) enter as opaque constants: one compiled kernel per
+run.
+
+:func:`sea_echo_terms` chains the sea's per-pulse stages for a set of facets: facing test
+and ray-traced visibility (eq G1 and the local angles of :mod:`seaecho.geometry.frames`),
+the speckled facet amplitudes (eqs P1-P4, :func:`seaecho.scattering.facet.mechanisms`
+and :func:`~seaecho.scattering.facet.speckle`) and :func:`echo_terms`. These are the same
+functions, called with the same values, as the reference path of
+``Simulation.sea_echo`` (a Dr.Jit kernel per stage, numpy in between), so Dr.Jit records
+them as one kernel whose numbers are those of the reference to the last bit (tests);
+:class:`seaecho.radar.resident.ResidentSea` runs it on device-resident facets.
 """
 
 from __future__ import annotations
 
+import math
+from typing import Any
+
 import numpy as np
 from numpy.typing import NDArray
 
+from ..backend import Boundary, Mat2, Rows
 from ..constants import C0
-from ..geometry.buffers import aligned
+from ..geometry.bistatic import ranges
+from ..geometry.frames import basis_change, bistatic_angles, fsa_basis
+from ..scattering.facet import speckle
+from .antennas import port_coefficients
+from .equation import amplitude_factor, carrier, flight, polarimetric_factor
 
-_DEGENERATE = 1e-9
-
-
-def _modules():
-    from .._llvm import configure_llvm
-
-    configure_llvm()
-    import drjit as dr
-    from drjit.llvm import Array3f64, Float64
-
-    return dr, Float64, Array3f64
+__all__ = ["antenna_gain", "echo_terms", "facet_visibility", "port_matrix", "scatterer_echo",
+           "scatterer_echo_drjit", "sea_echo_terms"]
 
 
-def _dot(a, b):
-    return a.x * b.x + a.y * b.y + a.z * b.z
+def antenna_gain(xp, antenna, d: Any, axes: Any) -> Any:
+    """Power gain [-] of ``antenna`` towards unit world directions ``d`` (eq A1 et al.).
 
-
-class _C:
-    """A complex number as a pair of Dr.Jit (or Python) reals."""
-
-    __slots__ = ("im", "re")
-
-    def __init__(self, re, im=0.0):
-        self.re, self.im = re, im
-
-    def __add__(self, o):
-        return _C(self.re + o.re, self.im + o.im)
-
-    def __mul__(self, o):
-        if isinstance(o, _C):
-            return _C(self.re * o.re - self.im * o.im, self.re * o.im + self.im * o.re)
-        return _C(self.re * o, self.im * o)
-
-
-def _delay(dr, d, v):
-    """Eq (R3): positive root of |d + v tau| = c tau."""
-    dv = _dot(d, v)
-    a = C0 * C0 - _dot(v, v)
-    return (dv + dr.sqrt(dv * dv + a * _dot(d, d))) / a
-
-
-def _opaque3(dr, Array3f64, a):
-    """A constant 3-vector as opaque Dr.Jit scalars: kernel parameters, not literals.
-
-    Literals are baked into the kernel's code, so a per-pulse value (platform position,
-    antenna axes) would change the kernel's hash and recompile it at every pulse (about
-    0.13 s of LLVM compilation here); opaque values keep one compiled kernel for a run.
+    ``axes`` (3, 3): the antenna axes in the world (columns boresight, width, height);
+    the direction in the antenna frame is ``axes^T d``.
     """
-    from drjit.llvm import Float64
-
-    return Array3f64(*(dr.opaque(Float64, float(c)) for c in a))
-
-
-def _basis(dr, Array3f64, n, up):
-    """Eq (A2) / eq F1 basis (h, v) of direction n about axis `up` (a 3-tuple), with the
-    fallback of ``antennas.wave_basis`` where n is parallel to up."""
-    u = _opaque3(dr, Array3f64, up)
-    h = dr.cross(u, n)
-    norm = dr.norm(h)
-    upv = np.asarray(up, dtype=float)
-    ref = np.cross(upv, np.cross([1.0, 0.0, 0.0], upv))
-    if np.linalg.norm(ref) < 1e-9:
-        ref = np.array([0.0, 1.0, 0.0])
-    h_ref = np.cross(upv, ref)
-    h_ref = h_ref / np.linalg.norm(h_ref)
-    degenerate = norm < _DEGENERATE
-    h_ref = _opaque3(dr, Array3f64, h_ref)
-    h = Array3f64(*(dr.select(degenerate, h_ref[k], h[k] / dr.select(degenerate, 1.0, norm))
-                    for k in range(3)))
-    return h, dr.cross(h, n)
+    a = np.asarray(axes, dtype=np.float64)
+    d_local = xp.vec(*(xp.dot(d, xp.vconst(a[:, j])) for j in range(3)))
+    return antenna.gain_local(d_local, xp=xp)
 
 
-def _gain(dr, vec, antenna, d, axes):
-    """Power gain of ``antenna`` towards unit world directions d; axes (3, 3) columns."""
-    from .antennas import aperture_radiated_power
-
-    x = _dot(d, vec(axes[:, 0]))
-    y = _dot(d, vec(axes[:, 1]))
-    z = _dot(d, vec(axes[:, 2]))
-    name = antenna.pattern
-    if name == "rectangular":
-        lam = antenna.wavelength
-        norm = 4.0 * np.pi / aperture_radiated_power(antenna.width, antenna.height, lam)
-
-        def sinc(t):
-            arg = np.pi * t
-            small = dr.abs(arg) < 1e-8
-            return dr.select(small, 1.0, dr.sin(arg) / dr.select(small, 1.0, arg))
-
-        # Eq (A1)
-        f = 0.5 * (1.0 + x) * sinc(antenna.width * y / lam) * sinc(antenna.height * z / lam)
-        return norm * f * f
-    if name == "isotropic":
-        return dr.full(type(x), 1.0, dr.width(x))
-    sin2 = dr.maximum(1.0 - z * z, 0.0)
-    if name == "dipole":
-        return 1.5 * sin2
-    if name == "hw_dipole":
-        small = sin2 < 1e-10
-        g = 1.643 * dr.square(dr.cos(0.5 * np.pi * z)) / dr.select(small, 1.0, sin2)
-        return dr.select(small, 0.0, g)
-    if name == "tr38901":
-        theta = dr.acos(dr.clip(z, -1.0, 1.0))
-        phi = dr.atan2(y, x)
-        t3 = np.deg2rad(65.0)
-        a_v = -dr.minimum(12.0 * dr.square((theta - 0.5 * np.pi) / t3), 30.0)
-        a_h = -dr.minimum(12.0 * dr.square(phi / t3), 30.0)
-        a_db = -dr.minimum(-(a_v + a_h), 30.0) + 8.0
-        return dr.power(10.0, a_db / 10.0)
-    raise ValueError(f"pattern = {name!r}: unknown")
+def _coefficient(xp, c: complex) -> Any:
+    """A port coefficient: structural 0, a real literal or a complex one."""
+    c = complex(c)
+    if c == 0:
+        return 0
+    if c.imag == 0:
+        return c.real
+    return xp.complex(c.real, c.imag)
 
 
-def scatterer_echo_drjit(radar, geometry, p: NDArray, v: NDArray, s: NDArray,
-                         directions: bool = False) -> dict:
-    """Eqs (R1), (R3), (A1), (A2) for K scatterers in one Dr.Jit kernel.
+def port_matrix(xp, coefficients: NDArray, n: Any, up: Any) -> Mat2:
+    """Port states of an antenna on the world FSA basis of direction ``n``: ``C A`` [-].
+
+    ``coefficients[port, (h_a, v_a)]`` on the antenna's own basis (eq A2: the FSA basis
+    of ``n`` about the platform's vertical ``up``, :func:`fsa_basis`), ``A`` the rotation
+    (eq F3) from the world basis (eq F1, about +z) to the antenna's basis; row ``p`` of
+    the result is port p's components on (h, v) of ``n``.
+    """
+    world = fsa_basis(xp, n, xp.vec(0.0, 0.0, 1.0))
+    own = fsa_basis(xp, n, up)
+    c = Mat2(*(_coefficient(xp, x) for x in np.asarray(coefficients).ravel()))
+    return c @ basis_change(xp, world, own)
+
+
+def echo_terms(xp, radar, geometry, p: Any, v: Any, s: Mat2) -> dict[str, Any]:
+    """Eqs (R1), (R3), (A1), (A2) for scatterers, over an array namespace.
 
     Parameters
     ----------
+    xp : array namespace (:mod:`seaecho.backend`)
     radar : seaecho.radar.system.RadarSystem
         Antennas, channels, carrier and power.
     geometry : seaecho.radar.system.PulseGeometry
         Platform states and antenna axes at the emission.
+    p, v : vectors
+        Scatterer positions at the emission [m] and velocities [m/s].
+    s : Mat2 of complex
+        Scattering amplitudes [m] on the world FSA bases, (h, v) order.
+
+    Returns
+    -------
+    dict
+        ``tau, r_t, r_r, g_t, g_r`` [s, m, m, -, -], ``n_i, n_s`` (vectors [-]) and
+        ``amplitudes``: one complex array per channel of ``radar.channels`` [sqrt(W)].
+    """
+    tx, rx = geometry.tx, geometry.rx
+    p_tx = xp.vconst(tx.position)
+    p_rx = xp.vconst(rx.position)
+    v_rx = xp.vconst(rx.velocity)
+    # Eq (R3): outbound delay, bounce point, return delay to the moving receiver
+    tau_t, tau_r, p_b = flight(xp, p_tx, p, v, p_rx, v_rx)
+    tau = tau_t + tau_r
+    r_t, r_r = C0 * tau_t, C0 * tau_r
+    n_i = (p_b - p_tx) * (1.0 / r_t)
+    n_s = (p_rx + v_rx * tau - p_b) * (1.0 / r_r)
+    g_t = antenna_gain(xp, radar.tx_antenna, n_i, geometry.tx_axes)
+    g_r = antenna_gain(xp, radar.rx_antenna, -n_s, geometry.rx_axes)
+    # Port states on the world FSA bases (receive: the conjugate states, eq A2)
+    t_ports = port_matrix(xp, port_coefficients(radar.tx_antenna.basis,
+                                                radar.tx_antenna.cross_polar_isolation_db),
+                          n_i, xp.vconst(tx.rotation[:, 2]))
+    r_ports = port_matrix(xp, np.conj(port_coefficients(
+        radar.rx_antenna.basis, radar.rx_antenna.cross_polar_isolation_db)),
+        n_s, xp.vconst(rx.rotation[:, 2]))
+    m = polarimetric_factor(r_ports, s, t_ports)
+    # Eq (R1): real amplitude and carrier phase exp(-j 2 pi f_c tau)
+    a = carrier(xp, radar.carrier, tau) * amplitude_factor(
+        xp, radar.transmit_power, g_t, g_r, radar.wavelength, r_t, r_r)
+    return dict(tau=tau, r_t=r_t, r_r=r_r, g_t=g_t, g_r=g_r, n_i=n_i, n_s=n_s,
+                amplitudes=[m[i, j] * a for _, i, j in radar.channels])
+
+
+def scatterer_echo(xp, radar, geometry, p: NDArray, v: NDArray, s: NDArray,
+                   directions: bool = True) -> dict[str, NDArray]:
+    """:func:`echo_terms` of numpy scatterers, evaluated in namespace ``xp``.
+
+    Parameters
+    ----------
+    xp : array namespace (:mod:`seaecho.backend`)
+        numpy, or Dr.Jit (one fused kernel, CPU or GPU).
+    radar, geometry
+        As :func:`echo_terms`.
     p, v : ndarray (K, 3)
         Scatterer positions at the emission [m] and velocities [m/s] (float64).
     s : ndarray (K, 2, 2) complex
@@ -157,93 +155,82 @@ def scatterer_echo_drjit(radar, geometry, p: NDArray, v: NDArray, s: NDArray,
     Inputs enter as contiguous columns aliased by Dr.Jit: reading them with
     ``dr.gather`` from the interleaved numpy buffers instead was 3x slower (LLVM, 2 cores).
     """
-    from .antennas import port_coefficients
-
-    dr, Float64, Array3f64 = _modules()
-    keep = []  # numpy buffers aliased by Dr.Jit: alive until evaluation
-
-    def _vec(a):  # per-pulse constants: opaque, one compiled kernel per run
-        return _opaque3(dr, Array3f64, a)
-
-    def arr(a):
-        a = aligned(a)  # 64-byte aligned: one compiled kernel (geometry.buffers)
-        keep.append(a)
-        return Float64(a)
-
-    def vec3(a):
-        return Array3f64(*(arr(a[:, k]) for k in range(3)))
-
-    tx, rx = geometry.tx, geometry.rx
-    pos = vec3(p)
-    vel = vec3(v)
-    p_tx = _vec(tx.position)
-    # Eq (R3): outbound delay, bounce point, return delay to the moving receiver
-    tau_t = _delay(dr, pos - p_tx, vel)
-    p_b = pos + vel * tau_t
-    v_rx = _vec(rx.velocity)
-    p_rx_b = _vec(rx.position) + v_rx * tau_t
-    tau_r = _delay(dr, p_rx_b - p_b, v_rx)
-    r_t, r_r = C0 * tau_t, C0 * tau_r
-    n_i = (p_b - p_tx) / r_t
-    p_rx = _vec(rx.position) + v_rx * (tau_t + tau_r)
-    n_s = (p_rx - p_b) / r_r
-    g_t = _gain(dr, _vec, radar.tx_antenna, n_i, geometry.tx_axes)
-    g_r = _gain(dr, _vec, radar.rx_antenna, -n_s, geometry.rx_axes)
-    # Port states on the world FSA bases: antenna basis (eq A2) against eq F1's
-    z = (0.0, 0.0, 1.0)
-    h_i, v_i = _basis(dr, Array3f64, n_i, z)
-    h_s, v_s = _basis(dr, Array3f64, n_s, z)
-    ha_t, va_t = _basis(dr, Array3f64, n_i, tuple(tx.rotation[:, 2]))
-    ha_r, va_r = _basis(dr, Array3f64, n_s, tuple(rx.rotation[:, 2]))
-    m_t = ((_dot(ha_t, h_i), _dot(ha_t, v_i)), (_dot(va_t, h_i), _dot(va_t, v_i)))
-    m_r = ((_dot(ha_r, h_s), _dot(ha_r, v_s)), (_dot(va_r, h_s), _dot(va_r, v_s)))
-    c_t = port_coefficients(radar.tx_antenna.basis, radar.tx_antenna.cross_polar_isolation_db)
-    c_r = np.conj(port_coefficients(radar.rx_antenna.basis,
-                                    radar.rx_antenna.cross_polar_isolation_db))
-
-    def ports(c, m, port):
-        # e_port on (h_w, v_w): sum_a C[port, a] M[a, w]
-        return [(_C(float(c[port, 0].real), float(c[port, 0].imag)) * m[0][w])
-                + (_C(float(c[port, 1].real), float(c[port, 1].imag)) * m[1][w])
-                for w in range(2)]
-
-    sm = [[_C(arr(s[:, a, b].real), arr(s[:, a, b].imag)) for b in range(2)]
-          for a in range(2)]
-    # Eq (R1): real amplitude and carrier phase exp(-j 2 pi f_c tau), reduced mod 1 cycle
-    tau = tau_t + tau_r
-    cycles = radar.carrier * tau
-    phase = -2.0 * np.pi * (cycles - dr.floor(cycles))
-    amp = (np.sqrt(radar.transmit_power) * radar.wavelength / (4.0 * np.pi) ** 1.5) \
-        * dr.sqrt(g_t * g_r) / (r_t * r_r)
-    carrier = _C(amp * dr.cos(phase), amp * dr.sin(phase))
-    outs = []
-    for _, m_port, n_port in radar.channels:
-        r_vec = ports(c_r, m_r, m_port)
-        t_vec = ports(c_t, m_t, n_port)
-        acc = None
-        for a in range(2):
-            for b in range(2):
-                term = r_vec[a] * sm[a][b] * t_vec[b]
-                acc = term if acc is None else acc + term
-        outs.append(acc * carrier)
-    flat = [tau, r_t, r_r, g_t, g_r]
-    for o in outs:
-        flat += [o.re, o.im]
-    if directions:
-        flat += [*n_i, *n_s]
-    dr.eval(*flat)
-    res = [np.asarray(f.numpy()) for f in flat]
-    amplitudes = np.empty((len(outs), p.shape[0]), dtype=np.complex128)
-    for k in range(len(outs)):
-        amplitudes[k].real = res[5 + 2 * k]
-        amplitudes[k].imag = res[6 + 2 * k]
-    result = {"tau": res[0], "r_t": res[1], "r_r": res[2], "g_t": res[3], "g_r": res[4],
-              "amplitudes": amplitudes}
-    if directions:
-        j = 5 + 2 * len(outs)
-        result["n_i"] = np.stack(res[j:j + 3], axis=-1)
-        result["n_s"] = np.stack(res[j + 3:j + 6], axis=-1)
-    return result
+    k = p.shape[0]
+    io = Boundary(xp, k)
+    sm = Mat2(*(io.complex(s[:, a, b]) for a in range(2) for b in range(2)))
+    t = echo_terms(xp, radar, geometry, io.vec3(p), io.vec3(v), sm)
+    names = ["tau", "r_t", "r_r", "g_t", "g_r"] + (["n_i", "n_s"] if directions else [])
+    res = io.numpy(*(t[n] for n in names), Rows(t["amplitudes"]))
+    out = dict(zip(names, res[:-1], strict=True))
+    out["amplitudes"] = res[-1].astype(np.complex128, copy=False)
+    return out
 
 
-__all__ = ["scatterer_echo_drjit"]
+def scatterer_echo_drjit(radar, geometry, p: NDArray, v: NDArray, s: NDArray,
+                         directions: bool = False, *, variant: str | None = None) -> dict:
+    """:func:`scatterer_echo` as one Dr.Jit kernel (former entry point).
+
+    ``variant``: Mitsuba variant selecting ``drjit.llvm`` (default) or ``drjit.cuda``.
+    """
+    from ..backend import drjit_namespace
+
+    return scatterer_echo(drjit_namespace(variant), radar, geometry, p, v, s, directions)
+
+
+def facet_visibility(xp, geometry, facets: dict[str, Any]) -> tuple[Any, Any, Any]:
+    """Facing test and ray-traced visibility of facets, as the facet engine has them.
+
+    Returns ``(visible, n_i, n_s)``: Bool (lit from the transmitter and seen from the
+    receiver: facing, eq G1 and the local angles, and not occluded, ``facets["hidden_tx"]``,
+    ``facets["hidden_rx"]``) and the unit directions of eq G1 at the emission positions.
+    """
+    tx = np.asarray(geometry.tx.position, dtype=np.float64)
+    rx = np.asarray(geometry.rx.position, dtype=np.float64)
+    c, nrm = facets["centroid"], facets["normal"]
+    _, _, n_i, n_s = ranges(xp, c, xp.vconst(tx), xp.vconst(rx),
+                            bool(np.array_equal(tx, rx)))
+    theta_i, theta_s, _ = bistatic_angles(xp, n_i, n_s, nrm)
+    visible = ((theta_i < math.pi / 2) & ~facets["hidden_tx"]
+               & (theta_s < math.pi / 2) & ~facets["hidden_rx"])
+    return visible, n_i, n_s
+
+
+def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: Any,
+                   draws: dict[str, Any], lo: float, hi: float) -> dict[str, Any]:
+    """One pulse of sea facets over a namespace: visibility, eqs P1-P4, eqs R1 and R3.
+
+    Parameters
+    ----------
+    xp : array namespace (:mod:`seaecho.backend`)
+    radar : seaecho.radar.system.RadarSystem
+    geometry : seaecho.radar.system.PulseGeometry
+        Platform states of the pulse; the facing test and the scattering use the
+        positions at the emission (``geometry.tx.position``, ``geometry.rx.position``), as
+        the facet engine does.
+    facets : dict
+        Namespace values: ``centroid``, ``normal``, ``velocity`` (vectors) [m, -, m/s],
+        ``area`` [m^2], ``hidden_tx``, ``hidden_rx`` (Bool: segment to the transmitter /
+        receiver blocked, ``FacetEngine.occlusion``).
+    mechanisms_of : callable
+        ``(n_i, n_s, N) -> mechanisms`` (:func:`seaecho.scattering.facet.mechanisms` with
+        the sea's values bound): the facets' mechanism matrices and weights.
+    draws : dict
+        Speckle draws per mechanism (complex namespace values, eq P4).
+    lo, hi : float
+        Delays [s] outside which an echo cannot reach the receive window
+        (``ReceiveWindow.keep``).
+
+    Returns
+    -------
+    dict
+        ``tau`` [s], ``amplitudes`` (one complex value per channel) [sqrt(W)] and ``keep``
+        (Bool: visible and inside the window), for every facet.
+    """
+    visible, n_i, n_s = facet_visibility(xp, geometry, facets)
+    # Eqs P1-P4 with the facet's area times its visibility (0 or 1)
+    area = facets["area"] * xp.select(visible, xp.const(1.0), xp.const(0.0))
+    s = speckle(xp, mechanisms_of(n_i, n_s, facets["normal"]), draws, area)
+    # Eqs R1, R3
+    t = echo_terms(xp, radar, geometry, facets["centroid"], facets["velocity"], s)
+    keep = visible & (t["tau"] > lo) & (t["tau"] < hi)
+    return dict(tau=t["tau"], amplitudes=t["amplitudes"], keep=keep)

@@ -6,7 +6,7 @@ path and attitude, drawn from the scene's seed, gives the true track that drives
 simulation (paper section IV-C: "noise can eventually be introduced in the carrier's
 dynamics"). The nominal track is kept beside it for the processing that comes later.
 
-Frames (``shared/DESIGN.md``): world x east, y north, z up. Body frame x forward, y left,
+Frames (docs/conventions.md): world x east, y north, z up. Body frame x forward, y left,
 z up. The attitude (yaw psi, pitch theta, roll phi) turns body vectors into world vectors:
 
 .. math::
@@ -16,6 +16,10 @@ z up. The attitude (yaw psi, pitch theta, roll phi) turns body vectors into worl
 yaw counter-clockwise from +x, pitch positive nose up, roll positive right wing down.
 
 Everything is vectorised over time: ``state(t)`` takes any array of times.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 
 References
 ----------
@@ -31,9 +35,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-
-from ..config.radar import GaussMarkovConfig, PlatformConfig
-from ..rng import generator
 
 
 @dataclass(frozen=True)
@@ -130,8 +131,8 @@ def gauss_markov(n: int, sigma: ArrayLike, phi: float, rng: np.random.Generator
 class Platform:
     """A transmitter or receiver platform: nominal trajectory plus optional perturbation.
 
-    Build it with :meth:`from_config`. ``state(t)`` gives the true (perturbed) track,
-    ``nominal_state(t)`` the planned one.
+    ``state(t)`` gives the true (perturbed) track, ``nominal_state(t)`` the planned one
+    (:func:`seaecho.build.build_radar` makes the platforms of a scene).
     """
 
     def __init__(
@@ -177,48 +178,6 @@ class Platform:
         self._pitch = float(pitch)
         self._roll = float(roll)
         self._pert = perturbation
-
-    @classmethod
-    def from_config(
-        cls,
-        cfg: PlatformConfig,
-        *,
-        seed: int = 0,
-        stream_index: int = 0,
-        t_span: tuple[float, float] = (0.0, 0.0),
-    ) -> Platform:
-        """Platform of a scene-file section.
-
-        Parameters
-        ----------
-        cfg : PlatformConfig
-            The ``[transmitter]`` or ``[receiver]`` section.
-        seed : int
-            The scene's seed (``[run].seed``); perturbations are drawn from the
-            ``"platform"`` stream with index ``stream_index``.
-        stream_index : int
-            0 for the transmitter, 1 for the receiver.
-        t_span : (float, float)
-            Time interval [s] over which the perturbation is drawn (the run's pulses); the
-            perturbation is held constant outside it.
-        """
-        if cfg.motion == "fixed":
-            times = np.array([0.0])
-            positions = np.array([cfg.position_m], dtype=float)
-        elif cfg.motion == "linear":
-            times = np.array([0.0, 1.0])
-            p0 = np.array(cfg.position_m, dtype=float)
-            positions = np.stack([p0, p0 + np.array(cfg.velocity_m_s, dtype=float)])
-        else:
-            times = np.array(cfg.waypoint_times_s, dtype=float)
-            positions = np.array(cfg.waypoint_positions_m, dtype=float)
-        pert = None
-        if cfg.perturbation is not None:
-            pert = draw_perturbation(cfg.perturbation, t_span,
-                                     generator(seed, "platform", stream_index))
-        yaw = None if cfg.yaw_deg is None else np.deg2rad(cfg.yaw_deg)
-        return cls(times, positions, yaw=yaw, pitch=np.deg2rad(cfg.pitch_deg),
-                   roll=np.deg2rad(cfg.roll_deg), perturbation=pert)
 
     # ------------------------------------------------------------------ nominal track
     def _segment(self, t: NDArray[np.float64]) -> NDArray[np.intp]:
@@ -271,18 +230,28 @@ class Platform:
 
 
 def draw_perturbation(
-    cfg: GaussMarkovConfig, t_span: tuple[float, float], rng: np.random.Generator
+    t_span: tuple[float, float], rng: np.random.Generator, *, step: float,
+    position_sigma: ArrayLike, position_tau: float, attitude_sigma: ArrayLike,
+    attitude_tau: float,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
-    """Path and attitude errors on a regular grid covering ``t_span``.
+    """Path and attitude errors on a regular grid covering ``t_span`` (Gauss-Markov).
 
     Parameters
     ----------
-    cfg : GaussMarkovConfig
-        sigma and tau of the position [m, s] and attitude [deg, s] errors, grid step [s].
     t_span : (float, float)
         Time interval to cover [s].
     rng : numpy.random.Generator
-        Source of the draws.
+        Source of the draws (the scene's ``"platform"`` stream).
+    step : float
+        Grid step [s].
+    position_sigma : array_like (3,)
+        Stationary standard deviation of the path error along x, y, z [m].
+    position_tau : float
+        Correlation time of the path error [s].
+    attitude_sigma : array_like (3,)
+        Stationary standard deviation of the (yaw, pitch, roll) error [rad].
+    attitude_tau : float
+        Correlation time of the attitude error [s].
 
     Returns
     -------
@@ -291,42 +260,14 @@ def draw_perturbation(
     datt : ndarray (n, 3) [rad] (yaw, pitch, roll)
     """
     t0, t1 = float(t_span[0]), float(t_span[1])
-    n = int(np.ceil((t1 - t0) / cfg.step_s)) + 2
+    n = int(np.ceil((t1 - t0) / step)) + 2
     if n > 50_000_000:
-        raise ValueError(f"perturbation grid of {n} steps: increase perturbation.step_s "
-                         f"= {cfg.step_s} s")
-    t_grid = t0 + cfg.step_s * np.arange(n)
-    dpos = gauss_markov(n, cfg.position_sigma_m, np.exp(-cfg.step_s / cfg.position_tau_s), rng)
-    datt = gauss_markov(n, np.deg2rad(cfg.attitude_sigma_deg),
-                        np.exp(-cfg.step_s / cfg.attitude_tau_s), rng)
+        raise ValueError(f"perturbation grid of {n} steps: the step {step} s is too small "
+                         f"for a span of {t1 - t0} s (at most 5e7 steps)")
+    t_grid = t0 + step * np.arange(n)
+    dpos = gauss_markov(n, position_sigma, np.exp(-step / position_tau), rng)
+    datt = gauss_markov(n, attitude_sigma, np.exp(-step / attitude_tau), rng)
     return t_grid, dpos, datt
-
-
-def platforms_from_scene(scene, t_span: tuple[float, float] | None = None
-                         ) -> tuple[Platform, Platform]:
-    """(transmitter, receiver) platforms of a scene; monostatic: the same object twice.
-
-    Parameters
-    ----------
-    scene : seaecho.config.Scene
-        A scene with a ``[transmitter]`` section (and optionally ``[receiver]``).
-    t_span : (float, float) or None
-        Time interval of the perturbations [s]; default the pulses of ``[radar]``.
-    """
-    if scene.transmitter is None:
-        raise ValueError("the scene has no [transmitter] section")
-    if t_span is None:
-        t_span = (0.0, 0.0)
-        if scene.radar is not None:
-            r = scene.radar
-            t_span = (r.start_time_s, r.start_time_s + (r.n_pulses - 1) / r.prf_hz
-                      + 1.0e-3)
-    seed = scene.run.seed
-    tx = Platform.from_config(scene.transmitter, seed=seed, stream_index=0, t_span=t_span)
-    if scene.receiver is None:
-        return tx, tx
-    rx = Platform.from_config(scene.receiver, seed=seed, stream_index=1, t_span=t_span)
-    return tx, rx
 
 
 __all__ = [
@@ -334,6 +275,5 @@ __all__ = [
     "PlatformState",
     "draw_perturbation",
     "gauss_markov",
-    "platforms_from_scene",
     "rotation_matrix",
 ]

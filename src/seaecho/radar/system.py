@@ -1,7 +1,8 @@
 """The assembled radar of a scene: platforms, antennas and pointing, waveform, window.
 
-:class:`RadarSystem` is the radar stage's entry point. It is built from the scene's
-``[radar]``, ``[transmitter]`` and ``[receiver]`` sections and then works on plain arrays:
+:class:`RadarSystem` is the radar stage's entry point. It is built from a
+:class:`~seaecho.radar.model.RadarModel` (plain values; :func:`seaecho.build.build_radar`
+makes the one of a scene) and works on plain arrays:
 for pulse ``p`` and scatterers (positions, velocities, 2x2 scattering amplitudes in the
 world FSA bases), :meth:`RadarSystem.scatterer_echo` gives the delays and per-channel
 complex amplitudes of eq (R1) (``seaecho.radar.equation``), and
@@ -22,56 +23,18 @@ emission time (the echo arrives microseconds later).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..config.radar import AntennaConfig
 from ..constants import C0
 from ..rng import generator
-from ..scattering.frames import polarisation_basis
-from .antennas import Antenna, antenna_axes, project_ports
-from .echo import ReceiveWindow, accumulate
-from .equation import channel_matrix, noise_power, path_amplitude, thermal_noise, time_of_flight
-from .platforms import Platform, PlatformState, platforms_from_scene
-from .waveform import Waveform
-
-
-@dataclass(frozen=True)
-class Pointing:
-    """How an antenna's axes follow its platform.
-
-    Attributes
-    ----------
-    axes_body : ndarray (3, 3) or None
-        Antenna axes in the body frame (fixed mounting).
-    look_at : ndarray (3,) or None
-        World point kept on the boresight at every pulse (spotlight).
-    """
-
-    axes_body: NDArray[np.float64] | None = None
-    look_at: NDArray[np.float64] | None = None
-
-    @classmethod
-    def from_config(cls, cfg: AntennaConfig, platform: Platform, t_ref: float) -> Pointing:
-        """Pointing of an ``[<platform>.antenna]`` section; aimed at time ``t_ref`` [s]."""
-        if cfg.look_at_m is not None:
-            target = np.array(cfg.look_at_m, dtype=float)
-            if cfg.track_look_at:
-                return cls(look_at=target)
-            nominal = platform.nominal_state(t_ref)
-            r = nominal.rotation
-            axes_world = antenna_axes(target - nominal.position, r[:, 2])
-            return cls(axes_body=r.T @ axes_world)
-        az, dep = np.deg2rad(cfg.azimuth_deg), np.deg2rad(cfg.depression_deg)
-        b = np.array([np.cos(dep) * np.cos(az), np.cos(dep) * np.sin(az), -np.sin(dep)])
-        return cls(axes_body=antenna_axes(b, np.array([0.0, 0.0, 1.0])))
-
-    def axes(self, state: PlatformState) -> NDArray[np.float64]:
-        """Antenna axes in the world (columns boresight, width, height) for one state."""
-        if self.look_at is not None:
-            return antenna_axes(self.look_at - state.position, state.rotation[..., :, 2])
-        return state.rotation @ self.axes_body
+from .echo import ReceiveWindow, accumulate, accumulate_cuda
+from .equation import noise_power, thermal_noise
+from .model import RadarModel
+from .platforms import PlatformState
+from .pointing import Pointing
 
 
 @dataclass(frozen=True)
@@ -92,20 +55,55 @@ class ScattererEcho:
     Attributes
     ----------
     tau : (K,) total delay tau_t + tau_r [s] (float64)
-    amplitudes : (C, K) complex amplitude per channel [sqrt(W)], carrier phase included
-    r_t, r_r : (K,) ranges [m]
-    g_t, g_r : (K,) antenna power gains [-]
+    amplitudes : (C, K) complex amplitude per channel [sqrt(W)], carrier phase included;
+        or a list of C (K,) complex arrays (the fused sea kernel)
+    r_t, r_r : (K,) ranges [m], or None (the fused sea kernel, ``seaecho.radar.resident``,
+        returns only what the accumulation needs)
+    g_t, g_r : (K,) antenna power gains [-], or None (likewise)
     n_i, n_s : (K, 3) unit propagation directions [-], or None when not asked for
     """
 
     tau: NDArray[np.float64]
-    amplitudes: NDArray[np.complex128]
-    r_t: NDArray[np.float64]
-    r_r: NDArray[np.float64]
-    g_t: NDArray[np.float64]
-    g_r: NDArray[np.float64]
+    amplitudes: NDArray[np.complex128] | list[NDArray[np.complex128]]
+    r_t: NDArray[np.float64] | None
+    r_r: NDArray[np.float64] | None
+    g_t: NDArray[np.float64] | None
+    g_r: NDArray[np.float64] | None
     n_i: NDArray[np.float64] | None
     n_s: NDArray[np.float64] | None
+
+
+@dataclass(frozen=True)
+class DeviceEcho:
+    """Delays and amplitudes of scatterers that stay in GPU memory (eq R1).
+
+    :meth:`RadarSystem.receive` accumulates them on the device
+    (:func:`seaecho.radar.echo.accumulate_cuda`); only the pulse's samples come back.
+
+    Attributes
+    ----------
+    xp : seaecho.backend.DrJitNamespace
+        The namespace (``drjit.cuda``) the arrays live in.
+    tau : Dr.Jit Float64 (K,)
+        Total delays [s], all inside the receive window.
+    amplitudes : tuple of C Dr.Jit Float64 (2 K,)
+        Complex amplitudes [sqrt(W)] per channel, interleaved (re, im): the memory of a
+        complex (K,) array each.
+    n_channels : int
+        C.
+    """
+
+    xp: Any
+    tau: Any
+    amplitudes: Any
+    n_channels: int
+
+    def to_host(self) -> ScattererEcho:
+        """The same echo as numpy arrays (a copy from the device)."""
+        tau = np.array(self.xp.host(self.tau), dtype=np.float64)
+        amp = np.stack([np.array(self.xp.host(a)).view(np.complex128)
+                        for a in self.amplitudes])
+        return ScattererEcho(tau, amp, None, None, None, None, None, None)
 
 
 def canonical_channels(channels, rx_ports: tuple[str, str], tx_ports: tuple[str, str]
@@ -126,54 +124,47 @@ def canonical_channels(channels, rx_ports: tuple[str, str], tx_ports: tuple[str,
 
 
 class RadarSystem:
-    """Platforms, antennas, waveform and receive window of a scene (see module docstring)."""
+    """Platforms, antennas, waveform and receive window of a radar (see module docstring)."""
 
-    def __init__(self, scene, window: ReceiveWindow | None = None,
+    def __init__(self, model: RadarModel, window: ReceiveWindow | None = None,
                  backend: str = "drjit") -> None:
-        """Build the radar of a scene.
+        """Build the radar of a :class:`~seaecho.radar.model.RadarModel`.
 
         Parameters
         ----------
-        scene : seaecho.config.Scene
-            Needs ``[radar]`` and ``[transmitter]``; ``[receiver]`` optional (monostatic).
+        model : RadarModel
+            The radar (``seaecho.build.build_radar(scene)``).
         window : ReceiveWindow or None
-            Overrides the window of ``[radar]`` (default: its window_start_m/window_end_m,
-            or the automatic one covering the tile and the targets, :meth:`auto_window`).
+            Overrides the model's window (default: its ``window_m``, or the automatic one
+            covering the tile and the targets, :meth:`auto_window`).
         backend : {'drjit', 'numpy'}
             Per-scatterer kernel: fused Dr.Jit (float64, fast) or the numpy reference.
         """
         if backend not in ("drjit", "numpy"):
             raise ValueError(f"backend = {backend!r}: allowed 'drjit', 'numpy'")
+        if not isinstance(model, RadarModel):
+            raise TypeError(f"RadarSystem needs a RadarModel (seaecho.build.build_radar), "
+                            f"got {type(model).__name__}")
         self.backend = backend
-        if scene.radar is None or scene.transmitter is None:
-            raise ValueError("the scene needs [radar] and [transmitter] sections")
-        cfg = scene.radar
-        self.scene = scene
-        self.config = cfg
-        self.seed = scene.run.seed
-        self.carrier = cfg.carrier_frequency_hz
-        self.wavelength = C0 / cfg.carrier_frequency_hz
-        self.prf = cfg.prf_hz
-        self.start_time = cfg.start_time_s
-        self.n_pulses = cfg.n_pulses
-        self.transmit_power = cfg.transmit_power_w
-        self.waveform = Waveform.from_config(cfg.waveform, cfg.sampling_rate_hz)
-        self.monostatic = scene.receiver is None
-        self.tx, self.rx = platforms_from_scene(scene)
-        rx_cfg = scene.transmitter if self.monostatic else scene.receiver
-        self.tx_antenna = Antenna.from_config(scene.transmitter.antenna, self.wavelength)
-        self.rx_antenna = Antenna.from_config(rx_cfg.antenna, self.wavelength)
-        self.tx_pointing = Pointing.from_config(scene.transmitter.antenna, self.tx,
-                                                self.start_time)
-        self.rx_pointing = Pointing.from_config(rx_cfg.antenna, self.rx, self.start_time)
-        self.channels = canonical_channels(cfg.channels, self.rx_antenna.ports,
+        self.model = model
+        self.seed = model.seed
+        self.carrier = model.carrier
+        self.wavelength = C0 / model.carrier
+        self.prf = model.prf
+        self.start_time = model.start_time
+        self.n_pulses = model.n_pulses
+        self.transmit_power = model.transmit_power
+        self.waveform = model.waveform
+        self.monostatic = model.monostatic
+        self.tx, self.rx = model.tx, model.rx
+        self.tx_antenna, self.rx_antenna = model.tx_antenna, model.rx_antenna
+        self.tx_pointing, self.rx_pointing = model.tx_pointing, model.rx_pointing
+        self.channels = canonical_channels(model.channels, self.rx_antenna.ports,
                                            self.tx_antenna.ports)
-        self.noise_power = noise_power(cfg.noise_figure_db,
-                                       cfg.noise_bandwidth_hz or cfg.sampling_rate_hz)
+        self.noise_power = noise_power(model.noise_figure_db, model.noise_bandwidth)
         if window is None:
-            if cfg.window_start_m is not None:
-                window = ReceiveWindow.from_ranges(cfg.window_start_m, cfg.window_end_m,
-                                                   cfg.sampling_rate_hz,
+            if model.window_m is not None:
+                window = ReceiveWindow.from_ranges(*model.window_m, model.sampling_rate,
                                                    self.waveform.duration)
             else:
                 window = self.auto_window()
@@ -204,7 +195,9 @@ class RadarSystem:
         at every target, at the first and last pulse; the window adds ``margin_m``
         (default: 5 % of the tile diagonal + 4 range resolutions + 5 m) on both sides.
         """
-        lx, ly = self.scene.sea.size_m
+        m = self.model
+        lx, ly = m.tile_size if m.tile_size is not None else (0.0, 0.0)
+        clutter = m.sea_clutter and m.tile_size is not None
         s = np.linspace(-0.5, 0.5, 65)
         edge = np.concatenate([np.stack([s * lx, np.full_like(s, -0.5 * ly)], -1),
                                np.stack([s * lx, np.full_like(s, 0.5 * ly)], -1),
@@ -217,9 +210,9 @@ class RadarSystem:
             t = float(self.emission_time(pulse))
             pt = self.tx.state(t).position
             pr = self.rx.state(t).position
-            pts = [points] if self.config.sea_clutter else []
-            for target in self.scene.targets:
-                pts.append(np.array(target.position_m) + t * np.array(target.velocity_m_s))
+            pts = [points] if clutter else []
+            if m.targets is not None and len(m.targets):
+                pts.append(m.targets.positions + t * m.targets.velocities)
             if not pts:
                 continue
             p = np.vstack(pts)
@@ -230,21 +223,21 @@ class RadarSystem:
                              "targets; give window_start_m/window_end_m")
         r = np.concatenate(ranges)
         if margin_m is None:
-            margin_m = (0.05 * np.hypot(lx, ly) * self.config.sea_clutter
+            margin_m = (0.05 * np.hypot(lx, ly) * clutter
                         + 4 * C0 / (2 * self.waveform.bandwidth) + 5.0)
         return ReceiveWindow.from_ranges(max(r.min() - margin_m, 0.0), r.max() + margin_m,
-                                         self.config.sampling_rate_hz,
-                                         self.waveform.duration)
+                                         m.sampling_rate, self.waveform.duration)
 
     # ------------------------------------------------------------------ scatterers
     def scatterer_echo(self, geometry: PulseGeometry, positions: ArrayLike,
-                       velocities: ArrayLike, s: ArrayLike, directions: bool = False
-                       ) -> ScattererEcho:
+                       velocities: ArrayLike, s: ArrayLike, directions: bool = False, *,
+                       variant: str | None = None) -> ScattererEcho:
         """Delays and per-channel amplitudes of scatterers, eqs (R1) and (R3).
 
-        Runs the fused Dr.Jit kernel (``seaecho.radar.kernels``) when ``self.backend`` is
-        ``"drjit"`` (default) and the numpy reference (:meth:`scatterer_echo_numpy`)
-        when it is ``"numpy"``; both give the same numbers (tests).
+        Evaluates :func:`seaecho.radar.kernels.echo_terms` as one fused Dr.Jit kernel
+        when ``self.backend`` is ``"drjit"`` (default) and with numpy
+        (:meth:`scatterer_echo_numpy`) when it is ``"numpy"``: the same formulas, the
+        same numbers within rounding (tests).
 
         Parameters
         ----------
@@ -256,10 +249,13 @@ class RadarSystem:
             Scatterer velocities [m/s].
         s : array_like (K, 2, 2) complex
             Scattering amplitudes [m] in (h, v) order on the world FSA bases of n_i and
-            n_s (``seaecho.scattering.frames.polarisation_basis`` with normal +z).
+            n_s (``seaecho.geometry.frames.polarisation_basis`` with normal +z).
         directions : bool
             Also return the unit directions n_i, n_s (the Dr.Jit path leaves them None
             otherwise, to save memory traffic; the numpy path always returns them).
+        variant : str, optional
+            Mitsuba variant of the Dr.Jit kernel: ``"llvm_ad_mono_polarized"`` (CPU,
+            default) or ``"cuda_ad_mono_polarized"`` (GPU).
 
         Returns
         -------
@@ -267,44 +263,28 @@ class RadarSystem:
         """
         if self.backend == "numpy" or np.size(positions) == 0:
             return self.scatterer_echo_numpy(geometry, positions, velocities, s)
-        from .kernels import scatterer_echo_drjit
+        from ..backend import drjit_namespace
+        from .kernels import scatterer_echo
 
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
         s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
-        r = scatterer_echo_drjit(self, geometry, p, v, s, directions=directions)
+        r = scatterer_echo(drjit_namespace(variant), self, geometry, p, v, s, directions)
         return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
                              r["g_r"], r.get("n_i"), r.get("n_s"))
 
     def scatterer_echo_numpy(self, geometry: PulseGeometry, positions: ArrayLike,
                              velocities: ArrayLike, s: ArrayLike) -> ScattererEcho:
-        """Numpy reference of :meth:`scatterer_echo` (same parameters and result)."""
+        """Numpy evaluation of :meth:`scatterer_echo` (same parameters and result)."""
+        from ..backend import NUMPY
+        from .kernels import scatterer_echo
+
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
         s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
-        tx, rx = geometry.tx, geometry.rx
-        # Eq (R3): delays from positions and velocities at emission
-        tau_t, tau_r, p_b = time_of_flight(tx.position, p, v, rx.position, rx.velocity)
-        r_t, r_r = C0 * tau_t, C0 * tau_r
-        n_i = (p_b - tx.position) / r_t[:, None]
-        p_rx = rx.position + rx.velocity * (tau_t + tau_r)[:, None]
-        n_s = (p_rx - p_b) / r_r[:, None]
-        g_t, e_t = self.tx_antenna.response(n_i, geometry.tx_axes, receive=False,
-                                            up=tx.rotation[:, 2])
-        g_r, e_r = self.rx_antenna.response(-n_s, geometry.rx_axes, receive=True,
-                                            up=rx.rotation[:, 2])
-        h_i, v_i = polarisation_basis(n_i)
-        h_s, v_s = polarisation_basis(n_s)
-        # Ports on the FSA bases: [k, port, (h, v)]
-        t_hv = project_ports(e_t, h_i, v_i)
-        r_hv = project_ports(e_r, h_s, v_s)
-        m = channel_matrix(s, r_hv, t_hv)  # [k, rx port, tx port]
-        tau = tau_t + tau_r
-        # Eq (R1): amplitude, polarimetric factor, carrier phase exp(-j 2 pi f_c tau)
-        amp = path_amplitude(self.transmit_power, g_t, g_r, self.wavelength, r_t, r_r) \
-            * np.exp(-2j * np.pi * self.carrier * tau)
-        rows = np.stack([m[:, i, j] for _, i, j in self.channels])
-        return ScattererEcho(tau, rows * amp, r_t, r_r, g_t, g_r, n_i, n_s)
+        r = scatterer_echo(NUMPY, self, geometry, p, v, s, directions=True)
+        return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
+                             r["g_r"], r["n_i"], r["n_s"])
 
     # --------------------------------------------------------------------- receive
     def receive(self, pulse: int, echoes: list[ScattererEcho], noise: bool | None = None,
@@ -315,10 +295,12 @@ class RadarSystem:
         ----------
         pulse : int
             Pulse index (selects the noise stream).
-        echoes : list of ScattererEcho
-            Scatterer sets (sea facets, targets) of this pulse.
+        echoes : list of ScattererEcho or DeviceEcho
+            Scatterer sets (sea facets, targets) of this pulse, each accumulated by
+            :func:`~seaecho.radar.echo.accumulate` (a few targets: the direct sum; the
+            sea: the NUFFT) or, on a GPU, :func:`~seaecho.radar.echo.accumulate_cuda`.
         noise : bool or None
-            Add k T0 F B noise; default ``[radar].thermal_noise``.
+            Add k T0 F B noise; default the model's ``thermal_noise``.
         out : ndarray (C, n_samples) complex, optional
             Written in place.
 
@@ -331,37 +313,39 @@ class RadarSystem:
             out = np.zeros((n_ch, self.window.n_samples), dtype=np.complex128)
         else:
             out[...] = 0.0
-        taus, amps = [], []
-        for e in echoes:  # a handful of scatterer sets, each one vectorised
+        for e in echoes:  # a handful of scatterer sets (sea, targets), each one vectorised
+            if isinstance(e, DeviceEcho):  # already cut to the window, on the GPU
+                out += accumulate_cuda(e.xp, e.tau, e.amplitudes, self._spectrum,
+                                       self.window)
+                continue
             keep = self.window.keep(e.tau, self.waveform.n_samples)
             if keep.all():  # no copies
-                taus.append(e.tau)
-                amps.append(e.amplitudes)
+                tau, amp = e.tau, e.amplitudes
+            elif isinstance(e.amplitudes, np.ndarray):
+                tau, amp = e.tau[keep], e.amplitudes[:, keep]
             else:
-                taus.append(e.tau[keep])
-                amps.append(e.amplitudes[:, keep])
-        if taus:
-            tau = taus[0] if len(taus) == 1 else np.concatenate(taus)
+                tau, amp = e.tau[keep], [a[keep] for a in e.amplitudes]
             if tau.size:
-                amp = amps[0] if len(amps) == 1 else np.concatenate(amps, axis=1)
                 out += accumulate(tau, amp, self._spectrum, self.window)
-        if self.config.thermal_noise if noise is None else noise:
+        if self.model.thermal_noise if noise is None else noise:
             out += thermal_noise(out.shape, self.noise_power,
                                  generator(self.seed, "noise", pulse))
         return out
 
-    def target_echo(self, geometry: PulseGeometry) -> ScattererEcho | None:
-        """Echo of the scene's ``[[targets]]`` at one pulse (None if there are none)."""
-        targets = self.scene.targets
-        if not targets:
+    def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None
+                    ) -> ScattererEcho | None:
+        """Echo of the model's point targets at one pulse (None if there are none);
+        ``variant`` as :meth:`scatterer_echo`."""
+        targets = self.model.targets
+        if targets is None or not len(targets):
             return None
-        p0 = np.array([t.position_m for t in targets], dtype=float)
-        vel = np.array([t.velocity_m_s for t in targets], dtype=float)
-        s = np.stack([t.scattering_matrix() for t in targets])
-        return self.scatterer_echo(geometry, p0 + geometry.time * vel, vel, s)
+        return self.scatterer_echo(geometry, targets.positions + geometry.time
+                                   * targets.velocities, targets.velocities,
+                                   targets.scattering, variant=variant)
 
 
 __all__ = [
+    "DeviceEcho",
     "Pointing",
     "PulseGeometry",
     "RadarSystem",

@@ -29,8 +29,6 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from ..config.radar import WaveformConfig
-
 
 def lfm_chirp(bandwidth: float, duration: float, sampling_rate: float, up: bool = True
               ) -> NDArray[np.complex128]:
@@ -97,13 +95,17 @@ class Waveform:
     duration: float
 
     @classmethod
-    def from_config(cls, cfg: WaveformConfig, sampling_rate: float) -> Waveform:
-        """The pulse of a ``[radar.waveform]`` section at sampling rate f_s [Hz]."""
-        if cfg.kind == "lfm":
-            s = lfm_chirp(cfg.bandwidth_hz, cfg.duration_s, sampling_rate, cfg.up_chirp)
-            return cls(s, sampling_rate, cfg.bandwidth_hz, cfg.duration_s)
-        return cls(plain_pulse(cfg.duration_s, sampling_rate), sampling_rate,
-                   1.0 / cfg.duration_s, cfg.duration_s)
+    def lfm(cls, bandwidth: float, duration: float, sampling_rate: float,
+            up: bool = True) -> Waveform:
+        """Linear FM chirp of bandwidth B [Hz] and length T [s] at f_s [Hz], eq (W1)."""
+        return cls(lfm_chirp(bandwidth, duration, sampling_rate, up), sampling_rate,
+                   bandwidth, duration)
+
+    @classmethod
+    def pulse(cls, duration: float, sampling_rate: float) -> Waveform:
+        """Plain rectangular pulse of length T [s] at f_s [Hz] (bandwidth 1/T), eq (W2)."""
+        return cls(plain_pulse(duration, sampling_rate), sampling_rate, 1.0 / duration,
+                   duration)
 
     @property
     def n_samples(self) -> int:

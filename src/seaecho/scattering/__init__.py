@@ -12,6 +12,10 @@ Plain arrays in, plain arrays out; nothing here knows about meshes or radars.
 - :mod:`.models` mean-plane entry point (``seaecho sigma``)
 
 Theory, equations and sources: ``docs/scattering.md``.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from .facet import (

@@ -9,14 +9,16 @@
     \\log_{10} w_2(\\beta) = -\\left(\\frac{\\beta}{20\\pi}\\right)^{1.5} \\qquad \\text{(B3, B4)}
 
 ``beta`` is the angle between the (local) surface normal and ``q = k (n_s - n_i)``, **in
-degrees** (``../shared/DESIGN.md``): ``w1 = 0.1`` at ``beta = 6 pi = 18.85 deg``, the
+degrees** (``docs/scattering.md``): ``w1 = 0.1`` at ``beta = 6 pi = 18.85 deg``, the
 paper's "Kirchhoff valid within +-20 deg of specular"; ``w2 = 0.1`` at
 ``beta = 20 pi = 62.8 deg``. Co-polarised channels (HH, VV) use ``w1``, cross-polarised
 (HV, VH) ``w2``.
 
 References
 ----------
-.. [1] Paper eqs 10-11 (section III-C).
+.. [1] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper"), eqs 10-11 (section III-C).
 .. [2] Thorsos, E. I. and Jackson, D. R. (1989). The validity of the perturbation
    approximation for rough surface scattering using a Gaussian roughness spectrum.
    *J. Acoust. Soc. Am.* 86(1), 261-277.
@@ -24,47 +26,61 @@ References
 
 from __future__ import annotations
 
+import math
+from typing import Any
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import frames
-from .kirchhoff import kirchhoff_sigma
-from .slopes import CoxMunkParameters
-from .spm import HeightSpectrum, spm_sigma
+from ..backend import NUMPY, Mat2
 
 #: Channels that are co-polarised, in the order HH, HV, VH, VV.
 CO_POLARISED = np.array([True, False, False, True])
 
+_LN10 = math.log(10.0)
 
-def blend_weights(beta_deg: ArrayLike) -> tuple[NDArray, NDArray]:
+
+def blend_weights(beta_deg: ArrayLike, *, xp=None) -> tuple[NDArray, NDArray]:
     """Kirchhoff weights ``w1`` (co-pol) and ``w2`` (cross-pol) of eqs B3-B4 [-].
 
     Parameters
     ----------
     beta_deg : array_like
         Angle between the surface normal and ``q`` [deg], >= 0.
+    xp : array namespace, optional
+        Namespace of ``beta_deg`` (:mod:`seaecho.backend`), numpy by default; the facet
+        kernels call this same formula on Dr.Jit arrays.
 
     Returns
     -------
-    w1, w2 : ndarray
+    w1, w2 : arrays
         In (0, 1]; 1 at specular.
 
     References
     ----------
     .. [1] Paper eqs 10-11.
     """
-    b = np.abs(np.asarray(beta_deg, dtype=float))
-    # Eq B3.
-    w1 = 10.0 ** (-((b / (6.0 * np.pi)) ** 8))
-    # Eq B4.
-    w2 = 10.0 ** (-((b / (20.0 * np.pi)) ** 1.5))
+    if xp is None:
+        xp = NUMPY
+        beta_deg = np.asarray(beta_deg, dtype=float)
+    b = xp.abs(beta_deg)
+    # Eq B3: log10 w1 = -(beta / 6 pi)^8
+    w1 = xp.exp(-_LN10 * (b * (1.0 / (6.0 * math.pi))) ** 8)
+    # Eq B4: log10 w2 = -(beta / 20 pi)^1.5
+    w2 = xp.exp(-_LN10 * (b * (1.0 / (20.0 * math.pi))) ** 1.5)
     return w1, w2
+
+
+def kirchhoff_weights(xp, beta_deg: Any) -> Mat2:
+    """Kirchhoff weight of each channel (eqs B1-B2): ``w1`` on HH, VV and ``w2`` on HV, VH."""
+    w1, w2 = blend_weights(beta_deg, xp=xp)
+    return Mat2(w1, w2, w2, w1)
 
 
 def channel_weights(beta_deg: ArrayLike) -> NDArray:
     """Kirchhoff weight per channel, shape (..., 4), HH, HV, VH, VV (eqs B1-B4)."""
-    w1, w2 = blend_weights(beta_deg)
-    return np.where(CO_POLARISED, w1[..., None], w2[..., None])
+    w = kirchhoff_weights(NUMPY, np.asarray(beta_deg, dtype=float))
+    return np.stack(np.broadcast_arrays(*w.flat()), axis=-1)
 
 
 def blend(sigma_spm: ArrayLike, sigma_kirchhoff: ArrayLike, beta_deg: ArrayLike) -> NDArray:
@@ -89,49 +105,4 @@ def blend(sigma_spm: ArrayLike, sigma_kirchhoff: ArrayLike, beta_deg: ArrayLike)
     return (1.0 - w) * np.asarray(sigma_spm) + w * np.asarray(sigma_kirchhoff)
 
 
-def blend_sigma(
-    theta_i: ArrayLike,
-    phi_i: ArrayLike,
-    theta_s: ArrayLike,
-    phi_s: ArrayLike,
-    k: float,
-    eps_r: complex,
-    spectrum: HeightSpectrum,
-    mss_upwind: float,
-    mss_crosswind: float,
-    wind_direction: float = 0.0,
-    cox_munk: CoxMunkParameters | None = None,
-) -> NDArray:
-    """Mean-plane blend of SPM (eqs 8-9) and Kirchhoff/GO (eq 7) by eqs 10-11.
-
-    Parameters
-    ----------
-    theta_i, phi_i, theta_s, phi_s : array_like
-        Mean-plane angles [rad].
-    k : float
-        Electromagnetic wavenumber [rad/m].
-    eps_r : complex
-        Sea-water permittivity [-].
-    spectrum : callable
-        Height spectrum ``W(kx, ky)`` [m^4].
-    mss_upwind, mss_crosswind : float
-        Slope variances for the Kirchhoff part [-].
-    wind_direction : float
-        Direction the wind blows towards [rad].
-    cox_munk : CoxMunkParameters, optional
-        Cox-Munk Gram-Charlier slopes instead of Gaussian ones.
-
-    Returns
-    -------
-    ndarray, shape (..., 4)
-        ``sigma_mn`` [m^2/m^2], HH, HV, VH, VV.
-    """
-    n_i, n_s = frames.directions_from_angles(theta_i, phi_i, theta_s, phi_s)
-    beta = np.degrees(frames.beta_angle(n_i, n_s))
-    s_spm = spm_sigma(theta_i, phi_i, theta_s, phi_s, k, eps_r, spectrum)
-    s_k = kirchhoff_sigma(theta_i, phi_i, theta_s, phi_s, eps_r, mss_upwind, mss_crosswind,
-                          wind_direction, cox_munk=cox_munk, warn=False)
-    return blend(s_spm, s_k, beta)
-
-
-__all__ = ["CO_POLARISED", "blend", "blend_sigma", "blend_weights", "channel_weights"]
+__all__ = ["CO_POLARISED", "blend", "blend_weights", "channel_weights", "kirchhoff_weights"]

@@ -1,7 +1,7 @@
 """Per-facet polarimetric scattering: sigma_mn and speckled complex amplitudes.
 
-This is the interface between the surface (ray-traced or analytic facets, issue 4) and
-the radar equation (issue 5). A facet of area ``A`` and unit normal ``N`` carries the
+This is the interface between the surface (ray-traced or analytic facets) and the radar
+equation. A facet of area ``A`` and unit normal ``N`` carries the
 unresolved (sub-facet) roughness of the ocean stage: slope variances for the specular
 (Kirchhoff/GO) part, the height spectrum at the local Bragg vector for the Bragg (SPM)
 part. For each facet the model gives two complex 2x2 *mechanism matrices* in the global
@@ -46,9 +46,22 @@ Within one mechanism the channels are fully coherent (``|gamma_HHVV| = 1``, phas
 coherence to ``|E a_hh a_vv^*| / sqrt(E|a_hh|^2 E|a_vv|^2)`` from P5
 (:func:`hhvv_coherence`). Each ``|a_mn|^2`` is exponentially distributed.
 
+Implementation
+--------------
+Eqs P1-P5 are functions over an array namespace
+(:mod:`seaecho.backend`): :func:`mechanisms` gives each mechanism's matrix and channel
+weights, :func:`mechanism_sigma` eq P3 and :func:`speckle` eq P4. The numpy path
+(``backend="numpy"``) and the fused Dr.Jit kernel (``backend="drjit"``, CPU or CUDA by
+the ``variant``) run these same functions: the Dr.Jit path evaluates eqs P1-P4 in one
+kernel per call. A further mechanism (e.g. breaking waves) is one more entry of
+:func:`mechanisms` (its matrix and its channel weights, the weights of all mechanisms
+summing to 1) and one more speckle draw: eqs P3-P5 sum over the entries.
+
 References
 ----------
-.. [1] Paper eqs 1-3 and 7-11.
+.. [1] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper"), eqs 1-3 and 7-11.
 .. [2] Ulaby, F. T. and Long, D. G. (2014). *Microwave Radar and Radiometric Remote
    Sensing*, sec. 5-8 (speckle as a circular complex Gaussian field).
 .. [3] Lee, J.-S. and Pottier, E. (2009). *Polarimetric Radar Imaging*, CRC, ch. 4
@@ -57,35 +70,34 @@ References
 
 from __future__ import annotations
 
-import functools
-from collections.abc import Mapping
+import math
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import frames
-from .blend import channel_weights
-from .fresnel import fresnel_coefficients
-from .kirchhoff import kirchhoff_log_weight
+from .. import backend as _backend
+from ..backend import NUMPY, Boundary, Mat2
+from ..geometry import frames
+from .blend import kirchhoff_weights
+from .kirchhoff import specular_direction, specular_matrix, specular_weight, wind_axes
 from .slopes import CoxMunkParameters
 from .spectrum_table import BraggSpectrumTable
-from .spm import HeightSpectrum, _alpha
+from .spm import HeightSpectrum, azimuth_cos_sin, bragg_matrix, bragg_vector
 from .twoscale import check_spm_validity
 
 MODELS = ("blend", "kirchhoff", "spm")
+BACKENDS = ("auto", "numpy", "drjit")
+
+#: Facets behind which the transmitter or receiver lies (local cosine below) do not echo.
+_BEHIND = 1e-12
 
 
-@functools.cache
 def _drjit_available() -> bool:
     """True when the Dr.Jit LLVM backend imports and runs (checked once)."""
-    try:
-        from ._drjit_kernel import F
-
-        return bool(F(1.0).numpy()[0] == 1.0)
-    except Exception:  # noqa: BLE001 - any failure means: use numpy
-        return False
+    return _backend.drjit_available()
 
 
 @dataclass(frozen=True)
@@ -106,11 +118,14 @@ class FacetTerms:
     bragg: NDArray
     weight: NDArray
 
+    def mechanisms(self) -> dict[str, tuple[NDArray, NDArray]]:
+        """The terms as :func:`mechanisms` gives them, channels on the last axis (N, 4)."""
+        return {"specular": (self.specular, self.weight),
+                "bragg": (self.bragg, 1.0 - self.weight)}
+
     def sigma(self) -> NDArray:
-        """Eq P3: ``sigma_mn`` [m^2/m^2], shape (N, 4)."""
-        k2 = self.specular.real**2 + self.specular.imag**2
-        b2 = self.bragg.real**2 + self.bragg.imag**2
-        return self.weight * k2 + (1.0 - self.weight) * b2
+        """Eq P3: ``sigma_mn`` [m^2/m^2], shape (N, 4) (:func:`mechanism_sigma`)."""
+        return mechanism_sigma(NUMPY, self.mechanisms())
 
     def covariance(self) -> NDArray:
         """Eq P5 per unit area: ``E[a a^H] / A``, shape (N, 4, 4) [m^2/m^2]."""
@@ -119,57 +134,199 @@ class FacetTerms:
         return k[..., :, None] * k[..., None, :].conj() + b[..., :, None] * b[..., None, :].conj()
 
 
+def _each(fn: Callable[[Any], Any], m: Any) -> Any:
+    """``fn`` on every channel: on each entry of a Mat2, or on an array of channels."""
+    return m.map(fn) if isinstance(m, Mat2) else fn(m)
+
+
 def _get(local: Any, name: str):
     if isinstance(local, Mapping):
         return local[name]
     return getattr(local, name)
 
 
-def _dot(a: NDArray, b: NDArray) -> NDArray:
-    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1] + a[..., 2] * b[..., 2]
+# ------------------------------------------------------------- formulas (any namespace)
+def mechanisms(
+    xp,
+    n_i: Any,
+    n_s: Any,
+    N: Any,
+    k: Any,
+    eps_r: Any,
+    spectrum: Callable[[Any, Any], Any],
+    mss_upwind: Any,
+    mss_crosswind: Any,
+    cos_wind: Any,
+    sin_wind: Any,
+    *,
+    model: str = "blend",
+    cox_munk: CoxMunkParameters | None = None,
+    damping: Any = None,
+    local: tuple | None = None,
+) -> dict[str, tuple[Mat2, Mat2]]:
+    """Eqs P1-P2 and B1-B4: each mechanism's matrix and channel weights, per facet.
 
+    Parameters
+    ----------
+    xp : array namespace (:mod:`seaecho.backend`)
+    n_i, n_s, N : vectors
+        Unit directions Tx -> facet, facet -> Rx and unit facet normals [-].
+    k : float
+        Electromagnetic wavenumber [rad/m].
+    eps_r : complex
+        Sea-water permittivity [-].
+    spectrum : callable
+        ``W(kx, ky)`` [m^4] of the unresolved roughness on namespace arrays [rad/m].
+    mss_upwind, mss_crosswind : arrays
+        Unresolved slope variances [-].
+    cos_wind, sin_wind : arrays
+        Direction the wind blows towards, as a unit vector's components [-].
+    model : {"blend", "kirchhoff", "spm"}
+    cox_munk : CoxMunkParameters, optional
+        Cox-Munk Gram-Charlier slopes for ``K``.
+    damping : array, optional
+        Turbulent-wake damping ``d`` in [0, 1].
+    local : tuple, optional
+        ``(cos_i, cos_s, cos_phi, sin_phi, A_i, A_s)`` of the facets' local frames, if
+        already known (else from :mod:`seaecho.geometry.frames`).
 
-def _rotate(m: NDArray, a_i: NDArray, a_s: NDArray) -> NDArray:
-    """``A_s^T M A_i`` for (N, 2, 2) arrays, written out (faster than einsum)."""
-    # T = M A_i
-    t00 = m[:, 0, 0] * a_i[:, 0, 0] + m[:, 0, 1] * a_i[:, 1, 0]
-    t01 = m[:, 0, 0] * a_i[:, 0, 1] + m[:, 0, 1] * a_i[:, 1, 1]
-    t10 = m[:, 1, 0] * a_i[:, 0, 0] + m[:, 1, 1] * a_i[:, 1, 0]
-    t11 = m[:, 1, 0] * a_i[:, 0, 1] + m[:, 1, 1] * a_i[:, 1, 1]
-    out = np.empty(m.shape[:1] + (4,), dtype=np.result_type(m, a_i))
-    out[:, 0] = a_s[:, 0, 0] * t00 + a_s[:, 1, 0] * t10
-    out[:, 1] = a_s[:, 0, 0] * t01 + a_s[:, 1, 0] * t11
-    out[:, 2] = a_s[:, 0, 1] * t00 + a_s[:, 1, 1] * t10
-    out[:, 3] = a_s[:, 0, 1] * t01 + a_s[:, 1, 1] * t11
+    Returns
+    -------
+    dict
+        ``{"specular": (K, w), "bragg": (B, 1 - w)}`` (the mechanisms of ``model``), each
+        a pair of :class:`~seaecho.backend.Mat2`: the complex mechanism matrix [-] in the
+        global FSA bases and its weight per channel [-].
+
+    References
+    ----------
+    .. [1] Paper eqs 7-11; module docstring (eqs P1, P2).
+    """
+    z = xp.vec(0.0, 0.0, 1.0)
+    basis_i = frames.fsa_basis(xp, n_i, z)
+    basis_s = frames.fsa_basis(xp, n_s, z)
+    if local is None:
+        cos_i, cos_s, x_s, y_s = frames.local_geometry(xp, n_i, n_s, N)
+        cos_phi, sin_phi = azimuth_cos_sin(xp, x_s, y_s)
+        a_i = frames.basis_change(xp, basis_i, frames.fsa_basis(xp, n_i, N))
+        a_s = frames.basis_change(xp, basis_s, frames.fsa_basis(xp, n_s, N))
+    else:
+        cos_i, cos_s, cos_phi, sin_phi, a_i, a_s = local
+    lit = (cos_i > _BEHIND) & (cos_s > _BEHIND)
+    # Kirchhoff weight per channel, eqs B1-B4 (beta in degrees)
+    if model == "blend":
+        c_beta = frames.cos_beta(xp, n_i, n_s, N)
+        w = kirchhoff_weights(xp, xp.acos(xp.clip(c_beta, -1.0, 1.0)) * (180.0 / math.pi))
+    else:
+        one = 1.0 if model == "kirchhoff" else 0.0
+        w = Mat2(one, one, one, one)
+    out: dict[str, tuple[Mat2, Mat2]] = {}
+    if model != "spm":
+        # Eq P1: K = sqrt(pi P(Z)) |q|^2 / q_N^2 F (eqs K1-K2)
+        n_sp = specular_direction(xp, n_i, n_s, N)
+        f = specular_matrix(xp, n_i, n_s, n_sp, eps_r, basis_i, basis_s)
+        e_u, e_c = wind_axes(xp, N, cos_wind, sin_wind)
+        log_w, gc = specular_weight(xp, n_sp, N, e_u, e_c, xp.maximum(mss_upwind, 1e-12),
+                                    xp.maximum(mss_crosswind, 1e-12), cox_munk)
+        out["specular"] = (f * xp.select(lit, xp.sqrt(gc) * xp.exp(0.5 * log_w), 0.0), w)
+    if model != "kirchhoff":
+        # Eq P2: B = 4 sqrt(pi) k^2 cos cos A_s^T alpha A_i sqrt(W (1 - d)) (eq S7)
+        kx, ky = bragg_vector(xp, n_i, n_s, N, k)
+        rough = xp.sqrt(xp.maximum(spectrum(kx, ky), 0.0))
+        if damping is not None:
+            rough = rough * xp.sqrt(xp.clip(1.0 - damping, 0.0, 1.0))
+        b = bragg_matrix(xp, k, eps_r, cos_i, cos_s, cos_phi, sin_phi, a_i, a_s,
+                         roughness=rough)
+        out["bragg"] = (b, w.map(lambda x: 1.0 - x))
     return out
 
 
-def _specular_matrix(n_i: NDArray, n_s: NDArray, n_sp: NDArray, eps_r: complex,
-                     h_i: NDArray, v_i: NDArray, h_s: NDArray, v_s: NDArray) -> NDArray:
-    """``F`` of eq K2 (N, 4), given the global bases of ``n_i`` and ``n_s``."""
-    cos_iota = -_dot(n_i, n_sp)
-    r_h, r_v = fresnel_coefficients(cos_iota, eps_r)
-    # Bases of the specular facet: h' = N_sp x n / |N_sp x n| (same for n_i and n_s).
-    hp = np.cross(n_sp, n_i)
-    norm = np.sqrt(_dot(hp, hp))
-    deg = norm < 1e-9
-    if np.any(deg):
-        hp[deg] = np.cross(n_sp[deg], frames.reference_direction(n_sp[deg]))
-        norm[deg] = np.sqrt(_dot(hp[deg], hp[deg]))
-    hp /= norm[:, None]
-    vpi = np.cross(hp, n_i)
-    vps = np.cross(hp, n_s)
-    # F_mn = sum_j (m_s . e'_j,s) R_j (e'_j,i . n_i-basis), eq K2 written out.
-    hi_h, hi_v = _dot(hp, h_i), _dot(hp, v_i)
-    vi_h, vi_v = _dot(vpi, h_i), _dot(vpi, v_i)
-    hs_h, hs_v = _dot(hp, h_s), _dot(hp, v_s)
-    vs_h, vs_v = _dot(vps, h_s), _dot(vps, v_s)
-    f = np.empty(n_i.shape[:1] + (4,), dtype=complex)
-    f[:, 0] = hs_h * r_h * hi_h + vs_h * r_v * vi_h
-    f[:, 1] = hs_h * r_h * hi_v + vs_h * r_v * vi_v
-    f[:, 2] = hs_v * r_h * hi_h + vs_v * r_v * vi_h
-    f[:, 3] = hs_v * r_h * hi_v + vs_v * r_v * vi_v
-    return f
+def mechanism_sigma(xp, mech: Mapping[str, tuple[Any, Any]]) -> Any:
+    """Eq P3: ``sigma_mn = sum_j w_j,mn |M_j,mn|^2`` [m^2/m^2] (j the mechanisms).
+
+    Each mechanism is ``(M, w)``: two :class:`~seaecho.backend.Mat2`, or two arrays with
+    the channels HH, HV, VH, VV on the last axis.
+    """
+    total = None
+    for m, w in mech.values():
+        term = w * _each(xp.abs2, m)
+        total = term if total is None else total + term
+    return total
+
+
+def speckle(xp, mech: Mapping[str, tuple[Any, Any]], draws: Mapping[str, Any],
+            area: Any) -> Any:
+    """Eq P4: ``a_mn = sqrt(A) sum_j sqrt(w_j,mn) M_j,mn g_j`` [m].
+
+    ``draws[j]`` is mechanism j's circular complex Gaussian (unit variance), the same for
+    the four channels; ``area`` the facet area [m^2]. Mechanisms as
+    :func:`mechanism_sigma` (with channel arrays, ``draws`` and ``area`` broadcast
+    against them).
+    """
+    total = None
+    for name, (m, w) in mech.items():
+        term = _each(xp.sqrt, w) * m  # a new array: scaled in place below (numpy)
+        term *= draws[name]
+        if total is None:
+            total = term
+        else:
+            total += term
+    total *= xp.sqrt(area)
+    return total
+
+
+# ----------------------------------------------------------------- the numpy boundary
+def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind,
+                   mss_crosswind, wind_direction, wake_damping, n: int) -> dict:
+    """Namespace arrays and constants of :func:`mechanisms` from numpy inputs."""
+    xp = io.xp
+
+    def per_facet(a):
+        return io.array(np.broadcast_to(np.asarray(a, dtype=float), (n,))) if np.ndim(
+            a) else xp.const(a)
+
+    if isinstance(spectrum, BraggSpectrumTable):
+        def lookup(kx, ky, table=spectrum):
+            return table.lookup(xp, kx, ky)
+    elif callable(spectrum):
+        if not xp.is_numpy:
+            raise ValueError("the Dr.Jit back end needs spectrum to be a BraggSpectrumTable")
+
+        def lookup(kx, ky, fn=spectrum):
+            return np.asarray(fn(kx, ky), dtype=float)
+    else:
+        values = per_facet(spectrum)
+
+        def lookup(kx, ky, values=values):
+            return values
+
+    w = float(wind_direction)
+    return dict(
+        n_i=io.vec3(n_i), n_s=io.vec3(n_s), N=io.vec3(normal), k=xp.const(k),
+        eps_r=xp.cconst(eps_r), spectrum=lookup, mss_upwind=per_facet(mss_upwind),
+        mss_crosswind=per_facet(mss_crosswind), cos_wind=xp.const(math.cos(w)),
+        sin_wind=xp.const(math.sin(w)),
+        damping=None if wake_damping is None else io.array(
+            np.asarray(wake_damping, dtype=float).reshape(n)))
+
+
+def _local_frames(local: Any, n: int) -> tuple:
+    """``(cos_i, cos_s, cos_phi, sin_phi, A_i, A_s)`` of precomputed facet frames."""
+    theta_i, theta_s, phi = (np.asarray(_get(local, a), dtype=float).reshape(n)
+                             for a in ("theta_i", "theta_s", "phi"))
+    rot = [np.asarray(_get(local, a), dtype=float).reshape(n, 2, 2) for a in ("rot_i", "rot_s")]
+    a_i, a_s = (Mat2(r[:, 0, 0], r[:, 0, 1], r[:, 1, 0], r[:, 1, 1]) for r in rot)
+    return np.cos(theta_i), np.cos(theta_s), np.cos(phi), np.sin(phi), a_i, a_s
+
+
+def _namespace(backend: str, spectrum: Any, variant: str | None):
+    if backend not in BACKENDS:
+        raise ValueError(f"backend = {backend!r}: choose from {', '.join(map(repr, BACKENDS))}")
+    is_table = isinstance(spectrum, BraggSpectrumTable)
+    if backend == "drjit" and not is_table:
+        raise ValueError("backend = 'drjit' needs spectrum to be a BraggSpectrumTable")
+    if backend == "numpy" or (backend == "auto" and not is_table):
+        return NUMPY
+    return _backend.namespace(backend, variant)
 
 
 def facet_terms(
@@ -189,6 +346,7 @@ def facet_terms(
     local: Any = None,
     small_scale_height_variance: float | None = None,
     backend: str = "auto",
+    variant: str | None = None,
 ) -> FacetTerms:
     """Mechanism matrices ``K``, ``B`` and weights ``w`` of facets (eqs P1-P2, B1-B4).
 
@@ -223,14 +381,18 @@ def facet_terms(
     local : mapping or object, optional
         Precomputed ``theta_i, theta_s, phi, rot_i, rot_s`` (e.g. a
         ``seaecho.geometry.facets.Facets`` or the dict of ``facet_frames``); computed
-        with :mod:`.frames` when omitted.
+        with :mod:`seaecho.geometry.frames` when omitted. The Dr.Jit back end recomputes
+        them inside its kernel (cheaper than reading them).
     small_scale_height_variance : float, optional
         Height variance of the unresolved roughness [m^2]: warns
         (``SPMValidityWarning``) when ``k h > 0.3``.
     backend : {"auto", "numpy", "drjit"}
-        ``"drjit"`` runs the fused Dr.Jit LLVM kernel (needs ``spectrum`` to be a
-        :class:`~seaecho.scattering.spectrum_table.BraggSpectrumTable`; ``local`` is
-        then recomputed inside the kernel); ``"auto"`` picks it when possible.
+        ``"drjit"`` runs :func:`mechanisms` as one fused Dr.Jit kernel (needs
+        ``spectrum`` to be a :class:`~seaecho.scattering.spectrum_table.BraggSpectrumTable`);
+        ``"auto"`` picks it when possible; ``"numpy"`` runs the same formulas on numpy.
+    variant : str, optional
+        Mitsuba variant choosing the Dr.Jit back end: ``"llvm_ad_mono_polarized"`` (CPU,
+        default) or ``"cuda_ad_mono_polarized"`` (GPU) (:mod:`seaecho.backend`).
 
     Returns
     -------
@@ -244,80 +406,23 @@ def facet_terms(
         raise ValueError(f"model = {model!r}: choose from {MODELS}")
     if model != "kirchhoff":
         check_spm_validity(k, small_scale_height_variance)
-    n_i = np.ascontiguousarray(n_i, dtype=float).reshape(-1, 3)
-    n_s = np.ascontiguousarray(n_s, dtype=float).reshape(-1, 3)
-    nn = np.ascontiguousarray(normal, dtype=float).reshape(-1, 3)
+    xp = _namespace(backend, spectrum, variant)
+    n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
     n = n_i.shape[0]
-    eps = complex(eps_r)
-    if backend not in ("auto", "numpy", "drjit"):
-        raise ValueError(f"backend = {backend!r}: choose from 'auto', 'numpy', 'drjit'")
-    is_table = isinstance(spectrum, BraggSpectrumTable)
-    if backend == "drjit" and not is_table:
-        raise ValueError("backend = 'drjit' needs spectrum to be a BraggSpectrumTable")
-    if backend == "drjit" or (backend == "auto" and is_table and _drjit_available()):
-        from ._drjit_kernel import facet_kernel
-
-        damp = None if wake_damping is None else np.asarray(wake_damping, float).reshape(n)
-        specular, bragg, weight = facet_kernel(n_i, n_s, nn, damp, k, eps, mss_upwind,
-                                               mss_crosswind, float(wind_direction),
-                                               spectrum, cox_munk, model)
-        return FacetTerms(specular=specular, bragg=bragg, weight=weight)
-
-    if local is None:
-        theta_i, theta_s, phi = frames.local_angles(n_i, n_s, nn)
-        rot_i, rot_s = frames.tilt_rotation(n_i, n_s, nn)
-    else:
-        theta_i, theta_s, phi = (np.asarray(_get(local, a)).reshape(n)
-                                 for a in ("theta_i", "theta_s", "phi"))
-        rot_i = np.asarray(_get(local, "rot_i")).reshape(n, 2, 2)
-        rot_s = np.asarray(_get(local, "rot_s")).reshape(n, 2, 2)
-
-    d = n_s - n_i
-    qn = np.sqrt(_dot(d, d))
-    cos_beta = np.where(qn > 1e-12, _dot(d, nn) / np.maximum(qn, 1e-12), 0.0)
-
-    # Weights (eqs B1-B4), beta in degrees.
-    if model == "blend":
-        weight = channel_weights(np.degrees(np.arccos(np.clip(cos_beta, -1.0, 1.0))))
-    else:
-        weight = np.full((n, 4), 1.0 if model == "kirchhoff" else 0.0)
-
-    # Bragg part, eq P2 (S7): local SPM rotated to the global bases.
-    ci, cs = np.cos(theta_i), np.cos(theta_s)
-    lit = (ci > 1e-12) & (cs > 1e-12)
-    if model != "kirchhoff":
-        ci_c, cs_c = np.clip(ci, 0.0, 1.0), np.clip(cs, 0.0, 1.0)
-        alpha = _alpha(ci_c, np.sin(theta_i), cs_c, np.sin(theta_s), np.cos(phi), np.sin(phi),
-                       eps)
-        q = k * d
-        qt = q - (k * qn * cos_beta)[:, None] * nn
-        if callable(spectrum):
-            w_b = np.asarray(spectrum(qt[:, 0], qt[:, 1]), dtype=float)
-        else:
-            w_b = np.broadcast_to(np.asarray(spectrum, dtype=float), (n,))
-        amp = 4.0 * np.sqrt(np.pi) * k * k * ci_c * cs_c * np.sqrt(np.maximum(w_b, 0.0))
-        if wake_damping is not None:
-            amp = amp * np.sqrt(np.clip(1.0 - np.asarray(wake_damping, dtype=float).reshape(n),
-                                        0.0, 1.0))
-        amp = np.where(lit, amp, 0.0)
-        bragg = _rotate(alpha, rot_i, rot_s) * amp[:, None]
-    else:
-        bragg = np.zeros((n, 4), dtype=complex)
-
-    # Specular part, eq P1 (K1-K2).
-    if model != "spm":
-        h_i, v_i = frames.polarisation_basis(n_i)
-        h_s, v_s = frames.polarisation_basis(n_s)
-        n_sp = np.where((qn > 1e-12)[:, None], d / np.maximum(qn, 1e-12)[:, None], nn)
-        f = _specular_matrix(n_i, n_s, n_sp, eps, h_i, v_i, h_s, v_s)
-        mu = np.maximum(np.asarray(mss_upwind, dtype=float), 1e-12)
-        mc = np.maximum(np.asarray(mss_crosswind, dtype=float), 1e-12)
-        log_w, gc = kirchhoff_log_weight(n_i, n_s, mu, mc, wind_direction, nn,
-                                         cox_munk=cox_munk)
-        sk = np.where(lit, np.sqrt(gc) * np.exp(0.5 * log_w), 0.0)
-        specular = f * sk[:, None]
-    else:
-        specular = np.zeros((n, 4), dtype=complex)
+    io = Boundary(xp, n)
+    args = _kernel_inputs(io, n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
+                          np.asarray(normal, dtype=float).reshape(-1, 3), k, complex(eps_r),
+                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n)
+    frames_in = _local_frames(local, n) if (local is not None and xp.is_numpy) else None
+    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in)
+    w = (mech.get("specular") or mech["bragg"])[1]
+    if "specular" not in mech:
+        w = w.map(lambda x: 1.0 - x)
+    outs = [w] + [mech[m][0] for m in ("specular", "bragg") if m in mech]
+    res = io.numpy(*outs)
+    weight = res.pop(0).reshape(n, 4)
+    specular = res.pop(0).reshape(n, 4) if "specular" in mech else np.zeros((n, 4), complex)
+    bragg = res.pop(0).reshape(n, 4) if "bragg" in mech else np.zeros((n, 4), complex)
     return FacetTerms(specular=specular, bragg=bragg, weight=weight)
 
 
@@ -326,13 +431,12 @@ def bragg_vectors(n_i: ArrayLike, n_s: ArrayLike, normal: ArrayLike, k: float) -
 
     The horizontal components of the part of ``q = k (n_s - n_i)`` tangent to each
     facet; evaluate the height spectrum there to pass values instead of a callable.
+    Formula: :func:`seaecho.scattering.spm.bragg_vector`.
     """
-    n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
-    n_s = np.asarray(n_s, dtype=float).reshape(-1, 3)
-    nn = np.asarray(normal, dtype=float).reshape(-1, 3)
-    q = k * (n_s - n_i)
-    qt = q - _dot(q, nn)[:, None] * nn
-    return qt[:, :2]
+    io = Boundary(NUMPY)
+    kx, ky = bragg_vector(NUMPY, *(io.vec3(np.asarray(a, dtype=float).reshape(-1, 3))
+                                   for a in (n_i, n_s, normal)), float(k))
+    return np.stack([kx, ky], axis=-1)
 
 
 def facet_sigma(
@@ -402,19 +506,9 @@ def speckle_amplitudes(terms: FacetTerms, area: ArrayLike,
     g_k, g_b = draws
     if g_k.shape != (n,) or g_b.shape != (n,):
         raise ValueError(f"draws of shape {g_k.shape}, {g_b.shape}: need ({n},) each")
-    sa = np.sqrt(np.asarray(area, dtype=float).reshape(-1))
-    # Eq P4, in place (same operations and results as the plain expression
-    # sa (sqrt(w) K g_K + sqrt(1 - w) B g_B), fewer temporaries)
-    w = terms.weight
-    out = np.sqrt(w) * terms.specular
-    out *= g_k[:, None]
-    wb = 1.0 - w
-    np.sqrt(wb, out=wb)
-    b = wb * terms.bragg
-    b *= g_b[:, None]
-    out += b
-    out *= sa[:, None]
-    return out
+    area = np.asarray(area, dtype=float).reshape(-1, 1)
+    return speckle(NUMPY, terms.mechanisms(), {"specular": g_k[:, None], "bragg": g_b[:, None]},
+                   area)
 
 
 def speckled_facet_amplitudes(
@@ -435,45 +529,38 @@ def speckled_facet_amplitudes(
     wake_damping: ArrayLike | None = None,
     local: Any = None,
     backend: str = "auto",
+    variant: str | None = None,
 ) -> NDArray:
     """Eqs P1-P4 in one pass: speckled amplitudes ``a_mn`` [m] of facets, shape (N, 4).
 
     ``speckle_amplitudes(facet_terms(...), area, draws=draws)`` (same parameters as
-    :func:`facet_terms`, ``area`` (N,) [m^2], ``draws`` from :func:`speckle_draws`), the
-    Dr.Jit backend going on to eq P4 inside the scattering kernel, so that ``K``, ``B``
-    and ``w`` never come back to numpy (the per-pulse path of a simulation). The two
-    backends agree within rounding (tests).
+    :func:`facet_terms`, ``area`` (N,) [m^2], ``draws`` from :func:`speckle_draws`):
+    :func:`mechanisms` followed by :func:`speckle`, which the Dr.Jit back end evaluates
+    as one kernel, so that ``K``, ``B`` and ``w`` never come back to numpy (the per-pulse
+    path of a simulation). The back ends agree within rounding (tests).
 
     References
     ----------
     .. [1] Paper eqs 7-11; module docstring (eqs P1-P4).
     """
-    n = np.shape(n_i)[0] if np.ndim(n_i) > 1 else 1
-    is_table = isinstance(spectrum, BraggSpectrumTable)
-    if backend not in ("auto", "numpy", "drjit"):
-        raise ValueError(f"backend = {backend!r}: choose from 'auto', 'numpy', 'drjit'")
-    if backend == "drjit" and not is_table:
-        raise ValueError("backend = 'drjit' needs spectrum to be a BraggSpectrumTable")
     if model not in MODELS:
         raise ValueError(f"model = {model!r}: choose from {MODELS}")
-    if not (backend == "drjit" or (backend == "auto" and is_table and _drjit_available())):
-        terms = facet_terms(n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
-                            wind_direction, model=model, cox_munk=cox_munk,
-                            wake_damping=wake_damping, local=local, backend="numpy")
-        return speckle_amplitudes(terms, area, draws=draws)
-    from ._drjit_kernel import facet_kernel
-
-    g_k, g_b = draws
-    if g_k.shape != (n,) or g_b.shape != (n,):
-        raise ValueError(f"draws of shape {g_k.shape}, {g_b.shape}: need ({n},) each")
+    xp = _namespace(backend, spectrum, variant)
     n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
-    n_s = np.asarray(n_s, dtype=float).reshape(-1, 3)
-    nn = np.asarray(normal, dtype=float).reshape(-1, 3)
-    damp = None if wake_damping is None else np.asarray(wake_damping, float).reshape(n)
-    a = np.asarray(area, dtype=float).reshape(n)
-    return facet_kernel(n_i, n_s, nn, damp, k, complex(eps_r), mss_upwind, mss_crosswind,
-                        float(wind_direction), spectrum, cox_munk, model,
-                        speckle=(g_k, g_b, a))
+    n = n_i.shape[0]
+    g_k, g_b = draws
+    if np.shape(g_k) != (n,) or np.shape(g_b) != (n,):
+        raise ValueError(f"draws of shape {np.shape(g_k)}, {np.shape(g_b)}: need ({n},) each")
+    io = Boundary(xp, n)
+    args = _kernel_inputs(io, n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
+                          np.asarray(normal, dtype=float).reshape(-1, 3), k, complex(eps_r),
+                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n)
+    frames_in = _local_frames(local, n) if (local is not None and xp.is_numpy) else None
+    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in)
+    g = {"specular": io.complex(g_k), "bragg": io.complex(g_b)}
+    a = speckle(xp, mech, g, io.array(np.asarray(area, dtype=float).reshape(n)))
+    (out,) = io.numpy(a)
+    return out.reshape(n, 4)
 
 
 def facet_amplitudes(
@@ -536,6 +623,6 @@ def hhvv_coherence(terms: FacetTerms) -> NDArray:
     return np.where(den > 0, c[:, 0, 3] / np.where(den > 0, den, 1.0), 0.0)
 
 
-__all__ = ["MODELS", "FacetTerms", "bragg_vectors", "facet_amplitudes", "facet_sigma",
-           "facet_terms", "hhvv_coherence", "speckle_amplitudes", "speckle_draws",
-           "speckled_facet_amplitudes"]
+__all__ = ["BACKENDS", "MODELS", "FacetTerms", "bragg_vectors", "facet_amplitudes",
+           "facet_sigma", "facet_terms", "hhvv_coherence", "mechanism_sigma", "mechanisms",
+           "speckle", "speckle_amplitudes", "speckle_draws", "speckled_facet_amplitudes"]

@@ -38,17 +38,23 @@ References
    surfaces: application to the natural rough surfaces in X-band. *Waves Random Media*
    11(2), 61-89.
 .. [4] Cox, C. and Munk, W. (1954). *J. Opt. Soc. Am.* 44(11), 838-850.
+.. [5] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations
 
+import math
 import warnings
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import frames
-from .fresnel import fresnel_coefficients
+from ..backend import NUMPY, Boundary, Mat2
+from ..geometry import frames
+from .fresnel import reflection
 from .slopes import CoxMunkParameters, cox_munk_factor, gaussian_log_pdf
 from .validity import KirchhoffValidityWarning
 
@@ -57,16 +63,116 @@ KIRCHHOFF_DOMAIN_DEG = 20.0
 
 #: exp() argument cap: keeps sigma finite where |q|/q_N explodes (q_N -> 0).
 _LOG_CAP = 700.0
+#: Below this cosine between the specular normal and the plane's normal: no specular point.
+_GRAZING = 1e-12
 
 
+# ------------------------------------------------------------- formulas (any namespace)
+def specular_direction(xp, n_i: Any, n_s: Any, fallback: Any) -> Any:
+    """Unit normal ``q / |q|`` of the facet that reflects ``n_i`` into ``n_s`` [-].
+
+    ``fallback`` where ``n_s = n_i`` (no reflection possible).
+    """
+    d = n_s - n_i
+    qn = xp.norm(d)
+    ok = qn > frames.DEGENERATE
+    return xp.select(ok, d * (1.0 / xp.select(ok, qn, 1.0)), fallback)
+
+
+def specular_matrix(xp, n_i: Any, n_s: Any, n_sp: Any, eps_r: Any,
+                    basis_i: tuple[Any, Any], basis_s: tuple[Any, Any]) -> Mat2:
+    r"""Polarimetric reflection matrix ``F`` of the specular facet (eq K2).
+
+    .. math::
+        \mathsf F = \mathsf A_s^T\, \mathrm{diag}(R_h(\iota), R_v(\iota))\,
+        \mathsf A_i, \qquad \cos\iota = -\hat n_i\cdot\hat N_{sp}
+
+    with the Fresnel coefficients (eqs R1-R2) and ``A_i``, ``A_s`` the rotations (eq F3)
+    from the given global bases of ``n_i``, ``n_s`` to the bases of ``N_sp``. These
+    share ``h' = N_sp x n_i / |N_sp x n_i| = N_sp x n_s / |N_sp x n_s|`` (``N_sp`` is
+    along ``n_s - n_i``), so ``v'_s = h' x n_s``.
+
+    Parameters
+    ----------
+    xp : array namespace (:mod:`seaecho.backend`)
+    n_i, n_s, n_sp : vectors
+        Unit incident, scattered and specular-normal directions [-].
+    eps_r : complex
+        Relative permittivity [-].
+    basis_i, basis_s : (h, v)
+        Global FSA bases (eqs F1-F2) of ``n_i`` and ``n_s``.
+
+    Returns
+    -------
+    Mat2 of complex [-]
+
+    References
+    ----------
+    .. [1] Ulaby, Moore and Fung (1982), sec. 12-4; Khenchaf (2001), sec. 3.
+    """
+    r_h, r_v = reflection(xp, -xp.dot(n_i, n_sp), eps_r)
+    h, v_i = frames.fsa_basis(xp, n_i, n_sp)
+    a_i = frames.basis_change(xp, basis_i, (h, v_i))
+    a_s = frames.basis_change(xp, basis_s, (h, xp.cross(h, n_s)))
+    return frames.global_matrix(Mat2.diag(r_h, r_v), a_i, a_s)  # eq K2
+
+
+def wind_axes(xp, N: Any, cos_wind: Any, sin_wind: Any) -> tuple[Any, Any]:
+    """Downwind ``e_u`` (the wind direction projected on the plane) and ``e_c = N x e_u``."""
+    u = xp.vec(cos_wind, sin_wind, 0.0)
+    e_u = xp.normalize(u - xp.dot(u, N) * N)
+    return e_u, xp.cross(N, e_u)
+
+
+def specular_weight(xp, n_sp: Any, N: Any, e_u: Any, e_c: Any, mss_upwind: Any,
+                    mss_crosswind: Any, cox_munk: CoxMunkParameters | None) -> tuple[Any, Any]:
+    r"""``log(pi |q|^4 / q_N^4 P(Z))`` of eq K1, and the Gram-Charlier factor ``gc``.
+
+    .. math::
+        \sigma_{mn} = \pi \frac{|\mathbf q|^4}{q_N^4}\, |F_{mn}|^2\, P(Z_u, Z_c)
+        \qquad \text{(K1)}
+
+    with ``|q| / q_N = 1 / (N_sp . N)`` and the slopes of the specular normal in the
+    plane's wind frame ``Z_u = -(N_sp . e_u) / (N_sp . N)``,
+    ``Z_c = -(N_sp . e_c) / (N_sp . N)``; ``P`` is the Gaussian of eq K3 (slope
+    variances ``mss_upwind``, ``mss_crosswind``), or with ``cox_munk`` the Gaussian of
+    its own variances times ``gc`` (eq K4). ``log_w`` is capped at 700 (``q_N -> 0``);
+    ``gc = 0`` where the specular normal points into the plane (``q_N <= 0``).
+
+    Returns
+    -------
+    log_w, gc : real arrays [-]
+
+    References
+    ----------
+    .. [1] Barrick (1968); Cox and Munk (1954).
+    """
+    cos_n = xp.dot(n_sp, N)
+    valid = cos_n > _GRAZING
+    cn = xp.select(valid, cos_n, _GRAZING)
+    inv = 1.0 / cn
+    z_u = -xp.dot(n_sp, e_u) * inv
+    z_c = -xp.dot(n_sp, e_c) * inv
+    if cox_munk is None:
+        log_p = gaussian_log_pdf(z_u, z_c, mss_upwind, mss_crosswind, xp=xp)
+        gc = xp.select(valid, 1.0, 0.0)
+    else:
+        log_p = gaussian_log_pdf(z_u, z_c, cox_munk.mss_upwind, cox_munk.mss_crosswind, xp=xp)
+        gc = xp.select(valid, cox_munk_factor(z_u, z_c, cox_munk, xp=xp), 0.0)
+    # Eq K1: pi (|q| / q_N)^4 P, with |q| / q_N = 1 / cos_n.
+    log_w = xp.minimum(math.log(math.pi) - 4.0 * xp.log(cn) + log_p, _LOG_CAP)
+    return log_w, gc
+
+
+# ---------------------------------------------------------------------- numpy API
 def specular_normal(n_i: ArrayLike, n_s: ArrayLike) -> NDArray:
     """Unit normal ``q / |q|`` of the facet that reflects ``n_i`` into ``n_s`` [-].
 
     Where ``n_s = n_i`` (no reflection possible) +z is returned.
     """
-    d = np.asarray(n_s, dtype=float) - np.asarray(n_i, dtype=float)
-    norm = np.linalg.norm(d, axis=-1, keepdims=True)
-    return np.where(norm > 1e-12, d / np.maximum(norm, 1e-300), frames.Z_HAT)
+    io = Boundary(NUMPY)
+    return frames._np_vec(specular_direction(NUMPY, io.vec3(n_i), io.vec3(n_s),
+                                             io.vec3(frames.Z_HAT)))
 
 
 def kirchhoff_matrix(n_i: ArrayLike, n_s: ArrayLike, eps_r: ArrayLike) -> NDArray:
@@ -82,29 +188,19 @@ def kirchhoff_matrix(n_i: ArrayLike, n_s: ArrayLike, eps_r: ArrayLike) -> NDArra
     Returns
     -------
     ndarray of complex, shape (..., 2, 2)
-        ``F`` in the global FSA bases, (h, v) order; ``|F_mn| <= 1``.
+        ``F`` in the global FSA bases, (h, v) order; ``|F_mn| <= 1``. Formula:
+        :func:`specular_matrix`.
 
     References
     ----------
     .. [1] Ulaby, Moore and Fung (1982), sec. 12-4; Khenchaf (2001), sec. 3.
     """
-    n_i = np.asarray(n_i, dtype=float)
-    n_s = np.asarray(n_s, dtype=float)
-    n_sp = specular_normal(n_i, n_s)
-    cos_iota = np.clip(-np.einsum("...i,...i->...", n_i, n_sp), 0.0, 1.0)
-    r_h, r_v = fresnel_coefficients(cos_iota, eps_r)
-    a_i, a_s = frames.tilt_rotation(n_i, n_s, n_sp)
-    # Eq K2: F = A_s^T diag(R_h, R_v) A_i, written out for the diagonal middle matrix.
-    r = np.stack([r_h, r_v], axis=-1)  # (..., 2)
-    return np.einsum("...ji,...j,...jl->...il", a_s, r, a_i)
-
-
-def _wind_axes(normal: NDArray, wind_direction: ArrayLike) -> tuple[NDArray, NDArray]:
-    w = np.asarray(wind_direction, dtype=float)
-    u = np.stack([np.cos(w), np.sin(w), np.zeros_like(w)], axis=-1)
-    e_u = u - np.einsum("...i,...i->...", u, normal)[..., None] * normal
-    e_u = e_u / np.linalg.norm(e_u, axis=-1, keepdims=True)
-    return e_u, np.cross(normal, e_u)
+    io = Boundary(NUMPY)
+    vi, vs, z = io.vec3(n_i), io.vec3(n_s), io.vec3(frames.Z_HAT)
+    n_sp = specular_direction(NUMPY, vi, vs, z)
+    f = specular_matrix(NUMPY, vi, vs, n_sp, np.asarray(eps_r, dtype=complex),
+                        frames.fsa_basis(NUMPY, vi, z), frames.fsa_basis(NUMPY, vs, z))
+    return frames._np_mat(f)
 
 
 def kirchhoff_log_weight(
@@ -121,29 +217,18 @@ def kirchhoff_log_weight(
     Returns ``(log_w, gc)`` with ``sigma_mn = exp(log_w) gc |F_mn|^2``; ``log_w`` is
     ``-inf``-free (q_N clipped to 1e-12 |q|) and ``gc`` is 1 for Gaussian slopes or the
     Cox-Munk Gram-Charlier factor (eq K4). Geometries whose specular normal points into
-    the plane (``q_N <= 0``) get ``gc = 0``.
+    the plane (``q_N <= 0``) get ``gc = 0``. Formula: :func:`specular_weight`.
     """
-    n_i = np.asarray(n_i, dtype=float)
-    n_s = np.asarray(n_s, dtype=float)
-    shape = np.broadcast_shapes(n_i.shape, n_s.shape, np.shape(normal))
-    nn = np.broadcast_to(np.asarray(normal, dtype=float), shape)
-    n_sp = specular_normal(n_i, n_s)
-    cos_n = np.einsum("...i,...i->...", n_sp, nn)
-    valid = cos_n > 1e-12
-    cn = np.where(valid, cos_n, 1e-12)
-    e_u, e_c = _wind_axes(nn, wind_direction)
-    # Slopes of the specular normal in the plane's wind frame.
-    z_u = -np.einsum("...i,...i->...", n_sp, e_u) / cn
-    z_c = -np.einsum("...i,...i->...", n_sp, e_c) / cn
-    if cox_munk is None:
-        log_p = gaussian_log_pdf(z_u, z_c, mss_upwind, mss_crosswind)
-        gc = np.ones_like(log_p)
-    else:
-        log_p = gaussian_log_pdf(z_u, z_c, cox_munk.mss_upwind, cox_munk.mss_crosswind)
-        gc = cox_munk_factor(z_u, z_c, cox_munk)
-    # Eq K1: pi (|q| / q_N)^4 P, with |q| / q_N = 1 / cos_n.
-    log_w = np.minimum(np.log(np.pi) - 4.0 * np.log(cn) + log_p, _LOG_CAP)
-    return log_w, np.where(valid, gc, 0.0)
+    io = Boundary(NUMPY)
+    vi, vs, nn = io.vec3(n_i), io.vec3(n_s), io.vec3(normal)
+    n_sp = specular_direction(NUMPY, vi, vs, io.vec3(frames.Z_HAT))
+    w = np.asarray(wind_direction, dtype=float)
+    e_u, e_c = wind_axes(NUMPY, nn, np.cos(w), np.sin(w))
+    log_w, gc = specular_weight(NUMPY, n_sp, nn, e_u, e_c,
+                                np.asarray(mss_upwind, dtype=float),
+                                np.asarray(mss_crosswind, dtype=float), cox_munk)
+    log_w, gc = np.broadcast_arrays(log_w, gc)
+    return np.array(log_w), np.array(gc)
 
 
 def kirchhoff_sigma(
@@ -201,4 +286,5 @@ def kirchhoff_sigma(
 
 
 __all__ = ["KIRCHHOFF_DOMAIN_DEG", "kirchhoff_log_weight", "kirchhoff_matrix",
-           "kirchhoff_sigma", "specular_normal"]
+           "kirchhoff_sigma", "specular_direction", "specular_matrix", "specular_normal",
+           "specular_weight", "wind_axes"]

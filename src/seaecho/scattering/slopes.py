@@ -14,6 +14,10 @@ Cox and Munk's normalised slopes are ``xi = z_c / sigma_c`` and ``eta`` the slop
 ``c03 < 0`` the downwind component ``z_u`` then has skewness ``c03 < 0``: the long tail
 is on the steep leeward (downwind-facing) wave faces.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] Cox, C. and Munk, W. (1954). Measurement of the roughness of the sea surface from
@@ -23,10 +27,14 @@ References
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+
+from ..backend import NUMPY
+from ..ocean.wind import u12_5_from_u19_5
 
 
 @dataclass(frozen=True)
@@ -77,34 +85,20 @@ def cox_munk_parameters(u12_5: float) -> CoxMunkParameters:
     )
 
 
-def u12_5_from_u19_5(u19_5: ArrayLike, z0: float = 1.5e-4) -> NDArray:
-    """Wind speed at 12.5 m from that at 19.5 m with a neutral logarithmic profile.
-
-    ``U(z) = (u*/kappa) ln(z/z0)``, so ``U12.5 = U19.5 ln(12.5/z0) / ln(19.5/z0)``.
-
-    Parameters
-    ----------
-    u19_5 : array_like
-        Wind speed at 19.5 m [m/s].
-    z0 : float
-        Aerodynamic roughness length [m]; 1.5e-4 m is typical of moderate winds.
-
-    Returns
-    -------
-    ndarray
-        Wind speed at 12.5 m [m/s].
-    """
-    return np.asarray(u19_5, dtype=float) * np.log(12.5 / z0) / np.log(19.5 / z0)
-
-
 def gaussian_log_pdf(z_u: ArrayLike, z_c: ArrayLike, mss_upwind: ArrayLike,
-                     mss_crosswind: ArrayLike) -> NDArray:
-    """Natural log of :func:`gaussian_slope_pdf` (finite for any slope)."""
-    su2 = np.asarray(mss_upwind, dtype=float)
-    sc2 = np.asarray(mss_crosswind, dtype=float)
-    z_u = np.asarray(z_u, dtype=float)
-    z_c = np.asarray(z_c, dtype=float)
-    return -0.5 * (z_u * z_u / su2 + z_c * z_c / sc2) - np.log(2.0 * np.pi) - 0.5 * np.log(
+                     mss_crosswind: ArrayLike, *, xp=None) -> NDArray:
+    """Natural log of :func:`gaussian_slope_pdf` (eq K3; finite for any slope).
+
+    ``xp``: array namespace of the arguments (:mod:`seaecho.backend`), numpy by default;
+    the facet kernels call this same formula on Dr.Jit arrays.
+    """
+    if xp is None:
+        xp = NUMPY
+        z_u, z_c, mss_upwind, mss_crosswind = (np.asarray(a, dtype=float) for a in
+                                               (z_u, z_c, mss_upwind, mss_crosswind))
+    su2, sc2 = mss_upwind, mss_crosswind
+    # Eq K3
+    return -0.5 * (z_u * z_u / su2 + z_c * z_c / sc2) - math.log(2.0 * math.pi) - 0.5 * xp.log(
         su2 * sc2)
 
 
@@ -136,7 +130,8 @@ def gaussian_slope_pdf(z_u: ArrayLike, z_c: ArrayLike, mss_upwind: ArrayLike,
     return np.exp(gaussian_log_pdf(z_u, z_c, mss_upwind, mss_crosswind))
 
 
-def cox_munk_factor(z_u: ArrayLike, z_c: ArrayLike, p: CoxMunkParameters) -> NDArray:
+def cox_munk_factor(z_u: ArrayLike, z_c: ArrayLike, p: CoxMunkParameters, *,
+                    xp=None) -> NDArray:
     """Gram-Charlier factor of Cox and Munk's density (>= 0, clipped).
 
     .. math::
@@ -151,9 +146,15 @@ def cox_munk_factor(z_u: ArrayLike, z_c: ArrayLike, p: CoxMunkParameters) -> NDA
     References
     ----------
     .. [1] Cox and Munk (1954), eq 2.
+
+    ``xp``: array namespace of ``z_u``, ``z_c`` (:mod:`seaecho.backend`), numpy by
+    default; the facet kernels call this same formula on Dr.Jit arrays.
     """
-    xi = np.asarray(z_c, dtype=float) / np.sqrt(p.mss_crosswind)
-    eta = -np.asarray(z_u, dtype=float) / np.sqrt(p.mss_upwind)
+    if xp is None:
+        xp = NUMPY
+        z_u, z_c = np.asarray(z_u, dtype=float), np.asarray(z_c, dtype=float)
+    xi = z_c / math.sqrt(p.mss_crosswind)
+    eta = -z_u / math.sqrt(p.mss_upwind)
     xi2 = xi * xi
     eta2 = eta * eta
     # Eq K4.
@@ -161,7 +162,7 @@ def cox_munk_factor(z_u: ArrayLike, z_c: ArrayLike, p: CoxMunkParameters) -> NDA
          + p.c40 / 24.0 * (xi2 * xi2 - 6.0 * xi2 + 3.0)
          + 0.25 * p.c22 * (xi2 - 1.0) * (eta2 - 1.0)
          + p.c04 / 24.0 * (eta2 * eta2 - 6.0 * eta2 + 3.0))
-    return np.maximum(f, 0.0)
+    return xp.maximum(f, 0.0)
 
 
 def cox_munk_pdf(z_u: ArrayLike, z_c: ArrayLike, p: CoxMunkParameters) -> NDArray:

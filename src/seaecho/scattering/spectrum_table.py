@@ -13,15 +13,20 @@ periodic azimuth grid and interpolates bilinearly (in ``log K``, ``psi``, ``log 
 and 0 outside ``[k_min, k_max]`` (so ``k_min`` is also the two-scale split: the table is
 the spectrum of the *unresolved* roughness). With the defaults (1024 x 360) the relative
 error on a smooth spectrum is below 1e-3 (``tests/scattering/test_drjit_kernel.py``).
-The same table is evaluated by numpy (``__call__``) and by the Dr.Jit facet kernel.
+The same function (:meth:`BraggSpectrumTable.lookup`) is evaluated by numpy
+(``__call__``) and inside the Dr.Jit facet kernel.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+
+from ..backend import NUMPY
 
 #: log W stored for W = 0 (exp gives exactly 0 in float64).
 _LOG_ZERO = -745.0
@@ -59,40 +64,55 @@ class BraggSpectrumTable:
         w = np.asarray(spectrum(kk * np.cos(pp), kk * np.sin(pp)), dtype=float)
         with np.errstate(divide="ignore"):
             self.values = np.maximum(np.log(np.maximum(w, 0.0)), _LOG_ZERO).ravel()
-        self._dr_values = None
+        self._device_values: dict[str, Any] = {}
 
     def __call__(self, kx: ArrayLike, ky: ArrayLike) -> NDArray:
-        """Interpolated ``W`` (eq T2) [m^4]."""
+        """Interpolated ``W`` (eq T2) [m^4] at numpy wavenumbers [rad/m]."""
         kx = np.asarray(kx, dtype=float)
         ky = np.asarray(ky, dtype=float)
-        kmag = np.hypot(kx, ky)
         with np.errstate(divide="ignore"):
-            u = (np.log(np.maximum(kmag, 1e-300)) - self.log_k0) / self.dlog_k
+            return np.asarray(self.lookup(NUMPY, kx, ky))
+
+    def lookup(self, xp, kx: Any, ky: Any) -> Any:
+        """Eq T2 over an array namespace (:mod:`seaecho.backend`): ``W(kx, ky)`` [m^4].
+
+        Bilinear in ``(log K, psi)`` of ``log W``, periodic in ``psi``; 0 outside
+        ``[k_min, k_max]``. The numpy path (:meth:`__call__`) and the facet kernels both
+        evaluate this function.
+        """
+        kmag = xp.sqrt(kx * kx + ky * ky)
+        u = (xp.log(xp.maximum(kmag, 1e-300)) - self.log_k0) * (1.0 / self.dlog_k)
         inside = (u >= 0.0) & (u <= self.n_k - 1)
-        u = np.clip(u, 0.0, self.n_k - 1.000001)
-        i0 = np.floor(u)
+        u = xp.clip(u, 0.0, self.n_k - 1.000001)
+        i0 = xp.floor(u)
         fu = u - i0
-        v = (np.arctan2(ky, kx) + np.pi) * (self.n_psi / (2.0 * np.pi))
-        j0 = np.floor(v)
+        v = (xp.atan2(ky, kx) + math.pi) * (self.n_psi / (2.0 * math.pi))
+        j0 = xp.floor(v)
         fv = v - j0
-        i0 = i0.astype(np.int64)
-        j0 = np.clip(j0, 0, self.n_psi - 1).astype(np.int64)
-        j1 = (j0 + 1) % self.n_psi
-        t = self.values
-        b0 = i0 * self.n_psi
+        b0 = xp.index(i0) * self.n_psi
         b1 = b0 + self.n_psi
-        lw = ((1.0 - fu) * ((1.0 - fv) * t[b0 + j0] + fv * t[b0 + j1])
-              + fu * ((1.0 - fv) * t[b1 + j0] + fv * t[b1 + j1]))
-        return np.where(inside, np.exp(lw), 0.0)
+        # periodic in psi: psi = +pi (v = n_psi) is node 0, as psi = -pi
+        j0 = xp.index(xp.select(j0 >= self.n_psi, j0 - self.n_psi, xp.maximum(j0, 0.0)))
+        j1 = j0 + 1
+        j1 = xp.select(j1 >= self.n_psi, j1 - self.n_psi, j1)
+        t = self._values(xp)
+        lw = ((1.0 - fu) * ((1.0 - fv) * xp.gather(t, b0 + j0) + fv * xp.gather(t, b0 + j1))
+              + fu * ((1.0 - fv) * xp.gather(t, b1 + j0) + fv * xp.gather(t, b1 + j1)))
+        return xp.select(inside, xp.exp(lw), 0.0)
+
+    def _values(self, xp) -> Any:
+        """The table in ``xp``'s memory (copied to a Dr.Jit device once per namespace)."""
+        if xp.is_numpy:
+            return self.values
+        if xp.name not in self._device_values:
+            self._device_values[xp.name] = xp.table(self.values)
+        return self._device_values[xp.name]
 
     def lookup_drjit(self, kx, ky):
-        """Eq T2 on Dr.Jit arrays (used inside the facet kernel)."""
-        from ._drjit_kernel import F, table_lookup
+        """Eq T2 on Dr.Jit LLVM arrays (former entry point; see :meth:`lookup`)."""
+        from ..backend import drjit_namespace
 
-        if self._dr_values is None:
-            self._dr_values = F(self.values)
-        return table_lookup(self._dr_values, self.log_k0, self.dlog_k, self.n_k, self.n_psi,
-                            kx, ky)
+        return self.lookup(drjit_namespace(), kx, ky)
 
 
 __all__ = ["BraggSpectrumTable"]

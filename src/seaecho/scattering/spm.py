@@ -55,21 +55,122 @@ References
    11(2), 61-89.
 .. [6] Plant, W. J. (1990). Bragg scattering of electromagnetic waves from the air/sea
    interface. In *Surface Waves and Fluxes*, Vol. II, Kluwer, 41-108.
+.. [7] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper").
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import frames
+from ..backend import NUMPY, Boundary, Mat2
+from ..geometry import frames
 
 #: Height spectrum callable: ``W(kx, ky) -> [m^4]`` for world-frame wavenumbers [rad/m].
 HeightSpectrum = Callable[[NDArray, NDArray], NDArray]
 
+#: Below this local cosine the transmitter (receiver) is behind the plane: no Bragg echo.
+_BEHIND = 1e-12
 
+
+# ------------------------------------------------------------- formulas (any namespace)
+def alpha(xp, cos_i: Any, sin_i: Any, cos_s: Any, sin_s: Any, cos_phi: Any, sin_phi: Any,
+          eps_r: Any) -> Mat2:
+    r"""Bistatic first-order SPM polarimetric coefficients ``alpha_mn`` (eqs S3-S6).
+
+    Parameters
+    ----------
+    xp : array namespace (:mod:`seaecho.backend`)
+    cos_i, sin_i, cos_s, sin_s : real arrays
+        Cosines and sines of the local incidence and scattering angles [-].
+    cos_phi, sin_phi : real arrays
+        Cosine and sine of ``phi = phi_s - phi_i`` [-].
+    eps_r : complex
+        Relative permittivity ``eps' - j eps''`` [-].
+
+    Returns
+    -------
+    Mat2 of complex
+        ``[[alpha_hh, alpha_hv], [alpha_vh, alpha_vv]]`` (m received, n transmitted) [-].
+
+    References
+    ----------
+    .. [1] Tsang, Kong and Ding (2000), sec. 5.2; Khenchaf (2001), sec. 2.
+    """
+    r_i = xp.sqrt(eps_r - sin_i * sin_i)
+    r_s = xp.sqrt(eps_r - sin_s * sin_s)
+    em1 = eps_r - 1.0
+    dh_i = cos_i + r_i
+    dh_s = cos_s + r_s
+    dv_i = eps_r * cos_i + r_i
+    dv_s = eps_r * cos_s + r_s
+    return Mat2(
+        em1 * cos_phi / (dh_i * dh_s),  # Eq S3: HH
+        em1 * r_i * sin_phi / (dv_i * dh_s),  # Eq S4: HV (receive h, transmit v)
+        em1 * r_s * sin_phi / (dh_i * dv_s),  # Eq S5: VH (receive v, transmit h)
+        em1 * (eps_r * sin_i * sin_s - r_i * r_s * cos_phi) / (dv_i * dv_s),  # Eq S6: VV
+    )
+
+
+def bragg_matrix(xp, k: Any, eps_r: Any, cos_i: Any, cos_s: Any, cos_phi: Any,
+                 sin_phi: Any, a_i: Mat2 | None = None, a_s: Mat2 | None = None,
+                 roughness: Any = 1.0) -> Mat2:
+    r"""Bragg amplitude matrix of a (tilted) plane in the global bases (eq S7).
+
+    .. math::
+        \mathsf B = 4\sqrt{\pi}\, k^2 \cos\theta_i'\cos\theta_s'\;
+        \mathsf A_s^T \boldsymbol\alpha' \mathsf A_i, \qquad
+        \sigma_{mn} = |B_{mn}|^2\, W(\mathbf k'_\perp) \qquad \text{(S7)}
+
+    with the local angles (primes) of :func:`seaecho.geometry.frames.local_geometry`, the
+    rotations ``A_i, A_s`` of eq F3 (omitted: the local bases are the global ones), and 0
+    where the transmitter or the receiver is behind the plane. ``roughness`` multiplies
+    the amplitude (``sqrt(W)`` [m^2] gives ``sigma = |B|^2`` directly).
+
+    Returns
+    -------
+    Mat2 of complex
+        [rad^2/m^2] (``roughness = 1``): ``sigma = |B|^2 W`` with ``W`` [m^4].
+
+    References
+    ----------
+    .. [1] Khenchaf and Airiau (2000); Valenzuela (1968).
+    """
+    lit = (cos_i > _BEHIND) & (cos_s > _BEHIND)
+    ci = xp.clip(cos_i, 0.0, 1.0)
+    cs = xp.clip(cos_s, 0.0, 1.0)
+    a = alpha(xp, ci, xp.sqrt(1.0 - ci * ci), cs, xp.sqrt(1.0 - cs * cs), cos_phi, sin_phi,
+              eps_r)
+    if a_i is not None:
+        a = frames.global_matrix(a, a_i, a_s)  # eq F4
+    # Eq S7 prefactor (eq S1 as an amplitude).
+    return a * xp.select(lit, (4.0 * math.sqrt(math.pi)) * k * k * ci * cs * roughness, 0.0)
+
+
+def bragg_vector(xp, n_i: Any, n_s: Any, N: Any, k: Any) -> tuple[Any, Any]:
+    """Bragg wave vector of a (tilted) plane: horizontal components of ``q_t`` [rad/m].
+
+    ``q_t = k ((n_s - n_i) - ((n_s - n_i) . N) N)``, the part of ``q`` tangent to the
+    plane (eq S2; small-tilt approximation for the spectrum argument of eq S7).
+    """
+    d = n_s - n_i
+    qt = (d - xp.dot(d, N) * N) * k
+    return qt.x, qt.y
+
+
+def azimuth_cos_sin(xp, x_s: Any, y_s: Any) -> tuple[Any, Any]:
+    """``cos phi, sin phi`` of the local azimuth ``phi = atan2(y_s, x_s)`` [-]."""
+    inv = 1.0 / xp.sqrt(x_s * x_s + y_s * y_s)
+    return x_s * inv, y_s * inv
+
+
+# ---------------------------------------------------------------------- numpy API
 def spm_alpha(theta_i: ArrayLike, theta_s: ArrayLike, phi: ArrayLike,
               eps_r: ArrayLike) -> NDArray:
     """Bistatic first-order SPM polarimetric coefficients ``alpha_mn`` (eqs S3-S6).
@@ -87,6 +188,7 @@ def spm_alpha(theta_i: ArrayLike, theta_s: ArrayLike, phi: ArrayLike,
     -------
     ndarray of complex, shape (..., 2, 2)
         ``[[alpha_hh, alpha_hv], [alpha_vh, alpha_vv]]`` (m received, n transmitted).
+        Formula: :func:`alpha`.
 
     References
     ----------
@@ -96,47 +198,21 @@ def spm_alpha(theta_i: ArrayLike, theta_s: ArrayLike, phi: ArrayLike,
     ts = np.asarray(theta_s, dtype=float)
     ph = np.asarray(phi, dtype=float)
     eps = np.asarray(eps_r, dtype=complex)
-    return _alpha(np.cos(ti), np.sin(ti), np.cos(ts), np.sin(ts), np.cos(ph), np.sin(ph), eps)
-
-
-def _alpha(ci, si, cs, ss, cp, sp, eps) -> NDArray:
-    ri = np.sqrt(eps - si * si)
-    rs = np.sqrt(eps - ss * ss)
-    em1 = eps - 1.0
-    dhi = ci + ri
-    dhs = cs + rs
-    dvi = eps * ci + ri
-    dvs = eps * cs + rs
-    shape = np.broadcast_shapes(np.shape(ci), np.shape(cs), np.shape(cp), np.shape(eps))
-    out = np.empty(shape + (2, 2), dtype=complex)
-    # Eq S3: HH.
-    out[..., 0, 0] = em1 * cp / (dhi * dhs)
-    # Eq S4: HV (receive h, transmit v).
-    out[..., 0, 1] = em1 * ri * sp / (dvi * dhs)
-    # Eq S5: VH (receive v, transmit h).
-    out[..., 1, 0] = em1 * rs * sp / (dhi * dvs)
-    # Eq S6: VV.
-    out[..., 1, 1] = em1 * (eps * si * ss - ri * rs * cp) / (dvi * dvs)
-    return out
+    a = alpha(NUMPY, np.cos(ti), np.sin(ti), np.cos(ts), np.sin(ts), np.cos(ph), np.sin(ph),
+              eps)
+    return frames._np_mat(a.map(lambda c: np.asarray(c, dtype=complex)))
 
 
 def spm_matrix(n_i: ArrayLike, n_s: ArrayLike, k: ArrayLike, eps_r: ArrayLike,
                normal: ArrayLike = frames.Z_HAT) -> tuple[NDArray, NDArray]:
-    """Bragg amplitude matrix in the global bases and the Bragg wave vector.
+    """Bragg amplitude matrix in the global bases and the Bragg wave vector (eq S7).
 
     For a (tilted) plane of normal ``normal`` the SPM is evaluated in the local frame
     (:func:`frames.local_angles`), then rotated into the global (+z) FSA bases with
-    eq F4 (Valenzuela 1968; Khenchaf and Airiau 2000):
-
-    .. math::
-        \\mathsf B = 4\\sqrt{\\pi}\\, k^2 \\cos\\theta_i'\\cos\\theta_s'\\;
-        \\mathsf A_s^T \\boldsymbol\\alpha' \\mathsf A_i, \\qquad
-        \\sigma_{mn} = |B_{mn}|^2\\, W(\\mathbf k'_\\perp) \\qquad \\text{(S7)}
-
-    where primes are local quantities and ``k'_perp`` the horizontal components of the
-    part of ``q = k (n_s - n_i)`` tangent to the plane (the Bragg vector of the tilted
-    plane, small-tilt approximation for the spectrum argument). Geometries with the
-    transmitter or the receiver behind the plane give 0.
+    eq F4 (Valenzuela 1968; Khenchaf and Airiau 2000), :func:`bragg_matrix`; the Bragg
+    vector ``k'_perp`` is the horizontal part of ``q`` tangent to the plane
+    (:func:`bragg_vector`). Geometries with the transmitter or the receiver behind the
+    plane give 0.
 
     Parameters
     ----------
@@ -160,28 +236,22 @@ def spm_matrix(n_i: ArrayLike, n_s: ArrayLike, k: ArrayLike, eps_r: ArrayLike,
     ----------
     .. [1] Khenchaf and Airiau (2000); Valenzuela (1968).
     """
-    n_i = np.asarray(n_i, dtype=float)
-    n_s = np.asarray(n_s, dtype=float)
-    nn = np.broadcast_to(np.asarray(normal, dtype=float),
-                         np.broadcast_shapes(n_i.shape, n_s.shape, np.shape(normal)))
+    io = Boundary(NUMPY)
+    vi, vs = io.vec3(n_i), io.vec3(n_s)
+    nn_arr = np.asarray(normal, dtype=float)
+    nn = io.vec3(nn_arr)
+    z = io.vec3(frames.Z_HAT)
     k = np.asarray(k, dtype=float)
-    ti, ts, ph = frames.local_angles(n_i, n_s, nn)
-    ci, cs = np.cos(ti), np.cos(ts)
-    lit = (ci > 1e-12) & (cs > 1e-12)
-    ci_c, cs_c = np.clip(ci, 0.0, 1.0), np.clip(cs, 0.0, 1.0)
-    alpha = _alpha(ci_c, np.sin(ti), cs_c, np.sin(ts), np.cos(ph), np.sin(ph),
-                   np.asarray(eps_r, dtype=complex))
-    flat = np.allclose(nn, frames.Z_HAT)
-    if not flat:
-        a_i, a_s = frames.tilt_rotation(n_i, n_s, nn)
-        alpha = frames.to_global(alpha, a_i, a_s)
-    # Eq S7 prefactor (eq S1 as an amplitude).
-    pref = np.where(lit, 4.0 * np.sqrt(np.pi) * k**2 * ci_c * cs_c, 0.0)
-    b = pref[..., None, None] * alpha
-    # Eq S2: Bragg vector = tangential part of q, its horizontal components.
-    q = frames.scattering_vector(n_i, n_s, k)
-    qt = q - np.einsum("...i,...i->...", q, nn)[..., None] * nn
-    return b, qt[..., :2]
+    eps = np.asarray(eps_r, dtype=complex)
+    cos_i, cos_s, x_s, y_s = frames.local_geometry(NUMPY, vi, vs, nn)
+    cos_phi, sin_phi = azimuth_cos_sin(NUMPY, x_s, y_s)
+    rot = (None, None) if np.allclose(nn_arr, frames.Z_HAT) else frames.tilt(NUMPY, vi, vs,
+                                                                             nn, z)
+    b = bragg_matrix(NUMPY, k, eps, cos_i, cos_s, cos_phi, sin_phi, *rot)
+    kx, ky = bragg_vector(NUMPY, vi, vs, nn, k)
+    shape = np.broadcast_shapes(np.shape(n_i), np.shape(n_s), nn_arr.shape)[:-1]
+    b = frames._np_mat(b.map(lambda c: np.broadcast_to(np.asarray(c, dtype=complex), shape)))
+    return b, np.stack(np.broadcast_arrays(kx, ky), axis=-1)
 
 
 def spm_sigma(theta_i: ArrayLike, phi_i: ArrayLike, theta_s: ArrayLike, phi_s: ArrayLike,
@@ -216,4 +286,5 @@ def spm_sigma(theta_i: ArrayLike, phi_i: ArrayLike, theta_s: ArrayLike, phi_s: A
     return s.reshape(s.shape[:-2] + (4,))
 
 
-__all__ = ["HeightSpectrum", "spm_alpha", "spm_matrix", "spm_sigma"]
+__all__ = ["HeightSpectrum", "alpha", "azimuth_cos_sin", "bragg_matrix", "bragg_vector",
+           "spm_alpha", "spm_matrix", "spm_sigma"]

@@ -19,6 +19,10 @@ slopes vanish, T1 tends to the mean-plane SPM (eq S1).
 
 The integral is a tensor-product Gauss-Hermite quadrature in the wind frame.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 References
 ----------
 .. [1] Khenchaf, A. and Airiau, O. (2000). Bistatic radar moving returns from sea
@@ -35,12 +39,10 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..ocean.twoscale import SPM_KH_MAX
 from . import frames
 from .spm import HeightSpectrum, spm_matrix
 from .validity import SPMValidityWarning
-
-#: SPM validity bound on k h (rms height h of the small-scale roughness).
-SPM_KH_MAX = 0.3
 
 
 def check_spm_validity(k: float, small_scale_height_variance: float | None) -> None:

@@ -1,4 +1,9 @@
-"""Validity warnings of the scattering models (subclasses of ``ValidityWarning``)."""
+"""Validity warnings of the scattering models (subclasses of ``ValidityWarning``).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 from __future__ import annotations
 

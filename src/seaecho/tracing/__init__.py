@@ -5,8 +5,9 @@ variant chosen explicitly, :mod:`seaecho.tracing.variant`) when a scene is first
 
 Entry points:
 
-- :class:`~seaecho.tracing.engine.FacetEngine` (``FacetEngine.from_scene(scene)``,
-  ``engine.facets(t)``): facets of a scene at any time, either mode, refresh interval;
+- :class:`~seaecho.tracing.engine.FacetEngine` (``FacetEngine.from_model(model, surface,
+  tx, rx)``, ``engine.facets(t)``; ``seaecho.build.build_engine`` for a scene): facets of
+  a sea at any time, either mode, refresh interval;
 - :class:`~seaecho.tracing.tracer.FacetTracer`: ray-traced facets of plain arrays;
 - :func:`seaecho.geometry.facets.analytic_facets`: the analytic mode on plain arrays.
 """

@@ -1,9 +1,10 @@
 """The radar stage's rectangular aperture (eq A1 of :mod:`seaecho.radar.antennas`) as a
 Sionna RT antenna pattern.
 
-Only :mod:`seaecho.tracing` imports mitsuba and sionna (``shared/DESIGN.md``), so the
-Sionna form of the antenna lives here; the pattern itself (``aperture_radiated_power``,
-the normalisation of eq A1) is the radar stage's.
+Only :mod:`seaecho.tracing` imports mitsuba and sionna (docs/design.md), so the
+Sionna form of the antenna lives here. The tracing stage comes before the radar stage and
+does not import it: the caller passes the normalisation of eq A1, the integral of |F|^2
+over the sphere (:func:`seaecho.radar.antennas.aperture_radiated_power`).
 
 References
 ----------
@@ -15,14 +16,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..radar.antennas import aperture_radiated_power
 from .variant import mitsuba_modules
 
 __all__ = ["register_sionna_aperture", "sionna_aperture_v_pattern"]
 
 
 def sionna_aperture_v_pattern(width: float, height: float, wavelength: float,
-                              variant: str | None = None):
+                              radiated_power: float, variant: str | None = None):
     """A Dr.Jit-traceable vertically polarised pattern ``f(theta, phi) -> C_theta`` of eq (A1).
 
     For ``sionna.rt.antenna_pattern.PolarizedAntennaPattern(v_pattern=...)``: Sionna's
@@ -35,11 +35,16 @@ def sionna_aperture_v_pattern(width: float, height: float, wavelength: float,
         Aperture sides along the antenna's y and z axes [m].
     wavelength : float
         Wavelength [m].
+    radiated_power : float
+        Integral of |F|^2 over the sphere [sr] for eq (A1)'s normalisation
+        (:func:`seaecho.radar.antennas.aperture_radiated_power`).
     variant : str, optional
         Mitsuba variant (:func:`seaecho.tracing.variant.set_variant`; default LLVM).
     """
+    if not radiated_power > 0:
+        raise ValueError(f"radiated_power = {radiated_power} sr: must be > 0")
     dr, mi, _ = mitsuba_modules(variant)
-    scale = float(np.sqrt(4.0 * np.pi / aperture_radiated_power(width, height, wavelength)))
+    scale = float(np.sqrt(4.0 * np.pi / radiated_power))
     ka = float(np.pi * width / wavelength)
     kb = float(np.pi * height / wavelength)
 
@@ -58,7 +63,8 @@ def sionna_aperture_v_pattern(width: float, height: float, wavelength: float,
 
 
 def register_sionna_aperture(width: float, height: float, wavelength: float,
-                             name: str | None = None, variant: str | None = None) -> str:
+                             radiated_power: float, name: str | None = None,
+                             variant: str | None = None) -> str:
     """Register eq (A1) as a Sionna RT antenna pattern; returns its registered name.
 
     Use the name as ``PlanarArray(pattern=name, polarization="VH", ...)``.
@@ -69,12 +75,15 @@ def register_sionna_aperture(width: float, height: float, wavelength: float,
         Aperture sides [m].
     wavelength : float
         Wavelength [m].
+    radiated_power : float
+        Integral of |F|^2 over the sphere [sr] (eq A1's normalisation).
     name : str, optional
         Registered name (default from the dimensions).
     variant : str, optional
         Mitsuba variant, set before ``sionna.rt`` is imported.
     """
-    v_pattern = sionna_aperture_v_pattern(width, height, wavelength, variant)
+    v_pattern = sionna_aperture_v_pattern(width, height, wavelength, radiated_power,
+                                          variant)
     from sionna.rt.antenna_pattern import PolarizedAntennaPattern, register_antenna_pattern
 
     if name is None:

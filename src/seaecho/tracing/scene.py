@@ -16,13 +16,14 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
+from ..backend import aligned
 from ..constants import C0
-from ..geometry.buffers import aligned
 from ..geometry.mesh import grid_faces, grid_vertices
-from .variant import mitsuba_modules
+from .variant import active_variant, mitsuba_modules
 
 __all__ = [
     "ObjectGeometry",
@@ -31,6 +32,7 @@ __all__ = [
     "load_object",
     "rotation_matrix",
     "shadow_rays",
+    "shadow_test",
 ]
 
 #: Vacuum permittivity [F/m] (eps0 = 1 / (mu0 c^2), CODATA 2018 mu0).
@@ -122,9 +124,10 @@ def _mesh_file(path: str) -> tuple[np.ndarray, np.ndarray]:
     return vertices, faces.astype(np.uint32)
 
 
-def _xml_shapes(path: str) -> list[tuple[str, np.ndarray, np.ndarray, float, float]]:
+def _xml_shapes(path: str, variant: str | None = None
+                ) -> list[tuple[str, np.ndarray, np.ndarray, float, float]]:
     """(name, vertices, faces, eps', sigma) of each shape of a Mitsuba/Sionna XML scene."""
-    dr, mi, rt = mitsuba_modules()
+    dr, mi, rt = mitsuba_modules(variant)
     try:
         scene = rt.load_scene(path, merge_shapes=False)
     except Exception as exc:  # noqa: BLE001 - Mitsuba raises RuntimeError with a message
@@ -143,7 +146,8 @@ def _xml_shapes(path: str) -> list[tuple[str, np.ndarray, np.ndarray, float, flo
     return out
 
 
-def load_object(cfg, base_dir: str = ".", ship=None) -> list[ObjectGeometry]:
+def load_object(cfg, base_dir: str = ".", ship=None, variant: str | None = None
+                ) -> list[ObjectGeometry]:
     """Geometry of one ``[[objects]]`` entry (several for an XML scene of several shapes).
 
     Parameters
@@ -154,6 +158,9 @@ def load_object(cfg, base_dir: str = ".", ship=None) -> list[ObjectGeometry]:
         Folder that relative paths refer to (the scene file's).
     ship : seaecho.config.ShipConfig, optional
         Needed when ``cfg.follow_ship``.
+    variant : str, optional
+        Mitsuba variant of the run (an XML scene is loaded with Mitsuba): pass the
+        scene's ``[tracing] variant``, which must be the one the tracer uses.
 
     Returns
     -------
@@ -180,7 +187,7 @@ def load_object(cfg, base_dir: str = ".", ship=None) -> list[ObjectGeometry]:
         material = dict(relative_permittivity=1.0, conductivity=1.0e7,
                         itu_type=cfg.material or "metal")
     if path.lower().endswith(".xml"):
-        shapes = _xml_shapes(path)
+        shapes = _xml_shapes(path, variant)
         keep_file_material = cfg.material is None and cfg.relative_permittivity is None
         out = []
         for name, v, f, eps, sigma in shapes:
@@ -349,7 +356,7 @@ class ObjectScene:
 
 
 def shadow_rays(mi_scenes: Sequence, origins: np.ndarray, directions: np.ndarray,
-                maxt: np.ndarray) -> np.ndarray:
+                maxt: np.ndarray, *, variant: str | None = None) -> np.ndarray:
     """Whether each ray segment is blocked by any of the scenes.
 
     Parameters
@@ -362,24 +369,59 @@ def shadow_rays(mi_scenes: Sequence, origins: np.ndarray, directions: np.ndarray
         Unit directions [-].
     maxt : (N,) array
         Segment lengths [m].
+    variant : str, optional
+        Mitsuba variant the scenes were built with; by default the one Mitsuba runs
+        (never the default variant while another one runs: that would be an error).
 
     Returns
     -------
     (N,) bool array
         True where the segment hits something.
     """
-    _, mi, _ = mitsuba_modules()
+    _, mi, _ = mitsuba_modules(active_variant() if variant is None else variant)
     n = origins.shape[0]
     hit = np.zeros(n, dtype=bool)
     if n == 0 or not mi_scenes:
         return hit
     # Contiguous float32 copies that stay referenced until the results are read back.
-    # 64-byte aligned (geometry.buffers): one compiled ray-test kernel per scene
+    # 64-byte aligned (seaecho.backend.aligned): one compiled ray-test kernel per scene
     o = [aligned(origins[:, k], np.float32) for k in range(3)]
     d = [aligned(directions[:, k], np.float32) for k in range(3)]
     t = aligned(maxt, np.float32)
-    ray = mi.Ray3f(mi.Point3f(*(mi.Float(a) for a in o)), mi.Vector3f(*(mi.Float(a) for a in d)))
-    ray.maxt = mi.Float(t)
-    for sc in mi_scenes:
-        hit |= np.asarray(sc.ray_test(ray).numpy(), dtype=bool)
+    blocked = shadow_test(mi_scenes, [mi.Float(a) for a in o], [mi.Float(a) for a in d],
+                          mi.Float(t), variant=variant)
+    hit[:] = np.asarray(blocked.numpy(), dtype=bool)
     return hit
+
+
+def shadow_test(mi_scenes: Sequence, origins: Sequence, directions: Sequence, maxt: Any, *,
+                variant: str | None = None) -> Any:
+    """Whether each ray segment is blocked by any of the scenes, on the device.
+
+    Parameters
+    ----------
+    mi_scenes : sequence of mitsuba.Scene
+        Scenes to test against (non-empty).
+    origins, directions : three Dr.Jit arrays each
+        Ray origins [m] and unit directions [-] of the variant's back end (float64 or
+        float32: converted to Mitsuba's float32 without leaving the device).
+    maxt : Dr.Jit array
+        Segment lengths [m].
+    variant : str, optional
+        As :func:`shadow_rays`.
+
+    Returns
+    -------
+    mitsuba.Bool
+        True where the segment hits something (the scenes' hit masks combined by Dr.Jit,
+        not read back).
+    """
+    _, mi, _ = mitsuba_modules(active_variant() if variant is None else variant)
+    ray = mi.Ray3f(mi.Point3f(*(mi.Float(a) for a in origins)),
+                   mi.Vector3f(*(mi.Float(a) for a in directions)))
+    ray.maxt = mi.Float(maxt)
+    blocked = None
+    for sc in mi_scenes:  # combined on the device
+        t = sc.ray_test(ray)
+        blocked = t if blocked is None else blocked | t
+    return blocked

@@ -6,8 +6,13 @@ the receiver (``n_s . N > 0``). The segments start ``eps`` above the centroid al
 normal, ``eps = max(1e-3 * cell size, 8 float32 ulps of the largest facet coordinate)``, so that
 a ray does not hit its own triangle in float32. Everything else (ranges, directions,
 angles, bases) is float64, computed by the Dr.Jit kernel
-:func:`seaecho.tracing.kernels.facet_frames_drjit` (identical to the numpy
-:func:`seaecho.geometry.facets.facet_frames`, faster).
+:func:`seaecho.tracing.kernels.facet_frames_drjit` (the formulas of the numpy
+:func:`seaecho.geometry.facets.facet_frames`, faster), on the tracer's variant (CPU
+``llvm_*`` or GPU ``cuda_*``).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
@@ -16,10 +21,12 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from ..backend import Boundary, drjit_namespace
 from ..geometry.facets import Facets
 from ..geometry.mesh import facet_geometry, grid_vertices, to_facets
 from .kernels import facet_frames_drjit
-from .scene import ObjectGeometry, ObjectScene, SeaScene, shadow_rays
+from .scene import ObjectGeometry, ObjectScene, SeaScene, shadow_test
+from .variant import set_variant
 
 __all__ = ["FacetTracer"]
 
@@ -50,6 +57,9 @@ class FacetTracer:
     def __init__(self, x: np.ndarray, y: np.ndarray, elevation: np.ndarray | None = None, *,
                  objects: Sequence[ObjectGeometry] = (), eps_r: complex | None = None,
                  frequency_hz: float = 10.0e9, variant: str | None = None) -> None:
+        #: The Mitsuba variant of the scenes and of the frames kernel (one per process).
+        self.variant = set_variant(variant)
+        variant = self.variant
         self.x = np.asarray(x, dtype=np.float64)
         self.y = np.asarray(y, dtype=np.float64)
         z = np.zeros((self.y.size, self.x.size)) if elevation is None else elevation
@@ -62,6 +72,7 @@ class FacetTracer:
         self.moving_objects = ObjectScene(moving, variant=variant) if moving else None
         cell = min(np.min(np.diff(self.x)), np.min(np.diff(self.y)))
         self._cell = float(cell)
+        self._scale_of: tuple[np.ndarray, float] | None = None
 
     @property
     def mi_scenes(self) -> list:
@@ -89,8 +100,13 @@ class FacetTracer:
             self.moving_objects.move_to(t)
 
     def occluded(self, centroid: np.ndarray, normal: np.ndarray, position: np.ndarray,
-                 mask: np.ndarray | None = None) -> np.ndarray:
+                 mask: np.ndarray | None = None, *, device: bool = False):
         """Whether the segments from the facets to a position hit the sea or an object.
+
+        The rays are set up (origin, direction, length, in float64) and tested on the
+        tracer's back end: read-only facet arrays (a held sea's geometry) are on the device
+        already (:func:`seaecho.backend.resident`), and with ``device=True`` the result
+        stays there too.
 
         Parameters
         ----------
@@ -100,30 +116,63 @@ class FacetTracer:
             Transmitter or receiver position [m].
         mask : (N,) bool array, optional
             Only trace these facets (others come back False).
+        device : bool
+            Return the namespace's Bool array (``drjit.llvm`` or ``drjit.cuda``, no read
+            back) instead of numpy; needs ``mask`` None.
 
         Returns
         -------
-        (N,) bool array
+        (N,) bool array, or a Dr.Jit Bool array when ``device``
         """
+        xp = drjit_namespace(self.variant)
         p = np.asarray(position, dtype=np.float64)
         idx = None if mask is None else np.flatnonzero(mask)
         if idx is not None and idx.size == centroid.shape[0]:
             idx = None  # every facet traced: no gather, no scatter
+        if device and idx is not None:
+            raise ValueError("occluded(device=True) traces every facet (mask must be None)")
         c = centroid if idx is None else centroid[idx]
         nrm = normal if idx is None else normal[idx]
+        n = c.shape[0]
+        if n == 0:
+            return xp.Bool(np.zeros(0, dtype=bool)) if device else np.zeros(
+                centroid.shape[0], dtype=bool)
         # float32 resolution at the ray origins (the facets), not at the far end
-        scale = float(np.max(np.abs(c))) if c.size else 0.0
+        scale = self._scale(c)
         eps = max(1e-3 * self._cell, 8.0 * np.finfo(np.float32).eps * scale)
-        origin = c + eps * nrm
-        d = p - origin
-        r = np.sqrt(np.einsum("ij,ij->i", d, d))
-        d /= r[:, None]
-        hit_sub = shadow_rays(self.mi_scenes, origin, d, r * (1.0 - 1e-6))
+        io = Boundary(xp, n)
+        origin = io.vec3(c) + io.vec3(nrm) * xp.const(eps)
+        d = xp.vconst(p) - origin
+        r = xp.sqrt(xp.dot(d, d))
+        d = d / r
+        blocked = shadow_test(self.mi_scenes, origin, d, r * (1.0 - 1e-6),
+                              variant=self.variant)
+        blocked = xp.Bool(blocked)
+        if device:
+            xp.eval(blocked)
+            return blocked
+        hit_sub = np.asarray(xp.host(blocked), dtype=bool)
         if idx is None:
-            return hit_sub
+            return hit_sub.copy()
         hit = np.zeros(centroid.shape[0], dtype=bool)
         hit[idx] = hit_sub
         return hit
+
+    def _scale(self, c: np.ndarray) -> float:
+        """Largest coordinate magnitude of the ray origins [m] (memoised per read-only
+        array: a held surface's centroids are traced at every refresh)."""
+        if not c.flags.writeable and self._scale_of is not None and self._scale_of[0] is c:
+            return self._scale_of[1]
+        value = float(np.max(np.abs(c)))
+        if not c.flags.writeable:
+            self._scale_of = (c, value)
+        return value
+
+    def to_numpy(self, hidden) -> np.ndarray:
+        """numpy copy of an occlusion mask from :meth:`occluded` (either form)."""
+        if isinstance(hidden, np.ndarray):
+            return hidden
+        return np.array(drjit_namespace(self.variant).host(hidden), dtype=bool)
 
     def facets(self, elevation: np.ndarray | None, velocity: np.ndarray | None,
                tx: np.ndarray, rx: np.ndarray | None = None, *, t: float = 0.0,
@@ -166,7 +215,7 @@ class FacetTracer:
                    else to_facets(np.asarray(velocity, dtype=np.float64)))
         else:
             centroid, area, normal, vel = geometry
-        geo = facet_frames_drjit(centroid, normal, tx, rx)
+        geo = facet_frames_drjit(centroid, normal, tx, rx, variant=self.variant)
         facing_tx = geo["theta_i"] < np.pi / 2
         facing_rx = geo["theta_s"] < np.pi / 2
         lit = facing_tx & ~self.occluded(centroid, normal, tx, mask=facing_tx)

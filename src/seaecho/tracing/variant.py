@@ -4,15 +4,17 @@
 default; ``cuda_ad_mono_polarized`` is used when the scene or the CLI asks for it and a
 CUDA GPU is present. Sionna RT sets a variant of its own choosing when imported with none
 set, so :func:`set_variant` must run before :mod:`sionna.rt` is first imported; every
-module of this package goes through :func:`mitsuba_modules`.
+module of this package goes through :func:`mitsuba_modules`. The per-facet Dr.Jit
+kernels follow the same variant (``drjit.llvm`` or ``drjit.cuda``,
+:func:`seaecho.backend.drjit_namespace`).
 """
 
 from __future__ import annotations
 
-DEFAULT_VARIANT = "llvm_ad_mono_polarized"
-VARIANTS = ("llvm_ad_mono_polarized", "cuda_ad_mono_polarized")
+from ..backend import DEFAULT_VARIANT, VARIANTS
 
-__all__ = ["DEFAULT_VARIANT", "VARIANTS", "cuda_available", "mitsuba_modules", "set_variant"]
+__all__ = ["DEFAULT_VARIANT", "VARIANTS", "active_variant", "cuda_available",
+           "mitsuba_modules", "set_variant"]
 
 
 def cuda_available() -> bool:
@@ -67,8 +69,24 @@ def set_variant(variant: str | None = None) -> str:
     return variant
 
 
+def active_variant() -> str:
+    """The variant Mitsuba runs in this process, or the default when none is set yet.
+
+    For code that works on Mitsuba objects already built (their variant is fixed): it
+    must not ask for the default while a CUDA variant runs.
+    """
+    import sys
+
+    mi = sys.modules.get("mitsuba")
+    current = mi.variant() if mi is not None else None
+    return current if current in VARIANTS else DEFAULT_VARIANT
+
+
 def mitsuba_modules(variant: str | None = None):
-    """``(dr, mi, rt)``: drjit, mitsuba and sionna.rt, with the variant set first."""
+    """``(dr, mi, rt)``: drjit, mitsuba and sionna.rt, with the variant set first.
+
+    ``variant`` None means the default variant (:func:`set_variant`).
+    """
     set_variant(variant)
     import drjit as dr
     import mitsuba as mi

@@ -6,6 +6,10 @@
 - :func:`turbulent_wake_mask`: the damped strip behind the stern (eqs W13-W14).
 
 Theory and sources: ``docs/wake.md``.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 """
 
 from .kelvin import KELVIN_HALF_ANGLE, KelvinWake, WakeFields, kelvin_crest_lines
@@ -17,7 +21,12 @@ from .michell import (
     wigley_wetted_surface,
 )
 from .ship import Ship
-from .turbulent import turbulent_wake_mask, turbulent_wake_width
+from .turbulent import (
+    turbulent_damping_profile,
+    turbulent_wake_mask,
+    turbulent_wake_strip,
+    turbulent_wake_width,
+)
 
 __all__ = [
     "KELVIN_HALF_ANGLE",
@@ -27,7 +36,9 @@ __all__ = [
     "havelock_wave_resistance",
     "kelvin_crest_lines",
     "submerged_source_amplitude",
+    "turbulent_damping_profile",
     "turbulent_wake_mask",
+    "turbulent_wake_strip",
     "turbulent_wake_width",
     "wigley_amplitude",
     "wigley_wave_resistance",

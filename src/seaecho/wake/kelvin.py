@@ -53,11 +53,35 @@ lambda_0 = 2 pi / k0 behind the stern on, and smooth in between (C1), with its o
 derivative carried into the slopes. The field is exact (to linear, far-field order)
 where W = 1.
 
+*Heights.* Thin-ship theory overpredicts the heights of real hulls (beamy ones above all)
+and the Wigley form feeds short divergent waves of undiminished amplitude. With
+``amplitude="kriebel-seelig"`` the plane-wave weights are scaled by one factor per ship
+and grid so that the largest crest-to-trough height along the lines one ship length from
+the track equals the empirical maximum height of Kriebel & Seelig (2005) there
+(:mod:`seaecho.wake.empirical`, eq E1); the pattern (angles, wavelengths, phases) is
+unchanged. With ``breaking_limit`` each plane wave's amplitude is capped so that the
+wave train it forms, at its stationary-phase amplitude where it leaves the near field
+(distance ``R = (L/2 + lambda_0/2) / cos alpha`` along its ray ``alpha``), is not steeper
+than the breaking limit ``a k = pi 0.1412`` (eq E2):
+
+.. math::
+
+    a(\\theta) = |A(\\theta)| \\min\\left(\\sqrt{\\frac{2\\pi}{k_0 R |f_2|}},\\;
+        2\\pi\\,\\mathrm{Ai}_{max}\\left(\\frac{2}{k_0 R |f_3|}\\right)^{1/3}\\right),
+    \\quad f(\\vartheta) = \\sec^2\\vartheta\\cos(\\vartheta - \\alpha)      (W12b)
+
+with ``f_2``, ``f_3`` the second and third derivatives of ``f`` at ``theta`` (stationary
+phase of eq W4, and its Airy form at the cusp, ``Ai_max = 0.5357``).
+
 *Time.* With p(t) from eq W1, z(r, t) = W(x') zeta(x', y') is steady in the ship frame, so
 
 .. math::
 
     \\frac{\\partial z}{\\partial t} = -\\mathbf{V}\\cdot\\nabla z            (W12)
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 
 References
 ----------
@@ -83,12 +107,15 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..constants import RHO_SEA_WATER, G
 from ..warnings import SamplingWarning
+from .empirical import BREAKING_SLOPE, kriebel_seelig_height
 from .michell import wigley_amplitude, wigley_wave_resistance
-from .ship import Ship
+from .ship import WAKE_AMPLITUDE_MODELS, Ship
 
 #: Kelvin half-angle asin(1/3) [rad] (19.47 deg; the paper's 38.54 deg full cone is a typo
-#: for 38.94 deg, see DESIGN.md).
+#: for 38.94 deg, see docs/wake.md).
 KELVIN_HALF_ANGLE = float(np.arcsin(1.0 / 3.0))
+#: Maximum of the Airy function Ai [-] (at x = -1.0188).
+_AI_MAX = 0.5357
 
 
 @dataclass(frozen=True)
@@ -222,13 +249,20 @@ class KelvinWake:
         the default: on a small, shared machine it was 2x faster than two (benchmark).
     g : float
         Acceleration of gravity [m/s^2].
+    amplitude : {"kriebel-seelig", "michell"} or None
+        Heights from Michell's theory as they are, or scaled to the empirical maximum
+        height of Kriebel & Seelig (2005) one ship length from the track (see the
+        module docstring). None takes ``ship.wake_amplitude``.
+    breaking_limit : bool or None
+        Cap each plane wave at the breaking steepness (eq W12b). None takes
+        ``ship.wake_breaking_limit``.
 
     Notes
     -----
     Thin-ship theory assumes B/L small (and T/L small); the paper's 10 m motor boat
-    (B/L = 0.4) is well outside that range, so its wake amplitude is an estimate (Michell's
-    integral typically overpredicts the resistance of full hulls). The shape of the
-    pattern (angles, wavelengths) does not depend on the hull model.
+    (B/L = 0.4) is well outside that range, and Michell's heights for it are 4-5 times the
+    empirical ones (docs/wake.md). The shape of the pattern (angles, wavelengths) does not
+    depend on the hull model nor on the amplitude scaling.
     """
 
     def __init__(
@@ -242,6 +276,8 @@ class KelvinWake:
         eps: float = 1e-7,
         nthreads: int | None = 1,
         g: float = G,
+        amplitude: str | None = None,
+        breaking_limit: bool | None = None,
     ) -> None:
         if k_max is not None and not k_max > 0:
             raise ValueError(f"k_max = {k_max!r} rad/m: must be > 0")
@@ -258,6 +294,13 @@ class KelvinWake:
         self.nthreads = nthreads
         self.g = float(g)
         self.k0 = g / ship.speed**2 if ship.speed > 0 else np.inf
+        self.amplitude_model = ship.wake_amplitude if amplitude is None else amplitude
+        if self.amplitude_model not in WAKE_AMPLITUDE_MODELS:
+            raise ValueError(f"amplitude = {self.amplitude_model!r}: choose from "
+                             f"{WAKE_AMPLITUDE_MODELS}")
+        self.breaking_limit = (ship.wake_breaking_limit if breaking_limit is None
+                               else bool(breaking_limit))
+        self._factors: dict = {}
 
     # -- physics --------------------------------------------------------------------
     @property
@@ -336,7 +379,116 @@ class KelvinWake:
         # quantise ds (cache key) to 1/64 octave steps downwards
         ds = float(2.0 ** (np.floor(64.0 * np.log2(ds)) / 64.0))
         theta, dtheta = _nodes(float(self.k0), float(k_cut), ds, self.taper_fraction)
-        return theta.copy(), self.amplitude(theta) * dtheta
+        weights = self.amplitude(theta) * dtheta
+        if self.amplitude_model == "kriebel-seelig":
+            weights = weights * self.empirical_factor(k_cut)
+        if self.breaking_limit:
+            weights = weights * self.breaking_factor(theta, weights)
+        return theta.copy(), weights
+
+    def line_height(self, theta: NDArray, weights: NDArray, y: float, k_cut: float) -> float:
+        """Largest crest-to-trough height of eq W4 along the lines y' = +-y [m].
+
+        The lines run from the end of the near field (x' = L/2 + lambda_0/2) past the
+        cusp (x' = y cot 19.47 deg) by eight transverse wavelengths, sampled at four
+        points per shortest wavelength 2 pi / k_cut.
+
+        Parameters
+        ----------
+        theta, weights : ndarray
+            Plane waves (angles [rad], weights [m]).
+        y : float
+            Distance from the track [m].
+        k_cut : float
+            Band limit [rad/m].
+        """
+        lam0 = self.transverse_wavelength
+        x0 = 0.5 * self.ship.length + 0.5 * lam0
+        x1 = x0 + y / np.tan(KELVIN_HALF_ANGLE) + 8.0 * lam0
+        xs = np.arange(x0, x1, 0.5 * np.pi / k_cut)
+        kappa = self.k0 / np.cos(theta) ** 2
+        kx, ky = kappa * np.cos(theta), kappa * np.sin(theta)
+        h = 0.0
+        for side in (1.0, -1.0):
+            z = np.zeros(xs.size)
+            for j0 in range(0, theta.size, 1024):
+                sl = slice(j0, j0 + 1024)
+                # Eq W4 on the line (ship frame).
+                ph = np.exp(-1j * (np.outer(xs, kx[sl]) + side * y * ky[sl][None, :]))
+                z += (ph @ weights[sl]).real
+            h = max(h, float(z.max() - z.min()))
+        return h
+
+    def empirical_factor(self, k_cut: float) -> float:
+        """Scale that makes the height one ship length from the track that of eq E1 [-].
+
+        Michell's height is measured on the lines y' = +-L of the band-limited field
+        (:meth:`line_height`, plane waves ghost-free over those lines); cached per
+        ``k_cut``.
+
+        Parameters
+        ----------
+        k_cut : float
+            Band limit of the synthesis [rad/m].
+
+        References
+        ----------
+        Kriebel & Seelig (2005) (:func:`seaecho.wake.empirical.kriebel_seelig_height`).
+        """
+        key = float(k_cut)
+        if key not in self._factors:
+            s = self.ship
+            lam0 = self.transverse_wavelength
+            r_line = (0.5 * s.length + 0.5 * lam0 + s.length / np.tan(KELVIN_HALF_ANGLE)
+                      + 8.0 * lam0 + 1.5 * s.length)
+            ds = float(2.0 ** (np.floor(64.0 * np.log2(2.0 * np.pi / (self.ghost_margin
+                                                                         * r_line))) / 64.0))
+            theta, dtheta = _nodes(float(self.k0), key, ds, self.taper_fraction)
+            h_michell = self.line_height(theta, self.amplitude(theta) * dtheta, s.length, key)
+            h_emp = float(kriebel_seelig_height(s.length, s.speed, s.length, g=self.g))
+            self._factors[key] = h_emp / h_michell if h_michell > 0.0 else 0.0
+        return self._factors[key]
+
+    def breaking_factor(self, theta: NDArray, weights: NDArray) -> NDArray:
+        """Per-wave cap at the breaking steepness ``a k <= pi 0.1412`` (eq W12b) [-].
+
+        Parameters
+        ----------
+        theta, weights : ndarray
+            Plane-wave angles [rad] and weights A dtheta [m] (evenly spaced in arc
+            length, so ``|A| = |weights| / gradient(theta)``).
+
+        Returns
+        -------
+        ndarray
+            Factors in (0, 1].
+
+        References
+        ----------
+        Williams (1981); Michell (1893); stationary phase of eq W4 (Newman 1977, 6.17).
+        """
+        th = np.asarray(theta, dtype=float)
+        if th.size < 3:
+            return np.ones(th.shape)
+        amp = np.abs(weights) / np.abs(np.gradient(th))
+        # ray of stationary phase of each wave (Kelvin): tan a = tan t / (1 + 2 tan^2 t)
+        t = np.tan(th)
+        alpha = np.arctan(t / (1.0 + 2.0 * t * t))
+        r = (0.5 * self.ship.length + 0.5 * self.transverse_wavelength) / np.cos(alpha)
+
+        def f(v):
+            return np.cos(v - alpha) / np.cos(v) ** 2
+
+        h = 1e-3
+        f2 = (f(th + h) - 2.0 * f(th) + f(th - h)) / h**2
+        f3 = (f(th + 2 * h) - 2.0 * f(th + h) + 2.0 * f(th - h) - f(th - 2 * h)) / (2.0 * h**3)
+        kr = self.k0 * r
+        # Eq W12b: stationary-phase amplitude, bounded by its Airy form at the cusp.
+        sp = np.sqrt(2.0 * np.pi / (kr * np.maximum(np.abs(f2), 1e-300)))
+        airy = 2.0 * np.pi * _AI_MAX * (2.0 / (kr * np.maximum(np.abs(f3), 1e-300))) ** (1 / 3)
+        k = self.k0 / np.cos(th) ** 2
+        slope = k * amp * np.minimum(sp, airy)
+        return np.minimum(1.0, BREAKING_SLOPE / np.maximum(slope, 1e-300))
 
     def fields(
         self, x: ArrayLike, y: ArrayLike, t: float = 0.0, method: str = "auto"

@@ -2,7 +2,7 @@
 
 Frames
 ------
-World frame: x east, y north, z up (DESIGN.md). The ship sails towards the azimuth
+World frame: x east, y north, z up (docs/conventions.md). The ship sails towards the azimuth
 ``heading`` (counter-clockwise from +x) at speed ``V``; its hull centre (midship) is at
 
 .. math::
@@ -26,18 +26,17 @@ The bow is at x' = -L/2 and the stern at x' = +L/2.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..constants import G
 
-if TYPE_CHECKING:  # pragma: no cover
-    from ..config.ship import ShipConfig
-
-#: Default length of the turbulent wake strip, in ship lengths (issue 2).
+#: Default length of the turbulent wake strip, in ship lengths (a modelling choice,
+#: docs/wake.md).
 DEFAULT_TURBULENT_WAKE_SHIP_LENGTHS = 20.0
+#: Kelvin-wake height models: empirical (Kriebel & Seelig 2005) or Michell's theory.
+WAKE_AMPLITUDE_MODELS = ("kriebel-seelig", "michell")
 
 
 @dataclass(frozen=True)
@@ -61,6 +60,12 @@ class Ship:
     turbulent_wake_length : float or None
         Length of the turbulent (damped) wake strip behind the stern [m]; None for the
         default of 20 ship lengths.
+    wake_amplitude : {"kriebel-seelig", "michell"}
+        Heights of the Kelvin wake (:class:`seaecho.wake.KelvinWake`).
+    wake_breaking_limit : bool
+        Cap the Kelvin wake's waves at the breaking steepness.
+    turbulent_wake_film_contrast_db : float
+        Persistent Bragg contrast of the wake's surfactant film [dB] (<= 0; eq W15).
     """
 
     length: float
@@ -70,6 +75,9 @@ class Ship:
     heading: float = 0.0
     position0: tuple[float, float] = (0.0, 0.0)
     turbulent_wake_length: float | None = None
+    wake_amplitude: str = "kriebel-seelig"
+    wake_breaking_limit: bool = True
+    turbulent_wake_film_contrast_db: float = -3.0
     _p0: NDArray[np.float64] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -94,29 +102,15 @@ class Ship:
             raise ValueError(
                 f"Ship.turbulent_wake_length = {self.turbulent_wake_length!r} m: must be >= 0"
             )
+        if self.wake_amplitude not in WAKE_AMPLITUDE_MODELS:
+            raise ValueError(f"Ship.wake_amplitude = {self.wake_amplitude!r}: choose from "
+                             f"{WAKE_AMPLITUDE_MODELS}")
+        if not (np.isfinite(self.turbulent_wake_film_contrast_db)
+                and self.turbulent_wake_film_contrast_db <= 0.0):
+            raise ValueError(f"Ship.turbulent_wake_film_contrast_db = "
+                             f"{self.turbulent_wake_film_contrast_db!r} dB: must be <= 0")
         object.__setattr__(self, "position0", (float(p0[0]), float(p0[1])))
         object.__setattr__(self, "_p0", p0)
-
-    @classmethod
-    def from_config(cls, cfg: ShipConfig) -> Ship:
-        """Build a :class:`Ship` from the scene file's ``[ship]`` section.
-
-        Parameters
-        ----------
-        cfg : seaecho.config.ship.ShipConfig
-            Validated ship section (speed in kn or m/s, heading in degrees).
-        """
-        return cls(
-            length=float(cfg.length_m),
-            beam=float(cfg.beam_m),
-            draft=float(cfg.draft_m),
-            speed=float(cfg.speed),
-            heading=float(np.deg2rad(cfg.heading_deg)),
-            position0=(float(cfg.position_m[0]), float(cfg.position_m[1])),
-            turbulent_wake_length=(
-                None if cfg.turbulent_wake_length_m is None else float(cfg.turbulent_wake_length_m)
-            ),
-        )
 
     @property
     def direction(self) -> NDArray[np.float64]:
@@ -170,4 +164,4 @@ class Ship:
         return xs, ys
 
 
-__all__ = ["DEFAULT_TURBULENT_WAKE_SHIP_LENGTHS", "Ship"]
+__all__ = ["DEFAULT_TURBULENT_WAKE_SHIP_LENGTHS", "WAKE_AMPLITUDE_MODELS", "Ship"]

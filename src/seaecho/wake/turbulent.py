@@ -14,7 +14,7 @@ Reed & Milgram 2002, section 5). The strip is modelled by its full width
 
 with xi the distance behind the stern along the track and w_0 the width at the stern
 (default: the beam B; the virtual origin one stern width behind the stern keeps w finite
-and smooth there), over a length L_t (default 20 ship lengths, issue 2). The mask is 1 in
+and smooth there), over a length L_t (default 20 ship lengths, a modelling choice). The mask is 1 in
 the core of the strip (fully damped) and falls smoothly to 0 across its edges and at its
 two ends:
 
@@ -29,6 +29,29 @@ two ends:
 with eta the transverse distance from the track. The exponent is the published part;
 the prefactor (w_0 = B) and the edge shape are modelling choices, exposed as parameters.
 
+**Damping** (:func:`turbulent_wake_mask`). Inside the strip the Bragg spectrum is reduced
+by the fraction
+
+.. math::
+
+    d(\\xi, \\eta) = M(\\xi, \\eta)\\left[1 - (1 - d_t(\\xi))(1 - d_f)\\right],\\quad
+    d_t = \\left(1 + \\frac{\\xi}{w_0}\\right)^{-3/5},\\quad
+    d_f = 1 - 10^{C_f/10}                                                    (W15)
+
+*Turbulence* suppresses the short waves completely at the stern (Milgram, Peltzer &
+Griffin 1993) and its effect decays with the wake's eddy viscosity: in the self-similar
+momentumless wake the turbulent velocity falls as xi^(-4/5) and the width grows as
+xi^(1/5) (Tennekes & Lumley 1972, 4.3), so ``nu_t ~ u' w ~ xi^(-3/5)``; in the short-wave
+balance of Kudryavtsev et al. (2003, 2005) the relative reduction of capillary-gravity
+Bragg waves (their exponent n = 1) equals the added damping rate over the wind growth
+rate, hence ``d_t ~ nu_t``. *Surfactant films* swept up by the wake's bubbles (Kaiser et
+al. 1988; Peltzer et al. 1992) persist over the strip: their damping is the contrast
+``C_f`` [dB] (default -3 dB), a modelling choice; the strongest published suppression of
+short waves by a film at moderate wind, an artificial vegetable-oil slick at 6-8 m/s, is
+a spectral contrast of about 10 (-10 dB; Dulov & Yurovskaya, field photographs). The
+wake's age ``xi / V`` enters through ``xi``. Wind dependence (stronger winds restore the
+Bragg waves faster) is not modelled here.
+
 References
 ----------
 .. [1] A. M. Reed and J. H. Milgram, "Ship wakes and their radar images", Annu. Rev.
@@ -38,6 +61,16 @@ References
    (1993).
 .. [3] H. Tennekes and J. L. Lumley, *A First Course in Turbulence*, MIT Press (1972),
    section 4.3.
+.. [4] J. A. C. Kaiser, W. D. Garrett, S. E. Ramberg, R. D. Peltzer and D. M. Andrews,
+   "WAKEX 86: a ship wake/films exploratory experiment", NRL report (1988).
+.. [5] R. D. Peltzer, W. D. Garrett and P. M. Smith, "Hydrodynamics of ship wake
+   surfactant films", Proc. 18th Symp. Naval Hydrodynamics, 533-550 (1991, publ. 1992).
+.. [6] V. A. Dulov and M. V. Yurovskaya, "Spectral contrasts of short wind waves in
+   artificial slicks from the sea surface photographs", Physical Oceanography (Marine
+   Hydrophysical Institute, Sevastopol).
+.. [7] V. Kudryavtsev, D. Hauser, G. Caudal and B. Chapron, J. Geophys. Res. 108(C3), 8054
+   (2003); V. Kudryavtsev, D. Akimov, J. Johannessen and B. Chapron, J. Geophys. Res.
+   110, C07016 (2005).
 """
 
 from __future__ import annotations
@@ -78,6 +111,34 @@ def turbulent_wake_width(xi: ArrayLike, width_at_stern: float) -> NDArray[np.flo
     return width_at_stern * (1.0 + xi / width_at_stern) ** 0.2
 
 
+def turbulent_damping_profile(
+    xi: ArrayLike, width_at_stern: float, film_contrast_db: float
+) -> NDArray[np.float64]:
+    """Bragg damping fraction along the wake core, ``1 - (1 - d_t)(1 - d_f)`` (eq W15) [-].
+
+    Parameters
+    ----------
+    xi : array_like
+        Distance behind the stern [m] (negative values are treated as 0).
+    width_at_stern : float
+        w_0 > 0 [m].
+    film_contrast_db : float
+        Persistent film contrast C_f <= 0 [dB].
+
+    References
+    ----------
+    Milgram, Peltzer & Griffin (1993); Tennekes & Lumley (1972) 4.3; Kudryavtsev et al.
+    (2003, 2005).
+    """
+    if not (np.isfinite(film_contrast_db) and film_contrast_db <= 0.0):
+        raise ValueError(f"film_contrast_db = {film_contrast_db!r} dB: must be <= 0")
+    xi = np.maximum(np.asarray(xi, dtype=np.float64), 0.0)
+    # Eq W15: turbulent part decays with the eddy viscosity of the momentumless wake.
+    d_t = (1.0 + xi / width_at_stern) ** -0.6
+    d_f = 1.0 - 10.0 ** (film_contrast_db / 10.0)
+    return 1.0 - (1.0 - d_t) * (1.0 - d_f)
+
+
 def turbulent_wake_mask(
     ship: Ship,
     x: ArrayLike,
@@ -85,8 +146,44 @@ def turbulent_wake_mask(
     t: float = 0.0,
     length: float | None = None,
     width_at_stern: float | None = None,
+    film_contrast_db: float | None = None,
 ) -> NDArray[np.float64]:
-    """Mask of the turbulent wake strip on the grid (x, y) at time t (eqs W13, W14).
+    """Bragg damping of the turbulent wake on the grid (x, y) at time t (eqs W13-W15).
+
+    The strip of :func:`turbulent_wake_strip` times the damping profile of
+    :func:`turbulent_damping_profile`.
+
+    Parameters
+    ----------
+    ship, x, y, t, length, width_at_stern
+        As :func:`turbulent_wake_strip`.
+    film_contrast_db : float or None
+        C_f [dB]; None takes ``ship.turbulent_wake_film_contrast_db``.
+
+    Returns
+    -------
+    ndarray, shape (ny, nx)
+        Fraction of the Bragg spectrum removed, in [0, 1).
+    """
+    w0 = ship.beam if width_at_stern is None else float(width_at_stern)
+    c_f = ship.turbulent_wake_film_contrast_db if film_contrast_db is None else film_contrast_db
+    strip = turbulent_wake_strip(ship, x, y, t, length, width_at_stern)
+    if not np.any(strip):
+        return strip
+    xs, _ = ship.to_ship_frame(np.asarray(x, dtype=np.float64)[None, :],
+                               np.asarray(y, dtype=np.float64)[:, None], t)
+    return strip * turbulent_damping_profile(xs - 0.5 * ship.length, w0, c_f)
+
+
+def turbulent_wake_strip(
+    ship: Ship,
+    x: ArrayLike,
+    y: ArrayLike,
+    t: float = 0.0,
+    length: float | None = None,
+    width_at_stern: float | None = None,
+) -> NDArray[np.float64]:
+    """Extent of the turbulent wake strip on the grid (x, y) at time t (eqs W13, W14).
 
     Parameters
     ----------
@@ -107,7 +204,7 @@ def turbulent_wake_mask(
     Returns
     -------
     ndarray, shape (ny, nx)
-        Damping mask in [0, 1]: 1 where short waves are fully damped, 0 outside.
+        Strip mask M in [0, 1]: 1 in the core, 0 outside.
 
     References
     ----------
@@ -136,4 +233,5 @@ def turbulent_wake_mask(
     return along * across
 
 
-__all__ = ["turbulent_wake_mask", "turbulent_wake_width"]
+__all__ = ["turbulent_damping_profile", "turbulent_wake_mask", "turbulent_wake_strip",
+           "turbulent_wake_width"]

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from ..geometry.facets import Facets
+from .dataset import atomic_savefig
 
 __all__ = ["facets_dataset", "facet_maps", "visibility_summary"]
 
@@ -106,8 +107,6 @@ def facet_maps(f: Facets, x: np.ndarray, y: np.ndarray, path: str | os.PathLike,
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-
-    from ..io.dataset import atomic_savefig
 
     ext = (x[0], x[-1], y[0], y[-1])
     fig, axes = plt.subplots(2, 2, figsize=(10, 8.5), constrained_layout=True)

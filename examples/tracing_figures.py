@@ -1,4 +1,4 @@
-"""Figures of ``docs/tracing.md``: ``python -m seaecho.tracing.docfigures docs/figures``.
+"""Figures of ``docs/tracing.md``: ``python examples/tracing_figures.py docs/figures``.
 
 - ``tracing_smith.png``: lit fraction of Gaussian random surfaces, ray traced vs Smith's
   function (Smith 1967) and the Smith-weighted analytic mode, against the grazing angle;
@@ -6,6 +6,10 @@
   shadow polygon;
 - ``tracing_modes.png``: visibility maps of a wind sea with the 10 m motor boat, ray traced
   vs analytic (Smith), bistatic.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
@@ -27,10 +31,10 @@ def _gaussian_surface(n, dx, corr_len, sigma_h, rng):
 def smith_figure(path: Path) -> None:
     import matplotlib.pyplot as plt
 
-    from ..geometry.facets import smith_weights
-    from ..geometry.shadowing import smith_monostatic
-    from ..io.dataset import atomic_savefig
-    from .tracer import FacetTracer
+    from seaecho.geometry.facets import smith_weights
+    from seaecho.geometry.shadowing import smith_monostatic
+    from seaecho.io.dataset import atomic_savefig
+    from seaecho.tracing.tracer import FacetTracer
 
     n, corr = 256, 8.0
     x = (np.arange(n) - n / 2) * 1.0
@@ -74,9 +78,9 @@ def box_figure(path: Path) -> None:
     import trimesh
     from scipy.spatial import ConvexHull
 
-    from ..io.dataset import atomic_savefig
-    from .scene import ObjectGeometry
-    from .tracer import FacetTracer
+    from seaecho.io.dataset import atomic_savefig
+    from seaecho.tracing.scene import ObjectGeometry
+    from seaecho.tracing.tracer import FacetTracer
 
     n = 64
     x = (np.arange(n) - n / 2) * 1.0
@@ -107,11 +111,11 @@ def box_figure(path: Path) -> None:
 def modes_figure(path: Path) -> None:
     import matplotlib.pyplot as plt
 
-    from ..config import parse_scene
-    from ..io.dataset import atomic_savefig
-    from .engine import FacetEngine
+    from seaecho.build import build_engine, build_sea
+    from seaecho.config import parse_scene
+    from seaecho.io.dataset import atomic_savefig
 
-    hull = Path(__file__).resolve().parents[3] / "scenes" / "meshes" / "motor_boat_10m.ply"
+    hull = Path(__file__).resolve().parents[1] / "scenes" / "meshes" / "motor_boat_10m.ply"
     scene = parse_scene({
         "sea": {"spectrum": "pierson-moskowitz", "wind_speed_m_s": 8.0,
                 "wind_direction_deg": 30.0, "size_x_m": 128.0, "nx": 256},
@@ -121,11 +125,13 @@ def modes_figure(path: Path) -> None:
         "run": {"seed": 1},
     })
     tx, rx = np.array([-300.0, -200.0, 30.0]), np.array([200.0, -250.0, 20.0])
-    traced = FacetEngine.from_scene(scene, tx_position=tx, rx_position=rx)
-    analytic = FacetEngine.from_scene(scene, sea=traced.sea, mode="analytic",
-                                      tx_position=tx, rx_position=rx)
+    sea = build_sea(scene)
+    # the sea water and the tracing need a carrier: the paper's 10 GHz
+    traced = build_engine(scene, sea.state, frequency=10e9, tx_position=tx, rx_position=rx)
+    analytic = build_engine(scene, sea.state, frequency=10e9, mode="analytic",
+                            tx_position=tx, rx_position=rx)
     ft, fa = traced.facets(0.0), analytic.facets(0.0)
-    x, y = traced.sea.x, traced.sea.y
+    x, y = sea.x, sea.y
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.6), constrained_layout=True)
     for ax, (a, title, cmap, lim) in zip(axes, [
             (ft.cell_mean("visibility"), "ray traced: lit and seen", "gray", (0, 1)),

@@ -1,10 +1,15 @@
-"""Tests of the polarisation frames (seaecho.scattering.frames)."""
+"""Tests of the polarisation frames (seaecho.geometry.frames).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
 
 import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from seaecho.scattering import frames
+from seaecho.geometry import frames
 
 angles = st.floats(0.0, np.pi / 2)
 azimuths = st.floats(-np.pi, np.pi)
@@ -88,3 +93,10 @@ def test_beta_zero_at_specular_and_pi_half_without_q():
     n_i, n_s = frames.directions_from_angles(0.5, 0.0, 0.5, 0.0)
     assert frames.beta_angle(n_i, n_s) < 1e-7
     assert abs(frames.beta_angle(n_i, n_i) - np.pi / 2) < 1e-12
+
+
+def test_former_import_path_is_the_same_module():
+    # scattering.frames moved to geometry.frames; the old path stays an alias meanwhile
+    from seaecho.scattering import frames as old
+
+    assert old is frames

@@ -1,0 +1,164 @@
+"""Per-stage profile of a Simulation 2 pulse: wall time and CPU time of each stage.
+
+Run: ``python benchmarks/profile_pulse.py [--pulses 8] [--refresh 0.1] [--update 160]``.
+
+The stages are the functions a pulse calls, timed by wrapping them (whatever is present
+in this version of the code: the same script profiles the reference path and the fused
+one). Each line gives the wall time and the CPU time (``time.process_time``: every thread
+of the process, so Dr.Jit's and finufft's workers count) per pulse; nested stages are
+indented and included in their parent. ``--reference`` runs the reference path (one
+kernel per stage, numpy between them) instead of the fused pulse
+(``seaecho.radar.resident``).
+
+On a shared machine the wall time is inflated by the other processes; the CPU time is
+the steadier figure (``docs/performance.md``). The load average is printed with it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import functools
+import importlib
+import os
+import resource
+import sys
+import time
+import warnings
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
+
+#: (module, attribute path, label, depth): the functions timed, where they exist.
+STAGES = [
+    ("seaecho.simulation", "Simulation.pulse", "pulse (end to end, no compression)", 0),
+    ("seaecho.sea", "Sea.state", "sea state (ocean + wake)", 1),
+    ("seaecho.ocean.surface", "SeaSurface.fields", "ocean synthesis (FFTs)", 2),
+    ("seaecho.simulation", "Simulation._block_quantities", "speckle draws + wake mask", 1),
+    ("seaecho.tracing.engine", "FacetEngine.geometry", "facet geometry (per held sea)", 1),
+    ("seaecho.tracing.engine", "FacetEngine.facets", "facets (frames + visibility)", 1),
+    ("seaecho.tracing.tracer", "FacetTracer.set_surface", "BVH rebuild", 2),
+    ("seaecho.tracing.tracer", "FacetTracer.occluded", "shadow rays", 2),
+    ("seaecho.tracing.engine", "FacetEngine.occlusion", "occlusion (refresh)", 2),
+    ("seaecho.radar.resident", "ResidentSea.echo", "fused sea echo (one kernel)", 1),
+    ("seaecho.radar.resident", "ResidentSea.load", "upload held sea", 2),
+    ("seaecho.scattering.facet", "speckled_facet_amplitudes", "scattering P1-P4", 1),
+    ("seaecho.radar.system", "RadarSystem.scatterer_echo", "radar equation", 1),
+    ("seaecho.radar.system", "RadarSystem.receive", "receive (accumulation)", 1),
+    ("seaecho.radar.echo", "accumulate", "NUFFT + iFFT", 2),
+    ("seaecho.simulation", "Simulation.compress", "range compression", 0),
+]
+
+
+class Timer:
+    def __init__(self) -> None:
+        self.wall: dict[str, float] = {}
+        self.cpu: dict[str, float] = {}
+        self.calls: dict[str, int] = {}
+        self.active: set[str] = set()
+
+    def wrap(self, label: str, fn):
+        @functools.wraps(fn)
+        def timed(*args, **kwargs):
+            if label in self.active:  # recursion: count the outer call only
+                return fn(*args, **kwargs)
+            self.active.add(label)
+            w, c = time.perf_counter(), time.process_time()
+            try:
+                return fn(*args, **kwargs)
+            finally:
+                self.wall[label] = self.wall.get(label, 0.0) + time.perf_counter() - w
+                self.cpu[label] = self.cpu.get(label, 0.0) + time.process_time() - c
+                self.calls[label] = self.calls.get(label, 0) + 1
+                self.active.discard(label)
+        return timed
+
+    def reset(self) -> None:
+        self.wall.clear()
+        self.cpu.clear()
+        self.calls.clear()
+
+
+def install(timer: Timer) -> list[tuple[str, str, int]]:
+    """Wrap every stage present; returns (label, where, depth) of those found."""
+    found = []
+    for mod_name, path, label, depth in STAGES:
+        try:
+            mod = importlib.import_module(mod_name)
+        except ImportError:
+            continue
+        *owners, attr = path.split(".")
+        owner = mod
+        for o in owners:
+            owner = getattr(owner, o, None)
+        if owner is None or not hasattr(owner, attr):
+            continue
+        fn = getattr(owner, attr)
+        setattr(owner, attr, timer.wrap(label, fn))
+        if not owners:  # a module-level function: also where it was imported by name
+            for other in list(sys.modules.values()):
+                if (getattr(other, "__name__", "").startswith("seaecho")
+                        and getattr(other, attr, None) is fn):
+                    setattr(other, attr, getattr(owner, attr))
+        found.append((label, f"{mod_name}.{path}", depth))
+    return found
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--pulses", type=int, default=8)
+    ap.add_argument("--refresh", type=float, default=0.1,
+                    help="[tracing] refresh_interval_s [s]")
+    ap.add_argument("--update", type=int, default=160, help="[radar] sea_update_pulses")
+    ap.add_argument("--grid", type=int, default=None, help="grid points per side")
+    ap.add_argument("--reference", action="store_true",
+                    help="the reference path (numpy glue between kernels)")
+    args = ap.parse_args()
+
+    from seaecho.config import load_scene
+    from seaecho.simulation import Simulation
+
+    scene = load_scene(SIM2)
+    update = {"tracing": scene.tracing.model_copy(
+                  update={"refresh_interval_s": args.refresh}),
+              "radar": scene.radar.model_copy(update={"sea_update_pulses": args.update})}
+    if args.grid:
+        update["sea"] = scene.sea.model_copy(update={"nx": args.grid})
+    scene = scene.model_copy(update=update)
+    timer = Timer()
+    found = install(timer)
+    warnings.simplefilter("ignore")
+    w0, c0 = time.perf_counter(), time.process_time()
+    sim = Simulation(scene, base_dir=SIM2.parent)
+    if args.reference:
+        sim._resident = None
+    first = 40
+    for p in (first, first + 1):  # compilation, BVH, lazy imports: not profiled
+        sim.compress(sim.pulse(p))
+    setup = (time.perf_counter() - w0, time.process_time() - c0)
+    timer.reset()
+    pulses = range(first + 2, first + 2 + args.pulses)
+    load0 = os.getloadavg()[0]
+    w0, c0 = time.perf_counter(), time.process_time()
+    for p in pulses:
+        sim.compress(sim.pulse(p))
+    wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+    n = len(pulses)
+    print(f"profile_pulse: Simulation 2, {scene.sea.nx}^2 sea, refresh_interval_s = "
+          f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses; "
+          f"{os.cpu_count()} CPUs, load {load0:.2f} -> {os.getloadavg()[0]:.2f}")
+    print(f"  set-up and 2 warm-up pulses: {setup[0]:.2f} s wall, {setup[1]:.2f} s CPU")
+    print(f"  {'stage':44s} {'wall [ms]':>10s} {'CPU [ms]':>10s} {'calls':>6s}")
+    for label, _, depth in found:
+        if label not in timer.wall:
+            continue
+        name = "  " * depth + label
+        print(f"  {name:44s} {1e3 * timer.wall[label] / n:10.1f} "
+              f"{1e3 * timer.cpu[label] / n:10.1f} {timer.calls[label] / n:6.2f}")
+    print(f"  {'per pulse, all (pulse + compression)':44s} {1e3 * wall / n:10.1f} "
+          f"{1e3 * cpu / n:10.1f}")
+    print(f"  peak RSS {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MiB")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,566 @@
+"""The builder: the only code that reads a validated scene.
+
+Everything downstream of the scene file works on frozen, plain-valued stage models (SI
+numbers, arrays and small immutable objects) that this module makes from a
+:class:`seaecho.config.Scene`; the stages never see the scene or its pydantic sections.
+
+=========================  ===================================  ==========================
+function                   reads                                gives (stage model)
+=========================  ===================================  ==========================
+:func:`sea_spectrum`       ``[sea]``                            ``DirectionalSpectrum``
+:func:`build_sea`          ``[sea]``, ``[ship]``, ``[run]``     ``Sea`` (surface + wake)
+:func:`carrier_frequency`  ``[radar]`` or an explicit value     carrier [Hz] (no default)
+:func:`build_sea_model`    ``[sea]``, carrier                   ``scattering.SeaModel``
+:func:`build_radar`        ``[radar]``, ``[transmitter]``,      ``radar.RadarModel``
+                           ``[receiver]``, ``[[targets]]``
+:func:`build_tracing`      ``[tracing]``, ``[[objects]]``,      ``tracing.TracingModel``
+                           carrier, ``[sea]`` water
+:func:`build_engine`       the above                            ``tracing.FacetEngine``
+:func:`build_simulation`   everything                           :class:`SimulationModels`
+:func:`check_scene`        ``[sea]``, carrier                   ``SamplingWarning`` s
+=========================  ===================================  ==========================
+
+Named constants live with the physics they belong to and are defined once: the two-scale
+split ``k_cut = k / 3``, the Bragg roughness band up to ``20 k`` and the small
+perturbation bound ``k h <= 0.3`` in :mod:`seaecho.ocean.twoscale`; the wind-height
+conversions in :mod:`seaecho.ocean.wind`; the physical constants in
+:mod:`seaecho.constants`. A scene without ``[radar]`` has no carrier: the functions that
+need one take it explicitly (``frequency``) and raise a ``ValueError`` otherwise.
+
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
+NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from .constants import C0
+from .ocean.seawater import sea_water_permittivity
+from .ocean.spectra import DirectionalSpectrum
+from .ocean.surface import SeaSurface
+from .ocean.twoscale import (
+    ROUGHNESS_K_MAX_RATIO,
+    TWO_SCALE_CUT_RATIO,
+    height_variance,
+    unresolved_statistics,
+)
+from .radar.antennas import Antenna
+from .radar.model import RadarModel, TargetSet
+from .radar.platforms import Platform, draw_perturbation
+from .radar.pointing import Pointing
+from .radar.waveform import Waveform
+from .rng import generator
+from .scattering.sea_model import SeaModel
+from .scattering.spectrum_table import BraggSpectrumTable
+from .sea import Sea
+from .tracing.model import TracingModel
+from .wake import Ship
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .tracing.engine import FacetEngine
+
+__all__ = [
+    "SimulationModels",
+    "build_engine",
+    "build_radar",
+    "build_sea",
+    "build_sea_model",
+    "build_simulation",
+    "build_tracing",
+    "carrier_frequency",
+    "check_scene",
+    "check_sea",
+    "platform_positions",
+    "scene_attrs",
+    "sea_spectrum",
+    "section_spectrum",
+]
+
+
+# ----------------------------------------------------------------------------- the sea
+def sea_spectrum(scene) -> DirectionalSpectrum:
+    """The directional spectrum of ``[sea]`` (degrees -> radians).
+
+    Raises
+    ------
+    seaecho.config.SceneError
+        ``[sea]``'s fetch or depth outside what its spectrum describes
+        (:func:`check_sea`).
+    """
+    check_sea(scene.sea)
+    return section_spectrum(scene.sea)
+
+
+def check_sea(sea) -> None:
+    """Raise :class:`~seaecho.config.SceneError` if a ``[sea]`` section's fetch or depth
+    is outside what its spectrum describes (:mod:`seaecho.ocean.limits`: the fetch law's
+    seas, McCowan's breaking depth). The fetch comes first: the depth check integrates
+    the spectrum the fetch sets. Every use of the sea goes through :func:`sea_spectrum`,
+    so ``check``, ``surface``, ``run``, ``trace`` and each case of a sweep refuse alike.
+    """
+    from .config import SceneError
+    from .ocean.limits import BREAKING_RATIO, fetch_range, min_depth, significant_height
+
+    if sea.fetch_m is not None and sea.spectrum != "pierson-moskowitz":
+        lo, hi = fetch_range(sea.spectrum, sea.wind_speed_m_s)
+        if not lo <= sea.fetch_m <= hi:
+            span = f"[{lo:.3g}, {hi:.3g}]" if np.isfinite(hi) else f">= {lo:.3g}"
+            raise SceneError(
+                f"[sea].fetch_m = {sea.fetch_m:g}: outside the fetches the {sea.spectrum} "
+                f"fetch law describes at U19.5 = {sea.wind_speed_m_s:g} m/s, {span} m "
+                "(inverse wave age from 5, a young sea, to 0.84, fully developed: "
+                "Elfouhaily et al. 1997); for a fully developed sea use "
+                "'pierson-moskowitz', or 'elfouhaily' without fetch_m")
+    if sea.depth_m is not None:
+        spectrum = section_spectrum(sea)
+        if sea.depth_m < min_depth(spectrum):
+            h_s = significant_height(spectrum)
+            raise SceneError(
+                f"[sea].depth_m = {sea.depth_m:g}: shallower than this sea's waves allow, "
+                f"H_s / {BREAKING_RATIO} = {h_s / BREAKING_RATIO:.3g} m (H_s = {h_s:.3g} m, "
+                "significant height of the spectrum; waves break where H > 0.78 d, "
+                "McCowan 1894)")
+
+
+def section_spectrum(sea) -> DirectionalSpectrum:
+    """The directional spectrum of a ``[sea]`` section, unchecked (:func:`sea_spectrum`)."""
+    return DirectionalSpectrum(spectrum=sea.spectrum, spreading=sea.spreading,
+                               u19_5=sea.wind_speed_m_s,
+                               wind_direction=float(np.deg2rad(sea.wind_direction_deg)),
+                               fetch=sea.fetch_m, s=sea.spreading_s)
+
+
+def _ship(scene) -> Ship | None:
+    cfg = scene.ship
+    if cfg is None:
+        return None
+    return Ship(length=float(cfg.length_m), beam=float(cfg.beam_m), draft=float(cfg.draft_m),
+                speed=float(cfg.speed), heading=float(np.deg2rad(cfg.heading_deg)),
+                position0=(float(cfg.position_m[0]), float(cfg.position_m[1])),
+                turbulent_wake_length=(None if cfg.turbulent_wake_length_m is None
+                                       else float(cfg.turbulent_wake_length_m)),
+                wake_amplitude=cfg.wake_amplitude,
+                wake_breaking_limit=cfg.wake_breaking_limit,
+                turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db)
+
+
+def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:
+    """The sea of a scene: the surface realisation of its seed (``"surface"`` stream) on
+    the ``[sea]`` grid, plus the ``[ship]``'s wake.
+
+    Parameters
+    ----------
+    scene : seaecho.config.Scene
+    spectrum : DirectionalSpectrum, optional
+        ``sea_spectrum(scene)`` if already made.
+    """
+    cfg = scene.sea
+    spectrum = sea_spectrum(scene) if spectrum is None else spectrum
+    surface = SeaSurface(spectrum, size=cfg.size_m, shape=cfg.shape,
+                         rng=generator(scene.run.seed, "surface"), depth=cfg.depth_m)
+    ship = _ship(scene)
+    kelvin = bool(scene.ship.kelvin_wake) if ship is not None else False
+    length = scene.ship.turbulent_wake_length_m if ship is not None else None
+    return Sea(surface, ship, kelvin_wake=kelvin, turbulent_wake_length=length)
+
+
+def carrier_frequency(scene, frequency: float | None = None) -> float:
+    """The radar carrier of a scene [Hz]: ``frequency`` if given, else ``[radar]``'s.
+
+    Raises
+    ------
+    ValueError
+        The scene has no ``[radar]`` and no frequency was given (there is no default
+        carrier: the sea's permittivity and its two-scale split depend on it).
+    """
+    if frequency is not None:
+        if not (np.isfinite(frequency) and 1.0e6 < frequency <= 1.0e12):
+            raise ValueError(f"frequency = {frequency} Hz: must be in (1e6, 1e12] Hz")
+        return float(frequency)
+    if scene.radar is None:
+        raise ValueError("the scene has no [radar] section: give the carrier frequency "
+                         "(e.g. --frequency-ghz) for the sea-water permittivity and the "
+                         "two-scale split")
+    return float(scene.radar.carrier_frequency_hz)
+
+
+def build_sea_model(scene, frequency: float | None = None,
+                    spectrum: DirectionalSpectrum | None = None) -> SeaModel:
+    """The sea as the facet scattering model sees it at the scene's carrier.
+
+    Two bands of the unresolved waves (:mod:`seaecho.ocean.twoscale`): the slope
+    variances of k_grid < K < k/3 and the height spectrum of k_grid < K < 20 k,
+    tabulated (:class:`~seaecho.scattering.spectrum_table.BraggSpectrumTable`).
+
+    Parameters
+    ----------
+    scene : seaecho.config.Scene
+    frequency : float, optional
+        Carrier [Hz]; default ``[radar]``'s (:func:`carrier_frequency`).
+    spectrum : DirectionalSpectrum, optional
+        ``sea_spectrum(scene)`` if already made.
+
+    Raises
+    ------
+    ValueError
+        No carrier, or a grid so fine that it resolves every wave of the tilting band
+        (its spacing below 3 lambda / 2): the sub-facet slope variance would be zero.
+    """
+    f = carrier_frequency(scene, frequency)
+    spectrum = sea_spectrum(scene) if spectrum is None else spectrum
+    cfg = scene.sea
+    k = 2.0 * np.pi * f / C0
+    lx, ly = cfg.size_m
+    ny, nx = cfg.shape
+    dx, dy = lx / nx, ly / ny
+    k_cut = TWO_SCALE_CUT_RATIO * k
+    k_max = ROUGHNESS_K_MAX_RATIO * k
+    tilt = unresolved_statistics(spectrum, dx, dy, k_cut)
+    if not (tilt.mss_upwind > 0 and tilt.mss_crosswind > 0):
+        raise ValueError(
+            f"[sea] grid spacing {max(dx, dy):.4g} m resolves every wave longer than the "
+            f"two-scale split 2 pi / k_cut = {2 * np.pi / k_cut:.4g} m at "
+            f"{f / 1e9:g} GHz: the facets carry no sub-facet slopes; use a spacing above "
+            f"{np.pi / k_cut:.4g} m")
+    eps_r = complex(sea_water_permittivity(f, cfg.temperature_c, cfg.salinity_psu))
+    table = BraggSpectrumTable(spectrum.height_spectrum, k_min=tilt.k_grid, k_max=k_max)
+    return SeaModel(frequency=f, k=float(k), eps_r=eps_r,
+                    wind_direction=float(spectrum.wind_direction), k_grid=tilt.k_grid,
+                    k_cut=float(k_cut), k_max=float(k_max), mss_upwind=tilt.mss_upwind,
+                    mss_crosswind=tilt.mss_crosswind,
+                    roughness_height_variance=height_variance(spectrum, tilt.k_grid, k_max),
+                    bragg_spectrum=table)
+
+
+def check_scene(scene, frequency: float | None = None) -> None:
+    """Warn (``SamplingWarning``) when the scene's tile or grid is too coarse.
+
+    The tile must hold the spectral peak and resolve its -3 dB band (paper section IV-A);
+    with a carrier (``frequency`` or ``[radar]``'s) the Bragg roughness must keep
+    k h <= 0.3 (:func:`seaecho.ocean.sampling.check_sampling`).
+    """
+    from .ocean.sampling import check_sampling
+
+    f = frequency
+    if f is None and scene.radar is not None:
+        f = scene.radar.carrier_frequency_hz
+    check_sampling(sea_spectrum(scene), scene.sea.size_m, scene.sea.shape, f)
+
+
+# ---------------------------------------------------------------------------- the radar
+def _platform(cfg, seed: int, stream_index: int, t_span: tuple[float, float]) -> Platform:
+    """Platform of a ``[transmitter]`` / ``[receiver]`` section (perturbation drawn from
+    the ``"platform"`` stream, index 0 for the transmitter, 1 for the receiver)."""
+    if cfg.motion == "fixed":
+        times = np.array([0.0])
+        positions = np.array([cfg.position_m], dtype=float)
+    elif cfg.motion == "linear":
+        times = np.array([0.0, 1.0])
+        p0 = np.array(cfg.position_m, dtype=float)
+        positions = np.stack([p0, p0 + np.array(cfg.velocity_m_s, dtype=float)])
+    else:
+        times = np.array(cfg.waypoint_times_s, dtype=float)
+        positions = np.array(cfg.waypoint_positions_m, dtype=float)
+    pert = None
+    g = cfg.perturbation
+    if g is not None:
+        pert = draw_perturbation(t_span, generator(seed, "platform", stream_index),
+                                 step=g.step_s, position_sigma=g.position_sigma_m,
+                                 position_tau=g.position_tau_s,
+                                 attitude_sigma=np.deg2rad(g.attitude_sigma_deg),
+                                 attitude_tau=g.attitude_tau_s)
+    yaw = None if cfg.yaw_deg is None else float(np.deg2rad(cfg.yaw_deg))
+    return Platform(times, positions, yaw=yaw, pitch=float(np.deg2rad(cfg.pitch_deg)),
+                    roll=float(np.deg2rad(cfg.roll_deg)), perturbation=pert)
+
+
+def _antenna(cfg, wavelength: float) -> Antenna:
+    return Antenna(cfg.pattern, wavelength, cfg.width_m, cfg.height_m, cfg.basis,
+                   cfg.cross_polar_isolation_db)
+
+
+def build_antennas(scene) -> tuple[Antenna, Antenna]:
+    """(transmit, receive) antennas of a scene's ``[transmitter]`` / ``[receiver]``
+    (the transmitter's for a monostatic scene), at the ``[radar]`` carrier."""
+    wavelength = C0 / carrier_frequency(scene)
+    rx = scene.transmitter if scene.receiver is None else scene.receiver
+    return _antenna(scene.transmitter.antenna, wavelength), _antenna(rx.antenna, wavelength)
+
+
+def _pointing(cfg, platform: Platform, t_ref: float) -> Pointing:
+    if cfg.look_at_m is not None:
+        return Pointing.aimed_at(cfg.look_at_m, platform, t_ref, track=cfg.track_look_at)
+    return Pointing.by_angles(float(np.deg2rad(cfg.azimuth_deg)),
+                              float(np.deg2rad(cfg.depression_deg)))
+
+
+def _platforms(scene) -> tuple[Platform, Platform]:
+    """(transmitter, receiver); the same object twice when monostatic. Perturbations
+    cover the pulses of ``[radar]`` (plus 1 ms), or t = 0 without a radar."""
+    if scene.transmitter is None:
+        raise ValueError("the scene has no [transmitter] section")
+    t_span = (0.0, 0.0)
+    if scene.radar is not None:
+        r = scene.radar
+        t_span = (r.start_time_s, r.start_time_s + (r.n_pulses - 1) / r.prf_hz + 1.0e-3)
+    seed = scene.run.seed
+    tx = _platform(scene.transmitter, seed, 0, t_span)
+    if scene.receiver is None:
+        return tx, tx
+    return tx, _platform(scene.receiver, seed, 1, t_span)
+
+
+def _targets(scene) -> TargetSet | None:
+    if not scene.targets:
+        return None
+    t = scene.targets
+    return TargetSet(positions=np.array([g.position_m for g in t], dtype=float).reshape(-1, 3),
+                     velocities=np.array([g.velocity_m_s for g in t], dtype=float).reshape(-1, 3),
+                     scattering=np.stack([g.scattering_matrix() for g in t]).astype(complex),
+                     names=tuple(g.name or f"target{i}" for i, g in enumerate(t)))
+
+
+def build_radar(scene) -> RadarModel:
+    """The radar of ``[radar]``, ``[transmitter]``, ``[receiver]`` and ``[[targets]]``.
+
+    Raises
+    ------
+    ValueError
+        The scene lacks ``[radar]`` or ``[transmitter]``.
+    """
+    if scene.radar is None or scene.transmitter is None:
+        raise ValueError("the scene needs [radar] and [transmitter] sections")
+    r = scene.radar
+    tx, rx = _platforms(scene)
+    mono = rx is tx
+    wavelength = C0 / r.carrier_frequency_hz
+    w = r.waveform
+    if w.kind == "lfm":
+        waveform = Waveform.lfm(w.bandwidth_hz, w.duration_s, r.sampling_rate_hz, w.up_chirp)
+    else:
+        waveform = Waveform.pulse(w.duration_s, r.sampling_rate_hz)
+    rx_cfg = scene.transmitter if mono else scene.receiver
+    window = None if r.window_start_m is None else (r.window_start_m, r.window_end_m)
+    return RadarModel(
+        carrier=r.carrier_frequency_hz, sampling_rate=r.sampling_rate_hz, prf=r.prf_hz,
+        n_pulses=r.n_pulses, start_time=r.start_time_s, transmit_power=r.transmit_power_w,
+        waveform=waveform, tx=tx, rx=rx,
+        tx_antenna=_antenna(scene.transmitter.antenna, wavelength),
+        rx_antenna=_antenna(rx_cfg.antenna, wavelength),
+        tx_pointing=_pointing(scene.transmitter.antenna, tx, r.start_time_s),
+        rx_pointing=_pointing(rx_cfg.antenna, rx, r.start_time_s),
+        channels=tuple(r.channels), noise_figure_db=r.noise_figure_db,
+        noise_bandwidth=r.noise_bandwidth_hz or r.sampling_rate_hz,
+        thermal_noise=r.thermal_noise, window_m=window,
+        tile_size=tuple(scene.sea.size_m), sea_clutter=r.sea_clutter,
+        targets=_targets(scene), seed=scene.run.seed, range_weighting=r.range_weighting,
+        taylor_nbar=r.taylor_nbar, taylor_sidelobe_db=r.taylor_sidelobe_db,
+        sea_update_pulses=r.sea_update_pulses, sigma_map_pulse=r.sigma_map_pulse)
+
+
+# -------------------------------------------------------------------------- the facets
+def build_tracing(scene, base_dir: str | os.PathLike = ".", *, frequency: float | None = None,
+                  mode: str | None = None, variant: str | None = None,
+                  sea_model: SeaModel | None = None) -> TracingModel:
+    """Facet mode, shadowing and occluders of ``[tracing]`` and ``[[objects]]``.
+
+    Parameters
+    ----------
+    scene : seaecho.config.Scene
+    base_dir : path
+        Folder of the scene file (``[[objects]]`` paths are relative to it).
+    frequency : float, optional
+        Carrier [Hz] (:func:`carrier_frequency`): the sea-water material, and the
+        tilting band of the sub-facet shadowing.
+    mode, variant : str, optional
+        Override ``[tracing] mode`` / ``variant``.
+    sea_model : SeaModel, optional
+        ``build_sea_model(scene, frequency)`` if already made (sub-facet shadowing).
+    """
+    from .tracing.scene import load_object
+
+    cfg = scene.tracing
+    mode = cfg.mode if mode is None else mode
+    variant = cfg.variant if variant is None else variant
+    f = carrier_frequency(scene, frequency)
+    objects: list = []
+    if mode == "raytraced":
+        for o in scene.objects:
+            objects += load_object(o, base_dir=str(base_dir), ship=scene.ship,
+                                   variant=variant)
+    subfacet = None
+    if cfg.subfacet_shadowing:
+        sm = build_sea_model(scene, f) if sea_model is None else sea_model
+        subfacet = sm.subfacet
+    eps_r = (sea_model.eps_r if sea_model is not None else
+             complex(sea_water_permittivity(f, scene.sea.temperature_c,
+                                            scene.sea.salinity_psu)))
+    return TracingModel(mode=mode, shadowing=cfg.shadowing,
+                        refresh_interval_s=cfg.refresh_interval_s,
+                        variant=variant,
+                        objects=tuple(objects), frequency=f, eps_r=eps_r, subfacet=subfacet)
+
+
+def platform_positions(scene, radar: RadarModel | None = None,
+                       tx_position: Any = None, rx_position: Any = None
+                       ) -> tuple[Callable[[float], np.ndarray],
+                                  Callable[[float], np.ndarray] | None]:
+    """(tx, rx) position functions ``t -> (3,)`` [m] of the scene's platforms, or of
+    fixed positions that replace them (``rx_position`` None with ``tx_position``:
+    monostatic)."""
+    if tx_position is not None:
+        p_tx = np.asarray(tx_position, dtype=np.float64).reshape(3)
+        p_rx = None if rx_position is None else np.asarray(rx_position,
+                                                           dtype=np.float64).reshape(3)
+        return (lambda t: p_tx), (None if p_rx is None else (lambda t: p_rx))
+    if scene.transmitter is None:
+        raise ValueError("the scene has no [transmitter]: facets need a transmitter")
+    tx, rx = (radar.tx, radar.rx) if radar is not None else _platforms(scene)
+    tx_fn = lambda t: tx.state(t).position  # noqa: E731
+    rx_fn = None if rx is tx else (lambda t: rx.state(t).position)
+    return tx_fn, rx_fn
+
+
+def build_engine(scene, surface: Callable[[float], object], base_dir: str | os.PathLike = ".",
+                 *, tracing: TracingModel | None = None, radar: RadarModel | None = None,
+                 frequency: float | None = None, mode: str | None = None,
+                 variant: str | None = None, tx_position: Any = None,
+                 rx_position: Any = None, sea_model: SeaModel | None = None) -> FacetEngine:
+    """The :class:`~seaecho.tracing.engine.FacetEngine` of a scene on a surface provider.
+
+    Parameters
+    ----------
+    scene : seaecho.config.Scene
+    surface : callable
+        ``t -> SurfaceState`` (e.g. ``build_sea(scene).state``).
+    base_dir : path
+        Folder of the scene file.
+    tracing : TracingModel, optional
+        ``build_tracing(...)`` if already made (then ``frequency``, ``mode``,
+        ``variant`` are ignored).
+    radar : RadarModel, optional
+        Its platforms give the positions (else they are built from the scene).
+    frequency, mode, variant, sea_model
+        As for :func:`build_tracing`.
+    tx_position, rx_position : (3,) arrays, optional
+        Fixed positions [m] replacing the scene's platforms.
+    """
+    from .tracing.engine import FacetEngine
+
+    if tracing is None:
+        tracing = build_tracing(scene, base_dir, frequency=frequency, mode=mode,
+                                variant=variant, sea_model=sea_model)
+    tx_fn, rx_fn = platform_positions(scene, radar, tx_position, rx_position)
+    return FacetEngine.from_model(tracing, surface, tx_fn, rx_fn)
+
+
+# ---------------------------------------------------------------------- the simulation
+def scene_attrs(scene) -> dict[str, Any]:
+    """Dataset attributes that say how a file was made: the full scene (JSON), the
+    package version and the seed (:func:`seaecho.io.dataset.scene_attrs`)."""
+    from .io.dataset import scene_attrs as attrs
+
+    return attrs(scene)
+
+
+def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | None = None,
+                variant: str | None = None):
+    """The hull model of the ``[[objects]]`` with ``scatterer = true``
+    (:class:`seaecho.tracing.hull_echo.HullModel`), or None when none scatters.
+
+    Every object is loaded (the others occlude the scatterers' rays); the sea's
+    permittivity and rms height (waves up to twice the radar wavenumber) set the
+    reflection of the multipath legs (docs/ship.md).
+    """
+    if not any(o.scatterer for o in scene.objects):
+        return None
+    from .tracing.hull_echo import HullModel, HullOptions
+    from .tracing.scene import load_object
+
+    f = carrier_frequency(scene, frequency)
+    objects = []
+    for cfg in scene.objects:
+        shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship, variant=variant)
+        spec = None
+        if cfg.scatterer:
+            spec = HullOptions(name=cfg.name, rays_per_wavelength=cfg.rays_per_wavelength,
+                               max_bounces=cfg.max_bounces, cell_m=cfg.signature_cell_m,
+                               sea_multipath=cfg.sea_multipath,
+                               refresh_deg=cfg.signature_refresh_deg,
+                               refresh_s=cfg.signature_refresh_s)
+        objects.append((spec, shapes))
+    sea = scene.sea
+    eps_sea = complex(sea_water_permittivity(f, sea.temperature_c, sea.salinity_psu))
+    k = 2.0 * np.pi * f / C0
+    sigma_h = float(np.sqrt(height_variance(sea_spectrum(scene), 0.0, 2.0 * k)))
+    return HullModel(objects=tuple(objects), sea_eps_r=eps_sea, sigma_h=sigma_h)
+
+
+@dataclass(frozen=True)
+class SimulationModels:
+    """Everything a :class:`seaecho.simulation.Simulation` needs, built from a scene.
+
+    Attributes
+    ----------
+    radar : RadarModel
+    sea : Sea or None
+        The sea (None when ``[radar] sea_clutter`` is off).
+    sea_model : SeaModel or None
+        Its radar-frequency view.
+    tracing : TracingModel or None
+        Facet mode and occluders.
+    attrs : dict
+        Dataset attributes that say how the output was made (scene JSON, version, seed).
+    variant : str or None
+        Mitsuba variant of the Dr.Jit kernels and the tracer (``[tracing] variant``).
+    hulls : seaecho.tracing.hull_echo.HullModel or None
+        The objects that echo (``scatterer = true``), None when none does.
+    """
+
+    radar: RadarModel
+    sea: Sea | None
+    sea_model: SeaModel | None
+    tracing: TracingModel | None
+    attrs: dict
+    variant: str | None = None
+    hulls: object = None
+
+
+def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationModels:
+    """The stage models of a scene's radar simulation.
+
+    Warns (``SPMValidityWarning``) when the Bragg roughness of the grid's unresolved
+    waves has k h > 0.3 (:func:`check_scene` says the same with a suggested spacing).
+
+    Raises
+    ------
+    ValueError
+        ``[tracing] variant`` cannot run here (a CUDA variant without a CUDA GPU, or a
+        back end other than the one Mitsuba already runs in this process):
+        :func:`seaecho.backend.check_variant`, at the start rather than mid-run.
+    """
+    from .backend import check_variant
+    from .scattering.twoscale import check_spm_validity
+
+    try:
+        variant = check_variant(scene.tracing.variant)
+    except ValueError as exc:
+        raise ValueError(f"[tracing].variant: {exc}") from None
+    radar = build_radar(scene)
+    sea = sea_model = tracing = None
+    if radar.sea_clutter:
+        spectrum = sea_spectrum(scene)
+        sea = build_sea(scene, spectrum)
+        sea_model = build_sea_model(scene, spectrum=spectrum)
+        check_spm_validity(sea_model.k, sea_model.roughness_height_variance)
+        tracing = build_tracing(scene, base_dir, sea_model=sea_model)
+    hulls = build_hulls(scene, base_dir, variant=variant)
+    return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
+                            attrs=scene_attrs(scene), variant=variant, hulls=hulls)

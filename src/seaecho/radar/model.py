@@ -1,0 +1,138 @@
+"""What the radar stage needs, as plain values: :class:`RadarModel` and :class:`TargetSet`.
+
+:func:`seaecho.build.build_radar` fills these from a scene's ``[radar]``,
+``[transmitter]``, ``[receiver]`` and ``[[targets]]`` sections (degrees, dB and knots
+converted there); :class:`seaecho.radar.system.RadarSystem` works on them and never
+sees the scene.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .antennas import Antenna
+from .platforms import Platform
+from .pointing import Pointing
+from .waveform import Waveform
+
+
+@dataclass(frozen=True)
+class TargetSet:
+    """Point targets moving at constant velocity.
+
+    Attributes
+    ----------
+    positions : ndarray (K, 3)
+        Positions at t = 0 [m].
+    velocities : ndarray (K, 3)
+        Velocities [m/s].
+    scattering : ndarray (K, 2, 2) complex
+        Scattering amplitudes s_mn [m] in (h, v) order, m received, n transmitted,
+        ``|s_mn|^2`` the RCS [m^2] (docs/conventions.md).
+    names : tuple of str
+        Labels.
+    """
+
+    positions: NDArray[np.float64]
+    velocities: NDArray[np.float64]
+    scattering: NDArray[np.complex128]
+    names: tuple[str, ...]
+
+    def __len__(self) -> int:
+        return int(self.positions.shape[0])
+
+
+@dataclass(frozen=True)
+class RadarModel:
+    """Plain-valued description of a radar: carrier, pulses, platforms, antennas, receiver.
+
+    Attributes
+    ----------
+    carrier : float
+        Carrier frequency f_c [Hz].
+    sampling_rate : float
+        Complex baseband sampling rate f_s [Hz].
+    prf : float
+        Pulse repetition frequency [Hz].
+    n_pulses : int
+        Number of pulses.
+    start_time : float
+        Emission time of pulse 0 [s].
+    transmit_power : float
+        Peak transmit power P_t [W].
+    waveform : Waveform
+        The transmitted pulse.
+    tx, rx : Platform
+        Transmitter and receiver platforms (the same object when monostatic).
+    tx_antenna, rx_antenna : Antenna
+        Antenna patterns and ports.
+    tx_pointing, rx_pointing : Pointing
+        How each antenna's axes follow its platform.
+    channels : tuple of str
+        Channels "mn" (receive port m, transmit port n).
+    noise_figure_db : float
+        Receiver noise figure F [dB].
+    noise_bandwidth : float
+        Receiver noise bandwidth B_n [Hz].
+    thermal_noise : bool
+        Add k T0 F B_n noise to every pulse.
+    window_m : (float, float) or None
+        Receive window as ranges c tau / 2 [m]; None: cover the tile and the targets.
+    tile_size : (float, float) or None
+        Sea tile extents (Lx, Ly) [m] the automatic window covers; None without sea.
+    sea_clutter : bool
+        Whether the sea echoes (sets the automatic window).
+    targets : TargetSet or None
+        Point targets.
+    seed : int
+        The scene's seed (noise stream).
+    range_weighting : str
+        Matched-filter weighting ('none', 'hamming', 'taylor').
+    taylor_nbar : int
+        Taylor window nbar.
+    taylor_sidelobe_db : float
+        Taylor window peak sidelobe level below the peak [dB].
+    sea_update_pulses : int
+        The sea surface is recomputed every N pulses.
+    sigma_map_pulse : int
+        Pulse whose sigma maps a run saves.
+    """
+
+    carrier: float
+    sampling_rate: float
+    prf: float
+    n_pulses: int
+    start_time: float
+    transmit_power: float
+    waveform: Waveform
+    tx: Platform
+    rx: Platform
+    tx_antenna: Antenna
+    rx_antenna: Antenna
+    tx_pointing: Pointing
+    rx_pointing: Pointing
+    channels: tuple[str, ...]
+    noise_figure_db: float
+    noise_bandwidth: float
+    thermal_noise: bool
+    window_m: tuple[float, float] | None
+    tile_size: tuple[float, float] | None
+    sea_clutter: bool
+    targets: TargetSet | None
+    seed: int
+    range_weighting: str = "none"
+    taylor_nbar: int = 5
+    taylor_sidelobe_db: float = 35.0
+    sea_update_pulses: int = 1
+    sigma_map_pulse: int = 0
+
+    @property
+    def monostatic(self) -> bool:
+        """True when the receiver is the transmitter's platform and antenna."""
+        return self.rx is self.tx
+
+
+__all__ = ["RadarModel", "TargetSet"]

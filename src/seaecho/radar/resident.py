@@ -1,0 +1,279 @@
+"""The sea's echo of one pulse as one kernel on device-resident facets.
+
+The reference path of ``Simulation.sea_echo`` runs the sea's per-pulse stages one after
+the other, each a Dr.Jit kernel with numpy arrays in and out: facet frames and
+visibility (``FacetEngine.facets``), the speckled amplitudes (eqs P1-P4,
+``speckled_facet_amplitudes``), the radar equation (eqs R1, R3,
+``RadarSystem.scatterer_echo``). Between them every per-facet quantity goes to the host
+and back: on a GPU, over the bus; on the CPU, through single-threaded numpy copies that
+cost as much as the kernels (``docs/performance.md``).
+
+:class:`ResidentSea` evaluates the same functions (:func:`seaecho.radar.kernels.
+sea_echo_terms`) as one kernel per pulse on the back end of the scene's Mitsuba variant
+(``drjit.llvm`` on the CPU, ``drjit.cuda`` on a GPU):
+
+- what a held sea determines is copied to the device once per sea state: the grid's node
+  heights and velocities (the kernel computes each facet's centroid, area, normal and
+  velocity from its vertices, :func:`seaecho.geometry.mesh.facet_geometry_in`), the wake
+  damping and the speckle draws (read-only numpy arrays, :func:`seaecho.backend.resident`);
+  the occlusion masks stay on the device from the ray tracer to the kernel
+  (``FacetEngine.occlusion``);
+- per pulse only the platform states enter (opaque constants: no recompilation);
+- out come the delays and the channels' amplitudes of the facets that are visible and
+  inside the receive window, in facet order, each channel packed by the kernel into the
+  memory layout of a (K,) complex array. On the CPU they are numpy views of that memory
+  (no copy) for :func:`seaecho.radar.echo.accumulate`; on a GPU they stay there for
+  :func:`seaecho.radar.echo.accumulate_cuda`, and only the pulse's samples come back.
+
+The numbers are those of the reference path, bit for bit (the same operations on the
+same values; tests).
+"""
+
+from __future__ import annotations
+
+import weakref
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..backend import Boundary, drjit_namespace
+from ..geometry.mesh import facet_count, facet_geometry_in
+from ..scattering.facet import MODELS, mechanism_sigma, mechanisms
+from ..scattering.spectrum_table import BraggSpectrumTable
+from .kernels import facet_visibility, sea_echo_terms
+from .system import DeviceEcho, PulseGeometry, RadarSystem, ScattererEcho
+
+__all__ = ["ResidentSea", "resident_sea"]
+
+
+class ResidentSea:
+    """Per-pulse sea echo evaluated as one kernel (module docstring).
+
+    Parameters
+    ----------
+    radar : RadarSystem
+        Antennas, channels, carrier, receive window.
+    facet_model : tuple
+        ``SeaModel.facet_model``: (k [rad/m], eps_r [-], Bragg spectrum table, mss_upwind,
+        mss_crosswind [-], wind_direction [rad]).
+    variant : str, optional
+        Mitsuba variant: ``drjit.llvm`` for ``llvm_*`` (default), ``drjit.cuda`` for
+        ``cuda_*`` (:func:`seaecho.backend.drjit_namespace`, which refuses a variant that
+        differs from the one Mitsuba runs).
+    model : {"blend", "kirchhoff", "spm"}
+        Scattering model (as ``speckled_facet_amplitudes``).
+    cox_munk : CoxMunkParameters, optional
+        Cox-Munk slopes for the specular part.
+
+    Raises
+    ------
+    ValueError
+        A variant that cannot run here, or a spectrum that is not a
+        :class:`~seaecho.scattering.spectrum_table.BraggSpectrumTable` (a kernel needs
+        the tabulated spectrum).
+    """
+
+    def __init__(self, radar: RadarSystem, facet_model: tuple, *, variant: str | None = None,
+                 model: str = "blend", cox_munk=None) -> None:
+        if model not in MODELS:
+            raise ValueError(f"model = {model!r}: choose from {MODELS}")
+        k, eps_r, spectrum, mss_u, mss_c, wind = facet_model
+        if not isinstance(spectrum, BraggSpectrumTable):
+            raise ValueError("ResidentSea needs the Bragg spectrum as a BraggSpectrumTable")
+        if np.ndim(mss_u) or np.ndim(mss_c):
+            raise ValueError("ResidentSea takes the sub-facet slope variances as numbers")
+        self.xp = drjit_namespace(variant)
+        self.radar = radar
+        self.model = model
+        self.cox_munk = cox_munk
+        self._values = (float(k), complex(eps_r), spectrum, float(mss_u), float(mss_c),
+                        float(wind))
+        self._lo, self._hi = radar.window.bounds(radar.waveform.n_samples)
+        self._surface: tuple[weakref.ref, dict] | None = None
+
+    def _mechanisms(self, io: Boundary, damping: Any):
+        """``(n_i, n_s, N) -> mechanisms`` with the sea's values as kernel constants."""
+        xp = self.xp
+        k, eps_r, table, mss_u, mss_c, wind = self._values
+
+        def lookup(kx, ky):
+            return table.lookup(xp, kx, ky)
+
+        consts = dict(k=xp.const(k), eps_r=xp.cconst(eps_r), spectrum=lookup,
+                      mss_upwind=xp.const(mss_u), mss_crosswind=xp.const(mss_c),
+                      cos_wind=xp.const(np.cos(wind)), sin_wind=xp.const(np.sin(wind)),
+                      damping=None if damping is None else io.array(damping))
+
+        def of(n_i, n_s, normal):
+            return mechanisms(xp, n_i, n_s, normal, **consts, model=self.model,
+                              cox_munk=self.cox_munk)
+        return of
+
+    @staticmethod
+    def n_facets(surface) -> int:
+        """Number of facets of a surface state's grid [-]."""
+        return facet_count(np.size(surface.x), np.size(surface.y))
+
+    def _nodes(self, surface) -> dict[str, Any]:
+        """The surface's node arrays on the device (copied once per surface state)."""
+        if self._surface is not None and self._surface[0]() is surface:
+            return self._surface[1]
+        xp = self.xp
+        io = Boundary(xp)
+        nodes = dict(x=io.array(surface.x), y=io.array(surface.y),
+                     z=io.array(np.asarray(surface.elevation, dtype=np.float64).reshape(-1)),
+                     v=io.vec3(np.asarray(surface.velocity, dtype=np.float64).reshape(-1, 3)))
+        xp.eval(*nodes.values())
+        nodes["keep"] = io._keep  # the aligned buffers the LLVM back end aliases
+        self._surface = (weakref.ref(surface), nodes)
+        return nodes
+
+    def echo(self, geometry: PulseGeometry, surface, hidden: tuple,
+             draws: tuple[NDArray, NDArray], damping: NDArray | None = None
+             ) -> ScattererEcho | DeviceEcho:
+        """The sea facets' echo of one pulse.
+
+        Parameters
+        ----------
+        geometry : PulseGeometry
+            Platform states and antenna axes of the pulse.
+        surface : seaecho.sea.SurfaceState
+            The held surface (``x``, ``y``, ``elevation``, ``velocity`` on the grid); its
+            nodes are copied to the device once, the facets' centroids, areas, normals
+            and velocities are computed in the kernel
+            (:func:`seaecho.geometry.mesh.facet_geometry_in`).
+        hidden : (hidden_tx, hidden_rx)
+            Occlusion masks (``FacetEngine.occlusion``), device arrays or numpy.
+        draws : (g_K, g_B)
+            Speckle draws of the sea state (N,) complex each (eq P4).
+        damping : (N,) array, optional
+            Turbulent-wake damping in [0, 1].
+
+        Returns
+        -------
+        ScattererEcho
+            On the CPU: ``tau`` and ``amplitudes`` (a list of C (K,) complex arrays) of
+            the visible facets inside the window, numpy views of the kernel's output
+            (ranges and gains are None).
+        DeviceEcho
+            On a GPU: the same, left on the device.
+        """
+        xp = self.xp
+        nx, ny = np.size(surface.x), np.size(surface.y)
+        n = facet_count(nx, ny)
+        nodes = self._nodes(surface)
+        io = Boundary(xp, n)
+        facets = facet_geometry_in(xp, nodes["x"], nodes["y"], nodes["z"], nodes["v"], nx, ny)
+        facets.update(hidden_tx=self._mask(hidden[0]), hidden_rx=self._mask(hidden[1]))
+        g_k, g_b = draws
+        if np.shape(g_k) != (n,) or np.shape(g_b) != (n,):
+            raise ValueError(f"draws of shape {np.shape(g_k)}, {np.shape(g_b)}: need "
+                             f"({n},) each")
+        g = {"specular": io.complex(g_k), "bragg": io.complex(g_b)}
+        t = sea_echo_terms(xp, self.radar, geometry, facets, self._mechanisms(io, damping), g,
+                           self._lo, self._hi)
+        c = len(t["amplitudes"])
+        # Each channel packed as the memory of a complex (N,) array, in the kernel (one
+        # buffer per channel: scatters into distinct arrays share the kernel)
+        idx = xp.arange(n)
+        packed = []
+        for a in t["amplitudes"]:
+            buf = xp.empty(2 * n)
+            xp.scatter(buf, xp.pair(xp.real(a), xp.imag(a)), idx)
+            packed.append(buf)
+        tau, keep = t["tau"], t["keep"]
+        xp.eval(tau, keep, *packed)
+        kept = xp.count(keep)
+        if kept < n:  # hidden facets or echoes outside the window: compacted in order
+            sel = xp.compress(keep)
+            tau = xp.gather(tau, sel)
+            out, j = [], xp.arange(kept)
+            for buf in packed:
+                new = xp.empty(2 * kept)
+                xp.scatter(new, xp.gather(buf, sel, dtype=xp.module.Array2f64), j)
+                out.append(new)
+            packed = out
+            xp.eval(tau, *packed)
+            n = kept
+        if xp.name == "cuda":
+            return DeviceEcho(xp, tau, tuple(packed), c)
+        amplitudes = [xp.host(b).view(np.complex128) for b in packed]
+        return ScattererEcho(xp.host(tau), amplitudes, None, None, None, None, None, None)
+
+    def sigma_cells(self, geometry: PulseGeometry, surface, hidden: tuple,
+                    damping: NDArray | None = None) -> tuple[NDArray, NDArray]:
+        """NRCS of each grid cell and its visibility, as one kernel (the sigma map).
+
+        The quantities of ``SeaEcho.sigma0_cells`` and ``Facets.cell_mean("visibility")``
+        of the reference path: per facet ``sigma_mn`` (eq P3,
+        :func:`seaecho.scattering.facet.mechanism_sigma`) times the visibility, times the
+        area, summed over the cell's two triangles and divided by the cell's horizontal
+        area.
+
+        Parameters
+        ----------
+        geometry, surface, hidden, damping
+            As :meth:`echo`.
+
+        Returns
+        -------
+        sigma0 : ndarray (4, ny - 1, nx - 1)
+            HH, HV, VH, VV per unit horizontal area [m^2/m^2].
+        visibility : ndarray (ny - 1, nx - 1)
+            Mean of the two triangles' visibility [-].
+        """
+        xp = self.xp
+        nx, ny = np.size(surface.x), np.size(surface.y)
+        n = facet_count(nx, ny)
+        nodes = self._nodes(surface)
+        io = Boundary(xp, n)
+        facets = facet_geometry_in(xp, nodes["x"], nodes["y"], nodes["z"], nodes["v"], nx, ny)
+        facets.update(hidden_tx=self._mask(hidden[0]), hidden_rx=self._mask(hidden[1]))
+        visible, n_i, n_s = facet_visibility(xp, geometry, facets)
+        vis = xp.select(visible, xp.const(1.0), xp.const(0.0))
+        sigma = mechanism_sigma(xp, self._mechanisms(io, damping)(n_i, n_s, facets["normal"]))
+        sig, vis_h, area = io.numpy(sigma, vis, facets["area"])
+        rcs = sig.reshape(n, 4) * vis_h[:, None] * area[:, None]  # [m^2] per facet
+        grid = (ny - 1, nx - 1, 2)
+        dx = float(surface.x[1] - surface.x[0])
+        dy = float(surface.y[1] - surface.y[0])
+        sigma0 = np.moveaxis(rcs.reshape(grid + (4,)).sum(axis=2), -1, 0) / (dx * dy)
+        return sigma0, vis_h.reshape(grid).mean(axis=2)
+
+    def _mask(self, hidden: Any) -> Any:
+        if isinstance(hidden, np.ndarray):
+            return self.xp.Bool(np.ascontiguousarray(hidden, dtype=bool))
+        return hidden
+
+
+def resident_sea(radar: RadarSystem, tracing, sea_model) -> ResidentSea | None:
+    """The fused sea echo of a simulation, or None where the reference path runs.
+
+    The kernel covers ray-traced facets (visibility = facing and not occluded). Analytic
+    facets (Smith's statistical visibility) and the sub-facet shadowing are evaluated by
+    numpy functions of the geometry stage, so those scenes keep the reference path, as
+    do machines where Dr.Jit's CPU back end does not run.
+
+    Parameters
+    ----------
+    radar : RadarSystem
+    tracing : seaecho.tracing.model.TracingModel or None
+    sea_model : seaecho.scattering.sea_model.SeaModel or None
+
+    Raises
+    ------
+    ValueError
+        A ``[tracing] variant`` that cannot run here (a CUDA variant without a GPU, or one
+        that differs from the variant Mitsuba already runs): at the start of a run.
+    """
+    from ..backend import check_variant, drjit_available
+
+    if tracing is None or sea_model is None:
+        return None
+    variant = check_variant(tracing.variant)  # a clear error now, not mid-run
+    if tracing.mode != "raytraced" or tracing.subfacet is not None:
+        return None
+    if variant.startswith("llvm") and not drjit_available():
+        return None
+    return ResidentSea(radar, sea_model.facet_model, variant=variant)

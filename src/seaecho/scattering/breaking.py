@@ -1,0 +1,575 @@
+"""Scattering by breaking waves (non-Bragg, nearly polarisation-independent).
+
+Third mechanism beside Kirchhoff/GO and Bragg (SPM, two-scale), from the semi-empirical
+model of Kudryavtsev, Hauser, Caudal & Chapron (2003) ("KHCC03" below), as restated by
+Kudryavtsev, Akimov, Johannessen & Chapron (2005) ("K05"). The sea is split into the
+"regular" surface (Bragg + specular scattering, seaecho's own models) and the areas of
+breaking zones, which cover a fraction ``q`` of the surface and scatter like very rough,
+steep facets:
+
+.. math::
+    \\sigma_0 = (\\sigma_{br} + \\sigma_{sp})(1 - q) + \\sigma_{wb}\\, q
+    \\qquad \\text{(KHCC03 eq 1; K05 eq 1)}                                   (BR1)
+
+**NRCS of a breaking zone** (KHCC03 eq 60), monostatic, incidence ``theta``:
+
+.. math::
+    \\sigma_{0wb}(\\theta) = \\frac{\\sec^4\\theta}{s_{wb}^2}
+    \\exp\\left(-\\frac{\\tan^2\\theta}{s_{wb}^2}\\right) + \\frac{\\varepsilon_{wb}}{s_{wb}^2}
+    \\qquad s_{wb}^2 = 0.19,\\ \\varepsilon_{wb} = 0.005                      (BR2)
+
+The first term is geometric optics (Barrick's eq K1 with unit reflectivity) on the
+enhanced roughness of the breaking zone, an isotropic Gaussian of total mean square slope
+``s_wb^2``; the second is the return of the breaker front (thickness-to-length ratio
+``eps_wb``), which dominates at large incidence. The zones are tilted forward by
+``theta_wb = 0.05`` on average (KHCC03 sec. 5; K05 eq 29), which gives an upwind/downwind
+asymmetry.
+
+**Fraction of breaking zones** (KHCC03 eq 56; K05 eq 27), from Phillips' (1985)
+distribution of the length of breaking fronts ``Lambda(k, phi)`` (``Lambda k dk dphi`` is
+the length of fronts per unit area of waves in ``dk dphi``):
+
+.. math::
+    q = c_q \\int_{k < k_{wb}} \\Lambda(k, \\varphi)\\, dk\\, d\\varphi,\\qquad
+    \\Lambda = \\frac{1}{2k}\\left(\\frac{B}{\\alpha}\\right)^{n+1}
+    = \\frac{1}{2k}\\,\\beta_\\nu^{(n+1)/n}                                     (BR3)
+
+``c_q = 10.5``; only breakers longer than ten radar wavelengths count and not shorter
+than 0.3 m, ``k_wb = min(0.1 k_r, 2 pi / 0.3)`` (KHCC03 sec. 5; K05, above eq 19). The
+second form holds in the equilibrium range of the KHCC03 spectrum, where the wind input
+balances the dissipation, ``B = alpha beta_nu^(1/n)`` (KHCC03 sec. 3), with the wind
+growth rate (K05 eq 17; KHCC03 eqs 19-21)
+
+.. math::
+    \\beta = C_\\beta \\left(\\frac{u_*}{c}\\right)^2 \\cos\\varphi|\\cos\\varphi|,\\quad
+    C_\\beta = 1.5\\frac{\\rho_a}{\\rho_w}\\left(\\frac{1}{\\kappa}\\ln\\frac{\\pi}{k z_0}
+    - \\frac{c}{u_*}\\right),\\quad
+    z_0 = 0.018\\frac{u_*^2}{g} + 0.1\\frac{\\nu_a}{u_*}                       (BR4)
+
+``beta_nu = beta - 4 nu k^2 / omega`` (viscous loss), ``n = 5`` for gravity waves (a
+smooth step to 1 above ``k_gamma / 4``, KHCC03 sec. 3), ``u_* = U10 sqrt(C_D)`` with
+``C_D = (0.8 + 0.065 U10) 1e-3`` (Wu 1982). ``q`` therefore depends only on the wind
+speed and the radar wavenumber: it is the KHCC03 model's own value, not a property of
+the wave spectrum used for the Bragg part.
+
+Bistatic generalisation (ours; no published bistatic KHCC model was found)
+--------------------------------------------------------------------------
+BR2 is geometric optics, so it generalises exactly like eq K1: the specular facets of a
+bistatic geometry have the normal ``N_sp = q / |q|`` (``q = k (n_s - n_i)``), of slopes
+``Z`` relative to the mean (or facet) plane, and
+
+.. math::
+    \\sigma_{wb} = \\frac{\\pi}{(N_{sp}\\cdot N_t)^4}\\,P_{wb}(\\mathbf Z)
+    + \\frac{\\varepsilon_{wb}}{s_{wb}^2},\\qquad
+    P_{wb} = \\frac{1}{\\pi s_{wb}^2}\\exp\\left(-\\frac{|\\mathbf Z|^2}{s_{wb}^2}\\right),
+    \\quad N_t = \\cos\\epsilon\\, N + \\sin\\epsilon\\, \\hat e_u,\\
+    \\epsilon = \\theta_{wb} A_{wb}                                              (BR5)
+
+with ``Z`` the slopes of ``N_sp`` relative to the plane of normal ``N_t``; it reduces to
+BR2 at backscatter without tilt (``|Z| = tan theta``, ``N_sp . N = cos theta``). The
+zones' plane ``N_t`` leans towards the wind direction ``e_u`` by ``theta_wb`` times
+``A_wb``, the Lambda-weighted mean cosine of the breaking direction (KHCC03 sec. 5): at
+backscatter in the wind plane BR5 is ``sigma_0wb(theta -+ epsilon)``, whose first order
+is KHCC03's ``sigma_0wb (1 + M_wb theta_wb A_wb cos phi)`` (``M_wb = d ln sigma_0wb /
+d theta``), and upwind looks (radar downwind of the patch) see the forward faces, as
+they should. The front term ``eps_wb / s_wb^2`` is kept
+isotropic (it counts wherever Tx and Rx are both above the plane); this is the part of
+the generalisation that has no support in data away from backscatter.
+
+**Polarisation.** KHCC03 treat breaking as non-polarised: ``sigma_wb`` is the same in HH
+and VV and carries no cross-polarisation at backscatter (its constants absorb the
+reflectivity). In FSA bases we use the specular-facet matrix of eq K2 with a unit,
+polarisation-independent reflection,
+
+.. math::
+    \\mathsf T = \\mathsf A_s^T\\, \\mathrm{diag}(-1, 1)\\, \\mathsf A_i,\\qquad
+    \\sigma_{wb,mn} = \\sigma_{wb} |T_{mn}|^2                                   (BR6)
+
+(``R_h = -R_v`` is the normal-incidence limit of the Fresnel coefficients of any
+medium): ``|T_hh| = |T_vv| = 1`` and ``T_hv = T_vh = 0`` at backscatter and in the plane
+of incidence, and out of the plane the polarisation bases of the bisector facet rotate
+power into the cross channels exactly as geometric optics does. The cross-polarised
+breaking term of Kudryavtsev et al. (2019) is not included.
+
+Time behaviour (for the per-facet use)
+--------------------------------------
+Breaking zones are carried by the breaking waves: their scatterers move at the phase
+speed ``c(k)`` of the breakers in their direction, so the Lambda-weighted mean speed and
+direction (:func:`breaking_statistics`) give the Doppler shift of the breaking
+component, and each breaker lives for roughly one period of its wave (active breaking
+lasts about one wave period in the laboratory, Rapp & Melville 1990). The speckle of
+the breaking component is independent of the Bragg and specular speckle (distinct
+scatterers).
+
+References
+----------
+.. [1] Kudryavtsev, V., Hauser, D., Caudal, G. and Chapron, B. (2003). A semiempirical
+   model of the normalized radar cross-section of the sea surface, 1. Background model.
+   *J. Geophys. Res.* 108(C3), 8054, doi:10.1029/2001JC001003.
+.. [2] Kudryavtsev, V., Akimov, D., Johannessen, J. and Chapron, B. (2005). On radar
+   imaging of current features: 1. Model and comparison with observations.
+   *J. Geophys. Res.* 110, C07016, doi:10.1029/2004JC002505.
+.. [3] Phillips, O. M. (1985). Spectral and statistical properties of the equilibrium
+   range in wind-generated gravity waves. *J. Fluid Mech.* 156, 505-531.
+.. [4] Wu, J. (1982). Wind-stress coefficients over sea surface from breeze to hurricane.
+   *J. Geophys. Res.* 87(C12), 9704-9706.
+.. [5] Rapp, R. J. and Melville, W. K. (1990). Laboratory measurements of deep-water
+   breaking waves. *Phil. Trans. R. Soc. Lond. A* 331, 735-800.
+.. [6] Kudryavtsev, V., Fan, S., Zhang, B., Mouche, A. and Chapron, B. (2019). On
+   quad-polarized SAR measurements of the ocean surface. *IEEE Trans. Geosci. Remote
+   Sens.* 57(11), 8362-8370.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..constants import RHO_SEA_WATER, SURFACE_TENSION_OVER_DENSITY, G
+from . import frames
+
+#: Mean square slope of the enhanced roughness of breaking zones s_wb^2 [-] (KHCC03).
+S_WB2 = 0.19
+#: Ratio of the breaker thickness to its length eps_wb [-] (KHCC03).
+EPS_WB = 5.0e-3
+#: Mean tilt of the breaking zones theta_wb [rad] (KHCC03).
+THETA_WB = 5.0e-2
+#: Constant of the fraction of breaking zones c_q [-] (KHCC03 eq 56).
+C_Q = 10.5
+#: Exponent n of the dissipation term in the gravity range n_g [-] (KHCC03).
+N_GRAVITY = 5.0
+#: Breakers shorter than 1 / B_R radar wavelengths do not scatter as zones [-] (KHCC03).
+B_R = 0.1
+#: Shortest breakers counted [rad/m]: wavelength 0.3 m (K05, above eq 19).
+K_WB_MAX = 2.0 * np.pi / 0.3
+#: von Karman constant in C_beta [-] (KHCC03).
+KAPPA_VK = 0.4
+#: Charnock constant and smooth-flow constant of z0 [-] (KHCC03 eq 21).
+A_CHARNOCK = 0.018
+A_SMOOTH = 0.1
+#: Air density [kg/m^3] and kinematic viscosity of air [m^2/s] (15 degC).
+RHO_AIR = 1.225
+NU_AIR = 1.47e-5
+#: Kinematic viscosity of sea water [m^2/s] (20 degC).
+NU_WATER = 1.05e-6
+
+
+# --- wind and waves (BR4) -----------------------------------------------------------
+
+def friction_velocity(u10: ArrayLike) -> NDArray:
+    """Friction velocity ``u_* = U10 sqrt(C_D)``, ``C_D = (0.8 + 0.065 U10) 1e-3`` [m/s].
+
+    Parameters
+    ----------
+    u10 : array_like
+        Wind speed at 10 m [m/s].
+
+    References
+    ----------
+    .. [1] Wu (1982), the drag law used by KHCC03 and K05.
+    """
+    u = np.asarray(u10, dtype=float)
+    return u * np.sqrt((0.8 + 0.065 * u) * 1e-3)
+
+
+def roughness_length(u_star: ArrayLike) -> NDArray:
+    """Aerodynamic roughness ``z0 = 0.018 u*^2 / g + 0.1 nu_a / u*`` [m] (KHCC03 eq 21)."""
+    us = np.asarray(u_star, dtype=float)
+    return A_CHARNOCK * us**2 / G + A_SMOOTH * NU_AIR / np.maximum(us, 1e-12)
+
+
+def phase_speed(k: ArrayLike) -> NDArray:
+    """Deep-water phase speed of gravity-capillary waves ``sqrt(g/k + tau k)`` [m/s]."""
+    k = np.asarray(k, dtype=float)
+    return np.sqrt(G / k + SURFACE_TENSION_OVER_DENSITY * k)
+
+
+def wind_growth_rate(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
+    """Wind growth rate ``beta`` of waves of wavenumber ``k`` travelling at ``phi`` [-].
+
+    ``beta = C_beta (u_*/c)^2 cos(phi) |cos(phi)|`` with ``C_beta`` of eq BR4 clipped at 0
+    (waves faster than the wind do not grow); the energy growth rate is ``beta omega``.
+
+    Parameters
+    ----------
+    k : array_like
+        Wavenumber [rad/m].
+    phi : array_like
+        Direction of travel relative to the direction the wind blows towards [rad].
+    u10 : float
+        Wind speed at 10 m [m/s].
+
+    References
+    ----------
+    .. [1] K05 eq 17; KHCC03 eqs 19-21.
+    """
+    k = np.asarray(k, dtype=float)
+    us = float(friction_velocity(u10))
+    z0 = float(roughness_length(us))
+    c = phase_speed(k)
+    # Eq BR4: C_beta and beta.
+    c_beta = 1.5 * (RHO_AIR / RHO_SEA_WATER) * (np.log(np.pi / (k * z0)) / KAPPA_VK - c / us)
+    cp = np.cos(np.asarray(phi, dtype=float))
+    return np.maximum(c_beta, 0.0) * (us / c) ** 2 * cp * np.abs(cp)
+
+
+def dissipation_exponent(k: ArrayLike) -> NDArray:
+    """Exponent ``n(k)`` of the KHCC03 dissipation term [-]: ``n_g = 5`` for gravity waves.
+
+    ``1/n = (1 - 1/n_g) f + 1/n_g``, ``f = (1 + tanh(2 ln(k / k_b))) / 2``,
+    ``k_b = k_gamma / 4``, ``k_gamma = sqrt(g / tau)`` (KHCC03 sec. 3; n -> 1 for
+    capillary waves).
+    """
+    k = np.asarray(k, dtype=float)
+    k_b = 0.25 * np.sqrt(G / SURFACE_TENSION_OVER_DENSITY)
+    f = 0.5 * (1.0 + np.tanh(2.0 * np.log(k / k_b)))
+    return 1.0 / ((1.0 - 1.0 / N_GRAVITY) * f + 1.0 / N_GRAVITY)
+
+
+def breaking_front_density(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
+    """Phillips' distribution of breaking fronts ``Lambda(k, phi)`` [m] (eq BR3).
+
+    ``Lambda k dk dphi`` is the length of breaking fronts per unit area [1/m] of the
+    waves in ``dk dphi``; in the equilibrium range of the KHCC03 spectrum
+    ``Lambda = (1/2k) beta_nu^((n+1)/n)``, ``beta_nu = beta - 4 nu k^2 / omega``.
+
+    Parameters
+    ----------
+    k : array_like
+        Wavenumber [rad/m].
+    phi : array_like
+        Direction of travel relative to the wind [rad].
+    u10 : float
+        Wind speed at 10 m [m/s].
+
+    References
+    ----------
+    .. [1] Phillips (1985); KHCC03 sec. 5 (their Lambda and eq 56); K05 eq 27.
+    """
+    k = np.asarray(k, dtype=float)
+    omega = k * phase_speed(k)
+    beta_nu = wind_growth_rate(k, phi, u10) - 4.0 * NU_WATER * k**2 / omega
+    n = dissipation_exponent(k)
+    # Eq BR3 (equilibrium form).
+    return np.maximum(beta_nu, 0.0) ** ((n + 1.0) / n) / (2.0 * k)
+
+
+@dataclass(frozen=True)
+class BreakingStatistics:
+    """Breaking zones seen by a radar of wavenumber ``k_radar`` at wind ``u10``.
+
+    Attributes
+    ----------
+    q : float
+        Fraction of the surface covered by breaking zones [-] (eq BR3).
+    mean_direction : float
+        ``A_wb``: Lambda-weighted mean cosine of the breaking direction relative to the
+        wind [-] (KHCC03 sec. 5); the zones lean towards the wind by ``theta_wb A_wb``.
+    mean_phase_speed : float
+        Lambda-weighted mean phase speed of the breakers [m/s]: the speed of the
+        breaking scatterers (their Doppler shift).
+    mean_period : float
+        Lambda-weighted mean wave period ``2 pi / omega`` of the breakers [s]: the order
+        of a breaker's lifetime (Rapp & Melville 1990).
+    k_wb : float
+        Largest wavenumber of the breakers counted [rad/m].
+    """
+
+    q: float
+    mean_direction: float
+    mean_phase_speed: float
+    mean_period: float
+    k_wb: float
+
+
+def breaking_wavenumber_limit(k_radar: float) -> float:
+    """``k_wb = min(0.1 k_r, 2 pi / 0.3 m)`` [rad/m] (KHCC03 sec. 5; K05 above eq 19)."""
+    return float(min(B_R * k_radar, K_WB_MAX))
+
+
+def breaking_statistics(u10: float, k_radar: float) -> BreakingStatistics:
+    """Fraction of breaking zones and breaker kinematics (eq BR3).
+
+    Parameters
+    ----------
+    u10 : float
+        Wind speed at 10 m [m/s], > 0.
+    k_radar : float
+        Radar (electromagnetic) wavenumber [rad/m], > 0.
+
+    Returns
+    -------
+    BreakingStatistics
+
+    References
+    ----------
+    .. [1] KHCC03 eq 56 and sec. 5; K05 eq 27.
+    """
+    if not (np.isfinite(u10) and u10 > 0.0):
+        raise ValueError(f"u10 = {u10!r} m/s: must be a finite number > 0")
+    if not (np.isfinite(k_radar) and k_radar > 0.0):
+        raise ValueError(f"k_radar = {k_radar!r} rad/m: must be a finite number > 0")
+    return _statistics(round(float(u10), 9), breaking_wavenumber_limit(float(k_radar)))
+
+
+@lru_cache(maxsize=256)
+def _statistics(u10: float, k_wb: float) -> BreakingStatistics:
+    # log-spaced k from far below any spectral peak; C_beta clipping ends the integrand
+    # where the waves outrun the wind.
+    lk = np.linspace(np.log(1e-3), np.log(k_wb), 1201)
+    k = np.exp(lk)
+    x, w = np.polynomial.legendre.leggauss(64)
+    phi = 0.5 * np.pi * x  # beta = 0 outside |phi| < pi/2
+    wphi = 0.5 * np.pi * w
+    lam = breaking_front_density(k[:, None], phi[None, :], u10)  # (nk, nphi)
+    # dk = k dlnk; trapezoid in ln k.
+    wk = np.gradient(lk) * k
+    wk[[0, -1]] *= 0.5
+    lam_k = lam * wk[:, None] * wphi[None, :]
+    total = float(lam_k.sum())
+    q = C_Q * total
+    if total <= 0.0:
+        return BreakingStatistics(0.0, 0.0, 0.0, 0.0, k_wb)
+    a_wb = float((lam_k * np.cos(phi)[None, :]).sum() / total)
+    c = phase_speed(k)
+    c_mean = float((lam_k.sum(axis=1) * c).sum() / total)
+    period = float((lam_k.sum(axis=1) * 2.0 * np.pi / (k * c)).sum() / total)
+    return BreakingStatistics(q, a_wb, c_mean, period, k_wb)
+
+
+# --- NRCS of breaking zones (BR2, BR5, BR6) --------------------------------------------
+
+def breaking_nrcs_monostatic(theta: ArrayLike) -> NDArray:
+    """NRCS of a breaking zone at backscatter, incidence ``theta`` [rad] (KHCC03 eq 60).
+
+    Returns ``sec^4 t / s_wb^2 exp(-tan^2 t / s_wb^2) + eps_wb / s_wb^2`` [m^2/m^2]
+    (eq BR2), the same for HH and VV, without the mean tilt.
+    """
+    t = np.asarray(theta, dtype=float)
+    c = np.cos(t)
+    tan2 = np.where(c > 1e-9, np.tan(t) ** 2, np.inf)
+    spec = np.where(c > 1e-9, np.exp(np.minimum(-tan2 / S_WB2 - 4.0 * np.log(np.maximum(c, 1e-300)),
+                                                700.0)) / S_WB2, 0.0)
+    # Eq BR2.
+    return spec + EPS_WB / S_WB2
+
+
+def _in_plane_axes(normal: NDArray, wind_direction: ArrayLike) -> tuple[NDArray, NDArray]:
+    """Downwind unit vector in the plane of ``normal`` and ``e_c = N x e_u``."""
+    w = np.asarray(wind_direction, dtype=float)
+    u = np.stack([np.cos(w), np.sin(w), np.zeros_like(w)], axis=-1)
+    e_u = u - np.einsum("...i,...i->...", u, normal)[..., None] * normal
+    e_u = e_u / np.linalg.norm(e_u, axis=-1, keepdims=True)
+    return e_u, np.cross(normal, e_u)
+
+
+def breaking_amplitude(
+    n_i: ArrayLike,
+    n_s: ArrayLike,
+    normal: ArrayLike = frames.Z_HAT,
+    wind_direction: ArrayLike = 0.0,
+    mean_direction: ArrayLike = 0.0,
+    theta_wb: float = THETA_WB,
+) -> NDArray:
+    """Amplitude matrix ``W`` of breaking zones, ``sigma_wb,mn = |W_mn|^2`` (BR5-BR6).
+
+    Parameters
+    ----------
+    n_i, n_s : array_like, shape (..., 3)
+        Unit incident and scattered directions [-], world frame.
+    normal : array_like, shape (..., 3)
+        Unit normal of the plane the breaking zones sit on (+z, or a facet normal) [-].
+    wind_direction : array_like
+        Direction the wind blows towards, CCW from +x [rad].
+    mean_direction : array_like
+        ``A_wb`` of :class:`BreakingStatistics` [-] (0 removes the tilt asymmetry).
+    theta_wb : float
+        Mean tilt of the zones [rad].
+
+    Returns
+    -------
+    ndarray of complex, shape (..., 2, 2)
+        ``W`` in the global (+z) FSA bases, (h, v) order [-] (real-valued phase-free
+        amplitudes: the speckle phase is drawn by the caller).
+
+    References
+    ----------
+    .. [1] KHCC03 eq 60 (monostatic limit); this module's docstring (BR5, BR6).
+    """
+    n_i = np.asarray(n_i, dtype=float)
+    n_s = np.asarray(n_s, dtype=float)
+    shape = np.broadcast_shapes(n_i.shape, n_s.shape, np.shape(normal))
+    nn = np.broadcast_to(np.asarray(normal, dtype=float), shape)
+    d = n_s - n_i
+    dn = np.linalg.norm(d, axis=-1, keepdims=True)
+    n_sp = np.where(dn > 1e-12, d / np.maximum(dn, 1e-300), nn)
+    lit = (np.einsum("...i,...i->...", n_i, nn) < -1e-12) & (
+        np.einsum("...i,...i->...", n_s, nn) > 1e-12)
+    # Mean tilt: the zones' plane leans towards the wind by eps = theta_wb A_wb.
+    e_u, e_c = _in_plane_axes(nn, wind_direction)
+    eps = theta_wb * np.asarray(mean_direction, dtype=float)
+    nt = np.cos(eps)[..., None] * nn + np.sin(eps)[..., None] * e_u
+    e_t = np.cos(eps)[..., None] * e_u - np.sin(eps)[..., None] * nn
+    cos_n = np.einsum("...i,...i->...", n_sp, nt)
+    cn = np.maximum(cos_n, 1e-12)
+    z_u = -np.einsum("...i,...i->...", n_sp, e_t) / cn
+    z_c = -np.einsum("...i,...i->...", n_sp, e_c) / cn
+    # Eq BR5: isotropic Gaussian slopes about the tilted plane, pi / cos^4 P; plus the
+    # front term.
+    log_spec = -(z_u**2 + z_c**2) / S_WB2 - np.log(S_WB2) - 4.0 * np.log(cn)
+    spec = np.where(cos_n > 1e-12, np.exp(np.minimum(log_spec, 700.0)), 0.0)
+    sigma = np.where(lit, spec + EPS_WB / S_WB2, 0.0)
+    # Eq BR6: T = A_s^T diag(-1, 1) A_i with the bases of the bisector facet.
+    a_i, a_s = frames.tilt_rotation(n_i, n_s, n_sp)
+    t = np.einsum("...ji,...j,...jl->...il", a_s, np.array([-1.0, 1.0]), a_i)
+    return (np.sqrt(sigma)[..., None, None] * t).astype(complex)
+
+
+def breaking_sigma(
+    n_i: ArrayLike,
+    n_s: ArrayLike,
+    normal: ArrayLike = frames.Z_HAT,
+    wind_direction: ArrayLike = 0.0,
+    mean_direction: ArrayLike = 0.0,
+    theta_wb: float = THETA_WB,
+) -> NDArray:
+    """NRCS of breaking zones ``sigma_wb,mn`` [m^2/m^2], shape (..., 4), HH, HV, VH, VV.
+
+    Per unit area *of breaking zones*: multiply by ``q`` for the sea (eq BR1). See
+    :func:`breaking_amplitude` for the parameters.
+    """
+    w = breaking_amplitude(n_i, n_s, normal, wind_direction, mean_direction, theta_wb)
+    s = w.real**2 + w.imag**2
+    return s.reshape(s.shape[:-2] + (4,))
+
+
+def add_breaking(sigma_regular: ArrayLike, sigma_wb: ArrayLike, q: ArrayLike) -> NDArray:
+    """Eq BR1: ``(1 - q) sigma_regular + q sigma_wb`` channel by channel [m^2/m^2].
+
+    Parameters
+    ----------
+    sigma_regular : array_like, shape (..., 4)
+        Bragg + specular scattering of the regular surface (any seaecho model).
+    sigma_wb : array_like, shape (..., 4)
+        :func:`breaking_sigma`.
+    q : array_like
+        Fraction of breaking zones [-], broadcast against the leading axes.
+    """
+    qq = np.asarray(q, dtype=float)[..., None]
+    # Eq BR1.
+    return (1.0 - qq) * np.asarray(sigma_regular) + qq * np.asarray(sigma_wb)
+
+
+def breaking_sigma_mean_plane(
+    theta_i: ArrayLike,
+    phi_i: ArrayLike,
+    theta_s: ArrayLike,
+    phi_s: ArrayLike,
+    u10: float,
+    k_radar: float,
+    wind_direction: float = 0.0,
+) -> tuple[NDArray, float]:
+    """Mean-plane ``sigma_wb,mn`` (per unit area of zones) and the fraction ``q``.
+
+    Parameters
+    ----------
+    theta_i, phi_i, theta_s, phi_s : array_like
+        Mean-plane angles [rad] (:func:`frames.directions_from_angles`).
+    u10 : float
+        Wind speed at 10 m [m/s].
+    k_radar : float
+        Radar wavenumber [rad/m].
+    wind_direction : float
+        Direction the wind blows towards [rad].
+
+    Returns
+    -------
+    sigma_wb : ndarray, shape (..., 4)
+        [m^2/m^2], HH, HV, VH, VV.
+    q : float
+        Fraction of breaking zones [-].
+    """
+    stats = breaking_statistics(u10, k_radar)
+    n_i, n_s = frames.directions_from_angles(theta_i, phi_i, theta_s, phi_s)
+    return (breaking_sigma(n_i, n_s, frames.Z_HAT, wind_direction, stats.mean_direction),
+            stats.q)
+
+
+@dataclass(frozen=True)
+class FacetBreaking:
+    """Breaking component of N facets (the third mechanism of the per-facet model).
+
+    Attributes
+    ----------
+    amplitude : ndarray of complex, shape (N, 2, 2)
+        ``W`` of :func:`breaking_amplitude` (per unit area of breaking zones).
+    q : ndarray, shape (N,)
+        Fraction of each facet covered by breaking zones [-].
+    """
+
+    amplitude: NDArray
+    q: NDArray
+
+    def sigma(self) -> NDArray:
+        """``q |W_mn|^2`` [m^2/m^2], shape (N, 4): the facet's breaking NRCS."""
+        s = self.amplitude.real**2 + self.amplitude.imag**2
+        return self.q[:, None] * s.reshape(-1, 4)
+
+
+def facet_breaking(
+    n_i: ArrayLike,
+    n_s: ArrayLike,
+    normal: ArrayLike,
+    q: ArrayLike,
+    wind_direction: float,
+    mean_direction: float,
+    theta_wb: float = THETA_WB,
+) -> FacetBreaking:
+    """Per-facet breaking terms: the interface the facet kernel will call.
+
+    The breaking zones are small-scale features on the facet: their slopes (BR5) are
+    taken relative to the facet normal, and the amplitude is returned in the global FSA
+    bases like the Kirchhoff and Bragg matrices of the facet model. The regular
+    mechanisms of the facet are then weighted by ``1 - q`` and this one by ``q`` (eq BR1),
+    with its own independent circular Gaussian speckle factor.
+
+    Parameters
+    ----------
+    n_i, n_s, normal : array_like, shape (N, 3)
+        Unit directions and facet normals [-].
+    q : array_like, shape (N,) or scalar
+        Local fraction of breaking zones [-], in [0, 1]; the sea mean is
+        :attr:`BreakingStatistics.q`.
+    wind_direction : float
+        Direction the wind blows towards [rad].
+    mean_direction : float
+        ``A_wb`` [-].
+    theta_wb : float
+        Mean tilt [rad].
+
+    Returns
+    -------
+    FacetBreaking
+    """
+    n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
+    n = n_i.shape[0]
+    qq = np.broadcast_to(np.asarray(q, dtype=float), (n,)).copy()
+    if np.any(~np.isfinite(qq)) or np.any(qq < 0.0) or np.any(qq > 1.0):
+        raise ValueError("q: breaking fractions must lie in [0, 1]")
+    w = breaking_amplitude(n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
+                           np.asarray(normal, dtype=float).reshape(-1, 3), wind_direction,
+                           mean_direction, theta_wb)
+    return FacetBreaking(w, qq)
+
+
+__all__ = [
+    "B_R", "C_Q", "EPS_WB", "K_WB_MAX", "N_GRAVITY", "S_WB2", "THETA_WB",
+    "BreakingStatistics", "FacetBreaking", "add_breaking", "breaking_amplitude",
+    "breaking_front_density", "breaking_nrcs_monostatic", "breaking_sigma",
+    "breaking_sigma_mean_plane", "breaking_statistics", "breaking_wavenumber_limit",
+    "dissipation_exponent", "facet_breaking", "friction_velocity", "phase_speed",
+    "roughness_length", "wind_growth_rate",
+]

@@ -1,0 +1,393 @@
+"""The echoes of a scene's hulls: ``[[objects]]`` with ``scatterer = true``, pulse by pulse.
+
+:class:`HullEchoes` joins the SBR trace (:mod:`.sbr`), the scene (objects, ship track,
+sea state, sea water) and the radar (:class:`seaecho.radar.system.RadarSystem`): for each
+scatterer object it plans when its signature is traced (:func:`~seaecho.targets.centres.
+refresh_schedule`: when the direction to the transmitter or the receiver has turned by
+``signature_refresh_deg`` since the last trace, or ``signature_refresh_s`` has elapsed),
+traces it at those pulses, moves the scattering centres rigidly with the object between
+traces, and hands them to the radar kernel like sea facets (:meth:`HullEchoes.echoes`).
+
+A pulse's echo depends only on (scene, pulse): the schedule is a function of the tracks,
+and the trace of a refresh pulse depends only on the geometry at that pulse and the sea
+surface held there (``surface(t)``, the simulation's held surface), so pulses can be
+computed in any order. Traces are kept in a small cache (a few MB each).
+
+Each scatterer is traced alone, the other objects (scatterers or not) being occluders:
+mutual bounces between two objects are not modelled.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import warnings
+from collections import OrderedDict
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..constants import C0
+from ..targets.centres import PATH_NAMES, coherent_total, refresh_schedule
+from .sbr import (
+    SBROptions,
+    SeaPlane,
+    Signature,
+    TraceMesh,
+    material_permittivity,
+    trace_signature,
+)
+
+__all__ = ["Hull", "HullEchoes"]
+
+#: Traces kept in memory (a trace of the 10 m boat holds ~10^4 centres, < 1 MB).
+_CACHE = 256
+#: The sea patch traced around a hull: its bounding radius times this, each side.
+_PATCH_MARGIN = 3.0
+
+
+@dataclass(frozen=True)
+class Hull:
+    """One scatterer object: its meshes, motion, options and refresh schedule.
+
+    Attributes
+    ----------
+    name : str
+        The ``[[objects]]`` name.
+    shapes : list of seaecho.tracing.scene.ObjectGeometry
+        Its meshes (one for a mesh file, one per shape of an XML scene).
+    eps_r : list of complex or None
+        Material of each shape (None: perfect conductor).
+    options : SBROptions
+        Ray density, bounces, cell.
+    multipath : bool
+        Trace the sea-reflected paths.
+    refresh_deg, refresh_s : float
+        Refresh step [deg] and interval [s] (0: none).
+    schedule : (R,) int array
+        Pulses at which the signature is traced.
+    """
+
+    name: str
+    shapes: list
+    eps_r: list
+    options: SBROptions
+    multipath: bool
+    refresh_deg: float
+    refresh_s: float
+    schedule: NDArray[np.intp]
+
+    @property
+    def velocity(self) -> NDArray[np.float64]:
+        """Rigid velocity [m/s] (all shapes of an object share it)."""
+        return np.asarray(self.shapes[0].velocity, dtype=np.float64)
+
+    def origin(self, t: float | NDArray) -> NDArray[np.float64]:
+        """The object's origin (its ``position_m``, on the ship track) at time(s) t [m]."""
+        o = self.shapes[0]
+        return np.asarray(o.position) + np.multiply.outer(np.asarray(t, float), o.velocity)
+
+    def mesh(self, t: float) -> TraceMesh:
+        """The object's meshes at time ``t`` in the world frame [m]."""
+        return TraceMesh.merge([TraceMesh.single(o.world_vertices(t), o.faces, e)
+                                for o, e in zip(self.shapes, self.eps_r, strict=True)])
+
+
+def _check_window(hull: Hull, radar, pulses) -> None:
+    """Warn when part of a hull lies outside the receive window (its echo would be cut)."""
+    from ..warnings import SeaechoWarning
+
+    w = radar.window
+    lo, hi = 0.5 * C0 * w.t0, 0.5 * C0 * (w.t0 + w.duration)
+    r = []
+    for p in pulses:
+        geo = radar.geometry(p)
+        v = hull.mesh(geo.time).vertices
+        r.append(0.5 * (np.linalg.norm(v - geo.tx.position, axis=-1)
+                        + np.linalg.norm(v - geo.rx.position, axis=-1)))
+    r = np.concatenate(r)
+    if r.min() < lo or r.max() > hi:
+        warnings.warn(f"[[objects]] {hull.name}: the hull spans ranges {r.min():.1f}.."
+                      f"{r.max():.1f} m, outside the receive window {lo:.1f}..{hi:.1f} m: "
+                      "its echo is cut; give [radar] window_start_m / window_end_m",
+                      SeaechoWarning, stacklevel=3)
+
+
+@dataclass(frozen=True)
+class HullOptions:
+    """Scattering options of one ``[[objects]]`` entry with ``scatterer = true``.
+
+    Attributes
+    ----------
+    name : str
+    rays_per_wavelength : float
+        Launch density of the SBR rays [rays per wavelength, along each axis].
+    max_bounces : int
+        Bounces on the hull followed per ray.
+    cell_m : float
+        Size of the cells the ray contributions are summed in [m].
+    sea_multipath : bool
+        Add the paths that bounce on the sea plane.
+    refresh_deg, refresh_s : float
+        Re-trace when the aspect changes by this much [deg] or after this time [s].
+    """
+
+    name: str
+    rays_per_wavelength: float
+    max_bounces: int
+    cell_m: float
+    sea_multipath: bool
+    refresh_deg: float
+    refresh_s: float
+
+
+@dataclass(frozen=True)
+class HullModel:
+    """What :class:`HullEchoes` needs, built from a scene by ``seaecho.build``.
+
+    Attributes
+    ----------
+    objects : tuple of (HullOptions or None, list of ObjectGeometry)
+        Every object: its options when it scatters (None: an occluder only), its shapes.
+    sea_eps_r : complex
+        Sea-water permittivity at the carrier [-].
+    sigma_h : float
+        Rms height of the sea [m] (rough-sea reflection factor of the multipath legs).
+    """
+
+    objects: tuple
+    sea_eps_r: complex
+    sigma_h: float
+
+
+class HullEchoes:
+    """Echoes of the scatterer objects of a scene (module docstring).
+
+    Parameters
+    ----------
+    hulls : list of Hull
+        The scatterers.
+    others : list of ObjectGeometry
+        Every object (occluders of each other's rays).
+    radar : seaecho.radar.system.RadarSystem
+        The scene's radar (platform tracks, emission times, carrier, kernel).
+    sea_eps_r : complex
+        Sea-water permittivity [-].
+    sigma_h : float
+        Rms sea height [m] (rough-sea reflection factor).
+    surface : callable, optional
+        ``t [s] -> SurfaceState`` (``x``, ``y``, ``elevation``): the sea held at time t,
+        whose elevation near a hull occludes its direct legs. None: the mean plane.
+    variant : str, optional
+        Mitsuba variant.
+    """
+
+    def __init__(self, hulls: list[Hull], others: list, radar, sea_eps_r: complex,
+                 sigma_h: float, surface: Callable | None = None,
+                 variant: str | None = None) -> None:
+        self.hulls = hulls
+        self.others = others
+        self.radar = radar
+        self.sea_eps_r = complex(sea_eps_r)
+        self.sigma_h = float(sigma_h)
+        self.surface = surface
+        self.variant = variant
+        self.roughness = "miller-brown-vegh"
+        self._cache: OrderedDict[tuple[int, int], Signature] = OrderedDict()
+
+    # ------------------------------------------------------------------ construction
+    @classmethod
+    def from_model(cls, model: HullModel | None, radar, surface: Callable | None = None,
+                   variant: str | None = None) -> HullEchoes | None:
+        """The hull echoes of a :class:`HullModel` (``seaecho.build.build_hulls``), or
+        None when it has no scatterer.
+
+        Parameters
+        ----------
+        model : HullModel or None
+            The objects, their SBR options and the sea's reflection parameters.
+        radar : seaecho.radar.system.RadarSystem
+            The scene's radar.
+        surface : callable, optional
+            The held sea surface at a time (:attr:`surface`).
+        variant : str, optional
+            Mitsuba variant.
+        """
+        if model is None or not any(spec is not None for spec, _ in model.objects):
+            return None
+        f = radar.carrier
+        t = radar.emission_time(np.arange(radar.n_pulses))
+        tx = radar.tx.state(t).position
+        rx = radar.rx.state(t).position
+        hulls = []
+        for spec, shapes in model.objects:
+            if spec is None:
+                continue
+            eps = [material_permittivity(f, itu_type=o.itu_type,
+                                         relative_permittivity=o.relative_permittivity,
+                                         conductivity=o.conductivity) for o in shapes]
+            options = SBROptions(rays_per_wavelength=spec.rays_per_wavelength,
+                                 max_bounces=spec.max_bounces, cell=spec.cell_m)
+            hull = Hull(spec.name, shapes, eps, options, spec.sea_multipath,
+                        spec.refresh_deg, spec.refresh_s, np.zeros(1, dtype=np.intp))
+            # Aspect of the transmitter and the receiver from the hull at every pulse
+            c = hull.origin(t)
+            ut = (tx - c) / np.linalg.norm(tx - c, axis=-1, keepdims=True)
+            ur = (rx - c) / np.linalg.norm(rx - c, axis=-1, keepdims=True)
+            sched = refresh_schedule(ut, ur, t, np.deg2rad(spec.refresh_deg), spec.refresh_s)
+            hulls.append(dataclasses.replace(hull, schedule=sched))
+            _check_window(hull, radar, (0, radar.n_pulses - 1))
+        others = [o for _, shapes in model.objects for o in shapes]
+        return cls(hulls, others, radar, model.sea_eps_r, model.sigma_h, surface=surface,
+                   variant=variant)
+
+    # ---------------------------------------------------------------------- traces
+    def refresh_pulse(self, hull: int, pulse: int) -> int:
+        """The pulse whose trace serves ``pulse`` for hull number ``hull``."""
+        sched = self.hulls[hull].schedule
+        return int(sched[np.searchsorted(sched, pulse, side="right") - 1])
+
+    def signature(self, hull: int, pulse: int) -> Signature:
+        """The trace serving ``pulse`` (computed at its refresh pulse, cached)."""
+        ref = self.refresh_pulse(hull, pulse)
+        key = (hull, ref)
+        if key in self._cache:
+            self._cache.move_to_end(key)
+            return self._cache[key]
+        sig = self._trace(hull, ref)
+        self._cache[key] = sig
+        if len(self._cache) > _CACHE:
+            self._cache.popitem(last=False)
+        return sig
+
+    def _trace(self, index: int, pulse: int) -> Signature:
+        h = self.hulls[index]
+        t = float(self.radar.emission_time(pulse))
+        geo = self.radar.geometry(pulse)
+        mesh = h.mesh(t)
+        own = {id(o) for o in h.shapes}
+        occluders = [TraceMesh.single(o.world_vertices(t), o.faces)
+                     for o in self.others if id(o) not in own]
+        patch = None
+        if self.surface is not None:
+            patch = self._patch(mesh, self.surface(t))
+        sea = SeaPlane(level=0.0, eps_r=self.sea_eps_r if h.multipath else None,
+                       sigma_h=self.sigma_h, roughness=self.roughness, patch=patch)
+        return trace_signature(mesh, geo.tx.position, geo.rx.position, self.radar.carrier,
+                               options=h.options, sea=sea, occluders=occluders,
+                               reference=h.origin(t), time=t, velocity=h.velocity,
+                               variant=self.variant)
+
+    @staticmethod
+    def _patch(mesh: TraceMesh, state):
+        """The held sea elevation around a hull (None when the hull is off the tile)."""
+        v = mesh.vertices
+        lo, hi = v.min(axis=0), v.max(axis=0)
+        c, r = 0.5 * (lo + hi), 0.5 * float(np.linalg.norm(hi - lo))
+        x, y = state.x, state.y
+        ix = np.flatnonzero(np.abs(x - c[0]) <= _PATCH_MARGIN * r)
+        iy = np.flatnonzero(np.abs(y - c[1]) <= _PATCH_MARGIN * r)
+        if ix.size < 2 or iy.size < 2:
+            return None
+        sl = (slice(iy[0], iy[-1] + 1), slice(ix[0], ix[-1] + 1))
+        return x[sl[1]], y[sl[0]], np.asarray(state.elevation)[sl]
+
+    # ---------------------------------------------------------------------- pulses
+    def echoes(self, geometry, pulse: int) -> list:
+        """Echoes of every hull for one pulse (a ``ScattererEcho`` each).
+
+        Parameters
+        ----------
+        geometry : seaecho.radar.system.PulseGeometry
+            ``radar.geometry(pulse)``.
+        pulse : int
+            Pulse index.
+        """
+        out = []
+        for i in range(len(self.hulls)):
+            c = self.signature(i, pulse).centres
+            if len(c) == 0:
+                continue
+            vel = np.broadcast_to(c.velocity, c.position.shape)
+            out.append(self.radar.scatterer_echo(geometry, c.positions_at(geometry.time),
+                                                 vel, c.s))
+        return out
+
+    # ---------------------------------------------------------------- ground truth
+    def truth(self, pulse: int) -> tuple[dict, dict]:
+        """Dataset variables and coordinates: centres of ``pulse``, RCS over the run.
+
+        Returns
+        -------
+        data, coords : dict
+            xarray ``(dims, values, attrs)`` tuples.
+        """
+        radar = self.radar
+        n = radar.n_pulses
+        t = radar.emission_time(np.arange(n))
+        tx = radar.tx.state(t).position
+        rx = radar.rx.state(t).position
+        k = 2.0 * np.pi * radar.carrier / C0
+        nh = len(self.hulls)
+        rcs = np.zeros((nh, n, 4))
+        rcs_free = np.zeros((nh, n, 4))
+        origin = np.zeros((nh, n, 3))
+        served = np.zeros((nh, n), dtype=np.int64)
+        pos, s, path, which = [], [], [], []
+        for i, h in enumerate(self.hulls):
+            origin[i] = h.origin(t)
+            for p in range(n):  # per pulse: one coherent sum over the centres (eq C3)
+                c = self.signature(i, p).centres
+                served[i, p] = self.refresh_pulse(i, p)
+                x = c.positions_at(t[p])
+                tot = coherent_total(x, c.s, tx[p], rx[p], k, origin[i, p])
+                direct = c.path == 0
+                free = coherent_total(x[direct], c.s[direct], tx[p], rx[p], k, origin[i, p])
+                rcs[i, p] = np.abs(tot.reshape(4)) ** 2
+                rcs_free[i, p] = np.abs(free.reshape(4)) ** 2
+            c = self.signature(i, pulse).centres
+            pos.append(c.positions_at(float(t[pulse])))
+            s.append(c.s.reshape(-1, 4))
+            path.append(c.path)
+            which.append(np.full(len(c), i, dtype=np.int16))
+        pol = "polarisation"
+        data = {
+            "hull_rcs": (("hull", "pulse", pol), rcs, {
+                "units": "m2", "long_name": "apparent RCS |sum of centres|^2 of each hull "
+                "referred to its origin, sea multipath included (eq C3, docs/ship.md)"}),
+            "hull_rcs_free_space": (("hull", "pulse", pol), rcs_free, {
+                "units": "m2", "long_name": "RCS of the direct paths only (no sea bounce)"}),
+            "hull_position": (("hull", "pulse", "xyz"), origin, {
+                "units": "m", "long_name": "hull origin (object position_m on its track)"}),
+            "hull_trace_pulse": (("hull", "pulse"), served, {
+                "long_name": "pulse whose ray trace (signature) serves this pulse; "
+                "centres move rigidly with the hull in between"}),
+            "hull_centre_position": (("centre", "xyz"), np.concatenate(pos), {
+                "units": "m", "long_name": f"scattering centres at pulse {pulse} "
+                "(delay-equivalent positions)"}),
+            "hull_centre_scattering": (("centre", pol), np.concatenate(s), {
+                "units": "m", "long_name": "centre amplitude s_mn (FSA bases), "
+                "|s|^2 = RCS"}),
+            "hull_centre_path": (("centre",), np.concatenate(path), {
+                "long_name": "path kind", "flag_values": np.arange(4, dtype=np.int8),
+                "flag_meanings": " ".join(PATH_NAMES)}),
+            "hull_centre_hull": (("centre",), np.concatenate(which),
+                                 {"long_name": "index along the hull dimension"}),
+        }
+        opts = {
+            "hull_rays_per_wavelength": [h.options.rays_per_wavelength for h in self.hulls],
+            "hull_max_bounces": [h.options.max_bounces for h in self.hulls],
+            "hull_cell": [h.options.cell for h in self.hulls],
+            "hull_refresh_deg": [h.refresh_deg for h in self.hulls],
+            "hull_refresh_s": [h.refresh_s for h in self.hulls],
+            "hull_sea_multipath": [int(h.multipath) for h in self.hulls],
+        }
+        units = {"hull_cell": "m", "hull_refresh_deg": "degree", "hull_refresh_s": "s"}
+        for name, values in opts.items():
+            data[name] = (("hull",), np.asarray(values), {"units": units.get(name, "1")})
+        data["hull_sea_sigma_h"] = ((), self.sigma_h, {
+            "units": "m", "long_name": "rms sea height of the rough-sea specular factor "
+            f"({self.roughness}), applied to the sea-reflected legs"})
+        coords = {"hull": ("hull", np.array([h.name for h in self.hulls]))}
+        return data, coords

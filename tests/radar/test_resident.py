@@ -1,0 +1,239 @@
+"""The fused, device-resident sea pulse against the reference path, and its selection.
+
+``Simulation.sea_echo`` evaluates a ray-traced sea pulse as one kernel
+(``seaecho.radar.resident``) or, in its reference path, stage by stage with numpy in
+between. Both call the same formulas with the same values: the parity tests ask for the
+same bytes (a dropped visibility factor, a facet order changed by the compaction, a
+wrong window bound or speckle draw would each change them). The GPU path cannot run
+here: its plumbing (device echo, cufinufft calls on array pointers) is exercised on the
+CPU back end with a stand-in for cufinufft that reads the same pointers.
+"""
+
+from __future__ import annotations
+
+import copy
+import ctypes
+import sys
+import types
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from seaecho import backend
+from seaecho.config import load_scene
+from seaecho.radar.resident import ResidentSea
+from seaecho.simulation import Simulation
+
+SIM2 = Path(__file__).resolve().parents[2] / "scenes" / "paper_sim2_sar_128m_wind55.toml"
+
+pytestmark = pytest.mark.skipif(not backend.drjit_available(),
+                                reason="Dr.Jit LLVM backend unavailable")
+
+
+def _scene(nx=64, pulses=6, refresh=0.1, tracing=None, radar=None):
+    scene = load_scene(SIM2)
+    return scene.model_copy(update={
+        "sea": scene.sea.model_copy(update={"nx": nx}),
+        "tracing": scene.tracing.model_copy(update={"refresh_interval_s": refresh,
+                                                    **(tracing or {})}),
+        "radar": scene.radar.model_copy(update={"n_pulses": pulses, **(radar or {})})})
+
+
+def _pair(scene):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fused = Simulation(scene, base_dir=SIM2.parent)
+        ref = Simulation(scene, base_dir=SIM2.parent)
+    ref._resident = None  # the reference path: one kernel per stage, numpy between
+    assert isinstance(fused._resident, ResidentSea)
+    return fused, ref
+
+
+@pytest.mark.parametrize("refresh", [0.1, 0.0])
+def test_fused_sea_pulse_equals_the_reference_path_bit_for_bit(refresh):
+    # Simulation 2's geometry on a 64 x 64 sea with the boat's shadow: some facets are
+    # hidden, so the kernel's compaction runs; refresh 0 re-traces every pulse.
+    fused, ref = _pair(_scene(refresh=refresh))
+    for p in (0, 3, 5):
+        a, b = fused.sea_echo(p).echo, ref.sea_echo(p).echo
+        n_facets = 2 * 63 * 63
+        assert 0 < b.tau.size < n_facets  # hidden facets were left out
+        np.testing.assert_array_equal(a.tau, b.tau)
+        np.testing.assert_array_equal(np.stack(a.amplitudes), b.amplitudes)
+        assert fused.pulse(p).tobytes() == ref.pulse(p).tobytes()
+
+
+def test_bistatic_fused_pulse_equals_the_reference_path():
+    # Simulation 1: transmitter and receiver apart (two ranges, two occlusion masks)
+    sim1 = SIM2.parent / "paper_sim1_bistatic_64m.toml"
+    scene = load_scene(sim1)
+    scene = scene.model_copy(update={"sea": scene.sea.model_copy(update={"nx": 64})})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fused, ref = (Simulation(scene, base_dir=sim1.parent) for _ in range(2))
+    ref._resident = None
+    assert isinstance(fused._resident, ResidentSea)
+    a, b = fused.sea_echo(1).echo, ref.sea_echo(1).echo
+    np.testing.assert_array_equal(a.tau, b.tau)
+    np.testing.assert_array_equal(np.stack(a.amplitudes), b.amplitudes)
+    assert fused.pulse(1).tobytes() == ref.pulse(1).tobytes()
+
+
+def test_fused_window_cut_equals_the_reference_path():
+    # A receive window over part of the tile: echoes outside it are dropped in the
+    # kernel (ReceiveWindow.bounds) exactly as receive() drops them.
+    fused, ref = _pair(_scene(radar={"window_start_m": 4300.0, "window_end_m": 4310.0}))
+    a, b = fused.sea_echo(2).echo, ref.sea_echo(2).echo
+    keep = ref.radar.window.keep(b.tau, ref.radar.waveform.n_samples)
+    assert 0 < keep.sum() < keep.size
+    np.testing.assert_array_equal(a.tau, b.tau[keep])
+    np.testing.assert_array_equal(np.stack(a.amplitudes), b.amplitudes[:, keep])
+    assert fused.pulse(2).tobytes() == ref.pulse(2).tobytes()
+
+
+def test_new_sea_every_pulse_equals_the_reference_path():
+    # A new surface per pulse: the kernel's node copies follow the surface state
+    fused, ref = _pair(_scene(radar={"sea_update_pulses": 1}))
+    for p in (1, 2):
+        assert fused.pulse(p).tobytes() == ref.pulse(p).tobytes()
+
+
+def test_fused_path_is_chosen_for_ray_traced_scenes_only():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        analytic = Simulation(_scene(tracing={"mode": "analytic"}), base_dir=SIM2.parent)
+        smith = Simulation(_scene(tracing={"subfacet_shadowing": True}), base_dir=SIM2.parent)
+    # Smith's statistical visibility and the sub-facet shadowing are numpy functions of
+    # the geometry stage: those scenes keep the reference path
+    assert analytic._resident is None and smith._resident is None
+
+
+def test_cuda_variant_without_gpu_is_a_clear_error_at_start(monkeypatch):
+    # The scene asks for the GPU and there is none: the simulation refuses to start
+    # (ValueError naming the variant), before any pulse is computed.
+    monkeypatch.setattr(backend, "cuda_available", lambda: False)
+    scene = _scene(tracing={"variant": "cuda_ad_mono_polarized"})
+    with pytest.raises(ValueError, match="cuda_ad_mono_polarized.*no CUDA GPU"), \
+            warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the small grid's SPM validity warning
+        Simulation(scene, base_dir=SIM2.parent)
+
+
+def test_variant_other_than_mitsubas_is_a_clear_error_at_start(monkeypatch):
+    # Mitsuba already runs the CUDA variant in this process (pretended): an LLVM scene
+    # cannot share it, and says so at construction.
+    monkeypatch.setattr(backend, "cuda_available", lambda: True)
+    monkeypatch.setitem(sys.modules, "mitsuba",
+                        types.SimpleNamespace(variant=lambda: "cuda_ad_mono_polarized"))
+    with pytest.raises(ValueError, match="Mitsuba already runs"), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        Simulation(_scene(), base_dir=SIM2.parent)
+
+
+# ------------------------------------------------------------------ the GPU plumbing
+def _host_view(view) -> np.ndarray:
+    """The memory behind a __cuda_array_interface__ (here host memory: the LLVM back end)."""
+    iface = view.__cuda_array_interface__
+    dtype = np.dtype(iface["typestr"])
+    n = int(np.prod(iface["shape"]))
+    raw = (ctypes.c_char * (n * dtype.itemsize)).from_address(iface["data"][0])
+    return np.frombuffer(raw, dtype=dtype).reshape(iface["shape"])
+
+
+class _FakePlan:
+    """cufinufft.Plan's interface, computed by finufft on the memory the pointers name."""
+
+    made = 0
+
+    def __init__(self, nufft_type, n_modes, n_trans=1, eps=1e-6, isign=None,
+                 dtype="complex64", **kwargs):
+        assert nufft_type == 1 and dtype == "complex128" and kwargs == {"modeord": 1}
+        self.n, self.n_trans, self.eps, self.isign = n_modes[0], n_trans, eps, isign
+        _FakePlan.made += 1
+
+    def setpts(self, x):
+        assert x.dtype == np.float64 and x.flags.c_contiguous
+        self.x = _host_view(x).copy()
+
+    def execute(self, data, out=None):
+        import finufft
+
+        assert out is not None and out.shape == (self.n,) and data.dtype == np.complex128
+        _host_view(out)[...] = finufft.nufft1d1(self.x, _host_view(data).copy(),
+                                                n_modes=self.n, eps=self.eps,
+                                                isign=self.isign, modeord=1)
+        return out
+
+
+def test_device_echo_goes_through_cufinufft_on_array_pointers(monkeypatch):
+    # The CUDA branch of the fused pulse (a DeviceEcho, accumulated by accumulate_cuda
+    # through __cuda_array_interface__) run on the CPU back end: the stand-in cufinufft
+    # reads the arrays at the addresses the views give. The samples must equal the
+    # host path's to the NUFFT tolerance (the phasor points are folded on the device).
+    from seaecho.radar import echo as echo_mod
+    from seaecho.radar.system import DeviceEcho
+
+    monkeypatch.setitem(sys.modules, "cufinufft", types.SimpleNamespace(Plan=_FakePlan))
+    monkeypatch.setattr(backend, "cuda_synchronize", lambda: None)
+    monkeypatch.setattr(echo_mod, "_CUDA_PLANS", {})
+    fused, ref = _pair(_scene())
+    gpu_like = copy.copy(fused._resident.xp)
+    gpu_like.name = "cuda"  # the same Dr.Jit arrays, the GPU's code path
+    fused._resident.xp = gpu_like
+    e = fused.sea_echo(3).echo
+    assert isinstance(e, DeviceEcho) and len(e.amplitudes) == 4
+    host = e.to_host()
+    b = ref.sea_echo(3).echo
+    np.testing.assert_array_equal(host.tau, b.tau)
+    np.testing.assert_array_equal(host.amplitudes, b.amplitudes)
+    raw, want = fused.pulse(3), ref.pulse(3)
+    assert np.abs(raw - want).max() <= 1e-9 * np.abs(want).max()
+    assert _FakePlan.made == 1  # one plan, reused for every channel and pulse
+
+
+def _cuda_pulse(variant: str, path: str) -> None:
+    """One fused pulse of the small Simulation 2 on ``variant`` (run in its own process)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sim = Simulation(_scene(tracing={"variant": variant}), base_dir=SIM2.parent)
+    np.save(path, sim.pulse(3))
+
+
+@pytest.mark.gpu
+@pytest.mark.skipif(not backend.cuda_available(), reason="needs a CUDA GPU")
+def test_cuda_fused_pulse_equals_the_cpu_one(tmp_path):
+    # On a GPU machine: the whole pulse on drjit.cuda + cufinufft against the LLVM one
+    # (each in a process of its own: one Mitsuba variant per process). cufinufft sums
+    # with atomics, so the comparison is at the NUFFT tolerance, not bit for bit.
+    import subprocess
+
+    out = {}
+    for v in ("llvm_ad_mono_polarized", "cuda_ad_mono_polarized"):
+        out[v] = tmp_path / f"{v}.npy"
+        res = subprocess.run([sys.executable, "-c", "import test_resident; "
+                              f"test_resident._cuda_pulse({v!r}, {str(out[v])!r})"],
+                             cwd=str(Path(__file__).parent), capture_output=True, text=True)
+        assert res.returncode == 0, res.stderr[-3000:]
+    a, b = (np.load(p) for p in out.values())
+    assert np.abs(a - b).max() <= 1e-8 * np.abs(a).max()
+
+
+def test_sigma_map_in_one_kernel_equals_the_reference():
+    # The dataset's NRCS map (Simulation.sea_truth) from the fused kernel: the same
+    # per-cell sigma0 and visibility as the reference path's SeaEcho.sigma0_cells.
+    fused, ref = _pair(_scene())
+    p = 2
+    se = ref.sea_echo(p, sigma=True)
+    dx = float(ref.sea.x[1] - ref.sea.x[0])
+    want = se.sigma0_cells(dx * dx)
+    st = fused.surface_state(p)
+    geo = fused.radar.geometry(p)
+    held = fused._block_quantities(p, st, fused._resident.n_facets(st))
+    _, *hidden = fused.engine.occlusion(geo.time, st)
+    sigma0, vis = fused._resident.sigma_cells(geo, st, hidden, held["damping"])
+    np.testing.assert_allclose(sigma0, want, rtol=1e-12, atol=0)
+    np.testing.assert_array_equal(vis, se.facets.cell_mean("visibility"))
+    assert vis.dtype == np.float64
+    assert np.any(vis == 0) and np.any(vis == 0.5)  # the boat's shadow, its edge

@@ -1,0 +1,139 @@
+"""The package import graph follows the pipeline's layer order (docs/design.md).
+
+Every ``import`` of a seaecho module, at module level or inside a function, is read from
+the source with :mod:`ast`; a module may import its own package and the packages of
+earlier layers, never a later one. The stages never import the scene-file schema
+(``config``): only the builder, the orchestrator and the command line read scenes. And
+only ``tracing`` imports mitsuba or sionna.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "seaecho"
+
+#: Layers, earliest first: a package (or top-level module) imports itself and earlier
+#: layers only. ``geometry`` (frames and polarisation bases, facets) comes before
+#: ``scattering``, whose per-facet formulas use those frames.
+LAYERS = [
+    {"seaecho", "constants", "conventions", "rng", "warnings", "_llvm", "backend"},
+    {"config"},
+    {"ocean"},
+    {"wake"},
+    {"sea"},
+    {"geometry"},
+    {"scattering"},
+    {"targets"},
+    {"tracing"},
+    {"radar"},
+    {"processing"},
+    {"io"},
+    {"build"},
+    {"imaging"},
+    {"simulation", "guards", "preflight", "resources"},
+    {"distributed"},
+    {"cli"},
+    {"__main__"},
+]
+#: Stages: they take stage models, never the scene (``config``).
+STAGES = {"ocean", "wake", "sea", "scattering", "geometry", "targets", "tracing", "radar",
+          "processing", "io"}
+RANK = {name: i for i, layer in enumerate(LAYERS) for name in layer}
+
+
+def _package(module: str) -> str:
+    """'seaecho.radar.system' -> 'radar'; 'seaecho' -> 'seaecho'."""
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else parts[0]
+
+
+def _imports() -> list[tuple[str, str, int]]:
+    """(importing module, imported seaecho module, line) for every seaecho import."""
+    out = []
+    for path in sorted(SRC.rglob("*.py")):
+        rel = path.relative_to(SRC.parent).with_suffix("")
+        parts = list(rel.parts)
+        is_pkg = parts[-1] == "__init__"
+        if is_pkg:
+            parts = parts[:-1]
+        module = ".".join(parts)
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom):
+                if node.level:
+                    base = parts if is_pkg else parts[:-1]
+                    base = base[: len(base) - (node.level - 1)]
+                    target = ".".join(base + ([node.module] if node.module else []))
+                else:
+                    target = node.module or ""
+                if not target.startswith("seaecho"):
+                    continue
+                if node.module is None or target == "seaecho":  # from . import x
+                    out += [(module, f"{target}.{a.name}", node.lineno) for a in node.names]
+                else:
+                    out.append((module, target, node.lineno))
+            elif isinstance(node, ast.Import):
+                out += [(module, a.name, node.lineno) for a in node.names
+                        if a.name.startswith("seaecho")]
+    return out
+
+
+def test_every_package_has_a_layer():
+    found = {_package(m) for m, _, _ in _imports()}
+    found |= {p.stem if p.is_file() else p.name for p in SRC.iterdir()
+              if (p.suffix == ".py" or (p.is_dir() and (p / "__init__.py").exists()))}
+    found.discard("__init__")
+    assert found <= set(RANK), sorted(found - set(RANK))
+
+
+def test_no_import_reaches_a_later_layer():
+    bad = []
+    for module, target, line in _imports():
+        a, b = _package(module), _package(target)
+        if b == "__version__":  # ``from .. import __version__`` is the package itself
+            b = "seaecho"
+        if RANK[b] > RANK[a]:
+            bad.append(f"{module}:{line} imports {target} ({a} before {b} in the pipeline)")
+    assert not bad, "\n".join(bad)
+
+
+def test_no_import_cycle_between_packages():
+    # Implied by the layer order; stated on its own so that a failure names the cycle.
+    graph: dict[str, set[str]] = {}
+    for module, target, _ in _imports():
+        a, b = _package(module), _package(target)
+        b = "seaecho" if b == "__version__" else b
+        if a != b:
+            graph.setdefault(a, set()).add(b)
+
+    def visit(node, stack):
+        if node in stack:
+            pytest.fail("import cycle: " + " -> ".join(stack[stack.index(node):] + [node]))
+        for nxt in graph.get(node, ()):
+            visit(nxt, stack + [node])
+
+    for start in graph:
+        visit(start, [])
+
+
+def test_stages_never_read_the_scene_schema():
+    bad = [f"{m}:{line} imports {t}" for m, t, line in _imports()
+           if _package(m) in STAGES and _package(t) == "config"]
+    assert not bad, "\n".join(bad)
+
+
+def test_only_tracing_imports_mitsuba_or_sionna():
+    bad = []
+    for path in sorted(SRC.rglob("*.py")):
+        if "tracing" in path.relative_to(SRC).parts:
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            names = ([a.name for a in node.names] if isinstance(node, ast.Import) else
+                     [node.module or ""] if isinstance(node, ast.ImportFrom) and not
+                     node.level else [])
+            bad += [f"{path.relative_to(SRC)}:{node.lineno} imports {n}" for n in names
+                    if n.split(".")[0] in ("mitsuba", "sionna")]
+    assert not bad, "\n".join(bad)

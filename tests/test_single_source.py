@@ -1,0 +1,109 @@
+"""Each physics formula has one home, and the layers import each other in one direction.
+
+The numpy reference path and the Dr.Jit kernels evaluate the same functions
+(``seaecho.backend``); a formula written a second time (in a kernel module, say) would
+let the two paths drift apart while parity tests on their shared inputs still pass. The
+test reads the code (docstrings and comments left out) for constants and expressions
+that only one formula uses, and checks the import graph:
+
+- geometry never imports scattering, radar or tracing (frames are geometry);
+- only ``seaecho.backend`` and the tracing stage import Dr.Jit (a formula reaching for
+  ``drjit`` directly would bypass the namespace and exist for one path only);
+- only the tracing stage imports Mitsuba / Sionna RT.
+"""
+
+from __future__ import annotations
+
+import ast
+import functools
+import re
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "seaecho"
+
+
+@functools.cache
+def _modules() -> dict[str, ast.Module]:
+    return {str(p.relative_to(SRC)): ast.parse(p.read_text()) for p in sorted(SRC.rglob("*.py"))}
+
+
+@functools.cache
+def _code(name: str) -> str:
+    """The module's code without docstrings (ast.unparse drops comments)."""
+    tree = ast.parse(ast.unparse(_modules()[name]))
+    for node in ast.walk(tree):
+        body = getattr(node, "body", None)
+        if (isinstance(body, list) and body and isinstance(body[0], ast.Expr)
+                and isinstance(body[0].value, ast.Constant)
+                and isinstance(body[0].value.value, str)):
+            body[0] = ast.Pass()
+    return ast.unparse(tree)
+
+
+#: expression that identifies a formula -> the one module allowed to contain it
+MARKERS = {
+    # blend weights, eqs B3-B4: (beta / 6 pi)^8, (beta / 20 pi)^1.5
+    r"\b6(\.0)?\s*\*\s*(np|math)\.pi\b": "scattering/blend.py",
+    r"\b20(\.0)?\s*\*\s*(np|math)\.pi\b": "scattering/blend.py",
+    # Gram-Charlier coefficients of Cox & Munk (eq K4) and the Gaussian's 2 pi (eq K3)
+    r"\.c(21|03|40|22|04)\b": "scattering/slopes.py",
+    r"log\(2(\.0)?\s*\*\s*(np|math)\.pi\)": "scattering/slopes.py",
+    # eq K1: log(pi |q|^4 / q_N^4)
+    r"log\((np|math)\.pi\)\s*-\s*4": "scattering/kirchhoff.py",
+    # eq S7 prefactor 4 sqrt(pi) k^2
+    r"4(\.0)?\s*\*\s*(np|math)\.sqrt\((np|math)\.pi\)": "scattering/spm.py",
+    # eq R1: (4 pi)^1.5 (radar equation, amplitude form)
+    r"\(4(\.0)?\s*\*\s*(np|math)\.pi\)\s*\*\*\s*1\.5": "radar/equation.py",
+}
+
+
+@pytest.mark.parametrize("pattern,home", list(MARKERS.items()))
+def test_formula_constants_live_in_one_module(pattern, home):
+    found = sorted(name for name in _modules() if re.search(pattern, _code(name)))
+    assert found == [home], f"{pattern!r} found in {found}, expected only in {home}"
+
+
+def _imports(tree: ast.Module, name: str) -> set[str]:
+    """Absolute names of the modules ``name`` (a path under seaecho/) imports."""
+    package = ["seaecho", *Path(name).with_suffix("").parts][:-1]  # its package
+    out = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            out.update(a.name for a in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package[:len(package) - node.level + 1]
+                mod = ".".join(base + ([node.module] if node.module else []))
+            else:
+                mod = node.module or ""
+            out.add(mod)
+            out.update(f"{mod}.{a.name}" for a in node.names)
+    return out
+
+
+def test_geometry_never_imports_the_later_stages():
+    for name, tree in _modules().items():
+        if name.startswith("geometry/"):
+            bad = {m for m in _imports(tree, name)
+                   if m.startswith(("seaecho.scattering", "seaecho.radar", "seaecho.tracing"))}
+            assert not bad, f"{name} imports {sorted(bad)}"
+
+
+def test_scattering_does_not_reach_into_geometry_buffers_or_later_stages():
+    for name, tree in _modules().items():
+        if name.startswith("scattering/"):
+            bad = {m for m in _imports(tree, name)
+                   if m.startswith(("seaecho.geometry.buffers", "seaecho.radar",
+                                    "seaecho.tracing"))}
+            assert not bad, f"{name} imports {sorted(bad)}"
+
+
+def test_only_the_backend_and_tracing_import_drjit_mitsuba_sionna():
+    for name, tree in _modules().items():
+        mods = _imports(tree, name)
+        if any(m == "drjit" or m.startswith("drjit.") for m in mods):
+            assert name == "backend.py" or name.startswith("tracing/"), name
+        if any(m.split(".")[0] in ("mitsuba", "sionna") for m in mods):
+            assert name.startswith("tracing/"), name

@@ -1,0 +1,350 @@
+"""Deliberate mutations of the physics: does the test suite notice?
+
+Run ``python tools/mutations.py`` (``--full`` to run the whole suite for every mutation,
+``--only NAME ...`` for some of them, ``--list`` to list them). The script copies the
+working tree (the files git lists) to a temporary folder, and for each mutation replaces
+one piece of source there, runs the tests that should catch it (then, if they all pass,
+the whole suite) with the copy first on ``PYTHONPATH``, and puts the file back. A
+mutation is *killed* when at least one test fails. It prints one line per mutation and
+the score, with the machine's load; exit status 1 if any survived, 2 (before running
+anything) if a mutation's text no longer occurs in the source as often as it expects, or
+one of its test paths is gone: the list must follow the code.
+
+Each mutation is a plausible mistake: a dropped factor, a changed cut-off, a swapped
+channel, a sign. The first seven are mistakes the suite was once blind to. A formula
+written once for numpy and Dr.Jit (:mod:`seaecho.backend`) is mutated once: the mistake
+then reaches both back ends.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+COPY = ("src", "tests", "scenes", "docs", "benchmarks", "examples", "tools", "README.md",
+        "pyproject.toml", "setup.sh", ".ci")
+
+
+@dataclass(frozen=True)
+class Mutation:
+    """Replace ``old`` (which must occur exactly ``count`` times) by ``new`` in ``path``."""
+
+    name: str
+    path: str
+    old: str
+    new: str
+    tests: tuple[str, ...]
+    why: str
+    count: int = 1
+
+
+S = "src/seaecho/"
+MUTATIONS = [
+    # --- the suite used to pass with each of these
+    Mutation("echo-without-visibility", S + "simulation.py",
+             "amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,",
+             "amp = speckled_facet_amplitudes(*args, facets.area, *model,",
+             ("tests/test_end_to_end.py",),
+             "shadowed facets still echo"),
+    Mutation("echo-without-wake-damping", S + "simulation.py",
+             'draws=held["draws"], wake_damping=damping,',
+             'draws=held["draws"], wake_damping=None,',
+             ("tests/test_end_to_end.py",),
+             "the turbulent wake no longer damps the Bragg echo"),
+    Mutation("no-wake-damping-anywhere", S + "simulation.py",
+             "wake_damping=damping,", "wake_damping=None,",
+             ("tests/test_end_to_end.py",),
+             "the wake damps neither the echo nor the sigma0 map", count=2),
+    Mutation("two-scale-cut-k/1.5", S + "ocean/twoscale.py",
+             "TWO_SCALE_CUT_RATIO = 1.0 / 3.0", "TWO_SCALE_CUT_RATIO = 1.0 / 1.5",
+             ("tests/test_build.py",), "sub-facet slopes up to k/1.5 instead of k/3"),
+    Mutation("two-scale-cut-k", S + "ocean/twoscale.py",
+             "TWO_SCALE_CUT_RATIO = 1.0 / 3.0", "TWO_SCALE_CUT_RATIO = 1.0",
+             ("tests/test_build.py",), "sub-facet slopes up to k"),
+    Mutation("bragg-table-ends-at-k", S + "ocean/twoscale.py",
+             "ROUGHNESS_K_MAX_RATIO = 20.0", "ROUGHNESS_K_MAX_RATIO = 1.0",
+             ("tests/test_build.py", "tests/test_end_to_end.py"),
+             "no Bragg roughness above k (back-scatter beyond 30 deg goes dark)"),
+    Mutation("T0-300K", S + "constants.py", "T0 = 290.0", "T0 = 300.0",
+             ("tests/radar/test_system.py",), "receiver noise 0.15 dB too high"),
+    # --- our own
+    Mutation("radar-equation-loses-sqrt-4pi", S + "radar/equation.py",
+             "wavelength / (4.0 * math.pi) ** 1.5)",
+             "wavelength / (4.0 * math.pi))",
+             ("tests/radar/test_system.py", "tests/imaging/test_calibration.py"),
+             "eq R1's amplitude off by sqrt(4 pi) (one formula: numpy, Dr.Jit kernel and the "
+             "image calibration)"),
+    Mutation("bragg-loses-4-sqrt-pi-drjit", S + "scattering/spm.py",
+             "(4.0 * math.sqrt(math.pi)) * k * k * ci * cs * roughness",
+             "k * k * ci * cs * roughness",
+             ("tests/scattering/test_spm.py", "tests/scattering/test_facet_calibration.py"),
+             "eq S7's Bragg amplitude without 4 sqrt(pi) (one formula for both back ends)"),
+    Mutation("bragg-loses-4-sqrt-pi-numpy", S + "scattering/spm.py",
+             "(4.0 * math.sqrt(math.pi)) * k * k * ci * cs * roughness",
+             "math.sqrt(math.pi) * k * k * ci * cs * roughness",
+             ("tests/scattering/test_spm.py", "tests/scattering/test_facet_calibration.py"),
+             "eq S7's Bragg amplitude off by 4 (one formula for both back ends)"),
+    Mutation("hv-vh-swapped", S + "radar/system.py",
+             "return sorted(out, key=lambda c: (c[1], c[2]))",
+             "return sorted(out, key=lambda c: (c[2], c[1]))",
+             ("tests/radar/test_system.py",), "channels HV and VH exchanged"),
+    Mutation("doppler-sign", S + "radar/equation.py",
+             "phase = (-2.0 * math.pi) * (cycles - xp.floor(cycles))",
+             "phase = (2.0 * math.pi) * (cycles - xp.floor(cycles))",
+             ("tests/radar/test_system.py",),
+             "carrier phase exp(+j 2 pi f tau): Doppler of the wrong sign (both back ends)"),
+    Mutation("bistatic-delay-twice-outbound", S + "radar/kernels.py",
+             "    tau = tau_t + tau_r\n", "    tau = 2.0 * tau_t\n",
+             ("tests/radar/test_system.py",), "bistatic delay as if monostatic"),
+    Mutation("pm-spectrum-without-one-half", S + "ocean/spectra.py",
+             "out = 0.5 * PM_A0 * ks**-3", "out = PM_A0 * ks**-3",
+             ("tests/ocean",), "the paper's eq 5 as printed (Hs too high by sqrt 2)"),
+    Mutation("surface-variance-doubled", S + "ocean/surface.py",
+             "np.sqrt(0.25 * self.dkx * self.dky * psi)",
+             "np.sqrt(0.5 * self.dkx * self.dky * psi)",
+             ("tests/ocean/test_surface.py",), "synthesis amplitudes sqrt(2) too large"),
+    Mutation("waves-travel-backwards", S + "ocean/surface.py",
+             "phase = np.exp(-1j * self._omega * t)",
+             "phase = np.exp(1j * self._omega * t)",
+             ("tests/ocean/test_surface.py",), "time evolution of eq 15 with the wrong sign"),
+    Mutation("wind-profile-1.026", S + "ocean/wind.py",
+             "DRAG_COEFFICIENT_10M = 1.3e-3", "DRAG_COEFFICIENT_10M = 2.4e-4",
+             ("tests/ocean",), "U19.5 = 1.026 U10 again (a drag coefficient that fits it)"),
+    Mutation("kelvin-dispersion-sec-not-squared", S + "wake/kelvin.py",
+             "        kappa = self.k0 / np.cos(theta) ** 2\n",
+             "        kappa = self.k0 / np.cos(theta)\n",
+             ("tests/wake",), "Kelvin plane waves k0 sec(theta): wrong wedge, wrong crests "
+             "(the synthesis and the height measurement)", count=2),
+    Mutation("matched-filter-without-conjugate", S + "processing/range_compression.py",
+             "* np.conj(np.fft.fft(h, n_fft))", "* np.fft.fft(h, n_fft)",
+             ("tests/processing", "tests/radar/test_system.py"),
+             "range compression correlates with the unconjugated pulse"),
+    Mutation("noise-power-doubled", S + "radar/equation.py",
+             "scale = np.sqrt(0.5 * power)", "scale = np.sqrt(power)",
+             ("tests/radar/test_system.py",), "complex noise with E|n|^2 = 2 k T F B"),
+    Mutation("speckle-variance-doubled", S + "scattering/facet.py",
+             "g = rng.standard_normal((n, 4)) * np.sqrt(0.5)",
+             "g = rng.standard_normal((n, 4))",
+             ("tests/scattering/test_facet_calibration.py", "tests/test_end_to_end.py"),
+             "speckle draws of variance 2: every clutter echo 3 dB too strong"),
+    Mutation("subfacet-shadowing-ignored", S + "tracing/engine.py",
+             "visibility=f.visibility * s,", "visibility=f.visibility,",
+             ("tests/tracing/test_engine_objects.py",),
+             "sub-facet shadowing computed but not applied"),
+    Mutation("smith-lambda-doubled", S + "geometry/shadowing.py",
+             "lam = 0.5 * np.exp(-nu * nu)", "lam = np.exp(-nu * nu)",
+             ("tests/tracing/test_smith_statistics.py", "tests/geometry"),
+             "Smith's Lambda twice too large (too much shadow)"),
+    Mutation("permittivity-sign", S + "ocean/seawater.py",
+             "- 1j * sigma / (2.0 * np.pi * EPS0 * f)",
+             "+ 1j * sigma / (2.0 * np.pi * EPS0 * f)",
+             ("tests/ocean/test_seawater.py",),
+             "conduction loss with the exp(-j omega t) sign"),
+    Mutation("aperture-gain-2pi", S + "radar/antennas.py",
+             "norm = 4.0 * np.pi / aperture_radiated_power(",
+             "norm = 2.0 * np.pi / aperture_radiated_power(",
+             ("tests/radar/test_antennas.py",), "antenna directivity 3 dB low"),
+    Mutation("blend-copol-exponent", S + "scattering/blend.py",
+             "w1 = xp.exp(-_LN10 * (b * (1.0 / (6.0 * math.pi))) ** 8)",
+             "w1 = xp.exp(-_LN10 * (b * (1.0 / (6.0 * math.pi))) ** 1.5)",
+             ("tests/scattering/test_blend_twoscale.py",),
+             "co-pol Kirchhoff weight with the cross-pol exponent (both back ends)"),
+    Mutation("spm-validity-bound-3", S + "ocean/twoscale.py",
+             "SPM_KH_MAX = 0.3", "SPM_KH_MAX = 3.0",
+             ("tests/ocean/test_twoscale_sampling.py",), "no SPM validity warning ever"),
+    Mutation("sigma0-per-facet-area", S + "simulation.py",
+             "rcs = self.sigma_facet * f.area[:, None]", "rcs = self.sigma_facet",
+             ("tests/test_simulation.py", "tests/test_end_to_end.py"),
+             "the output sigma0 per facet area again, not per horizontal area"),
+    Mutation("refresh-traces-the-live-sea", S + "simulation.py",
+             "FacetEngine.from_model(models.tracing, self.surface_state_at,",
+             "FacetEngine.from_model(models.tracing, self.sea.state,",
+             ("tests/test_simulation.py",),
+             "occlusion refreshed on the sea of t_ref, not the surface held then"),
+    Mutation("pitch-sign", S + "radar/platforms.py",
+             "r[..., 2, 0] = sp", "r[..., 2, 0] = -sp",
+             ("tests/radar/test_platforms.py",), "nose-up pitch points the nose down"),
+    # --- tried by hand on the formulas written once for numpy and Dr.Jit
+    Mutation("fresnel-rv-without-eps", S + "scattering/fresnel.py",
+             "(eps_r * c - root) / xp.select(zv, 1.0, den_v)",
+             "(c - root) / xp.select(zv, 1.0, den_v)",
+             ("tests/scattering/test_fresnel.py",),
+             "eq R2's numerator without eps_r (TM reflection wrong, both back ends)"),
+    Mutation("blend-6pi-to-7pi", S + "scattering/blend.py",
+             "(b * (1.0 / (6.0 * math.pi))) ** 8", "(b * (1.0 / (7.0 * math.pi))) ** 8",
+             ("tests/scattering/test_blend_twoscale.py",),
+             "eq B3's co-pol Kirchhoff domain 22 deg instead of 18.85 deg"),
+    Mutation("spm-s6-sign", S + "scattering/spm.py",
+             "em1 * (eps_r * sin_i * sin_s - r_i * r_s * cos_phi)",
+             "em1 * (eps_r * sin_i * sin_s + r_i * r_s * cos_phi)",
+             ("tests/scattering/test_spm.py",),
+             "eq S6 (alpha_vv) with the bistatic term's sign flipped"),
+    Mutation("gram-charlier-c22-doubled", S + "scattering/slopes.py",
+             "    c22: float = 0.12\n", "    c22: float = 0.24\n",
+             ("tests/scattering/test_kirchhoff.py",),
+             "Cox-Munk peakedness coefficient c22 twice its measured value"),
+    Mutation("go-exponent-q2", S + "scattering/kirchhoff.py",
+             "math.log(math.pi) - 4.0 * xp.log(cn) + log_p",
+             "math.log(math.pi) - 2.0 * xp.log(cn) + log_p",
+             ("tests/scattering/test_kirchhoff.py",),
+             "eq K1 with |q|^2 / q_N^2 instead of |q|^4 / q_N^4 (both back ends)"),
+    # --- code that is new since the script was written
+    Mutation("breaking-fraction-doubled", S + "scattering/breaking.py",
+             "    q = C_Q * total\n", "    q = 2.0 * C_Q * total\n",
+             ("tests/scattering/test_breaking.py", "tests/scattering/test_validation_gmf.py"),
+             "KHCC03's fraction of breaking zones q twice too large"),
+    Mutation("breaking-swb2", S + "scattering/breaking.py",
+             "S_WB2 = 0.19", "S_WB2 = 0.1",
+             ("tests/scattering/test_breaking.py",),
+             "KHCC03's mean square slope of breaking zones 0.1 instead of 0.19"),
+    Mutation("kelvin-height-as-amplitude", S + "wake/kelvin.py",
+             "h = max(h, float(z.max() - z.min()))",
+             "h = max(h, 0.5 * float(z.max() - z.min()))",
+             ("tests/wake/test_wake_heights.py",),
+             "Michell's amplitude taken for the crest-to-trough height: empirical wake "
+             "heights doubled"),
+    Mutation("kriebel-seelig-decay-sqrt", S + "wake/empirical.py",
+             "(y / length) ** (-1.0 / 3.0)", "(y / length) ** (-0.5)",
+             ("tests/wake/test_wake_heights.py",),
+             "wake heights decay as y^(-1/2) (transverse waves) not y^(-1/3) (cusp)"),
+    Mutation("turbulent-damping-decay", S + "wake/turbulent.py",
+             "d_t = (1.0 + xi / width_at_stern) ** -0.6",
+             "d_t = (1.0 + xi / width_at_stern) ** -0.2",
+             ("tests/wake/test_turbulent_damping.py",),
+             "the wake's Bragg damping decays as its width grows, not as its eddy viscosity"),
+    Mutation("calibration-mean-not-sum", S + "imaging/calibration.py",
+             "k = np.sum(w * a, axis=1)  # eq (K2)",
+             "k = np.mean(w * a, axis=1)  # eq (K2)",
+             ("tests/imaging/test_bistatic_point_target.py",),
+             "eq K2 without the number of pulses: image RCS N^2 too large"),
+    Mutation("calibration-monostatic-range", S + "imaging/calibration.py",
+             "wavelength, ranges[0],\n                          ranges[1])",
+             "wavelength, ranges[0],\n                          ranges[0])",
+             ("tests/imaging/test_calibration.py",),
+             "eq K1 with r_t^2 for r_t r_r (the bistatic range factor lost)"),
+    Mutation("backprojection-phase-sign", S + "imaging/backprojection.py",
+             "cos=xp.cos(phase) * w, sin=xp.sin(phase) * w)",
+             "cos=xp.cos(phase) * w, sin=-xp.sin(phase) * w)",
+             ("tests/imaging/test_monostatic_point_target.py",),
+             "eq B2's carrier phase exp(-j 2 pi f_c tau) (numpy and Dr.Jit, one formula): "
+             "the pulses do not add up"),
+]
+
+
+def _copy_tree(dest: Path) -> None:
+    """Copy the working tree: the files git tracks or would track (README, setup.sh,
+    benchmarks... which tests read too), else the folders of ``COPY``."""
+    try:
+        listed = subprocess.run(["git", "ls-files", "-z", "--cached", "--others",
+                                 "--exclude-standard"], cwd=ROOT, capture_output=True,
+                                check=True).stdout.decode().split("\0")
+    except (OSError, subprocess.CalledProcessError):
+        listed = []
+    if listed:
+        for name in filter(None, listed):
+            src = ROOT / name
+            if src.is_file():
+                (dest / name).parent.mkdir(parents=True, exist_ok=True)
+                shutil.copy2(src, dest / name)
+        return
+    ignore = shutil.ignore_patterns("__pycache__", "*.egg-info", ".hypothesis", "*.pyc")
+    for name in COPY:
+        src = ROOT / name
+        if src.is_dir():
+            shutil.copytree(src, dest / name, ignore=ignore)
+        elif src.exists():
+            shutil.copy2(src, dest / name)
+
+
+def _stale(mutations: list[Mutation]) -> list[str]:
+    """One line per mutation whose ``old`` text or tests are not where it expects them."""
+    out = []
+    for m in mutations:
+        path = ROOT / m.path
+        n = path.read_text(encoding="utf-8").count(m.old) if path.is_file() else None
+        if n is None:
+            out.append(f"{m.name}: {m.path} does not exist")
+        elif n != m.count:
+            out.append(f"{m.name}: its text occurs {n} times in {m.path}, expected {m.count}")
+        out += [f"{m.name}: test path {t} does not exist" for t in m.tests
+                if not (ROOT / t).exists()]
+    return out
+
+
+def _pytest(tree: Path, tests: tuple[str, ...], timeout: float) -> tuple[int, str]:
+    env = dict(os.environ, PYTHONPATH=str(tree / "src"))
+    cmd = [sys.executable, "-m", "pytest", "-x", "-q", "-p", "no:cacheprovider",
+           "--no-header", *tests]
+    try:
+        res = subprocess.run(cmd, cwd=tree, env=env, capture_output=True, text=True,
+                             timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return -1, "timeout"
+    lines = [ln for ln in res.stdout.splitlines() if ln.strip()]
+    failed = [ln for ln in lines if ln.startswith(("FAILED", "ERROR"))]
+    return res.returncode, (failed[0] if failed else (lines[-1] if lines else ""))
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--full", action="store_true",
+                    help="run the whole suite for every mutation (not only its tests)")
+    ap.add_argument("--only", nargs="+", metavar="NAME", help="run these mutations")
+    ap.add_argument("--list", action="store_true", help="list the mutations and exit")
+    ap.add_argument("--timeout", type=float, default=1800.0, help="per pytest run [s]")
+    args = ap.parse_args()
+    chosen = [m for m in MUTATIONS if not args.only or m.name in args.only]
+    unknown = sorted(set(args.only or ()) - {m.name for m in MUTATIONS})
+    if unknown:
+        print(f"unknown mutation(s): {', '.join(unknown)} (see --list)", file=sys.stderr)
+        return 2
+    if args.list or not chosen:
+        for m in MUTATIONS:
+            print(f"{m.name:34s} {m.path}: {m.why}")
+        return 0 if args.list else 2
+    stale = _stale(chosen)
+    if stale:  # a mutation that no longer applies tests nothing: refuse to run
+        print("tools/mutations.py is out of date with the source:", file=sys.stderr)
+        for line in stale:
+            print(f"  {line}", file=sys.stderr)
+        return 2
+    print(f"mutations: {len(chosen)}; load {os.getloadavg()[0]:.2f}", flush=True)
+    killed = 0
+    with tempfile.TemporaryDirectory(prefix="seaecho-mutations-") as tmp:
+        tree = Path(tmp)
+        _copy_tree(tree)
+        for m in chosen:
+            path = tree / m.path
+            original = path.read_text(encoding="utf-8")
+            path.write_text(original.replace(m.old, m.new), encoding="utf-8")
+            t0 = time.perf_counter()
+            try:
+                rc, detail = _pytest(tree, () if args.full else m.tests, args.timeout)
+                where = "suite" if args.full else "its tests"
+                if rc == 0 and not args.full:  # its tests missed it: the whole suite?
+                    rc, detail = _pytest(tree, (), args.timeout)
+                    where = "suite"
+            finally:
+                path.write_text(original, encoding="utf-8")
+            status = "killed" if rc != 0 else "SURVIVED"
+            killed += rc != 0
+            print(f"{m.name:34s} {status:8s} ({where}, {time.perf_counter() - t0:5.1f} s) "
+                  f"{detail[:110]}", flush=True)
+    print(f"score: {killed} / {len(chosen)} killed; load {os.getloadavg()[0]:.2f}")
+    return 0 if killed == len(chosen) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
