@@ -223,6 +223,14 @@ def build_sea_model(scene, frequency: float | None = None,
     k_cut = TWO_SCALE_CUT_RATIO * k
     k_max = ROUGHNESS_K_MAX_RATIO * k
     tilt = unresolved_statistics(spectrum, dx, dy, k_cut)
+    if not (tilt.mss_upwind > 0 and tilt.mss_crosswind > 0) and tilt.k_grid < k_cut:
+        raise ValueError(
+            f"[sea]: the unresolved waves between the grid's {2 * np.pi / tilt.k_grid:.4g} m "
+            f"and the two-scale split 2 pi / k_cut = {2 * np.pi / k_cut:.4g} m at "
+            f"{f / 1e9:g} GHz carry no slope (U19.5 = {cfg.wind_speed_m_s:g} m/s"
+            + (f", fetch {cfg.fetch_m:g} m" if cfg.fetch_m is not None else "")
+            + "): the facets would have no sub-facet slopes; a stronger wind, a longer "
+            "fetch, or a coarser grid")
     if not (tilt.mss_upwind > 0 and tilt.mss_crosswind > 0):
         raise ValueError(
             f"[sea] grid spacing {max(dx, dy):.4g} m resolves every wave longer than the "

@@ -325,6 +325,12 @@ def two_scale_problems(scene) -> list[str]:
     (lx, ly), (ny, nx) = scene.sea.size_m, scene.sea.shape
     dx = max(lx / nx, ly / ny)
     if dx > lam / 4.0:
+        from .build import build_sea_model
+
+        try:  # the builder's own check: sub-facet slopes in the tilting band
+            build_sea_model(scene)
+        except ValueError as exc:
+            return [str(exc)]
         return []
     return [f"[sea].size_x_m / nx = {dx:.3g} m: grid spacing at most a quarter of the radar "
             f"wavelength ({lam:.3g} m at [radar].carrier_frequency_hz = "
@@ -369,7 +375,8 @@ def object_problems(scene, base_dir) -> list[str]:
 def image_problems(scene) -> list[str]:
     """``[image]`` the run cannot focus after writing the raw data (which would leave the
     raw file and no image): no extent given and nothing that sets a default one (no sea
-    clutter, no targets); more pixels than the focusing takes; more looks than pixels."""
+    clutter, no targets); fewer than 2 x 2 pixels or more than the focusing takes; more
+    looks than pixels; a receive window of fewer than 2 samples."""
     from .imaging.focus import MAX_PIXELS
     from .resources import image_shape
 
@@ -392,7 +399,12 @@ def image_problems(scene) -> list[str]:
     if window_size(scene)[0] < 2:
         out.append("[image]: the receive window holds fewer than 2 samples per pulse: "
                    "nothing to focus (widen window_start_m / window_end_m)")
-    if cfg.looks[0] > ny or cfg.looks[1] > nx:
+    if ny < 2 or nx < 2:
+        out.append(f"[image].pixel_m = {short_repr(cfg.pixel_m)}, extent_m = "
+                   f"{short_repr(cfg.extent_m)}: an image of {ny} x {nx} pixels; it needs at "
+                   "least 2 x 2 (a smaller pixel or a larger extent; without them: a quarter "
+                   "of the range resolution over the sea tile or the targets' box)")
+    elif cfg.looks[0] > ny or cfg.looks[1] > nx:
         out.append(f"[image].looks = {short_repr(cfg.looks)}: more looks (azimuth y, range "
                    f"x) than the image's {ny} x {nx} pixels")
     return out

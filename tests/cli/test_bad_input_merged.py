@@ -169,3 +169,47 @@ def test_trihedral_scene_copies_still_check(tmp_path, capsys):
     scene = _scene(tmp_path, TRIHEDRAL.read_text())
     rc, out, _ = _cli(capsys, "check", str(scene))
     assert rc == 0 and "hull rays" in out
+
+
+def test_scene_json_of_a_run_with_an_occluder_reads_back():
+    # Found by the fuzzing suite: a run's scene_json holds every field with its default;
+    # an occluding object's SBR defaults (max_bounces = 3...) read back as "set", so
+    # `seaecho image` and [image] after a run refused the run's own scene
+    import json
+    import tomllib
+
+    from seaecho.config import parse_scene
+    from seaecho.io.dataset import scene_attrs
+
+    d = tomllib.loads(CAL)
+    d["objects"] = [{"name": "boat", "file": "meshes/motor_boat_10m.ply"}]  # occluder
+    scene = parse_scene(d)
+    data = json.loads(scene_attrs(scene)["scene_json"])
+    assert data["objects"][0]["max_bounces"] == 3  # the default, written out
+    assert parse_scene(data) == scene
+    data["objects"][0]["max_bounces"] = 2
+    with pytest.raises(Exception, match="max_bounces: only with scatterer = true"):
+        parse_scene(data)
+
+
+@pytest.mark.filterwarnings("ignore::seaecho.warnings.ValidityWarning")
+def test_calm_sea_without_subfacet_slopes_is_refused_by_check_as_by_run(tmp_path, capsys):
+    # Found by the fuzzing suite: U19.5 = 0.3 m/s over a 5.7 m fetch has no slope between
+    # the 1 m grid's 2 m waves and the 1 GHz split (0.9 m): the builder refused the run
+    # ("resolves every wave", which it does not) after `check` had accepted it
+    import tomllib
+
+    from seaecho.config.toml_writer import dumps
+
+    d = tomllib.loads(CAL)
+    d["sea"] = {"wind_speed_m_s": 0.3, "fetch_m": 5.723, "size_x_m": 4.0, "nx": 4}
+    d["radar"].update(carrier_frequency_hz=1.0e9, sea_clutter=True)
+    scene = _scene(tmp_path, dumps(d))
+    errs = []
+    for command in ("check", "run"):
+        extra = ["-o", str(tmp_path / "x.nc"), "-q"] if command == "run" else []
+        rc, _, err = _cli(capsys, command, str(scene), *extra)
+        assert rc == 2 and "carry no slope" in err and "U19.5 = 0.3 m/s" in err, err
+        errs.append(err.split("\n", 1)[1])
+    assert errs[0] == errs[1]
+    assert sorted(tmp_path.iterdir()) == [scene]

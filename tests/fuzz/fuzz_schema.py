@@ -365,6 +365,8 @@ def _image(draw: Draw, d: dict, get: Get) -> dict:
         d["filter_size"] = min(d["filter_size"] | 1, 101)  # odd
         if d.get("speckle_filter") == "refined-lee":
             d["filter_size"] = max(d["filter_size"], 5)
+    if max(d.get("looks", (1, 1))) > 1:  # the default pixel may be as large as the tile
+        d.setdefault("pixel_m", 1.0)
     if "extent_m" in d:
         x0, x1, y0, y1 = d["extent_m"]
         x0, x1, y0, y1 = min(x0, x1), max(x0, x1), min(y0, y1), max(y0, y1)
@@ -372,6 +374,9 @@ def _image(draw: Draw, d: dict, get: Get) -> dict:
         d["extent_m"] = (x0, max(x1, x0 + least), y0, max(y1, y0 + least))
     if "looks" in d:
         d["looks"] = tuple(min(max(n, 1), 1000) for n in d["looks"])
+        if "extent_m" not in d:  # room for the looks: the default extent may be 1 pixel
+            least = 2.0 * d.get("pixel_m", 1.0)
+            d["extent_m"] = (-10.0, max(10.0, least), -10.0, max(10.0, least))
     return d
 
 
@@ -385,10 +390,16 @@ def _scene(draw: Draw, d: dict, get: Get) -> dict:
     if objects:
         d["objects"] = tuple(objects)
     image, radar = d.get("image"), d.get("radar")
-    if image is not None and "extent_m" not in image and not d.get("targets") and (
-            radar is None or not radar.get("sea_clutter", True)):
-        pixel = image.get("pixel_m", 1.0)  # nothing sets a default extent
-        image["extent_m"] = (-10.0, max(10.0, 2 * pixel), -10.0, max(10.0, 2 * pixel))
+    if image is not None and radar is not None:
+        # at least 2 x 2 pixels (the default pixel c / (8 B) may exceed a small tile)
+        w = radar["waveform"]
+        pixel = image.get("pixel_m", 3.0e8 / (8.0 * w.get("bandwidth_hz",
+                                                          1.0 / w["duration_s"])))
+        x0, x1, y0, y1 = image.get("extent_m", (-10.0, 10.0, -10.0, 10.0))
+        if "extent_m" in image or not (d.get("targets") or radar.get("sea_clutter", True)
+                                       ) or 2.1 * pixel > min(
+                d["sea"]["size_x_m"], d["sea"].get("size_y_m", d["sea"]["size_x_m"])):
+            image["extent_m"] = (x0, max(x1, x0 + 2.1 * pixel), y0, max(y1, y0 + 2.1 * pixel))
     radar, tx = d.get("radar"), d.get("transmitter")
     if radar is not None and tx is None:
         d["transmitter"] = tx = draw(get("transmitter"))

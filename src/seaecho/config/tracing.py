@@ -146,9 +146,12 @@ class ObjectConfig(Section):
             raise ValueError("conductivity_s_m needs relative_permittivity")
         own = {"max_bounces", "rays_per_wavelength", "signature_refresh_deg",
                "signature_refresh_s", "signature_cell_m", "sea_multipath"}
-        if not self.scatterer and own & self.model_fields_set:
-            raise ValueError(f"{', '.join(sorted(own & self.model_fields_set))}: only with "
-                             "scatterer = true")
+        # A value other than the default (the run's scene_json holds every field with
+        # its default, and must read back: seaecho image, [image] after a run)
+        given = {f for f in own & self.model_fields_set
+                 if getattr(self, f) != type(self).model_fields[f].default}
+        if not self.scatterer and given:
+            raise ValueError(f"{', '.join(sorted(given))}: only with scatterer = true")
         suffix = self.file.rsplit(".", 1)[-1].lower() if "." in self.file else ""
         if suffix not in ("ply", "obj", "stl", "xml"):
             raise ValueError(f"file = {short_repr(self.file)}: allowed extensions .ply, .obj, "
