@@ -43,6 +43,10 @@ everything ``run`` would):
 
 - **Something to receive**: sea clutter on, a target, or an explicit receive window.
 
+"The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona, NY,
+USA, 2006, doi:10.1109/RADAR.2006.1631862.
+
 Every problem found is reported at once in one :class:`~seaecho.config.SceneError` whose
 lines name the field (``[transmitter].position_m``, ``[[targets]] #2``...).
 """

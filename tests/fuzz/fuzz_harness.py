@@ -46,10 +46,10 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
         folder = Path(tmp)
         scene = folder / "scene.toml"
         scene.write_text(text, encoding="utf-8")
-        args = [command, str(scene), "--max-memory-gb", MAX_MEMORY_GB]
+        args = [command, str(scene), "--max-memory-gb", MAX_MEMORY_GB, "--no-figures"]
         out_nc = folder / "out.nc"
-        if command == "run":
-            args += ["-o", str(out_nc), "-q", "--no-figures"]
+        if command == "run":  # check estimates the same run: without figures
+            args += ["-o", str(out_nc), "-q"]
         args += list(extra)
         o, e = io.StringIO(), io.StringIO()
         with (contextlib.redirect_stdout(o), contextlib.redirect_stderr(e),

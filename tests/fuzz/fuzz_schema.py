@@ -490,9 +490,29 @@ def scenes(runnable: bool = True) -> st.SearchStrategy[dict]:
             d["radar"] = draw(section(RadarConfig, ("radar",)))
         if "transmitter" not in d:
             d["transmitter"] = draw(section(PlatformConfig, ("transmitter",)))
-        return _scene(draw, d, lambda n: field_value(Scene, n))
+        d = _scene(draw, d, lambda n: field_value(Scene, n))
+        return _with_subfacet_slopes(d)
 
     return build()
+
+
+def _with_subfacet_slopes(d: dict) -> dict:
+    """A sea whose unresolved waves carry slope at the carrier (the builder refuses a
+    calm sea without sub-facet slopes): else a 5 m/s fully developed sea."""
+    if not d["radar"].get("sea_clutter", True):
+        return d
+    import warnings
+
+    from seaecho.build import build_sea_model
+
+    try:
+        with warnings.catch_warnings():  # the run says them; here only the outcome counts
+            warnings.simplefilter("ignore")
+            build_sea_model(parse_scene(d))
+    except ValueError:
+        sea = {k: v for k, v in d["sea"].items() if k not in ("fetch_m", "depth_m")}
+        d["sea"] = {**sea, "wind_speed_m_s": 5.0, "spectrum": "elfouhaily"}
+    return d
 
 
 def finite_floats(x: Any) -> bool:

@@ -62,7 +62,8 @@ def test_run_of_a_mutated_scene_agrees_with_check(m):
     event(f"{m.kind} -> check {checked.rc}, run {ran.rc}")
     assert_clean(ran, text[:3000])
     runnable = "[radar]" in text and "[transmitter]" in text
-    if checked.rc == 2:
+    if checked.rc == 2 and "does not fit in memory" not in checked.err:
+        # (a run of 2 pulses may fit where the whole run does not)
         assert ran.rc == 2, "run accepted what check refused\n" + checked.err
     elif runnable and "needs [radar]" not in ran.err:
         assert ran.rc == 0, "run refused what check accepted\n" + ran.err

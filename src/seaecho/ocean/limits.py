@@ -16,6 +16,9 @@ Two limits the builder checks for every use of ``[sea]``
 
 References
 ----------
+A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic & polarimetric marine
+radar simulator", Proc. 2006 IEEE Conference on Radar, Verona, NY, USA, 2006,
+doi:10.1109/RADAR.2006.1631862 ("the paper").
 K. Hasselmann et al., "Measurements of wind-wave growth and swell decay during the Joint
 North Sea Wave Project (JONSWAP)", Dtsch. Hydrogr. Z. A8(12), 1973.
 T. Elfouhaily, B. Chapron, K. Katsaros and D. Vandemark, "A unified directional spectrum
