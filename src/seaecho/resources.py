@@ -73,7 +73,8 @@ M_GM = 200.0  #: per Gauss-Markov step and perturbed platform
 M_TARGET = 400.0  #: per point target
 M_ANTENNA = 40.0  #: per n_theta^2 of a rectangular aperture's normalisation
 M_ANTENNA_GRID = 200 * MiB  #: its integration grid (chunks of 2e6 directions)
-M_SBR_BATCH = 300 * MiB  #: a hull trace's batch of 2^18 rays (about 1 kB per ray)
+M_SBR_RAY = 1200.0  #: per ray of a hull trace's batch (about 1 kB per ray)
+SBR_BATCH = 1 << 18  #: rays per batch (``seaecho.tracing.sbr.SBROptions.batch``)
 M_SBR_CELL = 24.0  #: per cell of a hull trace's launch grid (coverage mask, indices)
 M_CENTRE = 200.0  #: per scattering centre of a cached hull signature
 M_PIXEL = 120.0  #: per image pixel (calibration maps, coverage, products' temporaries)
@@ -433,7 +434,8 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
         "figures": M_FIGURE * n_p * c * n_s if figures else 0.0,
         "perturbation": M_GM * gm,
         "targets": M_TARGET * k,
-        "hull traces": (max((M_SBR_BATCH + M_SBR_CELL * h.grid for h in hulls), default=0.0)
+        "hull traces": (max((M_SBR_RAY * min(SBR_BATCH, h.grid) + M_SBR_CELL * h.grid
+                             for h in hulls), default=0.0)
                         + sum(M_CENTRE * h.centres * min(h.traces, SIGNATURE_CACHE)
                               for h in hulls)),
     }
