@@ -370,10 +370,28 @@ def object_problems(scene, base_dir) -> list[str]:
         from .tracing.scene import load_object
 
         try:
-            load_object(obj, base_dir=str(base_dir), ship=scene.ship)
+            shapes = load_object(obj, base_dir=str(base_dir), ship=scene.ship)
         except ValueError as exc:
             out.append(f"[[objects]] #{i} ({obj.name}): {short_repr(str(exc), 300)[1:-1]}")
+            continue
+        out += _material_problems(i, obj, shapes, scene.radar.carrier_frequency_hz)
     return out
+
+
+def _material_problems(i: int, obj, shapes, frequency: float) -> list[str]:
+    """An ITU-R P.2040 material the table does not define at the carrier (the tracer's
+    radio material and the hull echo's Fresnel coefficients need it)."""
+    from .tracing.sbr import material_permittivity
+
+    for itu in sorted({sh.itu_type for sh in shapes if sh.itu_type is not None}):
+        try:
+            material_permittivity(frequency, itu_type=itu)
+        except ValueError as exc:
+            return [f"[[objects]] #{i} ({obj.name}): material = {short_repr(itu)} at "
+                    f"[radar].carrier_frequency_hz = {frequency:g}: {exc} (ITU-R P.2040-3, "
+                    "table 3, gives each material's frequency range); choose another "
+                    "material or give relative_permittivity and conductivity_s_m"]
+    return []
 
 
 def image_problems(scene) -> list[str]:

@@ -216,3 +216,17 @@ def test_calm_sea_without_subfacet_slopes_is_refused_by_check_as_by_run(tmp_path
         errs.append(err.split("\n", 1)[1])
     assert errs[0] == errs[1]
     assert sorted(tmp_path.iterdir()) == [scene]
+
+
+def test_itu_material_undefined_at_the_carrier_is_refused_by_check(tmp_path, capsys):
+    # Found by the fuzzing suite: ITU-R P.2040 defines 'floorboard' from 50 to 100 GHz;
+    # at 16.9 GHz `check` accepted it and `run` died with a traceback from Sionna's table
+    # when the ray-traced sea loaded the object
+    shutil.copytree(TRIHEDRAL.parent / "meshes", tmp_path / "meshes")
+    text = TRIHEDRAL.read_text().replace('material = "metal"', 'material = "floorboard"')
+    scene = _scene(tmp_path, text)
+    for command in ("check", "run"):
+        extra = ["-o", str(tmp_path / "x.nc"), "-q"] if command == "run" else []
+        rc, _, err = _cli(capsys, command, str(scene), *extra)
+        assert rc == 2 and "material = \"floorboard\"" in err and "P.2040" in err, err
+    assert not (tmp_path / "x.nc").exists()

@@ -390,6 +390,16 @@ def _scene(draw: Draw, d: dict, get: Get) -> dict:
     if objects:
         d["objects"] = tuple(objects)
     image, radar = d.get("image"), d.get("radar")
+    if radar is not None and objects:  # an ITU material defined at the carrier
+        from seaecho.tracing.sbr import material_permittivity
+
+        for obj in objects:
+            try:
+                if obj.get("material"):
+                    material_permittivity(radar["carrier_frequency_hz"],
+                                          itu_type=obj["material"])
+            except ValueError:
+                obj["material"] = "metal"
     if image is not None and radar is not None:
         # at least 2 x 2 pixels (the default pixel c / (8 B) may exceed a small tile)
         w = radar["waveform"]
