@@ -34,7 +34,7 @@ LAYERS = [
     {"io"},
     {"build"},
     {"imaging"},
-    {"simulation"},
+    {"simulation", "guards", "preflight", "resources"},
     {"distributed"},
     {"api"},
     {"cli"},

@@ -281,3 +281,61 @@ def test_scene_variant_reaches_every_kernel(mode, monkeypatch):
         update={"mode": mode, "variant": "llvm_ad_mono_polarized"})})
     Simulation(sc).pulse(0)
     assert len(asked) >= 4 and set(asked) == {"llvm_ad_mono_polarized"}, asked
+
+
+def _nan_target_echo(real, bad_pulse, bad_target):
+    """target_echo with target ``bad_target``'s amplitudes NaN from ``bad_pulse`` on."""
+
+    def echo(self, geometry, *, variant=None):
+        e = real(self, geometry, variant=variant)
+        if geometry.time >= self.emission_time(bad_pulse):
+            e.amplitudes[:, bad_target] = np.nan
+        return e
+
+    return echo
+
+
+def test_non_finite_pulse_stops_the_run_and_names_the_target(tmp_path, monkeypatch):
+    from seaecho.guards import NonFiniteEchoError
+    from seaecho.radar.system import RadarSystem
+
+    monkeypatch.setattr(RadarSystem, "target_echo",
+                        _nan_target_echo(RadarSystem.target_echo, 3, 1))
+    path = tmp_path / "out.nc"
+    with pytest.raises(NonFiniteEchoError, match=r"pulse 3 .*point target \"target1\""):
+        Simulation(_scene(n_pulses=6)).run(path, progress=False, chunk=2)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_non_finite_sea_facets_are_named(monkeypatch):
+    from seaecho.guards import NonFiniteEchoError
+
+    sim = Simulation(_scene(sea=True, n_pulses=2))
+    real = sim.sea_echo
+
+    def sea_echo(pulse, geometry=None, sigma=False):
+        se = real(pulse, geometry, sigma)
+        se.echo.tau[5] = np.inf
+        return se
+
+    monkeypatch.setattr(sim, "sea_echo", sea_echo)
+    with pytest.raises(NonFiniteEchoError, match=r"pulse 1 .*1 sea facets \(first index 5\)"):
+        sim.pulse(1)
+
+
+def test_non_finite_static_variable_stops_the_run(tmp_path, monkeypatch):
+    from seaecho.guards import NonFiniteEchoError
+    from seaecho.io import run as io_run
+
+    sim = Simulation(_scene(n_pulses=3))
+    real = io_run.run_dataset
+
+    def run_dataset(*args, **kwargs):
+        ds = real(*args, **kwargs)
+        ds["tx_velocity"].values[1, 0] = np.inf
+        return ds
+
+    monkeypatch.setattr(io_run, "run_dataset", run_dataset)
+    with pytest.raises(NonFiniteEchoError, match="tx_velocity"):
+        sim.run(tmp_path / "out.nc", progress=False)
+    assert list(tmp_path.iterdir()) == []

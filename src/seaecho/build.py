@@ -82,16 +82,61 @@ __all__ = [
     "build_tracing",
     "carrier_frequency",
     "check_scene",
+    "check_sea",
     "platform_positions",
     "scene_attrs",
     "sea_spectrum",
+    "section_spectrum",
 ]
 
 
 # ----------------------------------------------------------------------------- the sea
 def sea_spectrum(scene) -> DirectionalSpectrum:
-    """The directional spectrum of ``[sea]`` (degrees -> radians)."""
-    sea = scene.sea
+    """The directional spectrum of ``[sea]`` (degrees -> radians).
+
+    Raises
+    ------
+    seaecho.config.SceneError
+        ``[sea]``'s fetch or depth outside what its spectrum describes
+        (:func:`check_sea`).
+    """
+    check_sea(scene.sea)
+    return section_spectrum(scene.sea)
+
+
+def check_sea(sea) -> None:
+    """Raise :class:`~seaecho.config.SceneError` if a ``[sea]`` section's fetch or depth
+    is outside what its spectrum describes (:mod:`seaecho.ocean.limits`: the fetch law's
+    seas, McCowan's breaking depth). The fetch comes first: the depth check integrates
+    the spectrum the fetch sets. Every use of the sea goes through :func:`sea_spectrum`,
+    so ``check``, ``surface``, ``run``, ``trace`` and each case of a sweep refuse alike.
+    """
+    from .config import SceneError
+    from .ocean.limits import BREAKING_RATIO, fetch_range, min_depth, significant_height
+
+    if sea.fetch_m is not None and sea.spectrum != "pierson-moskowitz":
+        lo, hi = fetch_range(sea.spectrum, sea.wind_speed_m_s)
+        if not lo <= sea.fetch_m <= hi:
+            span = f"[{lo:.3g}, {hi:.3g}]" if np.isfinite(hi) else f">= {lo:.3g}"
+            raise SceneError(
+                f"[sea].fetch_m = {sea.fetch_m:g}: outside the fetches the {sea.spectrum} "
+                f"fetch law describes at U19.5 = {sea.wind_speed_m_s:g} m/s, {span} m "
+                "(inverse wave age from 5, a young sea, to 0.84, fully developed: "
+                "Elfouhaily et al. 1997); for a fully developed sea use "
+                "'pierson-moskowitz', or 'elfouhaily' without fetch_m")
+    if sea.depth_m is not None:
+        spectrum = section_spectrum(sea)
+        if sea.depth_m < min_depth(spectrum):
+            h_s = significant_height(spectrum)
+            raise SceneError(
+                f"[sea].depth_m = {sea.depth_m:g}: shallower than this sea's waves allow, "
+                f"H_s / {BREAKING_RATIO} = {h_s / BREAKING_RATIO:.3g} m (H_s = {h_s:.3g} m, "
+                "significant height of the spectrum; waves break where H > 0.78 d, "
+                "McCowan 1894)")
+
+
+def section_spectrum(sea) -> DirectionalSpectrum:
+    """The directional spectrum of a ``[sea]`` section, unchecked (:func:`sea_spectrum`)."""
     return DirectionalSpectrum(spectrum=sea.spectrum, spreading=sea.spreading,
                                u19_5=sea.wind_speed_m_s,
                                wind_direction=float(np.deg2rad(sea.wind_direction_deg)),
@@ -184,6 +229,14 @@ def build_sea_model(scene, frequency: float | None = None,
     k_cut = TWO_SCALE_CUT_RATIO * k
     k_max = ROUGHNESS_K_MAX_RATIO * k
     band = unresolved_statistics(spectrum, dx, dy, k_cut)
+    if not (band.mss_upwind > 0 and band.mss_crosswind > 0) and band.k_grid < k_cut:
+        raise ValueError(
+            f"[sea]: the unresolved waves between the grid's {2 * np.pi / band.k_grid:.4g} m "
+            f"and the two-scale split 2 pi / k_cut = {2 * np.pi / k_cut:.4g} m at "
+            f"{f / 1e9:g} GHz carry no slope (U19.5 = {cfg.wind_speed_m_s:g} m/s"
+            + (f", fetch {cfg.fetch_m:g} m" if cfg.fetch_m is not None else "")
+            + "): the facets would have no sub-facet slopes; a stronger wind, a longer "
+            "fetch, or a coarser grid")
     if not (band.mss_upwind > 0 and band.mss_crosswind > 0):
         raise ValueError(
             f"[sea] grid spacing {max(dx, dy):.4g} m resolves every wave longer than the "

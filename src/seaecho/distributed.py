@@ -362,24 +362,29 @@ def run_case(case: Case, base_dir: str, out_dir: str | None, reduce: bool,
 
 def sweep(cases: list[Case], out_dir: str | os.PathLike, *, base_dir: str | os.PathLike = ".",
           reduce: bool = False, client=None, block: int | None = None,
-          progress: bool = True) -> list[dict]:
+          progress: bool = True, refused: dict[int, str] | None = None) -> list[dict]:
     """Run every case (one task each on ``client``, else here one after the other);
-    return the rows of the summary in case order (:func:`write_summary`)."""
+    return the rows of the summary in case order (:func:`write_summary`). The cases in
+    ``refused`` (index -> message, e.g. from ``seaecho.preflight.check_run``) are not
+    run: their rows are failed with that message."""
     from tqdm import tqdm
 
     base = str(Path(base_dir).resolve())
     out = str(out_dir)
-    rows: dict[int, dict] = {}
-    with tqdm(total=len(cases), unit="case", disable=not progress, desc="seaecho sweep") as bar:
+    rows: dict[int, dict] = {i: {"case": i, "status": "failed", "error": msg, "output": ""}
+                             for i, msg in (refused or {}).items()}
+    cases_run = [c for c in cases if c.index not in rows]
+    with tqdm(total=len(cases_run), unit="case", disable=not progress,
+              desc="seaecho sweep") as bar:
         if client is None:
-            for c in cases:
+            for c in cases_run:
                 rows[c.index] = run_case(c, base, out, reduce, block)
                 bar.update(1)
         else:
             from distributed import as_completed
 
             futures = {client.submit(run_case, c, base, out, reduce, block, pure=False):
-                       c.index for c in cases}
+                       c.index for c in cases_run}
             try:
                 for f in as_completed(futures):
                     try:

@@ -48,6 +48,7 @@ from numpy.typing import NDArray
 
 from .build import SimulationModels, build_simulation
 from .conventions import CHANNELS
+from .guards import check_dataset, check_pulse
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import generator
@@ -349,7 +350,9 @@ class Simulation:
             echoes.append(t)
         if self.hulls is not None:
             echoes += self.hulls.echoes(geo, pulse)
-        return self.radar.receive(pulse, echoes)
+        raw = self.radar.receive(pulse, echoes)
+        check_pulse(self, pulse, raw, echoes)  # NaN/Inf: NonFiniteEchoError (guards.py)
+        return raw
 
     def pulses(self, start: int, stop: int) -> tuple[NDArray[np.complex128],
                                                      NDArray[np.complex128]]:
@@ -420,7 +423,7 @@ class Simulation:
         # The hulls' centres at the sigma-map pulse and their RCS against pulse
         hulls = (self.hulls.truth(self.models.radar.sigma_map_pulse)
                  if self.hulls is not None else None)
-        return run_dataset(self.radar, self.models.attrs, truth=truth, extra=hulls,
+        ds = run_dataset(self.radar, self.models.attrs, truth=truth, extra=hulls,
                            x=None if self.sea is None else self.sea.x,
                            y=None if self.sea is None else self.sea.y,
                            extra_attrs={
@@ -432,6 +435,8 @@ class Simulation:
                                "sigma_map_pulse": self.models.radar.sigma_map_pulse,
                                "range_weighting": self.models.radar.range_weighting,
                                **self.sea_attrs()})
+        check_dataset(ds)  # NaN/Inf in tracks, surface, maps: NonFiniteEchoError
+        return ds
 
     def sea_attrs(self) -> dict:
         """Dataset attributes that say how the sea scatters and moves."""

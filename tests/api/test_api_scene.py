@@ -78,7 +78,7 @@ def test_overrides_keep_every_scene_file_as_it_is():
 @pytest.mark.parametrize(("overrides", "fragments"), [
     ({"sea.wind_speedd_m_s": 8.0}, ["[sea].wind_speedd_m_s", "unknown key",
                                     "wind_speed_m_s"]),
-    ({"sea.wind_speed_m_s": -3.0}, ["[sea].wind_speed_m_s = -3.0", "greater than 0"]),
+    ({"sea.wind_speed_m_s": -3.0}, ["[sea].wind_speed_m_s = -3.0", "greater than or equal to"]),
     ({"radar.n_pulses": 0}, ["[radar].n_pulses = 0"]),
     ({"sea.nx": 63}, ["nx = 63", "must be even"]),
     ({"radar.waveform.bandwidth_hz": "wide"}, ["[radar].waveform.bandwidth_hz", "wide"]),

@@ -1,5 +1,6 @@
 """The CLI: `seaecho check`, `seaecho surface`; bad input exits 2 with no traceback or file."""
 
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -46,6 +47,7 @@ def test_check_valid(capsys, tmp_path):
     assert "valid scene" in out and "warning" not in out
     # Sim 1 on a 0.125 m grid would leave k h_res = 0.38 > 0.3 at its 10 GHz carrier
     coarse = tmp_path / "sim1_512.toml"
+    shutil.copytree(SIM1.parent / "meshes", tmp_path / "meshes")  # its [[objects]]
     text = SIM1.read_text()
     coarse.write_text(text.replace("nx = 648", "nx = 512"))
     assert main(["check", str(coarse)]) == 0
@@ -82,7 +84,7 @@ def test_surface_same_seed_same_bytes(small_scene, tmp_path):
     ("edit", "fragment"),
     [
         (("wind_speed_m_s = 6.0", 'wind_speed_m_s = "six"'), "[sea].wind_speed_m_s"),
-        (("wind_speed_m_s = 6.0", "wind_speed_m_s = -6.0"), "greater than 0"),
+        (("wind_speed_m_s = 6.0", "wind_speed_m_s = -6.0"), "greater than or equal to 0.3"),
         (("nx = 64", "nx = 64\ncolour = 1"), "unknown key"),
         (("speed_kn = 10.0", "speed_kn = 100.0"), "[ship].speed_kn"),
     ],

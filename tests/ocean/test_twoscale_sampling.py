@@ -79,3 +79,14 @@ def test_sampling_warnings():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         check_sampling(*_sea(size_x_m=500.0, nx=8192), frequency=1e9)
+
+
+def test_empty_band_has_zero_variance():
+    """An integral over an empty band is 0: a grid finer than the band's upper limit
+    (k_cut = pi / dx >= k_max) leaves no unresolved waves, not an error."""
+    spec = DirectionalSpectrum("elfouhaily", "elfouhaily", u19_5=8.0)
+    assert height_variance(spec, 10.0, 1.0) == 0.0
+    assert height_variance(spec, 3.0, 3.0) == 0.0
+    assert slope_variances(spec, 10.0, 1.0) == (0.0, 0.0)
+    with pytest.raises(ValueError, match="finite"):
+        height_variance(spec, 1.0, np.inf)

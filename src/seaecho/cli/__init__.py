@@ -4,7 +4,8 @@ Each subcommand lives in its own module of this package with two functions:
 ``register(subparsers)`` adds its parser (and sets ``func``), ``run(args) -> int`` does
 the work. Modules import heavy dependencies inside ``run`` so that ``seaecho check`` and
 ``--help`` stay fast. Any :class:`~seaecho.config.SceneError` or ``ValueError`` raised for
-bad input becomes one message on stderr and exit status 2, with no traceback.
+bad input becomes one message on stderr and exit status 2, with no traceback; so do input
+nested too deeply to be read (``RecursionError``) and running out of memory.
 """
 
 from __future__ import annotations
@@ -49,6 +50,12 @@ class UsageError(ValueError):
     """Bad command-line or scene input: reported in one line, exit status 2."""
 
 
+def check_memory_option(value: float | None) -> None:
+    """``--max-memory-gb`` must be a positive, finite number of GB."""
+    if value is not None and not (0 < value < float("inf")):
+        raise UsageError(f"--max-memory-gb {value}: must be a positive number of GB")
+
+
 def _show_warning(message, category, filename, lineno, file=None, line=None):
     """One line per seaecho warning on stderr; others as Python shows them."""
     from ..warnings import SeaechoWarning
@@ -73,6 +80,14 @@ def main(argv: list[str] | None = None) -> int:
         return int(args.func(args) or 0)
     except (SceneError, UsageError) as exc:
         print(f"seaecho: error: {exc}", file=sys.stderr)
+        return 2
+    except RecursionError:
+        print("seaecho: error: input nested too deeply to be read (a scene file needs at most "
+              "a few levels of tables and arrays)", file=sys.stderr)
+        return 2
+    except MemoryError:
+        print("seaecho: error: out of memory; `seaecho check SCENE` prints the estimated "
+              "peak memory and the fields that drive it", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("seaecho: interrupted; no partial output was left", file=sys.stderr)

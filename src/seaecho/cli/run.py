@@ -8,6 +8,7 @@ NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 from __future__ import annotations
 
 import argparse
+import shutil
 import sys
 from pathlib import Path
 
@@ -26,6 +27,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="simulate only the first N pulses (quick look)")
     p.add_argument("--no-figures", action="store_true", help="do not write PNG figures")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar")
+    p.add_argument("--max-memory-gb", type=float, metavar="GB", help="refuse a run whose "
+                   "estimated peak memory exceeds this (default: what is available, or "
+                   "SEAECHO_MAX_MEMORY_GB)")
     g = p.add_mutually_exclusive_group()
     g.add_argument("--workers", type=int, metavar="N",
                    help="run the blocks of pulses on a local Dask cluster of N worker "
@@ -43,9 +47,11 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..api import figures, load_scene, simulate
+    from ..api import figures, first_pulses, load_scene, simulate
     from ..config import SceneError
+    from ..guards import NonFiniteEchoError
     from ..io.zarr_run import StoreError, is_zarr, part_path
+    from ..preflight import check_run
     from . import UsageError
 
     scene = load_scene(args.scene)
@@ -62,12 +68,27 @@ def run(args: argparse.Namespace) -> int:
     if zarr_out and scene.image is not None:
         raise UsageError(f"{args.scene} has [image]: focusing reads a netCDF run; write "
                          "the run to a .nc file")
+    if args.workers is not None and args.workers < 1:
+        raise UsageError(f"--workers {args.workers}: must be >= 1")
+    if args.block_pulses is not None and args.block_pulses < 1:
+        raise UsageError(f"--block-pulses {args.block_pulses}: must be >= 1")
+    from . import check_memory_option
+
+    check_memory_option(args.max_memory_gb)  # memory estimate, degenerate geometry...
+    checked = scene if args.pulses is None else first_pulses(scene, args.pulses)
+    print(check_run(checked, args.scene, base_dir=Path(args.scene).parent,
+                    max_memory_gb=args.max_memory_gb, figures=not args.no_figures,
+                    workers=args.workers, block=args.block_pulses))
     try:  # the Python API's run: same checks, same bytes (seaecho.simulate)
         ds = simulate(scene, path=out, pulses=args.pulses, progress=not args.quiet,
                       workers=args.workers, scheduler=args.scheduler,
                       block_pulses=args.block_pulses, resume=args.resume)
     except StoreError as exc:
         raise UsageError(str(exc)) from None
+    except NonFiniteEchoError:
+        if zarr_out:  # a NaN pulse comes back on --resume: nothing worth keeping
+            shutil.rmtree(part_path(out), ignore_errors=True)
+        raise
     except KeyboardInterrupt:
         if not zarr_out:
             raise

@@ -51,6 +51,8 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="run on an existing Dask cluster; DIR must be on a file system the "
                    "workers see")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar")
+    p.add_argument("--max-memory-gb", type=float, metavar="GB", help="refuse the cases "
+                   "whose estimated peak memory (times the workers) exceeds this")
     p.set_defaults(func=run)
 
 
@@ -110,10 +112,28 @@ def _split_top_level(raw: str) -> list[str]:
     return parts
 
 
+def preflight_cases(cases, base_dir: Path, max_memory_gb: float | None,
+                    workers: int | None, block: int | None) -> dict[int, str]:
+    """The cases `seaecho run` would refuse (``seaecho.preflight.check_run``: geometry,
+    files, memory), each with its message: they are reported as failed, not run."""
+    from ..config import SceneError
+    from ..preflight import check_run
+
+    refused = {}
+    for c in cases:
+        try:
+            check_run(c.scene, f"case {c.index}", base_dir=base_dir,
+                      max_memory_gb=max_memory_gb, figures=False, workers=workers,
+                      block=block)
+        except SceneError as exc:
+            refused[c.index] = f"SceneError: {exc}"
+    return refused
+
+
 def run(args: argparse.Namespace) -> int:
     from ..api import first_pulses
     from ..config import load_scene
-    from . import UsageError
+    from . import UsageError, check_memory_option
 
     grid: dict[str, list] = {}
     for text in args.sets:
@@ -143,10 +163,13 @@ def run(args: argparse.Namespace) -> int:
     if args.pulses is not None:
         cases = [distributed.Case(c.index, c.overrides, first_pulses(c.scene, args.pulses))
                  for c in cases]
-    out.mkdir(exist_ok=True)
     base_dir = Path(args.scene).parent
+    check_memory_option(args.max_memory_gb)
+    refused = preflight_cases(cases, base_dir, args.max_memory_gb, args.workers,
+                              args.block_pulses)
+    out.mkdir(exist_ok=True)
     kw = dict(base_dir=base_dir, reduce=args.reduce, block=args.block_pulses,
-              progress=not args.quiet)
+              progress=not args.quiet, refused=refused)
     if args.workers is None and args.scheduler is None:
         rows = distributed.sweep(cases, out, **kw)
     else:

@@ -7,13 +7,13 @@ with status 2 without a traceback.
 
 from __future__ import annotations
 
-import json
 import tomllib
 from pathlib import Path
 from typing import Any
 
 from pydantic import BaseModel, ValidationError
 
+from .base import MAX_VALUE_CHARS, short_repr
 from .scene import Scene
 
 
@@ -59,25 +59,81 @@ def _format_loc(loc: tuple[Any, ...]) -> str:
     return text
 
 
+def _model_class_names(model: type[BaseModel]) -> set[str]:
+    """Names of every model class reachable from ``model`` (pydantic may put them in a
+    loc for a union of models; they are never keys of a scene file)."""
+    names: set[str] = set()
+    stack = [model]
+    while stack:
+        current = stack.pop()
+        if current.__name__ in names:
+            continue
+        names.add(current.__name__)
+        for info in current.model_fields.values():
+            stack.extend(_models_in(info.annotation))
+    return names
+
+
+def _models_in(annotation: Any) -> list[type[BaseModel]]:
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return [annotation]
+    found = []
+    for arg in getattr(annotation, "__args__", ()) or ():
+        found += _models_in(arg)
+    return found
+
+
+def _clean_loc(loc: tuple[Any, ...], model: type[BaseModel]) -> tuple[Any, ...]:
+    """``loc`` without the union-member tags pydantic inserts (class names such as
+    ``ShipConfig`` or ``function-after[...]``), keeping every key of the file: a part is
+    dropped only if it is such a tag and not a field of the model reached so far."""
+    classes = _model_class_names(model)
+    out: list[Any] = []
+    current: Any = model
+    for i, part in enumerate(loc):
+        fields = getattr(current, "model_fields", None) or {}
+        if isinstance(part, str) and part not in fields and i < len(loc) - 1 and (
+                part in classes or "[" in part):
+            continue
+        out.append(part)
+        if isinstance(part, str) and part in fields:
+            current = _first_model(fields[part].annotation)
+    return tuple(out)
+
+
+def _section_name(loc: tuple[Any, ...]) -> str:
+    """The section of a loc as messages name it: ``[sea]``, ``[radar].waveform``."""
+    if not loc:
+        return "(top level)"
+    if len(loc) == 1 and isinstance(loc[0], str):
+        return f"[{loc[0]}]"
+    return _format_loc(loc)
+
+
 def format_validation_error(exc: ValidationError, model: type[BaseModel] = Scene) -> str:
-    """One readable message for every error in ``exc``: field, value, what is allowed."""
+    """One readable message for every error in ``exc``: field, value, what is allowed.
+
+    Values are repeated cut to :data:`MAX_VALUE_CHARS` characters (:func:`short_repr`).
+    """
     lines = []
     for err in exc.errors(include_url=False):
-        loc = tuple(err["loc"])
-        # pydantic puts the union member's class name in loc for tagged unions; drop those
-        loc = tuple(p for p in loc if not (isinstance(p, str) and p[:1].isupper()))
+        loc = _clean_loc(tuple(err["loc"]), model)
         msg = err["msg"].removeprefix("Value error, ")
         where = _format_loc(loc)
         value = err.get("input")
         if err["type"] == "missing":
             text = f"{where}: missing required field"
         elif err["type"] == "extra_forbidden":
+            section = _section_name(loc[:-1])
             allowed = _allowed_keys(model, loc[:-1])
-            text = f"{where}: unknown key (allowed: {', '.join(allowed)})"
+            text = (f"{where}: unknown key in {section} (allowed: {', '.join(allowed)}; "
+                    "keys are case-sensitive)")
+        elif not loc and msg.startswith("["):
+            text = msg  # a check across sections: its message names the fields
         elif isinstance(value, dict):
-            text = f"{where}: {msg}"
+            text = f"{_section_name(loc)}: {msg}"  # a check of a whole section
         else:
-            text = f"{where} = {json.dumps(value, default=str)}: {msg}"
+            text = f"{where} = {short_repr(value)}: {msg}"
         description = _field_description(model, loc)
         if description and err["type"] != "extra_forbidden":
             text += f" ({description})"
@@ -97,12 +153,29 @@ def _allowed_keys(model: type[BaseModel], loc: tuple[Any, ...]) -> list[str]:
     return sorted(getattr(current, "model_fields", {}))
 
 
+def _lists_to_tuples(data: Any) -> Any:
+    """TOML arrays (lists) as tuples, so that strict validation accepts them."""
+    if isinstance(data, list):
+        return tuple(_lists_to_tuples(v) for v in data)
+    if isinstance(data, dict):
+        return {k: _lists_to_tuples(v) for k, v in data.items()}
+    return data
+
+
 def parse_scene(data: dict[str, Any], source: str = "<scene>") -> Scene:
-    """Validate a scene given as a dict (the parsed TOML)."""
+    """Validate a scene given as a dict (the parsed TOML).
+
+    Validation is strict: a number must be written as a number (``nx = 32``, not
+    ``"32"``), a boolean as ``true``/``false`` (not ``1``), an integer field takes no
+    fraction (``nx = 32.0`` is refused); an integer is accepted where a float is expected.
+    """
     try:
-        return Scene.model_validate(data)
+        return Scene.model_validate(_lists_to_tuples(data), strict=True)
     except ValidationError as exc:
         raise SceneError(f"{source}: invalid scene\n{format_validation_error(exc)}") from None
+    except RecursionError:
+        raise SceneError(f"{source}: invalid scene: values nested too deeply (a scene "
+                         "file needs at most a few levels of tables and arrays)") from None
 
 
 def load_scene(path: str | Path) -> Scene:
@@ -125,6 +198,9 @@ def load_scene(path: str | Path) -> Scene:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"{path}: not valid TOML ({exc})") from None
+    except RecursionError:
+        raise SceneError(f"{path}: not valid TOML for seaecho: arrays or tables nested too "
+                         "deeply (a scene file needs at most a few levels)") from None
     return parse_scene(data, source=str(path))
 
 
@@ -133,5 +209,5 @@ def scene_to_toml_dict(scene: Scene) -> dict[str, Any]:
     return scene.model_dump(mode="json", exclude_none=True)
 
 
-__all__ = ["SceneError", "format_validation_error", "load_scene", "parse_scene",
-           "scene_to_toml_dict"]
+__all__ = ["MAX_VALUE_CHARS", "SceneError", "format_validation_error", "load_scene",
+           "parse_scene", "scene_to_toml_dict", "short_repr"]

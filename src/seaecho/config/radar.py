@@ -35,7 +35,7 @@ from typing import Literal
 from pydantic import Field, model_validator
 
 from ..conventions import PORTS
-from .base import Section
+from .base import Name, Section, short_repr
 
 Vec3 = tuple[float, float, float]
 
@@ -46,6 +46,8 @@ WeightingName = Literal["none", "hamming", "taylor"]
 
 _POS = 1.0e8  # bound on coordinates [m]: beyond geostationary orbit
 _VEL = 1.0e4  # bound on speeds [m/s]: beyond orbital speed
+#: Longest run, (n_pulses - 1) / prf_hz [s] (116 days, as the range of start_time_s).
+MAX_RUN_S = 1.0e7
 
 
 class GaussMarkovConfig(Section):
@@ -206,7 +208,15 @@ class PlatformConfig(Section):
             if len(t) != len(p):
                 raise ValueError(f"{len(t)} waypoint times but {len(p)} positions")
             if any(b <= a for a, b in zip(t, t[1:], strict=False)):
-                raise ValueError(f"waypoint_times_s = {list(t)}: must increase strictly")
+                raise ValueError(f"waypoint_times_s = {short_repr(t)}: must increase "
+                                 "strictly")
+            for i in range(len(t) - 1):
+                v = [(b - a) / (t[i + 1] - t[i]) for a, b in zip(p[i], p[i + 1], strict=True)]
+                if any(not abs(c) <= _VEL for c in v):
+                    raise ValueError(
+                        f"waypoints {i} and {i + 1} (t = {t[i]:g} and {t[i + 1]:g} s): "
+                        f"velocity {short_repr(v)} m/s; each component must be within "
+                        f"+-{_VEL:g} (as velocity_m_s)")
             if self.position_m is not None or any(self.velocity_m_s):
                 raise ValueError("motion 'waypoints' takes no position_m/velocity_m_s")
         return self
@@ -230,6 +240,12 @@ class WaveformConfig(Section):
             raise ValueError("kind 'lfm' needs bandwidth_hz")
         if self.kind == "pulse" and self.bandwidth_hz is not None:
             raise ValueError("kind 'pulse' has bandwidth 1/duration_s; omit bandwidth_hz")
+        if self.kind == "lfm" and self.bandwidth_hz * self.duration_s < 1.0:
+            raise ValueError(
+                f"bandwidth_hz x duration_s = {self.bandwidth_hz * self.duration_s:.3g}: a "
+                "linear FM pulse sweeps its bandwidth only if B T >= 1 (below, its spectrum "
+                "is that of a plain pulse of width 1/T; Richards 2014, section 4.6); use "
+                "kind = 'pulse' or a longer pulse")
         return self
 
 
@@ -301,6 +317,11 @@ class RadarConfig(Section):
         if w.duration_s >= 1.0 / self.prf_hz:
             raise ValueError(f"pulse duration {w.duration_s:g} s is not shorter than the "
                              f"pulse repetition interval {1.0 / self.prf_hz:g} s")
+        span = (self.n_pulses - 1) / self.prf_hz
+        if not span <= MAX_RUN_S:
+            raise ValueError(f"n_pulses = {self.n_pulses} at prf_hz = {self.prf_hz:g}: the run "
+                             f"would last {span:.3g} s; at most {MAX_RUN_S:g} s (as "
+                             "start_time_s's range)")
         if self.sigma_map_pulse >= self.n_pulses:
             raise ValueError(f"sigma_map_pulse = {self.sigma_map_pulse} must be below "
                              f"n_pulses = {self.n_pulses}")
@@ -322,7 +343,7 @@ class TargetConfig(Section):
     given as (real, imaginary) pairs.
     """
 
-    name: str = Field("", max_length=200, description="a label for the target")
+    name: Name = Field("", max_length=200, description="a label for the target")
     position_m: Vec3 = Field(..., description="position (x, y, z) at t = 0 [m]")
     velocity_m_s: Vec3 = Field((0.0, 0.0, 0.0), description="constant velocity [m/s]")
     rcs_m2: float | None = Field(

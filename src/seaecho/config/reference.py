@@ -6,6 +6,7 @@ reference from the pydantic models, so the docs cannot drift from the schema.
 
 from __future__ import annotations
 
+import re
 import typing
 
 from pydantic import BaseModel
@@ -29,6 +30,9 @@ def _type_name(annotation) -> str:
     text = str(annotation).replace("typing.", "")
     for mod in ("seaecho.config.", "pydantic."):
         text = text.replace(mod, "")
+    # Annotated[str, AfterValidator(<function ... at 0x...>)]: the type, not the validator
+    text = re.sub(r"Annotated\[(\w+), AfterValidator\(func=<function .*? at 0x[0-9a-f]+>\)\]",
+                  r"\1", text)
     if isinstance(annotation, type):
         text = annotation.__name__
     return text.replace("|", "\\|")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pydantic import Field, field_validator
 
-from .base import Section
+from .base import Name, Section, short_repr
 
 
 class RunConfig(Section):
@@ -13,7 +13,7 @@ class RunConfig(Section):
     seed: int = Field(
         0, ge=0, lt=2**63, description="seed of every random draw (same seed, same bytes)"
     )
-    output: str | None = Field(
+    output: Name | None = Field(
         None, description="output file (netCDF); the CLI's -o overrides it"
     )
     surface_times_s: tuple[float, ...] = Field(
@@ -25,7 +25,7 @@ class RunConfig(Section):
     @classmethod
     def _finite_sorted(cls, v: tuple[float, ...]) -> tuple[float, ...]:
         if any(b < a for a, b in zip(v, v[1:], strict=False)):
-            raise ValueError(f"{list(v)}: times must be in increasing order")
+            raise ValueError(f"{short_repr(v)}: times must be in increasing order")
         return v
 
 

@@ -12,9 +12,9 @@ registered here too, each in its own module of this package.
 
 from __future__ import annotations
 
-from pydantic import Field
+from pydantic import Field, model_validator
 
-from .base import Section
+from .base import Name, Section, Text
 from .image import ImageConfig
 from .radar import PlatformConfig, RadarConfig, TargetConfig
 from .run import RunConfig
@@ -27,8 +27,8 @@ from .tracing import ObjectConfig, TracingConfig
 class Scene(Section):
     """A validated scene file."""
 
-    name: str = Field("", max_length=200, description="a short name for the scene")
-    description: str = Field("", max_length=5000, description="free text")
+    name: Name = Field("", max_length=200, description="a short name for the scene")
+    description: Text = Field("", max_length=5000, description="free text")
     sea: SeaConfig = Field(..., description="the sea [sea]")
     ship: ShipConfig | None = Field(None, description="the ship and its wake [ship]")
     run: RunConfig = Field(default_factory=RunConfig, description="run options [run]")
@@ -57,6 +57,13 @@ class Scene(Section):
     image: ImageConfig | None = Field(
         None, description="SAR focusing after the raw data [image]; omit for raw data only"
     )
+
+    @model_validator(mode="after")
+    def _across_sections(self) -> Scene:
+        from .consistency import check_scene
+
+        check_scene(self)
+        return self
 
 
 __all__ = ["Scene"]

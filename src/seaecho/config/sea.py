@@ -16,6 +16,16 @@ from .base import Section
 SpectrumName = Literal["pierson-moskowitz", "jonswap", "elfouhaily"]
 SpreadingName = Literal["longuet-higgins", "elfouhaily"]
 
+#: Lowest wind [m/s]: the lower limit of Beaufort force 1 ("light air, ripples with the
+#: appearance of scales"); below it, force 0, the sea is "like a mirror" (the Beaufort
+#: wind force scale as the World Meteorological Organization tabulates it). The spectra
+#: have no meaning there (k_p = g Omega^2 / U^2 diverges as U -> 0).
+MIN_WIND_M_S = 0.3
+#: Smallest tile [m]: a water wave of wavelength lambda decays at the viscous rate
+#: 2 nu k^2 (Lamb 1932, art. 348), 1 / s at 1 cm but 80 / s at 1 mm: a tile under 1 cm holds
+#: no lasting wave (5e-324 m divided by zero, 1e-300 m gave a NaN surface).
+MIN_TILE_M = 0.01
+
 
 class SeaConfig(Section):
     """The wind-driven sea: spectrum, tile, grid and water properties."""
@@ -38,9 +48,10 @@ class SeaConfig(Section):
     )
     wind_speed_m_s: float = Field(
         ...,
-        gt=0.0,
+        ge=MIN_WIND_M_S,
         le=40.0,
-        description="wind speed U19.5 at 19.5 m above the sea [m/s] (paper eq 5)",
+        description="wind speed U19.5 at 19.5 m above the sea [m/s] (paper eq 5); from "
+        "0.3 m/s, Beaufort force 1 (below, the sea is calm and no wind-sea spectrum applies)",
     )
     wind_direction_deg: float = Field(
         0.0,
@@ -63,10 +74,13 @@ class SeaConfig(Section):
         "deep water",
     )
     size_x_m: float = Field(
-        ..., gt=0.0, le=1.0e5, description="tile extent along x (east) [m]"
+        ..., ge=MIN_TILE_M, le=1.0e5,
+        description="tile extent along x (east) [m]; from 1 cm (shorter water waves are "
+        "damped by viscosity within a fraction of a second)",
     )
     size_y_m: float | None = Field(
-        None, gt=0.0, le=1.0e5, description="tile extent along y (north) [m]; default size_x_m"
+        None, ge=MIN_TILE_M, le=1.0e5,
+        description="tile extent along y (north) [m]; default size_x_m",
     )
     nx: int = Field(..., ge=4, le=16384, description="grid points along x [-] (even)")
     ny: int | None = Field(None, ge=4, le=16384, description="grid points along y [-]; default nx")
@@ -96,4 +110,4 @@ class SeaConfig(Section):
         return self.size_x_m, self.size_y_m if self.size_y_m is not None else self.size_x_m
 
 
-__all__ = ["SeaConfig", "SpectrumName", "SpreadingName"]
+__all__ = ["MIN_TILE_M", "MIN_WIND_M_S", "SeaConfig", "SpectrumName", "SpreadingName"]

@@ -14,11 +14,25 @@ from pydantic import Field, model_validator
 from ..constants import KNOT
 from .base import Section
 
+#: Minimum phase speed of capillary-gravity waves on clean water, (4 g sigma / rho)^(1/4)
+#: = 0.23 m/s (H. Lamb, *Hydrodynamics*, 6th ed., 1932, art. 268): a hull slower than
+#: this makes no steady wave pattern.
+MIN_WAVE_SPEED_M_S = 0.23
+#: Shortest hull [m]: 37 capillary lengths sqrt(sigma / (rho g)) = 2.7 mm, so that the
+#: gravity-wave (thin-ship) theory of the wake applies.
+MIN_LENGTH_M = 0.1
+#: Most slender hull, B / L: below the slenderest real hulls (racing shells, ~0.03); a
+#: beam of 5e-324 m made the turbulent wake's edge 0 / 0.
+MIN_BEAM_RATIO = 0.01
+
 
 class ShipConfig(Section):
     """A ship sailing in a straight line at constant speed."""
 
-    length_m: float = Field(..., gt=0.0, le=500.0, description="waterline length L [m]")
+    length_m: float = Field(
+        ..., ge=MIN_LENGTH_M, le=500.0,
+        description="waterline length L [m]; from 0.1 m (thin-ship wave theory neglects "
+        "surface tension: the hull must be much longer than the 2.7 mm capillary length)")
     beam_m: float = Field(..., gt=0.0, le=80.0, description="beam B [m]")
     draft_m: float = Field(..., gt=0.0, le=30.0, description="draft T [m]")
     speed_kn: float | None = Field(
@@ -63,10 +77,22 @@ class ShipConfig(Section):
     def _one_speed(self) -> ShipConfig:
         if (self.speed_kn is None) == (self.speed_m_s is None):
             raise ValueError("give exactly one of speed_kn and speed_m_s")
+        if 0.0 < self.speed < MIN_WAVE_SPEED_M_S:
+            given = (f"speed_kn = {self.speed_kn:g}" if self.speed_kn is not None
+                     else f"speed_m_s = {self.speed_m_s:g}")
+            raise ValueError(
+                f"{given}: slower than the slowest water wave, {MIN_WAVE_SPEED_M_S} m/s "
+                "(capillary-gravity minimum, Lamb 1932 art. 268): the ship makes no steady "
+                "wave wake; give 0 for a ship at rest")
         if self.beam_m >= self.length_m:
             raise ValueError(
                 f"beam_m = {self.beam_m} must be smaller than length_m = {self.length_m}"
             )
+        if self.beam_m < MIN_BEAM_RATIO * self.length_m:
+            raise ValueError(
+                f"beam_m = {self.beam_m:g}: below {MIN_BEAM_RATIO} x length_m = "
+                f"{MIN_BEAM_RATIO * self.length_m:g} m; no hull is that slender (racing "
+                "shells, the slenderest, have B / L of about 0.03)")
         return self
 
     @property
@@ -75,4 +101,4 @@ class ShipConfig(Section):
         return self.speed_m_s if self.speed_m_s is not None else self.speed_kn * KNOT
 
 
-__all__ = ["ShipConfig"]
+__all__ = ["MIN_BEAM_RATIO", "MIN_LENGTH_M", "MIN_WAVE_SPEED_M_S", "ShipConfig"]

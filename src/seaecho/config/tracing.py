@@ -17,8 +17,10 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from .base import Section
+from .base import Name, Section, short_repr
 
+#: Shortest refresh interval [s]: the shortest pulse repetition interval, 1 / 1e7 Hz.
+MIN_REFRESH_S = 1.0e-7
 #: Mitsuba variants seaecho can trace with (polarised, differentiable, mono-spectral).
 VariantName = Literal["llvm_ad_mono_polarized", "cuda_ad_mono_polarized"]
 #: ITU-R P.2040 materials known to Sionna RT (``sionna.rt.ITURadioMaterial``).
@@ -57,8 +59,18 @@ class TracingConfig(Section):
         0.0, ge=0.0, le=3600.0,
         description="visibility (BVH rebuild + shadow rays) is computed on the surface at "
         "t_ref = floor(t / interval) * interval and reused until the next multiple; "
-        "0 = every time step [s]",
+        "0 = every time step [s]; otherwise at least 1e-7 s, the shortest pulse repetition "
+        "interval (a shorter interval refreshes at every pulse, as 0 does)",
     )
+
+    @model_validator(mode="after")
+    def _refresh(self) -> TracingConfig:
+        if 0.0 < self.refresh_interval_s < MIN_REFRESH_S:
+            raise ValueError(
+                f"refresh_interval_s = {self.refresh_interval_s:g}: give 0 (every pulse) or "
+                f"at least {MIN_REFRESH_S:g} s, the shortest pulse repetition interval "
+                "([radar].prf_hz <= 1e7); t / interval overflowed")
+        return self
 
 
 #: A coordinate within 1000 km of the origin [m].
@@ -74,7 +86,7 @@ class ObjectConfig(Section):
 
     name: str = Field(..., min_length=1, max_length=100, pattern=r"^[A-Za-z0-9_-]+$",
                       description="unique object name (letters, digits, _ -)")
-    file: str = Field(..., min_length=1, max_length=1000,
+    file: Name = Field(..., min_length=1, max_length=1000,
                       description="mesh (.ply, .obj, .stl) or Mitsuba/Sionna scene (.xml), "
                       "relative to the scene file's folder")
     position_m: tuple[_Coord, _Coord, _Coord] = Field(
@@ -142,7 +154,8 @@ class ObjectConfig(Section):
             raise ValueError(f"{', '.join(sorted(given))}: only with scatterer = true")
         suffix = self.file.rsplit(".", 1)[-1].lower() if "." in self.file else ""
         if suffix not in ("ply", "obj", "stl", "xml"):
-            raise ValueError(f"file = {self.file!r}: allowed extensions .ply, .obj, .stl, .xml")
+            raise ValueError(f"file = {short_repr(self.file)}: allowed extensions .ply, .obj, "
+                             ".stl, .xml")
         return self
 
     @property
@@ -151,4 +164,4 @@ class ObjectConfig(Section):
         return self.follow_ship or any(v != 0.0 for v in self.velocity_m_s)
 
 
-__all__ = ["ItuMaterial", "ObjectConfig", "TracingConfig", "VariantName"]
+__all__ = ["MIN_REFRESH_S", "ItuMaterial", "ObjectConfig", "TracingConfig", "VariantName"]

@@ -78,8 +78,16 @@ def _band_grid(k_min: float, k_max: float) -> np.ndarray:
     return np.geomspace(lo, k_max, _N_K)
 
 
+def _empty_band(k_min: float, k_max: float) -> bool:
+    """True if the band k_min < K < k_max holds no wavenumber (its integrals are 0)."""
+    if not (k_min >= 0 and np.isfinite(k_min) and k_max >= 0 and np.isfinite(k_max)):
+        raise ValueError(f"band k_min = {k_min}, k_max = {k_max} rad/m: need finite limits "
+                         ">= 0")
+    return k_max <= k_min
+
+
 def height_variance(spectrum: DirectionalSpectrum, k_min: float, k_max: float) -> float:
-    """Height variance of the band k_min < K < k_max [m^2].
+    """Height variance of the band k_min < K < k_max [m^2] (0 for an empty band).
 
     Parameters
     ----------
@@ -87,6 +95,8 @@ def height_variance(spectrum: DirectionalSpectrum, k_min: float, k_max: float) -
     k_min, k_max : float
         Band limits [rad/m].
     """
+    if _empty_band(k_min, k_max):
+        return 0.0
     k = _band_grid(k_min, k_max)
     return float(np.trapezoid(spectrum.omni(k), k))
 
@@ -102,8 +112,10 @@ def slope_variances(
     Returns
     -------
     (float, float)
-        (s_u^2, s_c^2) [-].
+        (s_u^2, s_c^2) [-]; (0, 0) for an empty band (k_max <= k_min).
     """
+    if _empty_band(k_min, k_max):
+        return 0.0, 0.0
     k = _band_grid(k_min, k_max)[:, None]
     psi = np.linspace(-np.pi, np.pi, _N_PSI, endpoint=False)[None, :]
     dpsi = 2 * np.pi / _N_PSI

@@ -102,8 +102,10 @@ _Z = np.array([0.0, 0.0, 1.0])
 #: Vacuum permittivity [F/m] (eps0 = 1 / (mu0 c^2), CODATA 2018 mu0).
 _EPS0 = 1.0 / (1.25663706212e-6 * C0**2)
 #: Worker threads of a trace (batches of rays in parallel; the result does not depend
-#: on it). The environment variable ``SEAECHO_SBR_THREADS`` overrides it.
-THREADS = int(os.environ.get("SEAECHO_SBR_THREADS", 0)) or min(4, os.cpu_count() or 1)
+#: on it). One by default: with several, a scene of the fuzzing suite aborted the process
+#: inside Mitsuba's ray intersection on a worker thread (Dr.Jit LLVM, not understood
+#: yet), so threads are opt-in through the environment variable ``SEAECHO_SBR_THREADS``.
+THREADS = max(1, int(os.environ.get("SEAECHO_SBR_THREADS", 1)))
 
 
 def _ordered_map(fn: Callable, jobs: Iterable) -> Iterator:

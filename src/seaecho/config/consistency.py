@@ -1,0 +1,63 @@
+"""Checks across sections of a scene file, run when the scene is validated.
+
+A single section's model cannot see its neighbours: the channels of ``[radar]`` are
+only meaningful with the polarisation bases of ``[transmitter.antenna]`` and
+``[receiver.antenna]``; an object that follows the ship needs a ``[ship]``. (The checks
+that need the sea's spectrum, ``[sea]``'s fetch and depth against its waves, are the
+builder's: :func:`seaecho.build.check_sea`.) Each check
+raises ``ValueError`` with a message that starts with the field it names
+(``[radar].channels = ...``), which the loader prints as it is.
+"""
+
+from __future__ import annotations
+
+from ..conventions import PORTS
+from .base import short_repr
+
+
+def allowed_channels(scene) -> list[str]:
+    """Channel names a scene's antennas have: receive port then transmit port.
+
+    The receiver's basis is the transmitter's for a monostatic scene (no ``[receiver]``).
+    """
+    tx = scene.transmitter.antenna.basis
+    rx = (scene.receiver or scene.transmitter).antenna.basis
+    return [m + n for m in PORTS[rx] for n in PORTS[tx]]
+
+
+def check_channels(scene) -> None:
+    """``[radar].channels`` must be ports of the antennas' bases (upper case, e.g. HV)."""
+    if scene.radar is None or scene.transmitter is None:
+        return
+    allowed = allowed_channels(scene)
+    bad = [c for c in scene.radar.channels if c not in allowed]
+    if bad:
+        tx = scene.transmitter.antenna.basis
+        rx = (scene.receiver or scene.transmitter).antenna.basis
+        raise ValueError(
+            f"[radar].channels = {short_repr(scene.radar.channels)}: "
+            f"channel '{short_repr(bad[0])[1:-1]}' is not one of these antennas; a channel is a "
+            f"receive port of the receiver's '{rx}' basis followed by a transmit port of "
+            f"the transmitter's '{tx}' basis: allowed {', '.join(allowed)}")
+
+
+def check_objects(scene) -> None:
+    """``[[objects]]``: unique names; ``follow_ship`` needs a ``[ship]``."""
+    seen: set[str] = set()
+    for i, obj in enumerate(scene.objects):
+        if obj.name in seen:
+            raise ValueError(f"[[objects]] #{i}: name = {short_repr(obj.name)} is used by "
+                             "an earlier object; names must be unique")
+        seen.add(obj.name)
+        if obj.follow_ship and scene.ship is None:
+            raise ValueError(f"[[objects]] #{i} ({obj.name}): follow_ship = true needs a "
+                             "[ship] section")
+
+
+def check_scene(scene) -> None:
+    """Every check of this module (called by :class:`~seaecho.config.scene.Scene`)."""
+    check_channels(scene)
+    check_objects(scene)
+
+
+__all__ = ["allowed_channels", "check_channels", "check_objects", "check_scene"]

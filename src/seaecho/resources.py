@@ -1,0 +1,617 @@
+"""Resources of a run: peak memory and an order of magnitude of the run time.
+
+`seaecho check` prints :func:`estimate` for a scene; `seaecho run` prints it and refuses
+(exit 2) a scene whose estimated peak exceeds the memory it may use, naming the fields
+that drive the estimate, before anything large is allocated. The estimate is computed
+from the scene alone (arithmetic, plus the nominal platform tracks for the receive
+window): nothing in it allocates more than the scene's own description.
+
+Model. The peak resident memory of ``seaecho run`` is
+
+.. math::
+
+    M = M_0 + m_c N_{cells} + m_f C N_{fft} + m_w C n_{chunk} N_s + m_p N_p
+        + m_F N_p C N_s + m_g N_{gm} + m_t K                                     (M1)
+
+with M_0 the process (Python, numpy, h5py, Dr.Jit; Mitsuba with sea clutter), N_cells the
+sea grid's points (sea clutter on), C the channels, N_s the samples of the receive window
+and N_fft its NUFFT period (``seaecho.radar.echo``), n_chunk = min(16, N_p) pulses per
+write, N_p the pulses, N_gm the Gauss-Markov steps of the perturbed platforms, K the point
+targets, and m_F the figures drawn from the whole raw and compressed arrays (0 with
+``--no-figures``: matplotlib's meshes cost 45 to 155 bytes per value), which adds to the
+rest (the run loop's memory is not all returned to the system).
+
+Or, if larger, M_0 + M_A: the normalisation of a rectangular aperture's pattern (eq A1
+of ``seaecho.radar.antennas``, computed when the radar is built) integrates it on
+n_theta = 8 D / lambda + 96 Gauss-Legendre nodes (D the aperture's larger side), whose
+n_theta x n_theta eigenvalue problem and 2 n_theta^2-point grid take
+M_A = m_a n_theta^2 + 200 MiB and a time t_a n_theta^3: a 100 m aperture at 1 THz would
+need petabytes, so the estimate refuses it.
+
+The coefficients are upper envelopes of the peak RSS measured by
+``benchmarks/bench_resources.py`` (``ru_maxrss`` of the child process) on scenes that
+vary one term at a time, from 4 096 to 1 048 576 sea grid points and up to 1.6 million
+samples per pulse; the total is multiplied by :data:`SAFETY`. The accuracy on those
+scenes is in docs/resources.md; ``tests/test_resources.py`` runs a small scene and checks
+that its measured peak is below the estimate.
+
+Time (order of magnitude only, measured on one loaded 2-core machine): a start-up of a
+few seconds plus a set-up per sea grid point (surface, wake, sigma maps), then per pulse
+t_c N_cells + t_f C N_fft log2 N_fft + t_t K, then the figures per value drawn.
+
+The memory a run may use is the smallest of the memory the system reports available
+(``MemAvailable`` of ``/proc/meminfo``), the cgroup's limit less its usage, and the
+``--max-memory-gb`` option or the ``SEAECHO_MAX_MEMORY_GB`` environment variable.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import NDArray
+from scipy.fft import next_fast_len
+
+from .config import SceneError
+from .constants import C0
+
+MiB = 1024.0**2
+GiB = 1024.0**3
+
+# Coefficients of eq (M1) [bytes] (fitted, module docstring)
+M0_TARGETS = 270 * MiB  #: process with the radar chain only
+M0_SEA = {"analytic": 280 * MiB, "raytraced": 310 * MiB}  #: with the sea stages
+M_CELL = {"analytic": 2100.0, "raytraced": 2300.0}  #: per sea grid point
+M_FFT = 20.0  #: per channel and NUFFT bin (phasors, spectrum product, inverse FFT)
+M_WRITE = 70.0  #: per channel, sample and buffered pulse (buffer, range compression)
+M_PULSE = 1000.0  #: per pulse (tracks, times, per-pulse dataset variables)
+M_FIGURE = 180.0  #: per pulse, channel and sample when figures are drawn
+M_GM = 200.0  #: per Gauss-Markov step and perturbed platform
+M_TARGET = 400.0  #: per point target
+M_ANTENNA = 40.0  #: per n_theta^2 of a rectangular aperture's normalisation
+M_ANTENNA_GRID = 200 * MiB  #: its integration grid (chunks of 2e6 directions)
+M_SBR_RAY = 1200.0  #: per ray of a hull trace's batch (about 1 kB per ray)
+SBR_BATCH = 1 << 18  #: rays per batch (``seaecho.tracing.sbr.SBROptions.batch``)
+M_SBR_CELL = 24.0  #: per cell of a hull trace's launch grid (coverage mask, indices)
+M_CENTRE = 200.0  #: per scattering centre of a cached hull signature
+M_PIXEL = 120.0  #: per image pixel (calibration maps, coverage, products' temporaries)
+M_PIXEL_CHANNEL = 160.0  #: per image pixel and channel (accumulator, image, sigma0...)
+M_UPSAMPLED = 40.0  #: per upsampled sample of the focusing's block of pulses
+M_IMAGE_FIGURE = 60.0  #: per image pixel and figure panel drawn
+#: Margin on the sum, so that the estimate stays above the measured peak.
+SAFETY = 1.15
+
+# Time coefficients [s] (order of magnitude)
+T_START = {"targets": 4.0, "analytic": 5.0, "raytraced": 8.0}
+T_CELL = {"analytic": 2.0e-6, "raytraced": 3.0e-6}  #: per sea grid point and pulse
+T_CELL_SETUP = {"analytic": 1.0e-5, "raytraced": 1.5e-5}  #: per grid point, once (surface,
+#: wake, the sigma-map pulse)
+T_FFT = 4.0e-9
+T_TARGET = 2.0e-6
+T_PULSE = 2.0e-2
+T_FIGURE = 4.0e-6  #: per pulse, channel and sample drawn
+T_ANTENNA = 3.0e-10  #: per n_theta^3 (Gauss-Legendre nodes: eigenvalues)
+T_ANTENNA_GRID = 2.0e-7  #: per direction of the normalisation grid
+T_RAY = 6.0e-6  #: per launch-grid cell of a hull trace (docs/ship.md: ~12 us per hit)
+T_BACKPROJECTION = 2.0e-8  #: per pixel, pulse and channel of the focusing
+
+#: Environment variable that sets the memory limit [GB].
+ENV_LIMIT = "SEAECHO_MAX_MEMORY_GB"
+#: Most pulses per block of work (``seaecho.io.run.block_size``: at most twice its
+#: target of 16) when ``--block-pulses`` is not given.
+CHUNK = 32
+#: Hull signatures a run keeps (``seaecho.tracing.hull_echo``).
+SIGNATURE_CACHE = 256
+#: Pulses per block of the focusing (``seaecho.imaging.focus``).
+IMAGE_BLOCK = 32
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """Estimated resources of a run.
+
+    Attributes
+    ----------
+    peak_bytes : float
+        Peak resident memory [bytes] (eq M1 times :data:`SAFETY`).
+    time_s : float
+        Order of magnitude of the run time [s].
+    terms : dict
+        Bytes of each term of eq (M1), with the fields that drive it as keys' values in
+        ``drivers``.
+    drivers : dict
+        For each term, the scene fields that set it.
+    n_samples, n_fft, n_pulses, channels, cells, pixels : int
+        The sizes that enter the model (``pixels``: of the ``[image]``).
+    hull_rays : float
+        Launch-grid cells over every trace of the hulls (:class:`HullSize`).
+    """
+
+    peak_bytes: float
+    time_s: float
+    terms: dict[str, float] = field(default_factory=dict)
+    drivers: dict[str, str] = field(default_factory=dict)
+    n_samples: int = 0
+    n_fft: int = 0
+    n_pulses: int = 0
+    channels: int = 0
+    cells: int = 0
+    pixels: int = 0
+    hull_rays: float = 0.0
+
+    def largest_terms(self, n: int = 2) -> list[str]:
+        """Names of the ``n`` largest terms (the process base left out; the antenna
+        pattern's is transient, at the start, the others add up)."""
+        named = [(v, k) for k, v in self.terms.items() if k != "process"]
+        return [k for v, k in sorted(named, reverse=True)[:n] if v > 0]
+
+
+# --------------------------------------------------------------------- nominal tracks
+#: Perturbation bound in standard deviations (P(|x| > 8 sigma) = 1.2e-15 per sample).
+PERTURBATION_SIGMAS = 8.0
+
+
+@dataclass(frozen=True)
+class Segment:
+    """A piece of a nominal track: position c + v t for t in [t_a, t_b] [s]."""
+
+    t_a: float
+    t_b: float
+    c: NDArray[np.float64]  #: position extrapolated to t = 0 [m]
+    v: NDArray[np.float64]  #: velocity [m/s]
+
+
+def nominal_segments(cfg) -> list[Segment]:
+    """Segments of a ``[transmitter]`` / ``[receiver]`` section's nominal track.
+
+    The first and last segments extend to -inf / +inf, as ``seaecho.radar.platforms``
+    extrapolates them.
+    """
+    if cfg.motion in ("fixed", "linear"):
+        v = np.array(cfg.velocity_m_s if cfg.motion == "linear" else (0.0, 0.0, 0.0))
+        return [Segment(-np.inf, np.inf, np.array(cfg.position_m, dtype=float), v)]
+    t = np.array(cfg.waypoint_times_s, dtype=float)
+    p = np.array(cfg.waypoint_positions_m, dtype=float)
+    out = []
+    for i in range(t.size - 1):
+        v = (p[i + 1] - p[i]) / (t[i + 1] - t[i])
+        t_a = -np.inf if i == 0 else t[i]
+        t_b = np.inf if i == t.size - 2 else t[i + 1]
+        out.append(Segment(t_a, t_b, p[i] - v * t[i], v))
+    return out
+
+
+def perturbation_bound(cfg) -> float:
+    """Bound on how far the true track strays from the nominal one [m] (8 sigma)."""
+    if cfg.perturbation is None:
+        return 0.0
+    return PERTURBATION_SIGMAS * float(np.linalg.norm(cfg.perturbation.position_sigma_m))
+
+
+# ----------------------------------------------------------------- receive window
+def _nominal_position(cfg, t: float) -> np.ndarray:
+    """Nominal position of a platform section at time t [m] (``platforms`` semantics)."""
+    segs = nominal_segments(cfg)
+    seg = next((s for s in segs if s.t_a <= t <= s.t_b), segs[-1])
+    return seg.c + seg.v * t
+
+
+def window_size(scene) -> tuple[int, int, int]:
+    """(samples per pulse N_s, NUFFT period N_fft, pulse samples N_p) of a run.
+
+    The same arithmetic as ``ReceiveWindow.from_ranges`` and ``RadarSystem.auto_window``
+    (parity-tested), on the nominal tracks; a perturbed track widens the window by its
+    8-sigma bound on each side, so the estimate stays an upper bound.
+    """
+    from .radar.echo import GUARD
+
+    r = scene.radar
+    w = r.waveform
+    fs = r.sampling_rate_hz
+    n_pulse = max(int(np.ceil(w.duration_s * fs - 1e-9)), 1)
+    bandwidth = w.bandwidth_hz if w.kind == "lfm" else 1.0 / w.duration_s
+    if r.window_start_m is not None:
+        start, end = r.window_start_m, r.window_end_m
+    else:
+        lx, ly = scene.sea.size_m
+        s = np.linspace(-0.5, 0.5, 65)
+        edge = np.concatenate([np.stack([s * lx, np.full_like(s, -0.5 * ly)], -1),
+                               np.stack([s * lx, np.full_like(s, 0.5 * ly)], -1),
+                               np.stack([np.full_like(s, -0.5 * lx), s * ly], -1),
+                               np.stack([np.full_like(s, 0.5 * lx), s * ly], -1),
+                               [[0.0, 0.0]]])
+        points = np.concatenate([edge, np.zeros((edge.shape[0], 1))], axis=1)
+        rx_cfg = scene.receiver or scene.transmitter
+        slack = 0.5 * (perturbation_bound(scene.transmitter) + perturbation_bound(rx_cfg))
+        ranges = []
+        for pulse in (0, r.n_pulses - 1):
+            t = r.start_time_s + pulse / r.prf_hz
+            pt = _nominal_position(scene.transmitter, t)
+            pr = _nominal_position(rx_cfg, t)
+            pts = [points] if r.sea_clutter else []
+            pts += [np.array(g.position_m) + t * np.array(g.velocity_m_s)
+                    for g in scene.targets]
+            if not pts:
+                continue
+            p = np.vstack(pts)
+            ranges.append(0.5 * (np.linalg.norm(p - pt, axis=-1)
+                                 + np.linalg.norm(p - pr, axis=-1)))
+        if not ranges:
+            return 1, int(next_fast_len(1 + n_pulse + 2 * GUARD)), n_pulse
+        rr = np.concatenate(ranges)
+        margin = (0.05 * np.hypot(lx, ly) * r.sea_clutter + 4 * C0 / (2 * bandwidth) + 5.0
+                  + slack)
+        start, end = max(rr.min() - margin, 0.0), rr.max() + margin
+    n_samples = math.ceil((2.0 * (end - start) / C0 + w.duration_s) * fs) + 1
+    # next_fast_len is exact but slow for huge sizes; a power of two bounds it
+    total = n_samples + n_pulse + 2 * GUARD
+    n_fft = int(next_fast_len(total)) if total < 2**40 else 2 ** math.ceil(math.log2(total))
+    return n_samples, n_fft, n_pulse
+
+
+# --------------------------------------------------------------------------- model
+def gauss_markov_steps(scene) -> float:
+    """Gauss-Markov steps drawn for the perturbed platforms (``draw_perturbation``); a
+    float, which may be infinite (a step of 5e-324 s)."""
+    r = scene.radar
+    span = (r.n_pulses - 1) / r.prf_hz + 1.0e-3
+    steps = 0.0
+    for cfg in (scene.transmitter, scene.receiver):
+        if cfg is not None and cfg.perturbation is not None:
+            steps += math.ceil(span / cfg.perturbation.step_s) + 2.0 if math.isfinite(
+                span / cfg.perturbation.step_s) else math.inf
+    return steps
+
+
+def antenna_nodes(scene) -> list[tuple[str, int]]:
+    """(section, n_theta) of each rectangular antenna's pattern normalisation."""
+    lam = C0 / scene.radar.carrier_frequency_hz
+    out = []
+    for name in ("transmitter", "receiver"):
+        cfg = getattr(scene, name)
+        if cfg is None:
+            cfg = scene.transmitter  # monostatic: the receiver is built from it again
+        a = cfg.antenna
+        if a.pattern == "rectangular":
+            out.append((name, int(8 * max(a.width_m, a.height_m) / lam) + 96))
+    return out
+
+
+def nominal_positions(cfg, t: NDArray) -> NDArray[np.float64]:
+    """Nominal positions of a platform section at times ``t`` (P,) [m], shape (P, 3)."""
+    t = np.asarray(t, dtype=float)
+    out = np.empty(t.shape + (3,))
+    segs = nominal_segments(cfg)
+    for k, seg in enumerate(segs):
+        m = (t >= seg.t_a) & ((t < seg.t_b) | (k == len(segs) - 1))
+        out[m] = seg.c + np.multiply.outer(t[m], seg.v)
+    return out
+
+
+@dataclass(frozen=True)
+class HullSize:
+    """Sizes of one hull's SBR traces (``[[objects]]`` with ``scatterer = true``).
+
+    Attributes
+    ----------
+    name : str
+    radius : float
+        Bounding radius of its meshes about their origin [m].
+    grid : float
+        Launch-grid cells per launch, (2 radius / delta)^2 with delta = lambda / n the
+        ray spacing: the rectangle that holds the hull's projection, at most.
+    launches : int
+        Launches per trace: 1, or 2 with sea multipath (from T and from its image).
+    traces : int
+        Traces over the run (``seaecho.targets.centres.refresh_schedule`` on the nominal
+        tracks).
+    centres : float
+        Bound on the scattering centres of one trace: 4 path kinds x (2 radius / cell)^2.
+    """
+
+    name: str
+    radius: float
+    grid: float
+    launches: int
+    traces: int
+    centres: float
+
+
+def hull_sizes(scene, base_dir=".") -> list[HullSize]:
+    """:class:`HullSize` of each scatterer object whose files load (the others are
+    reported by ``seaecho.preflight.object_problems``)."""
+    if not any(o.scatterer for o in scene.objects):
+        return []
+    from .targets.centres import refresh_schedule
+    from .tracing.scene import load_object
+
+    r = scene.radar
+    lam = C0 / r.carrier_frequency_hz
+    t = r.start_time_s + np.arange(r.n_pulses) / r.prf_hz
+    tx = nominal_positions(scene.transmitter, t)
+    rx = nominal_positions(scene.receiver or scene.transmitter, t)
+    out = []
+    for cfg in scene.objects:
+        if not cfg.scatterer:
+            continue
+        try:
+            shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship)
+        except (ValueError, OSError):
+            continue
+        o = shapes[0]
+        radius = max(float(np.linalg.norm(s.world_vertices(0.0) - o.position, axis=-1).max())
+                     for s in shapes)
+        c = o.position + np.multiply.outer(t, o.velocity)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ut = (tx - c) / np.linalg.norm(tx - c, axis=-1, keepdims=True)
+            ur = (rx - c) / np.linalg.norm(rx - c, axis=-1, keepdims=True)
+        try:
+            traces = len(refresh_schedule(ut, ur, t, np.deg2rad(cfg.signature_refresh_deg),
+                                          cfg.signature_refresh_s))
+        except ValueError:
+            traces = r.n_pulses
+        delta = lam / cfg.rays_per_wavelength
+        out.append(HullSize(cfg.name, radius, (2.0 * radius / delta) ** 2,
+                            2 if cfg.sea_multipath else 1, traces,
+                            4.0 * (2.0 * radius / cfg.signature_cell_m) ** 2))
+    return out
+
+
+def image_shape(scene) -> tuple[int, int]:
+    """(ny, nx) pixels of the ``[image]`` grid ((0, 0) without one, or without an extent):
+    its extent, or the default the focusing takes (the sea tile, else the targets' box
+    plus 20 range resolutions), over the pixel size (default a quarter of the slant-range
+    resolution c / (2 B)); the arithmetic of ``seaecho.imaging.focus.ImageGrid``."""
+    cfg = scene.image
+    if cfg is None:
+        return 0, 0
+    r = scene.radar
+    w = r.waveform
+    bandwidth = w.bandwidth_hz if w.kind == "lfm" else 1.0 / w.duration_s
+    pixel = cfg.pixel_m if cfg.pixel_m is not None else C0 / (8.0 * bandwidth)
+    if cfg.extent_m is not None:
+        x0, x1, y0, y1 = cfg.extent_m
+    elif r.sea_clutter:
+        lx, ly = scene.sea.size_m
+        x0, x1, y0, y1 = -0.5 * lx, 0.5 * lx, -0.5 * ly, 0.5 * ly
+    elif scene.targets:
+        p = np.array([g.position_m for g in scene.targets], dtype=float)
+        m = 20.0 * C0 / (2.0 * bandwidth)
+        x0, x1 = p[:, 0].min() - m, p[:, 0].max() + m
+        y0, y1 = p[:, 1].min() - m, p[:, 1].max() + m
+    else:
+        return 0, 0  # no extent to focus on: seaecho.preflight.image_problems
+    return max(1, int(round((y1 - y0) / pixel))), max(1, int(round((x1 - x0) / pixel)))
+
+
+def image_pixels(scene) -> int:
+    """Pixels of the ``[image]`` grid (:func:`image_shape`), 0 without one."""
+    ny, nx = image_shape(scene)
+    return ny * nx
+
+
+def estimate(scene, figures: bool = True, *, workers: int | None = None,
+             block: int | None = None, base_dir=".") -> Estimate:
+    """Peak memory and run time of ``seaecho run`` for a scene (eq M1).
+
+    Parameters
+    ----------
+    scene : seaecho.config.Scene
+        With [radar] and [transmitter].
+    figures : bool
+        The run draws its figures (``seaecho run`` without ``--no-figures``).
+    workers : int, optional
+        ``--workers N``: a local cluster of N worker processes, each holding the
+        simulation and a block of pulses (no figures, no image), besides this process.
+    block : int, optional
+        ``--block-pulses``: pulses per block (default at most :data:`CHUNK`).
+    base_dir : path
+        Folder of the scene file (the hulls' meshes are read to size their traces).
+    """
+    r = scene.radar
+    sea = r.sea_clutter
+    mode = scene.tracing.mode
+    ny, nx = scene.sea.shape
+    cells = nx * ny if sea else 0
+    n_s, n_fft, _ = window_size(scene)
+    c = len(r.channels)
+    n_p = r.n_pulses
+    chunk = min(block or CHUNK, n_p)
+    k = len(scene.targets)
+    gm = gauss_markov_steps(scene)
+    hulls = hull_sizes(scene, base_dir)
+    pixels = image_pixels(scene)
+    raytracing = sea and mode == "raytraced" or bool(hulls)
+    terms = {
+        "process": (M0_SEA["raytraced" if raytracing else mode] if sea or hulls
+                    else M0_TARGETS),
+        "sea grid": M_CELL[mode] * cells,
+        "receive window": M_FFT * c * n_fft + M_WRITE * c * chunk * n_s,
+        "pulses": M_PULSE * n_p,
+        "figures": M_FIGURE * n_p * c * n_s if figures else 0.0,
+        "perturbation": M_GM * gm,
+        "targets": M_TARGET * k,
+        "hull traces": (max((M_SBR_RAY * min(SBR_BATCH, h.grid) + M_SBR_CELL * h.grid
+                             for h in hulls), default=0.0)
+                        + sum(M_CENTRE * h.centres * min(h.traces, SIGNATURE_CACHE)
+                              for h in hulls)),
+    }
+    worker = sum(terms.values()) - terms["figures"]
+    if workers:
+        terms["workers"] = workers * worker
+    if pixels:
+        panels = 12 if scene.image.figures and figures else 0
+        up = IMAGE_BLOCK * c * scene.image.upsample * next_fast_len(n_s)
+        terms["image"] = (M_PIXEL * pixels + M_PIXEL_CHANNEL * c * pixels
+                          + M_UPSAMPLED * min(up, n_p * c * scene.image.upsample * n_fft)
+                          + M_IMAGE_FIGURE * panels * pixels)
+    window_fields = ("[radar].sampling_rate_hz, [radar.waveform].bandwidth_hz and "
+                     "duration_s, the window (window_start_m/window_end_m, or the tile "
+                     "and targets it covers), [radar].channels")
+    drivers = {
+        "process": "(fixed)",
+        "sea grid": "[sea].nx, [sea].ny ([radar].sea_clutter)",
+        "receive window": window_fields + " (and --block-pulses)",
+        "pulses": "[radar].n_pulses",
+        "figures": "[radar].n_pulses x the receive window (use --no-figures)",
+        "perturbation": "[transmitter/receiver.perturbation].step_s, [radar].n_pulses "
+                        "and prf_hz",
+        "targets": "[[targets]]",
+        "hull traces": "[[objects]] scatterer: the mesh's size against the ray spacing "
+                       "lambda / rays_per_wavelength, signature_cell_m, and the traces "
+                       "signature_refresh_deg / signature_refresh_s make",
+        "workers": "--workers (each worker holds the simulation and a block of pulses)",
+        "image": "[image].pixel_m and extent_m (pixels), [radar].channels, "
+                 "[image].upsample, figures",
+    }
+    nodes = antenna_nodes(scene)
+    n_theta = max((n for _, n in nodes), default=0)
+    antenna = M_ANTENNA * n_theta**2 + (M_ANTENNA_GRID if n_theta >= 1000 else 0.0)
+    terms["antenna pattern"] = antenna
+    drivers["antenna pattern"] = ("[transmitter/receiver.antenna].width_m and height_m "
+                                  "against the wavelength ([radar].carrier_frequency_hz)")
+    stages = sum(v for k, v in terms.items() if k != "antenna pattern")
+    peak = SAFETY * max(stages, terms["process"] + antenna)
+    per_pulse = T_PULSE + T_TARGET * k + T_FFT * c * n_fft * math.log2(max(n_fft, 2))
+    if sea:
+        per_pulse += T_CELL[mode] * cells
+    per_pulse += sum(T_TARGET * h.centres for h in hulls)
+    start = T_START[mode] + T_CELL_SETUP[mode] * cells if sea else T_START["targets"]
+    pulses = n_p * per_pulse + sum(T_RAY * h.grid * h.launches * h.traces for h in hulls)
+    if workers:
+        pulses /= workers
+    time_s = start + pulses + (T_FIGURE * n_p * c * n_s if figures else 0.0) + sum(
+        T_ANTENNA * n**3 + T_ANTENNA_GRID * 2 * n**2 for _, n in nodes)
+    time_s += T_BACKPROJECTION * pixels * n_p * c
+    rays = sum(h.grid * h.launches * h.traces for h in hulls)
+    return Estimate(peak, time_s, terms, drivers, n_s, n_fft, n_p, c, cells, pixels, rays)
+
+
+# --------------------------------------------------------------------------- limits
+def _read(path: str) -> str | None:
+    try:
+        return Path(path).read_text().strip()
+    except OSError:
+        return None
+
+
+def available_memory() -> tuple[float | None, str]:
+    """(bytes, source) this process may still use, from the system and its cgroup;
+    (None, reason) where neither can be read."""
+    found: list[tuple[float, str]] = []
+    meminfo = _read("/proc/meminfo")
+    if meminfo:
+        for line in meminfo.splitlines():
+            if line.startswith("MemAvailable:"):
+                found.append((float(line.split()[1]) * 1024.0, "available memory"))
+    limit, usage = _read("/sys/fs/cgroup/memory.max"), _read("/sys/fs/cgroup/memory.current")
+    if limit is None:  # cgroup v1
+        limit = _read("/sys/fs/cgroup/memory/memory.limit_in_bytes")
+        usage = _read("/sys/fs/cgroup/memory/memory.usage_in_bytes")
+    if limit and limit != "max" and limit.isdigit() and int(limit) < 2**60:
+        free = float(limit) - float(usage or 0)
+        found.append((max(free, 0.0), "the cgroup's memory limit"))
+    if not found:
+        return None, "available memory unknown on this system"
+    return min(found)
+
+
+def memory_limit(max_memory_gb: float | None = None) -> tuple[float | None, str]:
+    """(bytes, source) a run may use: ``max_memory_gb`` [GB, 1e9 bytes], else
+    ``SEAECHO_MAX_MEMORY_GB``, capped by :func:`available_memory`."""
+    avail, source = available_memory()
+    asked, asked_source = None, ""
+    if max_memory_gb is not None:
+        asked, asked_source = max_memory_gb * 1e9, "--max-memory-gb"
+    elif os.environ.get(ENV_LIMIT):
+        text = os.environ[ENV_LIMIT]
+        try:
+            asked = float(text) * 1e9
+        except ValueError:
+            raise SceneError(f"{ENV_LIMIT} = {text!r}: must be a number of GB") from None
+        if not (asked > 0 and math.isfinite(asked)):
+            raise SceneError(f"{ENV_LIMIT} = {text!r}: must be a positive number of GB")
+        asked_source = ENV_LIMIT
+    if asked is not None and (avail is None or asked <= avail):
+        return asked, asked_source
+    return avail, source
+
+
+def format_bytes(n: float) -> str:
+    if not math.isfinite(n):
+        return "unbounded"
+    if n >= 1000 * GiB:
+        return f"{n / GiB:,.0f} GiB"
+    return f"{n / GiB:.3g} GiB" if n >= 0.5 * GiB else f"{n / MiB:.3g} MiB"
+
+
+def format_time(t: float) -> str:
+    if not math.isfinite(t):
+        return "unbounded"
+    if t < 60:
+        return f"~{t:.2g} s"
+    if t < 3600:
+        return f"~{t / 60:.2g} min"
+    if t < 86400 * 2:
+        return f"~{t / 3600:.2g} h"
+    return f"~{t / 86400:.2g} days"
+
+
+def describe(est: Estimate, limit: float | None, source: str) -> str:
+    """One line: estimated peak memory (against the limit) and run time."""
+    text = f"estimated peak memory {format_bytes(est.peak_bytes)}"
+    if limit is not None:
+        text += f" (limit {format_bytes(limit)}, {source})"
+    text += (f", run time {format_time(est.time_s)} ({est.n_pulses} pulses x {est.channels}"
+             f" channels x {est.n_samples} samples")
+    if est.cells:
+        text += f", {est.cells} sea grid points"
+    if est.hull_rays:
+        text += f", {est.hull_rays:.3g} hull rays"
+    if est.pixels:
+        text += f", {est.pixels} image pixels"
+    return text + ")"
+
+
+def check_memory(scene, source: str, max_memory_gb: float | None = None,
+                 figures: bool = True, **kw) -> tuple[Estimate, str]:
+    """The estimate and its one-line description; :class:`SceneError` if it cannot fit.
+
+    The message names the largest terms of eq (M1) and the fields that drive them.
+    Keywords go to :func:`estimate` (``workers``, ``block``, ``base_dir``).
+    """
+    est = estimate(scene, figures=figures, **kw)
+    limit, where = memory_limit(max_memory_gb)
+    line = describe(est, limit, where)
+    if not (math.isfinite(est.peak_bytes) and (limit is None or est.peak_bytes <= limit)):
+        reasons = "; ".join(f"{name} {format_bytes(SAFETY * est.terms[name])} (set by "
+                            f"{est.drivers[name]})" for name in est.largest_terms())
+        raise SceneError(
+            f"{source}: the run does not fit in memory: {line}. Largest terms: {reasons}. "
+            f"Reduce them, or raise the limit with --max-memory-gb or {ENV_LIMIT} if "
+            "more memory is free")
+    return est, line
+
+
+__all__ = [
+    "ENV_LIMIT",
+    "SAFETY",
+    "Estimate",
+    "available_memory",
+    "check_memory",
+    "describe",
+    "estimate",
+    "antenna_nodes",
+    "gauss_markov_steps",
+    "hull_sizes",
+    "image_pixels",
+    "image_shape",
+    "nominal_positions",
+    "nominal_segments",
+    "perturbation_bound",
+    "memory_limit",
+    "window_size",
+]

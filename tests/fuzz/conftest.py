@@ -1,0 +1,20 @@
+"""The fuzzing suite (``tests/fuzz``): every test here carries the ``fuzz`` marker.
+
+Default budget (CI, part of the plain ``pytest`` run): about 200 generated scenes, under a
+minute on two cores. ``pytest -m fuzz`` runs only this suite; ``SEAECHO_FUZZ_EXAMPLES=N``
+gives every property N examples (e.g. 2000 for a long hunt).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+
+
+def pytest_collection_modifyitems(config, items):
+    for item in items:
+        if HERE in Path(str(item.fspath)).resolve().parents:
+            item.add_marker(pytest.mark.fuzz)

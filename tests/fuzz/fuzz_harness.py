@@ -1,0 +1,80 @@
+"""Driving the CLI in-process for the fuzzing suite: write a scene, run a command,
+collect exit status, stdout, stderr and what was left in the folder."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import os
+import tempfile
+import warnings
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from seaecho.cli import main
+from seaecho.config.toml_writer import dumps
+
+#: Examples per property: small by default (CI), more with SEAECHO_FUZZ_EXAMPLES=2000.
+EXAMPLES = int(os.environ.get("SEAECHO_FUZZ_EXAMPLES", "0")) or None
+#: Memory limit given to every fuzzed command [GB]: large scenes are refused quickly.
+MAX_MEMORY_GB = "2"
+
+
+def examples(default: int) -> int:
+    """The number of examples of a property: ``default`` unless the environment asks."""
+    return EXAMPLES or default
+
+
+@dataclass
+class Outcome:
+    rc: int
+    out: str
+    err: str
+    files: list[str]  #: what the command left in its folder besides the scene
+    finite: bool | None  #: every float/complex variable of the output finite (if written)
+
+
+def scene_text(data: dict) -> str:
+    return dumps(data)
+
+
+def run_cli(command: str, text: str, *extra: str) -> Outcome:
+    """``seaecho COMMAND scene.toml ...`` in-process in a fresh folder."""
+    with tempfile.TemporaryDirectory(prefix="seaecho-fuzz-") as tmp:
+        folder = Path(tmp)
+        scene = folder / "scene.toml"
+        scene.write_text(text, encoding="utf-8")
+        args = [command, str(scene), "--max-memory-gb", MAX_MEMORY_GB, "--no-figures"]
+        out_nc = folder / "out.nc"
+        if command == "run":  # check estimates the same run: without figures
+            args += ["-o", str(out_nc), "-q"]
+        args += list(extra)
+        o, e = io.StringIO(), io.StringIO()
+        with (contextlib.redirect_stdout(o), contextlib.redirect_stderr(e),
+              warnings.catch_warnings()):
+            warnings.simplefilter("always")  # printed as the console script does
+            rc = main(args)
+        finite = None
+        if out_nc.exists():
+            import xarray as xr
+
+            with xr.open_dataset(out_nc, engine="h5netcdf") as ds:
+                finite = all(bool(np.isfinite(v.values).all()) for v in ds.data_vars.values()
+                             if v.dtype.kind in "fc")
+        files = sorted(p.name for p in folder.iterdir() if p.name != "scene.toml")
+        return Outcome(rc, o.getvalue(), e.getvalue(), files, finite)
+
+
+def assert_clean(outcome: Outcome, what: str = "") -> None:
+    """Exit 0 or 2; 2 comes with one 'seaecho: error:' message, never a traceback, and
+    leaves no file behind."""
+    context = f"{what}\nstatus {outcome.rc}\nstderr:\n{outcome.err[-3000:]}"
+    assert outcome.rc in (0, 2), context
+    assert "Traceback" not in outcome.err, context
+    if outcome.rc == 2:
+        assert "seaecho: error:" in outcome.err, context
+        assert outcome.files == [], context
+    if outcome.finite is not None:
+        assert outcome.finite, "non-finite values written\n" + context

@@ -1,0 +1,106 @@
+"""Fuzzing, broken side: every mutation of a valid scene ends in exit 0 or in exit 2 with
+one message naming the field; never a traceback, never a file left behind; `check`
+refuses what `run` refuses; a run that exits 0 wrote finite data."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from fuzz_harness import MAX_MEMORY_GB, assert_clean, examples, run_cli, scene_text
+from fuzz_mutations import KINDS, mutations
+from fuzz_schema import scenes
+from hypothesis import HealthCheck, event, given, note, settings
+from hypothesis import strategies as st
+
+SLOW = [HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.filter_too_much]
+#: Mutated scenes whose run is estimated longer than this are only checked [s].
+MAX_RUN_S = 30.0
+
+
+def _text(m) -> str:
+    return m.text if m.text is not None else scene_text(m.data)
+
+
+def _names_the_field(m, err: str) -> bool:
+    return not m.names or any(n in err for n in m.names)
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_check_of_a_mutated_scene_is_clean(kind):
+    @settings(max_examples=examples(20), deadline=None, suppress_health_check=SLOW)
+    @given(m=mutations(st.one_of(scenes(runnable=False), scenes()), kinds=(kind,)))
+    def check(m):
+        _check_is_clean(m)
+
+    check()
+
+
+def _check_is_clean(m):
+    text = _text(m)
+    note(f"{m.kind} mutation, names {m.names}\n{text[:3000]}")
+    out = run_cli("check", text)
+    event(f"{m.kind} -> exit {out.rc}" + (" (radar)" if "[radar]" in text else ""))
+    assert_clean(out, f"{m.kind}: {text[:3000]}")
+    if out.rc == 2:
+        assert _names_the_field(m, out.err), (m.kind, m.names, out.err)
+
+
+@settings(max_examples=examples(6), deadline=None, suppress_health_check=SLOW)
+@given(m=mutations(scenes()))
+def test_run_of_a_mutated_scene_agrees_with_check(m):
+    text = _text(m)
+    note(f"{m.kind} mutation, names {m.names}\n{text[:3000]}")
+    checked = run_cli("check", text)
+    assert_clean(checked, text[:3000])
+    if checked.rc == 0 and _estimated_time(text) > MAX_RUN_S:
+        event(f"{m.kind} -> check 0, run skipped (estimated > {MAX_RUN_S} s)")
+        return
+    ran = run_cli("run", text, "--pulses", "2")
+    event(f"{m.kind} -> check {checked.rc}, run {ran.rc}")
+    assert_clean(ran, text[:3000])
+    runnable = "[radar]" in text and "[transmitter]" in text
+    if checked.rc == 2 and "does not fit in memory" not in checked.err:
+        # (a run of 2 pulses may fit where the whole run does not)
+        assert ran.rc == 2, "run accepted what check refused\n" + checked.err
+    elif runnable and "needs [radar]" not in ran.err:
+        assert ran.rc == 0, "run refused what check accepted\n" + ran.err
+        assert ran.finite is True
+
+
+def _estimated_time(text: str) -> float:
+    """Estimated time of `run --pulses 2` (0 for a scene that `run` refuses at once)."""
+    import tomllib
+
+    from seaecho.config import parse_scene
+    from seaecho.resources import estimate
+
+    scene = parse_scene(tomllib.loads(text))
+    if scene.radar is None or scene.transmitter is None:
+        return 0.0
+    n = min(2, scene.radar.n_pulses)
+    radar = scene.radar.model_copy(update={"n_pulses": n, "sigma_map_pulse": 0})
+    return estimate(scene.model_copy(update={"radar": radar}), figures=False).time_s
+
+
+CAL = Path(__file__).resolve().parents[2] / "scenes" / "calibration_point_target.toml"
+
+
+@pytest.mark.parametrize("mutation", [
+    ("nx = 64", "nx = -64", "[sea].nx"),
+    ("wind_speed_m_s = 5.0", "wind_speed_m_s = nan", "[sea].wind_speed_m_s"),
+    ("[radar]", "[radar]\nx = [[[[[[[[1]]]]]]]]", "[radar].x"),
+])
+def test_console_script_on_broken_scenes(tmp_path, mutation):
+    """A few cases through the installed ``seaecho`` script (a new process each)."""
+    old, new, named = mutation
+    scene = tmp_path / "s.toml"
+    scene.write_text(CAL.read_text().replace(old, new, 1))
+    script = Path(sys.executable).with_name("seaecho")
+    for cmd in (["check", str(scene)], ["run", str(scene), "-o", str(tmp_path / "o.nc"),
+                                        "--max-memory-gb", MAX_MEMORY_GB]):
+        r = subprocess.run([str(script), *cmd], capture_output=True, text=True, timeout=120)
+        assert r.returncode == 2 and named in r.stderr and "Traceback" not in r.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.toml"]
