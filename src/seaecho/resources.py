@@ -384,7 +384,12 @@ def image_shape(scene) -> tuple[int, int]:
         y0, y1 = p[:, 1].min() - m, p[:, 1].max() + m
     else:
         return 0, 0  # no extent to focus on: seaecho.preflight.image_problems
-    return max(1, int(round((y1 - y0) / pixel))), max(1, int(round((x1 - x0) / pixel)))
+    def count(length: float) -> int:  # an infinite count (a 5e-324 m pixel) is capped
+        with np.errstate(over="ignore"):
+            n = np.float64(length) / pixel
+        return max(1, int(round(n))) if n < 1.0e15 else 10**15
+
+    return count(y1 - y0), count(x1 - x0)
 
 
 def image_pixels(scene) -> int:

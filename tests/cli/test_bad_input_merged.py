@@ -230,3 +230,21 @@ def test_itu_material_undefined_at_the_carrier_is_refused_by_check(tmp_path, cap
         rc, _, err = _cli(capsys, command, str(scene), *extra)
         assert rc == 2 and "material = \"floorboard\"" in err and "P.2040" in err, err
     assert not (tmp_path / "x.nc").exists()
+
+
+def test_fetch_of_the_elfouhaily_spreading_is_checked_with_any_spectrum(tmp_path, capsys):
+    # Found by the fuzzing suite (a RuntimeWarning, log of a negative friction velocity):
+    # with spectrum = "pierson-moskowitz" the fetch went unchecked, but the Elfouhaily
+    # spreading function reads it through Elfouhaily's fetch law
+    text = (CAL.replace("nx = 64", 'nx = 64\nspectrum = "pierson-moskowitz"\n'
+                        'spreading = "elfouhaily"\nfetch_m = 1e-3', 1))
+    rc, _, err = _cli(capsys, "check", str(_scene(tmp_path, text)))
+    assert rc == 2 and "[sea].fetch_m = 0.001" in err and "elfouhaily spreading's" in err
+
+
+def test_image_pixel_of_5e_324_m_is_a_message(tmp_path, capsys):
+    # Found by the fuzzing suite: extent / pixel_m overflowed to infinity and `check`
+    # died in OverflowError counting the pixels
+    scene = _scene(tmp_path, CAL + "\n[image]\npixel_m = 5e-324\n")
+    rc, _, err = _cli(capsys, "check", str(scene))
+    assert rc == 2 and "[image].pixel_m = 5e-324" in err and "more than" in err

@@ -214,8 +214,12 @@ def _sea(draw: Draw, d: dict, get: Get) -> dict:
         from seaecho.ocean.limits import fetch_range
 
         sea = SeaConfig.model_validate(d)
-        lo, hi = fetch_range(sea.spectrum, sea.wind_speed_m_s)
-        if sea.spectrum != "pierson-moskowitz" and not lo <= d["fetch_m"] <= hi:
+        laws = {sea.spectrum} - {"pierson-moskowitz"}
+        laws |= {"elfouhaily"} if sea.spreading == "elfouhaily" else set()
+        ranges = [fetch_range(law, sea.wind_speed_m_s) for law in laws]
+        lo, hi = max((r[0] for r in ranges), default=0.0), min((r[1] for r in ranges),
+                                                               default=math.inf)
+        if laws and not lo <= d["fetch_m"] <= hi:
             d["fetch_m"] = draw(st.floats(lo, min(hi, 1.0e8, 100.0 * lo)))
     if "depth_m" in d:  # deep enough for the waves (McCowan's breaking limit)
         from seaecho.build import section_spectrum
