@@ -128,3 +128,12 @@ def test_mask_is_a_damping_fraction(length, beam_frac, heading, t):
     assert m.shape == (41, 41)
     assert np.all((m >= 0.0) & (m < 1.0))
     assert np.all(m <= turbulent_wake_strip(ship, x, x, t))
+
+
+def test_a_subnormal_wake_length_is_no_strip():
+    # Found by the fuzzing suite: a length of 5e-324 m made the fade-out 0.2 L underflow
+    # to 0 (a division by zero, NaN where xi = L); such a strip is empty, as L = 0.
+    ship = Ship(10.0, 4.0, 1.5, 5.0, np.deg2rad(35.0), (50.0, 40.0))
+    x = np.linspace(-200.0, 100.0, 61)
+    m = turbulent_wake_strip(ship, x, x, 0.0, length=5e-324)
+    assert m.shape == (61, 61) and not m.any()
