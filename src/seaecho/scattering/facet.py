@@ -486,6 +486,26 @@ def _namespace(backend: str, spectrum: Any, variant: str | None):
     return _backend.namespace(backend, variant)
 
 
+def _evaluate_mechanisms(backend, variant, n_i, n_s, normal, k, eps_r, spectrum,
+                         mss_upwind, mss_crosswind, wind_direction, wake_damping,
+                         breaking_fraction, breaking_tilt, local, model, cox_munk, tilt):
+    """The kernel set-up shared by the per-facet entry points: the namespace, its
+    boundary, the kernel inputs and the mechanisms' (lazy) matrices with their context."""
+    xp = _namespace(backend, spectrum, variant)
+    n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
+    n = n_i.shape[0]
+    io = Boundary(xp, n)
+    args = _kernel_inputs(io, n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
+                          np.asarray(normal, dtype=float).reshape(-1, 3), k, complex(eps_r),
+                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n,
+                          breaking_fraction, breaking_tilt)
+    frames_in = _local_frames(local, n) if (local is not None and xp.is_numpy) else None
+    ctx: dict = {}
+    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in,
+                      tilt=tilt, context=ctx)
+    return xp, io, n, args, mech, ctx
+
+
 def facet_terms(
     n_i: ArrayLike,
     n_s: ArrayLike,
@@ -572,18 +592,10 @@ def facet_terms(
         raise ValueError(f"model = {model!r}: choose from {MODELS}")
     if model != "kirchhoff":
         check_spm_validity(k, small_scale_height_variance)
-    xp = _namespace(backend, spectrum, variant)
-    n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
-    n = n_i.shape[0]
-    io = Boundary(xp, n)
-    args = _kernel_inputs(io, n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
-                          np.asarray(normal, dtype=float).reshape(-1, 3), k, complex(eps_r),
-                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n,
-                          breaking_fraction, breaking_tilt)
-    frames_in = _local_frames(local, n) if (local is not None and xp.is_numpy) else None
-    ctx: dict = {}
-    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in,
-                      tilt=tilt, context=ctx)
+    xp, io, n, args, mech, ctx = _evaluate_mechanisms(
+        backend, variant, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
+        wind_direction, wake_damping, breaking_fraction, breaking_tilt, local, model,
+        cox_munk, tilt)
     names = list(mech)
     res = io.numpy(ctx["weight"], *[mech[m][0] for m in names])
     weight = res.pop(0).reshape(n, 4)
@@ -758,18 +770,10 @@ def speckled_facet_amplitudes(
     """
     if model not in MODELS:
         raise ValueError(f"model = {model!r}: choose from {MODELS}")
-    xp = _namespace(backend, spectrum, variant)
-    n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
-    n = n_i.shape[0]
-    io = Boundary(xp, n)
-    args = _kernel_inputs(io, n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
-                          np.asarray(normal, dtype=float).reshape(-1, 3), k, complex(eps_r),
-                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n,
-                          breaking_fraction, breaking_tilt)
-    frames_in = _local_frames(local, n) if (local is not None and xp.is_numpy) else None
-    ctx: dict = {}
-    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in,
-                      tilt=tilt, context=ctx)
+    xp, io, n, args, mech, ctx = _evaluate_mechanisms(
+        backend, variant, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
+        wind_direction, wake_damping, breaking_fraction, breaking_tilt, local, model,
+        cox_munk, tilt)
     names = list(mech)
     if callable(draws):
         ctx.update(n_i=args["n_i"], n_s=args["n_s"], k=args["k"])
