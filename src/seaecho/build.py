@@ -159,7 +159,10 @@ def _ship(scene) -> Ship | None:
                                        else float(cfg.turbulent_wake_length_m)),
                 wake_amplitude=cfg.wake_amplitude,
                 wake_breaking_limit=cfg.wake_breaking_limit,
-                turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db)
+                turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db,
+                turbulent_wake_film_elasticity=1e-3 * cfg.turbulent_wake_film_elasticity_mn_m,
+                bragg_wavenumber=(None if scene.radar is None else _scene_bragg_wavenumber(
+                    scene, 2.0 * np.pi * carrier_frequency(scene) / C0)))
 
 
 def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:

@@ -66,11 +66,16 @@ class ShipConfig(Section):
     wake_breaking_limit: bool = Field(
         True, description="cap the Kelvin wake's waves at the breaking steepness H/L = 0.1412"
     )
-    turbulent_wake_film_contrast_db: float = Field(
-        -3.0, ge=-30.0, le=0.0,
-        description="persistent Bragg contrast of the turbulent wake's surfactant film [dB], a "
-        "free parameter (no measured value is built in); the turbulence adds complete "
-        "damping at the stern decaying as (1 + xi/B)^-3/5",
+    turbulent_wake_film_contrast_db: float | None = Field(
+        None, ge=-30.0, le=0.0,
+        description="override of the Bragg contrast of the turbulent wake's surfactant film "
+        "[dB]; default: the Marangoni damping of the film at the radar's Bragg wavenumber "
+        "(Alpers & Huehnerfuss 1989, docs/wake.md)",
+    )
+    turbulent_wake_film_elasticity_mn_m: float = Field(
+        10.0, ge=0.0, le=1000.0,
+        description="dilational modulus of the turbulent wake's surfactant film [mN/m]; "
+        "order of 10 mN/m for natural films (Alpers & Huehnerfuss 1988)",
     )
 
     @model_validator(mode="after")

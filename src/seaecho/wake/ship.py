@@ -31,6 +31,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..constants import G
+from .film import DEFAULT_WAKE_FILM_ELASTICITY
 
 #: Default length of the turbulent wake strip, in ship lengths (a modelling choice,
 #: docs/wake.md).
@@ -64,8 +65,17 @@ class Ship:
         Heights of the Kelvin wake (:class:`seaecho.wake.KelvinWake`).
     wake_breaking_limit : bool
         Cap the Kelvin wake's waves at the breaking steepness.
-    turbulent_wake_film_contrast_db : float
-        Persistent Bragg contrast of the wake's surfactant film [dB] (<= 0; eq W15).
+    turbulent_wake_film_contrast_db : float or None
+        Persistent Bragg contrast of the wake's surfactant film C_f [dB] (<= 0; eq W15),
+        overriding the Marangoni model; None (default) takes C_f from the film's
+        elasticity at ``bragg_wavenumber`` (eqs W16, W17).
+    turbulent_wake_film_elasticity : float
+        Dilational modulus of the wake's surfactant film E [N/m] (>= 0; eq W16).
+    bragg_wavenumber : float or None
+        The radar's Bragg wavenumber k_B at the scene [rad/m] (>= 0), at which the film's
+        contrast is evaluated (eq W17); set by :mod:`seaecho.build` from the scene's
+        carrier and geometry. None (no radar): without an override, the wake's damping
+        is the turbulent part alone.
     """
 
     length: float
@@ -77,7 +87,9 @@ class Ship:
     turbulent_wake_length: float | None = None
     wake_amplitude: str = "kriebel-seelig"
     wake_breaking_limit: bool = True
-    turbulent_wake_film_contrast_db: float = -3.0
+    turbulent_wake_film_contrast_db: float | None = None
+    turbulent_wake_film_elasticity: float = DEFAULT_WAKE_FILM_ELASTICITY
+    bragg_wavenumber: float | None = None
     _p0: NDArray[np.float64] = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -105,10 +117,17 @@ class Ship:
         if self.wake_amplitude not in WAKE_AMPLITUDE_MODELS:
             raise ValueError(f"Ship.wake_amplitude = {self.wake_amplitude!r}: choose from "
                              f"{WAKE_AMPLITUDE_MODELS}")
-        if not (np.isfinite(self.turbulent_wake_film_contrast_db)
-                and self.turbulent_wake_film_contrast_db <= 0.0):
-            raise ValueError(f"Ship.turbulent_wake_film_contrast_db = "
-                             f"{self.turbulent_wake_film_contrast_db!r} dB: must be <= 0")
+        c_f = self.turbulent_wake_film_contrast_db
+        if c_f is not None and not (np.isfinite(c_f) and c_f <= 0.0):
+            raise ValueError(f"Ship.turbulent_wake_film_contrast_db = {c_f!r} dB: must be "
+                             "<= 0 (or None for the Marangoni film model)")
+        e = self.turbulent_wake_film_elasticity
+        if not (np.isfinite(e) and e >= 0.0):
+            raise ValueError(f"Ship.turbulent_wake_film_elasticity = {e!r} N/m: must be a "
+                             "finite number >= 0")
+        k_b = self.bragg_wavenumber
+        if k_b is not None and not (np.isfinite(k_b) and k_b >= 0.0):
+            raise ValueError(f"Ship.bragg_wavenumber = {k_b!r} rad/m: must be >= 0 (or None)")
         object.__setattr__(self, "position0", (float(p0[0]), float(p0[1])))
         object.__setattr__(self, "_p0", p0)
 

@@ -44,17 +44,19 @@ momentumless wake the turbulent velocity falls as xi^(-4/5) and the width grows 
 xi^(1/5) (Tennekes & Lumley 1972, 4.3), so ``nu_t ~ u' w ~ xi^(-3/5)``; in the short-wave
 balance of Kudryavtsev et al. (2003, 2005) the relative reduction of capillary-gravity
 Bragg waves (their exponent n = 1) equals the added damping rate over the wind growth
-rate, hence ``d_t ~ nu_t``. *Surfactant films* swept up by the wake's bubbles (Kaiser et
-al. 1988; Peltzer et al. 1992) persist over the strip: their damping is the contrast
-``C_f`` [dB] (default -3 dB), a free parameter (no published X- or C-band contrast of a far
-wake against the surrounding sea could be checked for it: the SAR studies of Lyden et al.
-1988, Milgram et al. 1993, Peltzer et al. 1992 and Soloviev, Gilman et al. 2010 describe
-the dark centreline without a number usable here; a wider search, listed in
-docs/wake.md, found none either); the strongest published suppression of
-short waves by a film at moderate wind, an artificial vegetable-oil slick at 6-8 m/s, is
-a spectral contrast of about 10 (-10 dB; Dulov & Yurovskaya, field photographs). The
-wake's age ``xi / V`` enters through ``xi``. Wind dependence (stronger winds restore the
-Bragg waves faster) is not modelled here.
+rate, hence ``d_t ~ nu_t``. The wake's age ``xi / V`` enters through ``xi``.
+
+*Surfactant films* swept up by the wake's bubbles and vortices (Kaiser et al. 1988;
+Peltzer et al. 1992) persist over the strip. Their contrast ``C_f`` [dB] is the Marangoni
+damping of the Bragg waves by a purely elastic film (eqs W16, W17 of
+:mod:`seaecho.wake.film`: Lucassen-Reynders & Lucassen 1969; Alpers & Huehnerfuss 1989),
+evaluated at the radar's Bragg wavenumber (``Ship.bragg_wavenumber``) for the film's
+dilational modulus (``Ship.turbulent_wake_film_elasticity``, default 0.010 N/m, Alpers &
+Huehnerfuss 1988): about -3.5 to -3.8 dB at X band between 20 and 45 deg incidence,
+-0.7 dB at L band. ``Ship.turbulent_wake_film_contrast_db`` overrides it. No measured
+contrast of a ship wake against the surrounding sea with its wind, band and age could be
+found to check the sum against (docs/wake.md lists what was searched); the film's decay
+with the wake's age and the dependence on the wind speed are not modelled.
 
 References
 ----------
@@ -69,17 +71,17 @@ References
    "WAKEX 86: a ship wake/films exploratory experiment", NRL report (1988).
 .. [5] R. D. Peltzer, W. D. Garrett and P. M. Smith, "Hydrodynamics of ship wake
    surfactant films", Proc. 18th Symp. Naval Hydrodynamics, 533-550 (1991, publ. 1992).
-.. [6] V. A. Dulov and M. V. Yurovskaya, "Spectral contrasts of short wind waves in
-   artificial slicks from the sea surface photographs", Physical Oceanography (Marine
-   Hydrophysical Institute, Sevastopol).
-.. [7] V. Kudryavtsev, D. Hauser, G. Caudal and B. Chapron, J. Geophys. Res. 108(C3), 8054
+.. [6] V. Kudryavtsev, D. Hauser, G. Caudal and B. Chapron, J. Geophys. Res. 108(C3), 8054
    (2003); V. Kudryavtsev, D. Akimov, J. Johannessen and B. Chapron, J. Geophys. Res.
    110, C07016 (2005).
-.. [8] J. D. Lyden, R. R. Hammond, D. R. Lyzenga and R. A. Shuchman, "Synthetic aperture
+.. [7] J. D. Lyden, R. R. Hammond, D. R. Lyzenga and R. A. Shuchman, "Synthetic aperture
    radar imaging of surface ship wakes", J. Geophys. Res. 93(C10), 12293-12303 (1988).
-.. [9] A. Soloviev, M. Gilman, K. Young, S. Brusch and S. Lehner, "Sonar measurements in
+.. [8] A. Soloviev, M. Gilman, K. Young, S. Brusch and S. Lehner, "Sonar measurements in
    ship wakes simultaneous with TerraSAR-X overpasses", IEEE Trans. Geosci. Remote Sens.
    48(2), 841-851 (2010).
+.. [9] E. H. Lucassen-Reynders and J. Lucassen, "Properties of capillary waves", Adv.
+   Colloid Interface Sci. 2, 347-395 (1969); W. Alpers and H. Huehnerfuss, J. Geophys.
+   Res. 93(C4), 3642-3648 (1988) and 94(C5), 6251-6265 (1989).
 """
 
 from __future__ import annotations
@@ -87,6 +89,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .film import film_contrast_db as _film_contrast_db
 from .ship import Ship
 
 
@@ -148,6 +151,24 @@ def turbulent_damping_profile(
     return 1.0 - (1.0 - d_t) * (1.0 - d_f)
 
 
+def turbulent_wake_film_contrast_db(ship: Ship) -> float:
+    """The film contrast C_f of eq W15 for a ship [dB].
+
+    ``ship.turbulent_wake_film_contrast_db`` if set; else the Marangoni contrast of the
+    film (eq W17) at ``ship.bragg_wavenumber`` for ``ship.turbulent_wake_film_elasticity``;
+    0 dB (no film term) when the ship has no Bragg wavenumber (a scene without a radar).
+
+    References
+    ----------
+    Alpers & Huehnerfuss (1989); :mod:`seaecho.wake.film`.
+    """
+    if ship.turbulent_wake_film_contrast_db is not None:
+        return float(ship.turbulent_wake_film_contrast_db)
+    if ship.bragg_wavenumber is None:
+        return 0.0
+    return _film_contrast_db(ship.bragg_wavenumber, ship.turbulent_wake_film_elasticity)
+
+
 def turbulent_wake_mask(
     ship: Ship,
     x: ArrayLike,
@@ -167,7 +188,8 @@ def turbulent_wake_mask(
     ship, x, y, t, length, width_at_stern
         As :func:`turbulent_wake_strip`.
     film_contrast_db : float or None
-        C_f [dB]; None takes ``ship.turbulent_wake_film_contrast_db``.
+        C_f [dB]; None takes :func:`turbulent_wake_film_contrast_db` of the ship (its
+        override, else the Marangoni film contrast at its Bragg wavenumber).
 
     Returns
     -------
@@ -175,7 +197,7 @@ def turbulent_wake_mask(
         Fraction of the Bragg spectrum removed, in [0, 1).
     """
     w0 = ship.beam if width_at_stern is None else float(width_at_stern)
-    c_f = ship.turbulent_wake_film_contrast_db if film_contrast_db is None else film_contrast_db
+    c_f = turbulent_wake_film_contrast_db(ship) if film_contrast_db is None else film_contrast_db
     strip = turbulent_wake_strip(ship, x, y, t, length, width_at_stern)
     if not np.any(strip):
         return strip
@@ -242,5 +264,5 @@ def turbulent_wake_strip(
     return along * across
 
 
-__all__ = ["turbulent_damping_profile", "turbulent_wake_mask", "turbulent_wake_strip",
-           "turbulent_wake_width"]
+__all__ = ["turbulent_damping_profile", "turbulent_wake_film_contrast_db",
+           "turbulent_wake_mask", "turbulent_wake_strip", "turbulent_wake_width"]
