@@ -94,7 +94,7 @@ def test_marangoni_damping_peaks_near_8_hz_for_a_modulus_of_0p01_n_per_m():
 
 def test_simulated_slick_contrast_against_huehnerfuss_1978():
     """The only measured film contrast found with its band, incidence, wind and
-    polarisations: Huehnerfuss, Alpers & Jones (1978, Radio Sci. 13, 979), an oleyl
+    polarisations: Huehnerfuss, Alpers & Jones (1978, Radio Sci. 13), an oleyl
     alcohol monolayer on the North Sea (JONSWAP 75), Ku band 13.9 GHz, 41 and 47 deg
     incidence, VV and HH, winds of 3.5-4.4 m/s: maximum NRCS reduction 7.3 +- 3.5 dB.
 

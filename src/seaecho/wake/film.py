@@ -56,10 +56,10 @@ as persistent over the turbulent strip.
 
 *Not modelled: the wind.* Alpers & Huehnerfuss's balance (W17) has no wind speed; measured
 slick contrasts are lower at higher winds (Gade et al. 1998), but their numbers could not
-be read here. The balance of wind input and dissipation alone (the growth rate of Plant
-1982 against the film's damping) predicts complete suppression of the Ku-band Bragg waves
-under an oleyl alcohol film at 3.5-4.4 m/s, against the 7.3 +- 3.5 dB measured there
-(Huehnerfuss, Alpers & Jones 1978): it is not used.
+be read here. The balance of the wind input alone (the growth rate of Plant 1982) against
+the film's damping is too sensitive to the film's modulus to be used without a measured
+one: at Ku band and 3.5-4.4 m/s it passes from no contrast to complete suppression of the
+Bragg waves between E = 0 and 3-10 mN/m (docs/wake.md).
 
 References
 ----------
@@ -73,14 +73,14 @@ References
    351.
 .. [5] H. Huehnerfuss, W. Alpers and W. L. Jones, "Measurements at 13.9 GHz of the radar
    backscattering cross section of the North Sea covered with an artificial surface
-   film", Radio Sci. 13(6), 979-983 (1978).
+   film", Radio Sci. 13 (1978).
 .. [6] "Surface strain modulation of insoluble surface film properties", Phys. Fluids
    6(8), 2606-2616 (1994), doi:10.1063/1.868150.
 .. [7] J. A. C. Kaiser, W. D. Garrett, S. E. Ramberg, R. D. Peltzer and D. M. Andrews,
    "WAKEX 86: a ship wake/films exploratory experiment", NRL report (1988).
 .. [8] R. D. Peltzer, O. M. Griffin, W. R. Barger and J. A. C. Kaiser, "High-resolution
    measurement of surface-active film redistribution in ship wakes", J. Geophys. Res.
-   97(C4), 5231-5252 (1992).
+   97 (1992), doi:10.1029/91JC01875.
 .. [9] W. Alpers, B. Holt and K. Zeng, "Oil spill detection by imaging radars: challenges
    and pitfalls", Remote Sens. Environ. 201, 133-147 (2017).
 .. [10] S. A. Ermakov et al., "Remote sensing of organic films on the water surface using
