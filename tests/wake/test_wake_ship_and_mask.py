@@ -137,3 +137,13 @@ def test_a_subnormal_wake_length_is_no_strip():
     x = np.linspace(-200.0, 100.0, 61)
     m = turbulent_wake_strip(ship, x, x, 0.0, length=5e-324)
     assert m.shape == (61, 61) and not m.any()
+
+
+def test_a_subnormal_fade_out_neither_warns_nor_breaks_the_strip():
+    # Found by the fuzzing suite: a strip of 1e-308 m has a subnormal fade-out 0.2 L; the
+    # ratio (L - xi) / (0.2 L) overflowed (RuntimeWarning) before the clip of S took it to
+    # 0 or 1. The strip is empty behind the stern, as for any strip shorter than a beam.
+    ship = Ship(10.0, 4.0, 1.5, 5.0, np.deg2rad(35.0), (50.0, 40.0))
+    x = np.linspace(-200.0, 100.0, 61)
+    m = turbulent_wake_strip(ship, x, x, 0.0, length=1e-308)
+    assert m.shape == (61, 61) and np.all(np.isfinite(m)) and not m.any()

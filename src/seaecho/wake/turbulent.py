@@ -258,8 +258,11 @@ def turbulent_wake_strip(
     eta = np.abs(ys)
     w = turbulent_wake_width(xi, w0)
     delta = 0.25 * w
-    # Eq W14: onset behind the stern, fade-out at the end, smooth lateral edges
-    along = _smooth_step(xi / w0) * _smooth_step((lt - xi) / (0.2 * lt))
+    # Eq W14: onset behind the stern, fade-out at the end, smooth lateral edges. A strip
+    # of a few 1e-308 m has a subnormal fade-out length: the ratio overflows to +-inf,
+    # which the clip of S takes to 0 or 1 (found by the fuzzing suite)
+    with np.errstate(over="ignore"):
+        along = _smooth_step(xi / w0) * _smooth_step((lt - xi) / (0.2 * lt))
     across = _smooth_step((0.5 * w + 0.5 * delta - eta) / delta)
     return along * across
 
