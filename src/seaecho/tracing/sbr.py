@@ -897,3 +897,66 @@ def trace_signature(hull: TraceMesh, tx: ArrayLike, rx: ArrayLike, frequency_hz:
     totals = tr.acc.totals.reshape(4, options.max_bounces, 2, 2)
     return Signature(centres, totals, tr.reference, tr.tx_w, tr.rx_w, tr.delta, tr.n_rays,
                      tr.n_hits)
+
+
+# ------------------------------------------------------------------------ the cache
+def signature_key(hull: TraceMesh, tx: ArrayLike, rx: ArrayLike, frequency_hz: float, *,
+                  options: SBROptions | None = None, sea: SeaPlane | None = None,
+                  occluders: Sequence[TraceMesh] = (), reference: ArrayLike | None = None,
+                  time: float = 0.0, velocity: ArrayLike = (0.0, 0.0, 0.0),
+                  variant: str | None = None) -> str:
+    """The cache key of :func:`trace_signature` with these arguments (same parameters).
+
+    A hash (:func:`seaecho.targets.cache.digest`) of every argument, arrays by their
+    bytes, and of the code: every input the trace's result depends on, so that two
+    calls with one key give the same bytes.
+    """
+    from ..backend import DEFAULT_VARIANT
+    from ..targets.cache import digest
+
+    options = SBROptions() if options is None else options
+
+    def mesh(name: str, m: TraceMesh) -> list:
+        return [(f"{name}.vertices", np.asarray(m.vertices, np.float64)),
+                (f"{name}.faces", np.asarray(m.faces, np.int64)),
+                (f"{name}.eps_r", np.asarray(m.eps_r, np.complex128))]
+
+    items = [("kind", "sbr-signature"), *mesh("hull", hull),
+             ("tx", np.asarray(tx, np.float64)), ("rx", np.asarray(rx, np.float64)),
+             ("frequency", float(frequency_hz))]
+    items += [(f"options.{f}", getattr(options, f))
+              for f in SBROptions.__dataclass_fields__]
+    if sea is None:
+        items.append(("sea", None))
+    else:
+        items += [("sea.level", float(sea.level)),
+                  ("sea.eps_r", None if sea.eps_r is None else complex(sea.eps_r)),
+                  ("sea.sigma_h", float(sea.sigma_h)), ("sea.roughness", sea.roughness),
+                  ("sea.patch", None if sea.patch is None else
+                   [np.asarray(a, np.float64) for a in sea.patch])]
+    items.append(("occluders", len(occluders)))
+    for i, m in enumerate(occluders):
+        items += mesh(f"occluder{i}", m)
+    items += [("reference", None if reference is None else np.asarray(reference, np.float64)),
+              ("time", float(time)), ("velocity", np.asarray(velocity, np.float64)),
+              ("variant", DEFAULT_VARIANT if variant is None else variant)]
+    return digest(items)
+
+
+def signature_arrays(sig: Signature) -> dict[str, NDArray]:
+    """A signature as named arrays (for :class:`seaecho.targets.cache.ArrayCache`)."""
+    c = sig.centres
+    return {"position": c.position, "s": c.s, "path": c.path, "time": np.float64(c.time),
+            "velocity": c.velocity, "totals": sig.totals, "reference": sig.reference,
+            "tx": sig.tx, "rx": sig.rx, "ray_spacing": np.float64(sig.ray_spacing),
+            "n_rays": np.int64(sig.n_rays), "n_hits": np.int64(sig.n_hits)}
+
+
+def signature_from_arrays(a: dict[str, NDArray]) -> Signature:
+    """The inverse of :func:`signature_arrays` (the same bytes)."""
+    from ..targets.centres import ScatteringCentres
+
+    centres = ScatteringCentres(a["position"], a["s"], a["path"], float(a["time"]),
+                                a["velocity"])
+    return Signature(centres, a["totals"], a["reference"], a["tx"], a["rx"],
+                     float(a["ray_spacing"]), int(a["n_rays"]), int(a["n_hits"]))
