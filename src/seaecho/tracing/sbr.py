@@ -86,7 +86,7 @@ from ..scattering.fresnel import fresnel_coefficients
 from ..targets.centres import CentreAccumulator, ScatteringCentres, equivalent_positions
 from ..targets.multipath import ROUGHNESS_MODELS, mirror, sea_reflection
 from ..targets.po import local_basis, po_components, shape_function, tube_footprint
-from .variant import mitsuba_modules
+from .variant import drjit_mitsuba, mitsuba_modules
 
 __all__ = [
     "SBROptions",
@@ -411,7 +411,7 @@ class _Tracer:
 
     def __init__(self, hull: TraceMesh, tx, rx, frequency, options, sea, occluders,
                  reference, variant) -> None:
-        self.dr, self.mi, _ = mitsuba_modules(variant)
+        self.dr, self.mi = drjit_mitsuba(variant)
         self.k = 2.0 * np.pi * frequency / C0
         self.wavelength = C0 / frequency
         self.opt = options
