@@ -342,12 +342,16 @@ def _mi_scene(mi, vertices: NDArray, faces: NDArray, keep: list):
 
 
 def _intersect(mi, scene, o: NDArray, d: NDArray) -> tuple[NDArray, NDArray]:
-    """Distance [m] (inf on a miss) and triangle index of each ray's first hit."""
+    """Distance [m] (inf on a miss) and triangle index of each ray's first hit (the
+    index is meaningless on a miss)."""
+    import drjit as dr
+
     cols = [aligned(o[:, k], np.float32) for k in range(3)]
     cols += [aligned(d[:, k], np.float32) for k in range(3)]
     ray = mi.Ray3f(mi.Point3f(*(mi.Float(c) for c in cols[:3])),
                    mi.Vector3f(*(mi.Float(c) for c in cols[3:])))
     pi = scene.ray_intersect_preliminary(ray)
+    dr.eval(pi.t, pi.prim_index)  # one kernel (reading each alone traced the rays twice)
     t = np.array(pi.t.numpy(), dtype=np.float64)
     prim = np.array(pi.prim_index.numpy(), dtype=np.int64)
     del cols
