@@ -299,3 +299,16 @@ def test_concurrent_writers_never_expose_a_partial_entry(tmp_path):
     assert got is not None and got["a"].tobytes() == expected.tobytes()
     assert not list(tmp_path.glob("race/*/.tmp-*"))  # no temporary file left
     assert hits >= 1
+
+
+def test_another_processor_misses(monkeypatch):
+    # numpy's and Embree's SIMD kernels follow the instruction set: a folder shared by
+    # two kinds of processors keeps their entries apart
+    args, kw = _args()
+    key = signature_key(*args, **kw)
+    cache_mod.code_fingerprint.cache_clear()
+    monkeypatch.setattr(cache_mod, "_cpu_features", lambda: "another processor")
+    try:
+        assert signature_key(*args, **kw) != key
+    finally:
+        cache_mod.code_fingerprint.cache_clear()

@@ -6,9 +6,10 @@ cache folder so that a second run of a scene starts without re-tracing:
 
 - **Key.** :func:`digest` hashes (SHA-256) every input of the computation, each array by
   its name, dtype, shape and bytes (so -0.0 and 0.0, or one ulp, are different keys), and
-  :func:`code_fingerprint`: the source of every module of seaecho and the versions of
-  Python, numpy, scipy, Mitsuba and Dr.Jit, and the machine's architecture. A change in
-  any input or in the code misses; nothing is ever invalidated by time.
+  :func:`code_fingerprint`: the source of every module of seaecho, the versions of
+  Python, numpy, scipy, Mitsuba and Dr.Jit, and the machine's architecture and
+  instruction-set flags (a folder shared by different processors keeps their entries
+  apart). A change in any input or in the code misses; nothing expires with time.
 - **Writes are atomic.** An entry is written to a temporary file in the cache folder and
   moved onto its name with ``os.replace`` (an atomic rename on POSIX and Windows): a
   reader sees the whole file or none, and concurrent writers of one key (workers of a
@@ -85,13 +86,14 @@ def code_fingerprint() -> str:
     """SHA-256 of seaecho's source and of the versions its numbers depend on.
 
     Every ``*.py`` file of the installed package (path and bytes, in sorted order), the
-    versions of Python, numpy, scipy, Mitsuba and Dr.Jit, and the machine architecture:
-    a cached result is never used by other code than the one that computed it.
+    versions of Python, numpy, scipy, Mitsuba and Dr.Jit, the machine architecture and
+    the processor's instruction-set flags: a cached result is never used by other code,
+    or on another kind of processor, than the one that computed it.
     """
     import importlib.metadata as md
 
     h = hashlib.sha256(tree_digest(Path(__file__).resolve().parents[1]).encode())
-    versions = [sys.version, platform.machine()]
+    versions = [sys.version, platform.machine(), _cpu_features()]
     for dist in ("numpy", "scipy", "mitsuba", "drjit"):
         try:
             versions.append(f"{dist}={md.version(dist)}")
@@ -99,6 +101,19 @@ def code_fingerprint() -> str:
             versions.append(f"{dist}=none")
     h.update("\n".join(versions).encode())
     return h.hexdigest()
+
+
+def _cpu_features() -> str:
+    """The processor's instruction-set flags (Linux), else its platform name: numpy's and
+    Embree's SIMD kernels are chosen by them, and their last bits may differ."""
+    try:
+        with open("/proc/cpuinfo", encoding="ascii", errors="replace") as f:
+            for line in f:
+                if line.startswith(("flags", "Features")):
+                    return " ".join(sorted(line.split(":", 1)[1].split()))
+    except OSError:
+        pass
+    return platform.processor()
 
 
 def tree_digest(root: str | os.PathLike) -> str:
