@@ -5,8 +5,9 @@ Run: ``python benchmarks/bench_startup.py [SCENE.toml ...] [--repeat 2] [--cache
 Simulation 2).
 
 Each run is a fresh process (``python -c``) that executes ``seaecho run SCENE -o TMP.nc
---pulses 1 --no-figures -q`` and records, from ``time.perf_counter`` and
-``time.process_time`` (every thread of the process) since the interpreter started:
+--pulses 1 --no-figures -q`` (``--pulses N``; 0: the whole run) and records, from
+``time.perf_counter`` and ``time.process_time`` (every thread of the process) since the
+interpreter started:
 
 - the **timeline**: the end of the command line's imports, the end of the build
   (``build_simulation`` + the simulation's set-up), the end of the dataset's static part
@@ -127,8 +128,8 @@ CHILD = textwrap.dedent("""
 """)
 
 
-def startup(scene: Path, cache_dir: Path | None, profile: int = 0) -> dict:
-    """One ``seaecho run --pulses 1`` of ``scene`` in a fresh process, with the hull
+def startup(scene: Path, cache_dir: Path | None, profile: int = 0, pulses: int = 1) -> dict:
+    """One ``seaecho run --pulses N`` of ``scene`` in a fresh process, with the hull
     cache in ``cache_dir`` (None: ``--no-cache``): the marks {name: (wall s, CPU s)}
     since the interpreter started, the stages {label: (calls, wall s, CPU s)}, and the
     load average before and after."""
@@ -137,8 +138,9 @@ def startup(scene: Path, cache_dir: Path | None, profile: int = 0) -> dict:
     if cache_dir is not None:
         env["SEAECHO_CACHE_DIR"] = str(cache_dir)
     with tempfile.TemporaryDirectory() as d:
-        args = ["run", str(scene), "-o", str(Path(d) / "out.nc"), "--pulses", "1",
-                "--no-figures", "-q"]
+        args = ["run", str(scene), "-o", str(Path(d) / "out.nc"), "--no-figures", "-q"]
+        if pulses:
+            args += ["--pulses", str(pulses)]
         if cache_dir is None:
             args.append("--no-cache")
         if profile:
@@ -201,6 +203,9 @@ def main() -> None:
                     help="hull-signature cache: empty (cold), filled (warm), both, or off")
     ap.add_argument("--profile", type=int, default=0, metavar="N",
                     help="print the N top functions of a cProfile'd start-up per scene")
+    ap.add_argument("--pulses", type=int, default=1, metavar="N",
+                    help="pulses of the run (default 1; 0: the whole run, whose hull truth "
+                    "traces every refresh pulse before the first pulse)")
     ap.add_argument("--importtime", action="store_true",
                     help="print the slowest imports of a start-up per scene")
     args = ap.parse_args()
@@ -212,19 +217,19 @@ def main() -> None:
             import_times(scene)
         with tempfile.TemporaryDirectory() as warm:
             if args.profile:
-                startup(scene, Path(warm), args.profile)  # fills the warm cache too
+                startup(scene, Path(warm), args.profile, args.pulses)  # fills the cache
             for case in cases:
                 runs = []
                 for _ in range(args.repeat):
                     if case == "cold":
                         with tempfile.TemporaryDirectory() as cold:
-                            runs.append(startup(scene, Path(cold)))
+                            runs.append(startup(scene, Path(cold), pulses=args.pulses))
                     elif case == "warm":
                         if not any(Path(warm).rglob("*.npz")):
-                            startup(scene, Path(warm))  # fill it (not measured)
-                        runs.append(startup(scene, Path(warm)))
+                            startup(scene, Path(warm), pulses=args.pulses)  # fill it
+                        runs.append(startup(scene, Path(warm), pulses=args.pulses))
                     else:
-                        runs.append(startup(scene, None))
+                        runs.append(startup(scene, None, pulses=args.pulses))
                 report(scene, f"hull cache {case}", runs)
 
 
