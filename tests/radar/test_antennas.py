@@ -127,9 +127,10 @@ def test_normalisation_depends_on_size_in_wavelengths_only():
 
 def test_normalisation_huygens_element_limit():
     # An aperture much smaller than the wavelength radiates as a Huygens element, the
-    # cardioid F = (1 + cos theta) / 2 of eq (A1)'s obliquity factor: the integral of F^2
-    # over the sphere is 2 pi int_-1^1 (1 + x)^2 / 4 dx = 4 pi / 3, directivity 3
-    # (Balanis 2016, section 12.2; 4.77 dBi).
+    # cardioid F = (1 + cos theta) / 2 of eq (A1)'s obliquity factor (Balanis 2016,
+    # section 12.2): the integral of F^2 over the sphere is the closed form
+    # 2 pi int_-1^1 (1 + x)^2 / 4 dx = 4 pi / 3, a peak directivity of 3 (4.77 dBi).
+    # Dropping the obliquity factor would give 4 pi (directivity 1).
     assert aperture_radiated_power(1e-9, 1e-9, LAM) == pytest.approx(4 * np.pi / 3,
                                                                       rel=1e-13)
     assert Antenna("rectangular", LAM, 1e-9, 1e-9).peak_gain == pytest.approx(3.0, rel=1e-13)
