@@ -123,3 +123,48 @@ def test_normalisation_depends_on_size_in_wavelengths_only():
     a, b = 0.18, 0.14
     base = aperture_radiated_power(a, b, LAM)
     assert aperture_radiated_power(2 * a, 2 * b, 2 * LAM) == pytest.approx(base, rel=1e-12)
+
+
+def test_normalisation_huygens_element_limit():
+    # An aperture much smaller than the wavelength radiates as a Huygens element, the
+    # cardioid F = (1 + cos theta) / 2 of eq (A1)'s obliquity factor (Balanis 2016,
+    # section 12.2): the integral of F^2 over the sphere is the closed form
+    # 2 pi int_-1^1 (1 + x)^2 / 4 dx = 4 pi / 3, a peak directivity of 3 (4.77 dBi).
+    # Dropping the obliquity factor would give 4 pi (directivity 1).
+    assert aperture_radiated_power(1e-9, 1e-9, LAM) == pytest.approx(4 * np.pi / 3,
+                                                                      rel=1e-13)
+    assert Antenna("rectangular", LAM, 1e-9, 1e-9).peak_gain == pytest.approx(3.0, rel=1e-13)
+
+
+@pytest.mark.parametrize("a", [0.05, 0.18, 1.0, 4.0])
+def test_normalisation_line_source_closed_form(a):
+    # A line source (height -> 0) of eq (A1): with the polar axis along the width,
+    # u = cos(alpha), r^2 = 1 - u^2, the azimuthal integral of the obliquity factor is
+    # int_0^2pi (1 + r cos phi)^2 / 4 dphi = pi (3 - u^2) / 4, so
+    #   int |F|^2 dOmega = pi/4 int_-1^1 (3 - u^2) sinc^2(A u) du, A = a / lambda,
+    # and with int_0^X sinc^2 = Si(2 pi X) / pi - sin^2(pi X) / (pi^2 X) (Si the sine
+    # integral, Abramowitz and Stegun 5.2.1) and int u^2 sinc^2(A u) = int sin^2(pi A u)
+    # / (pi A)^2:
+    #   = pi/4 [ 3 (2/A) (Si(2 pi A)/pi - sin^2(pi A)/(pi^2 A))
+    #            - (1 - sin(2 pi A)/(2 pi A)) / (pi A)^2 ].
+    from scipy.special import sici
+
+    big_a = a / LAM
+    x = np.pi * big_a
+    expected = np.pi / 4 * (3 * (2 / big_a) * (sici(2 * x)[0] / np.pi - np.sin(x)**2 / (np.pi * x))
+                            - (1 - np.sin(2 * x) / (2 * x)) / x**2)
+    assert aperture_radiated_power(a, 1e-9, LAM) == pytest.approx(expected, rel=1e-12)
+    # the same aperture turned by 90 deg about its boresight radiates the same power
+    assert aperture_radiated_power(1e-9, a, LAM) == pytest.approx(expected, rel=1e-12)
+
+
+@pytest.mark.parametrize("a,b,previous", [
+    (0.18, 0.14, 3.463425398952479e-02), (4.0, 0.5, 4.471245068493546e-04),
+    (1.0, 0.5, 1.785224282379548e-03), (0.05, 0.12, 1.411911699288574e-01),
+    (4.0, 4.0, 5.610572211728849e-05)])
+def test_normalisation_parity_with_product_rule(a, b, previous):
+    # Parity: the previous implementation (Gauss-Legendre in the polar angle from the
+    # boresight x trapezoid in azimuth, 8 nodes per lambda / a + 96, converged to about
+    # 1e-12) gave these integrals; eq (A3)'s rule agrees within its stated 1e-12.
+    assert aperture_radiated_power(a, b, LAM) == pytest.approx(previous, rel=3e-12)
+    assert aperture_radiated_power(b, a, LAM) == pytest.approx(previous, rel=3e-12)

@@ -8,6 +8,8 @@ NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import os
 import shutil
 import sys
 from pathlib import Path
@@ -27,6 +29,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="simulate only the first N pulses (quick look)")
     p.add_argument("--no-figures", action="store_true", help="do not write PNG figures")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar")
+    p.add_argument("--no-cache", action="store_true", help="neither read nor write the "
+                   "cache of hull signatures (default: the user cache folder, or "
+                   "SEAECHO_CACHE_DIR; SEAECHO_CACHE=off also disables it)")
     p.add_argument("--max-memory-gb", type=float, metavar="GB", help="refuse a run whose "
                    "estimated peak memory exceeds this (default: what is available, or "
                    "SEAECHO_MAX_MEMORY_GB)")
@@ -44,6 +49,25 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="pulses per block of work and per Zarr chunk (default: about 16, "
                    "aligned with the held sea and the occlusion refresh)")
     p.set_defaults(func=run)
+
+
+@contextlib.contextmanager
+def _cache_disabled(disabled: bool):
+    """``SEAECHO_CACHE=off`` for the run (and the local workers it starts) if asked."""
+    from ..targets.cache import CACHE_ENV
+
+    if not disabled:
+        yield
+        return
+    before = os.environ.get(CACHE_ENV)
+    os.environ[CACHE_ENV] = "off"
+    try:
+        yield
+    finally:
+        if before is None:
+            os.environ.pop(CACHE_ENV, None)
+        else:
+            os.environ[CACHE_ENV] = before
 
 
 def run(args: argparse.Namespace) -> int:
@@ -80,9 +104,10 @@ def run(args: argparse.Namespace) -> int:
                     max_memory_gb=args.max_memory_gb, figures=not args.no_figures,
                     workers=args.workers, block=args.block_pulses))
     try:  # the Python API's run: same checks, same bytes (seaecho.simulate)
-        ds = simulate(scene, path=out, pulses=args.pulses, progress=not args.quiet,
-                      workers=args.workers, scheduler=args.scheduler,
-                      block_pulses=args.block_pulses, resume=args.resume)
+        with _cache_disabled(args.no_cache):
+            ds = simulate(scene, path=out, pulses=args.pulses, progress=not args.quiet,
+                          workers=args.workers, scheduler=args.scheduler,
+                          block_pulses=args.block_pulses, resume=args.resume)
     except StoreError as exc:
         raise UsageError(str(exc)) from None
     except NonFiniteEchoError:

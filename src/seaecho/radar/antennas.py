@@ -123,8 +123,27 @@ def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: 
 def aperture_radiated_power(width: float, height: float, wavelength: float) -> float:
     """Integral of |F|^2 over the sphere [sr] for eq (A1)'s normalisation.
 
-    Product Gauss-Legendre (polar angle from the boresight) x trapezoid (azimuth) rule,
-    with enough nodes per sidelobe (about 8 per lambda/a in each angle).
+    With the polar axis along the longer side of the aperture (say the width, direction
+    cosine u, so that A = a / lambda >= B = b / lambda) and the azimuth phi about it,
+    d Omega = du d phi and the other two direction cosines are r cos phi (boresight) and
+    r sin phi (height), r = sqrt(1 - u^2). Pairing phi with pi - phi folds the obliquity
+    factor of eq (A1), ((1 + r cos phi)^2 + (1 - r cos phi)^2) / 8 = (1 + r^2 cos^2 phi)/4:
+
+    .. math::
+
+        \\oint |F|^2 d\\Omega = 2 \\int_0^1 \\mathrm{sinc}^2(A u) \\int_0^{2\\pi}
+            \\frac{1 + r^2 \\cos^2\\phi}{4}\\,
+            \\mathrm{sinc}^2(B\\, r \\sin\\phi)\\, d\\phi\\, du          (A3)
+
+    Both integrands are entire (sinc^2 is even, so the inner one depends on r^2 only):
+    Gauss-Legendre in u (``scipy.special.roots_legendre``, symmetric Golub-Welsch, the
+    positive half of a rule on [-1, 1]) and the trapezoid in phi (period pi) converge
+    spectrally once the nodes exceed the band of the oscillations: pi (A + B) / 2 in u
+    and pi B in phi, plus a margin of 4 z^(1/3) + 32 nodes (z the band: the transition
+    region of the Bessel-like tails, beyond which they decay faster than exponentially).
+    Relative error below 1e-12 for apertures up to 150 x 150 wavelengths (doubling the
+    nodes changes the result by less than that; tests: the Huygens element's 4 pi / 3
+    and the closed form of the line source).
 
     Parameters
     ----------
@@ -135,23 +154,32 @@ def aperture_radiated_power(width: float, height: float, wavelength: float) -> f
     -------
     float
         The integral of |F|^2 d Omega [sr]; the peak directivity is 4 pi / this value.
+
+    References
+    ----------
+    Balanis (2016), section 12.5 (the aperture's pattern) and eq 2-16 (the directivity's
+    normalisation); Golub, G. H. and Welsch, J. H. (1969), Calculation of Gauss
+    quadrature rules, *Math. Comp.* 23, 221-230; Trefethen, L. N. and Weideman, J. A. C.
+    (2014), The exponentially convergent trapezoidal rule, *SIAM Review* 56(3), 385-458.
     """
-    size = max(width, height) / wavelength
-    n_theta = int(8 * size) + 96
-    n_phi = 2 * n_theta
-    x, w = np.polynomial.legendre.leggauss(n_theta)
-    theta = 0.5 * np.pi * (x + 1.0)  # polar angle from the boresight, [0, pi]
-    w_theta = 0.5 * np.pi * w * np.sin(theta)
-    phi = 2.0 * np.pi * np.arange(n_phi) / n_phi
-    total = 0.0
-    chunk = max(1, 2_000_000 // n_phi)
-    for i in range(0, n_theta, chunk):  # chunks bound the memory; not a hot path
-        th = theta[i:i + chunk, None]
-        d = np.stack(np.broadcast_arrays(np.cos(th), np.sin(th) * np.cos(phi),
-                                         np.sin(th) * np.sin(phi)), axis=-1)
-        f2 = aperture_field(d, width, height, wavelength) ** 2
-        total += float(np.sum(f2.sum(axis=1) * w_theta[i:i + chunk]))
-    return total * 2.0 * np.pi / n_phi
+    from scipy.special import roots_legendre
+
+    a, b = sorted((width / wavelength, height / wavelength), reverse=True)
+    band_u, band_phi = 0.5 * np.pi * (a + b), np.pi * b
+    n_u = int(np.ceil(band_u + 4.0 * np.cbrt(band_u))) + 32
+    n_phi = int(np.ceil(band_phi + 4.0 * np.cbrt(band_phi))) + 32
+    x, w = roots_legendre(2 * n_u)
+    u, w = x[n_u:], w[n_u:]  # u > 0 (the integrand is even in u)
+    phi = np.pi * (np.arange(n_phi) + 0.5) / n_phi  # period pi: both halves of 2 pi
+    sin_phi, cos2_phi = np.sin(phi), np.cos(phi) ** 2
+    inner = np.empty(n_u)
+    rows = max(1, 2_000_000 // n_phi)
+    for i in range(0, n_u, rows):  # chunks bound the memory of very large apertures
+        r2 = (1.0 - u[i:i + rows] ** 2)[:, None]
+        s = np.sinc(b * np.sqrt(r2) * sin_phi)  # numpy's sinc: sin(pi x) / (pi x)
+        inner[i:i + rows] = np.sum(s * s * (1.0 + r2 * cos2_phi), axis=1)
+    inner *= 0.5 * np.pi / n_phi  # the trapezoid over 2 pi, 1/4 of eq (A3) folded in
+    return 2.0 * float(np.sum(w * np.sinc(a * u) ** 2 * inner))
 
 
 def builtin_gain(name: str, d_local: ArrayLike, *, xp=None) -> NDArray[np.float64]:

@@ -72,11 +72,10 @@ class FacetEngine:
     variant : str, optional
         Mitsuba variant.
     eps_r : complex, optional
-        Sea-water permittivity of the Sionna scene's material [-].
+        Sea-water permittivity [-], kept by the sea scene
+        (:class:`seaecho.tracing.scene.SeaScene`); the shadow rays do not use it.
     frequency_hz : float, optional
-        Carrier frequency of the Sionna scene [Hz]. The material only matters to Sionna
-        path computations, not to the shadow rays; None leaves the tracer's own
-        nominal material (:class:`seaecho.tracing.scene.SeaScene`).
+        Carrier frequency [Hz]; None leaves the sea scene's nominal one.
     subfacet : (float, float, float), optional
         ``(mss_upwind, mss_crosswind, wind_direction [rad])`` of the unresolved slopes: if
         given, ``visibility`` is multiplied by their Smith shadowing (eq T7,

@@ -11,7 +11,10 @@ traces, and hands them to the radar kernel like sea facets (:meth:`HullEchoes.ec
 A pulse's echo depends only on (scene, pulse): the schedule is a function of the tracks,
 and the trace of a refresh pulse depends only on the geometry at that pulse and the sea
 surface held there (``surface(t)``, the simulation's held surface), so pulses can be
-computed in any order. Traces are kept in a small cache (a few MB each).
+computed in any order. Traces are kept in a small cache in memory (a few MB each) and on
+disk between runs (:mod:`seaecho.targets.cache`: keyed by a hash of every input of the
+trace and of the code, written atomically; ``SEAECHO_CACHE=off`` or ``seaecho run
+--no-cache`` disables it).
 
 Each scatterer is traced alone, the other objects (scatterers or not) being occluders:
 mutual bounces between two objects are not modelled.
@@ -29,6 +32,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..constants import C0
+from ..targets.cache import ArrayCache
 from ..targets.centres import PATH_NAMES, coherent_total, refresh_schedule
 from .sbr import (
     SBROptions,
@@ -36,10 +40,16 @@ from .sbr import (
     Signature,
     TraceMesh,
     material_permittivity,
+    signature_arrays,
+    signature_from_arrays,
+    signature_key,
     trace_signature,
 )
 
-__all__ = ["Hull", "HullEchoes"]
+__all__ = ["SIGNATURE_NAMESPACE", "Hull", "HullEchoes"]
+
+#: Sub-folder of the user cache (:mod:`seaecho.targets.cache`) holding hull signatures.
+SIGNATURE_NAMESPACE = "hull-signatures"
 
 #: Traces kept in memory (a trace of the 10 m boat holds ~10^4 centres, < 1 MB).
 _CACHE = 256
@@ -181,11 +191,14 @@ class HullEchoes:
         whose elevation near a hull occludes its direct legs. None: the mean plane.
     variant : str, optional
         Mitsuba variant.
+    disk_cache : seaecho.targets.cache.ArrayCache, optional
+        Where traced signatures are kept between runs (default: the user cache folder of
+        :mod:`seaecho.targets.cache`, unless ``SEAECHO_CACHE=off``).
     """
 
     def __init__(self, hulls: list[Hull], others: list, radar, sea_eps_r: complex,
                  sigma_h: float, surface: Callable | None = None,
-                 variant: str | None = None) -> None:
+                 variant: str | None = None, disk_cache: ArrayCache | None = None) -> None:
         self.hulls = hulls
         self.others = others
         self.radar = radar
@@ -195,6 +208,8 @@ class HullEchoes:
         self.variant = variant
         self.roughness = "miller-brown-vegh"
         self._cache: OrderedDict[tuple[int, int], Signature] = OrderedDict()
+        self.disk_cache = (ArrayCache(namespace=SIGNATURE_NAMESPACE) if disk_cache is None
+                           else disk_cache)
 
     # ------------------------------------------------------------------ construction
     @classmethod
@@ -274,10 +289,21 @@ class HullEchoes:
             patch = self._patch(mesh, self.surface(t))
         sea = SeaPlane(level=0.0, eps_r=self.sea_eps_r if h.multipath else None,
                        sigma_h=self.sigma_h, roughness=self.roughness, patch=patch)
-        return trace_signature(mesh, geo.tx.position, geo.rx.position, self.radar.carrier,
-                               options=h.options, sea=sea, occluders=occluders,
-                               reference=h.origin(t), time=t, velocity=h.velocity,
-                               variant=self.variant)
+        args = (mesh, geo.tx.position, geo.rx.position, self.radar.carrier)
+        kw = {"options": h.options, "sea": sea, "occluders": occluders,
+              "reference": h.origin(t), "time": t, "velocity": h.velocity,
+              "variant": self.variant}
+        if not self.disk_cache.enabled:
+            return trace_signature(*args, **kw)
+        # On disk, keyed by every input and the code (seaecho.targets.cache): a hit is
+        # the bytes the trace would give
+        key = signature_key(*args, **kw)
+        hit = self.disk_cache.get(key)
+        if hit is not None:
+            return signature_from_arrays(hit)
+        sig = trace_signature(*args, **kw)
+        self.disk_cache.put(key, signature_arrays(sig))
+        return sig
 
     @staticmethod
     def _patch(mesh: TraceMesh, state):

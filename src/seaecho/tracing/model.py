@@ -28,7 +28,7 @@ class TracingModel:
     objects : tuple of ObjectGeometry
         Occluders (ray-traced mode).
     frequency : float
-        Radar carrier frequency [Hz] (sea-water material of the Sionna scene).
+        Radar carrier frequency [Hz].
     eps_r : complex
         Sea-water permittivity at ``frequency`` [-].
     subfacet : (float, float, float) or None

@@ -86,7 +86,7 @@ from ..scattering.fresnel import fresnel_coefficients
 from ..targets.centres import CentreAccumulator, ScatteringCentres, equivalent_positions
 from ..targets.multipath import ROUGHNESS_MODELS, mirror, sea_reflection
 from ..targets.po import local_basis, po_components, shape_function, tube_footprint
-from .variant import mitsuba_modules
+from .variant import drjit_mitsuba, mitsuba_modules
 
 __all__ = [
     "SBROptions",
@@ -342,12 +342,16 @@ def _mi_scene(mi, vertices: NDArray, faces: NDArray, keep: list):
 
 
 def _intersect(mi, scene, o: NDArray, d: NDArray) -> tuple[NDArray, NDArray]:
-    """Distance [m] (inf on a miss) and triangle index of each ray's first hit."""
+    """Distance [m] (inf on a miss) and triangle index of each ray's first hit (the
+    index is meaningless on a miss)."""
+    import drjit as dr
+
     cols = [aligned(o[:, k], np.float32) for k in range(3)]
     cols += [aligned(d[:, k], np.float32) for k in range(3)]
     ray = mi.Ray3f(mi.Point3f(*(mi.Float(c) for c in cols[:3])),
                    mi.Vector3f(*(mi.Float(c) for c in cols[3:])))
     pi = scene.ray_intersect_preliminary(ray)
+    dr.eval(pi.t, pi.prim_index)  # one kernel (reading each alone traced the rays twice)
     t = np.array(pi.t.numpy(), dtype=np.float64)
     prim = np.array(pi.prim_index.numpy(), dtype=np.int64)
     del cols
@@ -411,7 +415,7 @@ class _Tracer:
 
     def __init__(self, hull: TraceMesh, tx, rx, frequency, options, sea, occluders,
                  reference, variant) -> None:
-        self.dr, self.mi, _ = mitsuba_modules(variant)
+        self.dr, self.mi = drjit_mitsuba(variant)
         self.k = 2.0 * np.pi * frequency / C0
         self.wavelength = C0 / frequency
         self.opt = options
@@ -897,3 +901,66 @@ def trace_signature(hull: TraceMesh, tx: ArrayLike, rx: ArrayLike, frequency_hz:
     totals = tr.acc.totals.reshape(4, options.max_bounces, 2, 2)
     return Signature(centres, totals, tr.reference, tr.tx_w, tr.rx_w, tr.delta, tr.n_rays,
                      tr.n_hits)
+
+
+# ------------------------------------------------------------------------ the cache
+def signature_key(hull: TraceMesh, tx: ArrayLike, rx: ArrayLike, frequency_hz: float, *,
+                  options: SBROptions | None = None, sea: SeaPlane | None = None,
+                  occluders: Sequence[TraceMesh] = (), reference: ArrayLike | None = None,
+                  time: float = 0.0, velocity: ArrayLike = (0.0, 0.0, 0.0),
+                  variant: str | None = None) -> str:
+    """The cache key of :func:`trace_signature` with these arguments (same parameters).
+
+    A hash (:func:`seaecho.targets.cache.digest`) of every argument, arrays by their
+    bytes, and of the code: every input the trace's result depends on, so that two
+    calls with one key give the same bytes.
+    """
+    from ..backend import DEFAULT_VARIANT
+    from ..targets.cache import digest
+
+    options = SBROptions() if options is None else options
+
+    def mesh(name: str, m: TraceMesh) -> list:
+        return [(f"{name}.vertices", np.asarray(m.vertices, np.float64)),
+                (f"{name}.faces", np.asarray(m.faces, np.int64)),
+                (f"{name}.eps_r", np.asarray(m.eps_r, np.complex128))]
+
+    items = [("kind", "sbr-signature"), *mesh("hull", hull),
+             ("tx", np.asarray(tx, np.float64)), ("rx", np.asarray(rx, np.float64)),
+             ("frequency", float(frequency_hz))]
+    items += [(f"options.{f}", getattr(options, f))
+              for f in SBROptions.__dataclass_fields__]
+    if sea is None:
+        items.append(("sea", None))
+    else:
+        items += [("sea.level", float(sea.level)),
+                  ("sea.eps_r", None if sea.eps_r is None else complex(sea.eps_r)),
+                  ("sea.sigma_h", float(sea.sigma_h)), ("sea.roughness", sea.roughness),
+                  ("sea.patch", None if sea.patch is None else
+                   [np.asarray(a, np.float64) for a in sea.patch])]
+    items.append(("occluders", len(occluders)))
+    for i, m in enumerate(occluders):
+        items += mesh(f"occluder{i}", m)
+    items += [("reference", None if reference is None else np.asarray(reference, np.float64)),
+              ("time", float(time)), ("velocity", np.asarray(velocity, np.float64)),
+              ("variant", DEFAULT_VARIANT if variant is None else variant)]
+    return digest(items)
+
+
+def signature_arrays(sig: Signature) -> dict[str, NDArray]:
+    """A signature as named arrays (for :class:`seaecho.targets.cache.ArrayCache`)."""
+    c = sig.centres
+    return {"position": c.position, "s": c.s, "path": c.path, "time": np.float64(c.time),
+            "velocity": c.velocity, "totals": sig.totals, "reference": sig.reference,
+            "tx": sig.tx, "rx": sig.rx, "ray_spacing": np.float64(sig.ray_spacing),
+            "n_rays": np.int64(sig.n_rays), "n_hits": np.int64(sig.n_hits)}
+
+
+def signature_from_arrays(a: dict[str, NDArray]) -> Signature:
+    """The inverse of :func:`signature_arrays` (the same bytes)."""
+    from ..targets.centres import ScatteringCentres
+
+    centres = ScatteringCentres(a["position"], a["s"], a["path"], float(a["time"]),
+                                a["velocity"])
+    return Signature(centres, a["totals"], a["reference"], a["tx"], a["rx"],
+                     float(a["ray_spacing"]), int(a["n_rays"]), int(a["n_hits"]))

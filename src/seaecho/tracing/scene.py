@@ -2,13 +2,15 @@
 
 Design (measured, ``docs/tracing.md``): updating a mesh's vertices rebuilds the BVH of
 the whole Mitsuba scene that holds it (0.15-0.18 s at 512 x 512 on 2 CPU cores). The sea
-therefore lives alone in its own Sionna scene (:class:`SeaScene`); the ``[[objects]]``
+therefore lives alone in its own Mitsuba scene (:class:`SeaScene`); the ``[[objects]]``
 live in two more (:class:`ObjectScene`): one for static objects (built once) and one for
 moving objects (rebuilt when they move: a few thousand triangles, milliseconds). A shadow
 ray is blocked if it hits any of them (:func:`shadow_rays`).
 
 Mitsuba works in float32; geometry sent to it is cast at this boundary and every range,
-direction and angle we return is computed in float64 on our side.
+direction and angle we return is computed in float64 on our side. The scenes are plain
+Mitsuba scenes (the shadow rays need no radio material): Sionna RT is imported only to
+read an XML scene file.
 """
 
 from __future__ import annotations
@@ -21,9 +23,8 @@ from typing import Any
 import numpy as np
 
 from ..backend import aligned
-from ..constants import C0
 from ..geometry.mesh import grid_faces, grid_vertices
-from .variant import active_variant, mitsuba_modules
+from .variant import active_variant, drjit_mitsuba, mitsuba_modules
 
 __all__ = [
     "ObjectGeometry",
@@ -34,10 +35,6 @@ __all__ = [
     "shadow_rays",
     "shadow_test",
 ]
-
-#: Vacuum permittivity [F/m] (eps0 = 1 / (mu0 c^2), CODATA 2018 mu0).
-_EPS0 = 1.0 / (1.25663706212e-6 * C0**2)
-
 
 def rotation_matrix(yaw: float, pitch: float, roll: float) -> np.ndarray:
     """Rotation ``R = Rz(yaw) Ry(pitch) Rx(roll)`` (Sionna RT's orientation convention).
@@ -85,7 +82,8 @@ class ObjectGeometry:
     velocity : (3,) array
         Constant velocity [m/s].
     relative_permittivity, conductivity : float
-        Radio material eps' [-] and sigma [S/m] (Sionna's ``RadioMaterial``).
+        Material eps' [-] and sigma [S/m] (as Sionna's ``RadioMaterial``; the hull
+        traces read them, the shadow rays do not).
     itu_type : str or None
         ITU-R P.2040 material name when the material is an ITU one.
     """
@@ -217,16 +215,13 @@ def _mi_mesh(mi, name: str, vertices32: np.ndarray, faces: np.ndarray, keep: lis
     return mesh
 
 
-def _radio_material(rt, name: str, relative_permittivity: float, conductivity: float,
-                    itu_type: str | None):
-    if itu_type is not None:
-        return rt.ITURadioMaterial(name=name, itu_type=itu_type, thickness=0.1)
-    return rt.RadioMaterial(name=name, relative_permittivity=relative_permittivity,
-                            conductivity=conductivity)
+def _mi_scene(mi, shapes: dict):
+    """A Mitsuba scene of the given shapes ``{id: mitsuba.Mesh}`` (ray queries only)."""
+    return mi.load_dict({"type": "scene", **shapes})
 
 
 class SeaScene:
-    """The sea surface as a Sionna RT scene: one ``SceneObject`` with a sea-water material.
+    """The sea surface as a Mitsuba scene of one mesh, for the shadow rays.
 
     Parameters
     ----------
@@ -239,42 +234,38 @@ class SeaScene:
     eps_r : complex, optional
         Sea-water relative permittivity ``eps' - j eps''`` [-] (from
         :func:`seaecho.ocean.seawater.sea_water_permittivity`); default 60 - 35j (10 GHz,
-        20 degC, 35 psu, approximately). Only the Sionna material uses it.
+        20 degC, 35 psu, approximately). Kept as :attr:`eps_r` for a radio material;
+        the shadow rays do not use it.
     frequency_hz : float
-        Frequency of the Sionna scene [Hz] (converts eps'' into a conductivity).
+        Carrier frequency [Hz] (:attr:`frequency_hz`).
     variant : str, optional
         Mitsuba variant (:func:`seaecho.tracing.variant.set_variant`).
 
     Notes
     -----
-    :meth:`update` writes new vertex positions and rebuilds the BVH. The sea's
-    conductivity is ``sigma = eps'' * 2 pi f * eps0`` (time convention exp(+j omega t)).
+    :meth:`update` writes new vertex positions and rebuilds the BVH.
     """
 
     def __init__(self, x: np.ndarray, y: np.ndarray, elevation: np.ndarray, *,
                  eps_r: complex | None = None, frequency_hz: float = 10.0e9,
                  variant: str | None = None) -> None:
-        dr, mi, rt = mitsuba_modules(variant)
+        dr, mi = drjit_mitsuba(variant)
         self._mi = mi
         self.x = np.asarray(x, dtype=np.float64)
         self.y = np.asarray(y, dtype=np.float64)
-        eps_r = complex(60.0 - 35.0j) if eps_r is None else complex(eps_r)
+        self.eps_r = complex(60.0 - 35.0j) if eps_r is None else complex(eps_r)
+        self.frequency_hz = float(frequency_hz)
         self._vbuf = grid_vertices(self.x, self.y, elevation, dtype=np.float32)
         self._keep: list = []
         mesh = _mi_mesh(mi, "sea", self._vbuf, grid_faces(self.x.size, self.y.size), self._keep)
-        sigma = -eps_r.imag * 2.0 * np.pi * frequency_hz * _EPS0  # eps'' = sigma/(omega eps0)
-        material = rt.RadioMaterial(name="sea-water", relative_permittivity=eps_r.real,
-                                    conductivity=sigma)
-        self.scene = rt.load_scene()
-        self.scene.frequency = frequency_hz
-        self.scene.edit(add=[rt.SceneObject(mi_mesh=mesh, name="sea", radio_material=material)])
-        self._params = mi.traverse(self.scene.mi_scene)
+        self._scene = _mi_scene(mi, {"sea": mesh})
+        self._params = mi.traverse(self._scene)
         self._key = "sea.vertex_positions"
 
     @property
     def mi_scene(self):
         """The Mitsuba scene (for ray queries)."""
-        return self.scene.mi_scene
+        return self._scene
 
     def update(self, elevation: np.ndarray) -> None:
         """Move the sea's vertices to a new elevation [m] and rebuild its BVH."""
@@ -292,7 +283,7 @@ class SeaScene:
 
 
 class ObjectScene:
-    """Objects (``[[objects]]``) in a Sionna RT scene of their own.
+    """Objects (``[[objects]]``) in a Mitsuba scene of their own (for the shadow rays).
 
     Parameters
     ----------
@@ -311,30 +302,24 @@ class ObjectScene:
         names = [o.name for o in objects]
         if len(set(names)) != len(names):
             raise ValueError(f"object names must be unique, got {names}")
-        dr, mi, rt = mitsuba_modules(variant)
+        dr, mi = drjit_mitsuba(variant)
         self._mi = mi
         self.objects = list(objects)
         self._bufs = {}
         self._keep: list = []  # arrays aliased by Dr.Jit (faces, initial vertices)
-        scene_objects = []
+        shapes = {}
         for o in self.objects:
             buf = np.ascontiguousarray(o.world_vertices(t), dtype=np.float32)
             self._bufs[o.name] = buf
-            mat = _radio_material(rt, f"{o.name}_material", o.relative_permittivity, o.conductivity,
-                                  o.itu_type)
-            scene_objects.append(rt.SceneObject(mi_mesh=_mi_mesh(mi, o.name, buf, o.faces,
-                                                                 self._keep),
-                                                name=o.name, radio_material=mat,
-                                                velocity=mi.Vector3f(*map(float, o.velocity))))
-        self.scene = rt.load_scene()
-        self.scene.edit(add=scene_objects)
-        self._params = mi.traverse(self.scene.mi_scene)
+            shapes[o.name] = _mi_mesh(mi, o.name, buf, o.faces, self._keep)
+        self._scene = _mi_scene(mi, shapes)
+        self._params = mi.traverse(self._scene)
         self.t = float(t)
 
     @property
     def mi_scene(self):
         """The Mitsuba scene (for ray queries)."""
-        return self.scene.mi_scene
+        return self._scene
 
     @property
     def moving(self) -> bool:
@@ -378,7 +363,7 @@ def shadow_rays(mi_scenes: Sequence, origins: np.ndarray, directions: np.ndarray
     (N,) bool array
         True where the segment hits something.
     """
-    _, mi, _ = mitsuba_modules(active_variant() if variant is None else variant)
+    _, mi = drjit_mitsuba(active_variant() if variant is None else variant)
     n = origins.shape[0]
     hit = np.zeros(n, dtype=bool)
     if n == 0 or not mi_scenes:
@@ -416,7 +401,7 @@ def shadow_test(mi_scenes: Sequence, origins: Sequence, directions: Sequence, ma
         True where the segment hits something (the scenes' hit masks combined by Dr.Jit,
         not read back).
     """
-    dr, mi, _ = mitsuba_modules(active_variant() if variant is None else variant)
+    dr, mi = drjit_mitsuba(active_variant() if variant is None else variant)
     ray = mi.Ray3f(mi.Point3f(*(mi.Float(a) for a in origins)),
                    mi.Vector3f(*(mi.Float(a) for a in directions)))
     ray.maxt = mi.Float(maxt)

@@ -47,9 +47,9 @@ class FacetTracer:
         one scene built once, moving ones in another (the sea's BVH is never rebuilt
         because an object moved).
     eps_r : complex, optional
-        Sea-water permittivity for the Sionna material [-].
+        Sea-water permittivity [-] (kept by the sea scene; the shadow rays do not use it).
     frequency_hz : float
-        Frequency of the Sionna scenes [Hz].
+        Carrier frequency [Hz].
     variant : str, optional
         Mitsuba variant (default ``llvm_ad_mono_polarized``).
     """

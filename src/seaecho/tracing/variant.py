@@ -4,7 +4,8 @@
 default; ``cuda_ad_mono_polarized`` is used when the scene or the CLI asks for it and a
 CUDA GPU is present. Sionna RT sets a variant of its own choosing when imported with none
 set, so :func:`set_variant` must run before :mod:`sionna.rt` is first imported; every
-module of this package goes through :func:`mitsuba_modules`. The per-facet Dr.Jit
+module of this package goes through :func:`mitsuba_modules`, or :func:`drjit_mitsuba`
+where Sionna RT is not needed (the ray tests, the hull traces). The per-facet Dr.Jit
 kernels follow the same variant (``drjit.llvm`` or ``drjit.cuda``,
 :func:`seaecho.backend.drjit_namespace`).
 """
@@ -14,7 +15,7 @@ from __future__ import annotations
 from ..backend import DEFAULT_VARIANT, VARIANTS
 
 __all__ = ["DEFAULT_VARIANT", "VARIANTS", "active_variant", "cuda_available",
-           "mitsuba_modules", "set_variant"]
+           "drjit_mitsuba", "mitsuba_modules", "set_variant"]
 
 
 def cuda_available() -> bool:
@@ -86,14 +87,25 @@ def active_variant() -> str:
     return current if current in VARIANTS else DEFAULT_VARIANT
 
 
-def mitsuba_modules(variant: str | None = None):
-    """``(dr, mi, rt)``: drjit, mitsuba and sionna.rt, with the variant set first.
+def drjit_mitsuba(variant: str | None = None):
+    """``(dr, mi)``: drjit and mitsuba with the variant set first, without Sionna RT
+    (whose import takes about a second: the ray tests need Mitsuba only).
 
     ``variant`` None means the default variant (:func:`set_variant`).
     """
     set_variant(variant)
     import drjit as dr
     import mitsuba as mi
+
+    return dr, mi
+
+
+def mitsuba_modules(variant: str | None = None):
+    """``(dr, mi, rt)``: drjit, mitsuba and sionna.rt, with the variant set first.
+
+    ``variant`` None means the default variant (:func:`set_variant`).
+    """
+    dr, mi = drjit_mitsuba(variant)
     import sionna.rt as rt
 
     return dr, mi, rt
