@@ -29,7 +29,7 @@ def trace(mesh, tx_dir, rx_dir=None, n=4.0, eps_r=None, **kw):
     """Signature of a mesh (PEC by default) with T and R far along the given directions."""
     tx = FAR * np.asarray(tx_dir, dtype=float)
     rx = tx if rx_dir is None else FAR * np.asarray(rx_dir, dtype=float)
-    numeric = ("max_bounces", "cell", "prune", "edge_refine")
+    numeric = ("max_bounces", "cell", "prune", "edge_refine", "reciprocal")
     opts = SBROptions(rays_per_wavelength=n, **{k: v for k, v in kw.items() if k in numeric})
     rest = {k: v for k, v in kw.items() if k not in numeric}
     return trace_signature(TraceMesh.single(*mesh, eps_r=eps_r), tx, rx, F, options=opts,

@@ -105,7 +105,8 @@ def _changes():
     ]
     base = SBROptions(rays_per_wavelength=2.0)
     for field, new in (("rays_per_wavelength", 2.5), ("max_bounces", 2), ("cell", 0.2),
-                       ("batch", 4096), ("prune", 0.01), ("edge_refine", 2)):
+                       ("batch", 4096), ("prune", 0.01), ("edge_refine", 2),
+                       ("reciprocal", False)):
         assert getattr(base, field) != new
         out.append((f"option {field}", opt(
             "options", lambda o, f=field, n=new: dataclasses.replace(o, **{f: n}))))

@@ -37,6 +37,32 @@ the physical-optics (PO) integral evaluated at every hit of every ray tube (Wein
    direct, sea-hull, hull-sea, sea-hull-sea (:data:`~seaecho.targets.centres.PATH_NAMES`).
 6. **Centres.** Contributions are filed at their delay-equivalent positions and summed
    coherently in cells (eq C2), which the radar kernel takes like sea facets.
+7. **Reciprocity** (``SBROptions.reciprocal``, on by default). A linear medium is
+   reciprocal (Tsang, Kong and Ding 2000, sec. 1.4 [6]); in the FSA bases, where
+   ``h(-n) = -h(n)`` and ``v(-n) = v(n)``, swapping T and R gives::
+
+       S(R -> T) = E S(T -> R)^T E,   E = diag(-1, 1)                (X1)
+
+   (monostatic: ``S_hv = -S_vh``). Steps 1-3 treat the two ends of a path unequally:
+   geometrical optics from T up to the last hit, physical optics from there to R. Off
+   the specular direction PO radiates with a polarisation that is not that of the
+   reverse path (already for one plate, bistatic: HH goes as ``cos theta_i``, VV as
+   ``cos theta_s`` [4]), so one-way SBR breaks eq X1. The trace is therefore the mean
+   of the traces from T and from R, the latter mapped by eq X1 (its path kinds sea-hull
+   and hull-sea exchanged)::
+
+       S = (S_TR + E S_RT^T E) / 2                                   (X2)
+
+   reciprocal by construction. Where one-way SBR is already reciprocal (monostatic
+   single bounces, retro-reflecting corners, specular flashes) it changes nothing.
+   Monostatic (T = R) the trace from R is the trace from T, so eq X2 costs nothing:
+   each contribution is added with its mapped copy, which leaves HH and VV as they were
+   and makes ``S_hv = -S_vh = (S_hv - S_vh) / 2``. Bistatic it doubles the trace. The
+   mean is the reciprocal estimate, not a more accurate one (a reciprocal approximation
+   need not be closer to the truth [5]); it removes the cross-polar artefact of
+   off-specular multiple bounces (on the paper's boat at Simulation 2's aspect, a
+   deck-deckhouse double bounce radiated by PO far from its specular direction gave
+   ``|S_vh|^2`` 33 dB above ``|S_hv|^2``).
 
 The transmitted (received) polarisation components are those of the FSA basis (normal
 +z, :func:`seaecho.geometry.frames.polarisation_basis`) of the departure direction
@@ -67,10 +93,18 @@ References
    objects. *IEEE Trans. Antennas Propag.* 54(6), 1797-1806.
 .. [3] Bhalla, R. and Ling, H. (1995). Image domain ray tube integration formula for the
    shooting and bouncing ray technique. *Radio Science* 30(5), 1435-1446.
+.. [4] Balanis, C. A. (2012). *Advanced Engineering Electromagnetics*, 2nd ed., Wiley,
+   sec. 11.3 (bistatic PO of a rectangular plate).
+.. [5] On the usefulness of reciprocity in approximate scattering analyses (1983).
+   *IEEE Trans. Antennas Propag.* 31(6), doi:10.1109/TAP.1983.1143170.
+.. [6] Tsang, L., Kong, J. A. and Ding, K.-H. (2000). *Scattering of Electromagnetic
+   Waves: Theories and Applications*, Wiley, sec. 1.4 (reciprocity of the scattering
+   matrix).
 """
 
 from __future__ import annotations
 
+import copy
 import os
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from concurrent.futures import ThreadPoolExecutor
@@ -99,6 +133,10 @@ __all__ = [
 
 #: The vertical: normal of the FSA bases.
 _Z = np.array([0.0, 0.0, 1.0])
+#: Eq X1 entrywise: ``(E A^T E)_mn = SIGN_mn A_nm`` with ``E = diag(-1, 1)``.
+_RECIPROCAL_SIGN = np.array([[1.0, -1.0], [-1.0, 1.0]])
+#: Path kind of a contribution of the trace from R, seen from T: sea-hull <-> hull-sea.
+_REVERSE_PATH = np.array([0, 2, 1, 3], dtype=np.int64)
 #: Vacuum permittivity [F/m] (eps0 = 1 / (mu0 c^2), CODATA 2018 mu0).
 _EPS0 = 1.0 / (1.25663706212e-6 * C0**2)
 #: Worker threads of a trace (batches of rays in parallel; the result does not depend
@@ -258,6 +296,10 @@ class SBROptions:
         (0: keep every centre, the sum is then exact at the trace's geometry; a
         fraction p changes the apparent RCS by up to about sqrt(p) times the incoherent
         sum of the centres, which can be large against a coherent null).
+    reciprocal : bool
+        The reciprocal mean of the traces from T and from R (eq X2 of the module
+        docstring; free when monostatic, twice the rays bistatic). False: one-way SBR
+        (GO from T, PO towards R), the textbook PO of each path.
     """
 
     rays_per_wavelength: float = 4.0
@@ -266,6 +308,7 @@ class SBROptions:
     batch: int = 1 << 18
     prune: float = 0.0
     edge_refine: int = 4
+    reciprocal: bool = True
 
     def __post_init__(self) -> None:
         if not 0.5 <= self.rays_per_wavelength <= 64:
@@ -281,6 +324,8 @@ class SBROptions:
             raise ValueError(f"prune = {self.prune}: allowed [0, 1)")
         if not (isinstance(self.edge_refine, int) and 1 <= self.edge_refine <= 16):
             raise ValueError(f"edge_refine = {self.edge_refine}: allowed 1 .. 16")
+        if not isinstance(self.reciprocal, bool):
+            raise ValueError(f"reciprocal = {self.reciprocal!r}: allowed True or False")
 
 
 @dataclass(frozen=True)
@@ -477,6 +522,53 @@ class _Tracer:
                                      4 * options.max_bounces)
         self.n_rays = 0
         self.n_hits = 0
+        #: How contributions enter the centres (:meth:`_add`): "one-way", "forward" (the
+        #: half of eq X2 traced from T), "reverse" (from R), "monostatic" (both halves)
+        self.mode = "one-way"
+        if options.reciprocal:
+            self.mode = "monostatic" if np.array_equal(self.tx_w, self.rx_w) else "forward"
+
+    def reversed(self) -> _Tracer:
+        """The trace from R towards T (eq X2), sharing the scenes and the centres."""
+        r = copy.copy(self)
+        r.tx, r.rx, r.tx_w, r.rx_w = self.rx, self.tx, self.rx_w, self.tx_w
+        r.n_rays = r.n_hits = 0
+        r.mode = "reverse"
+        return r
+
+    def _add(self, args: tuple) -> None:
+        """Add one batch of contributions (:meth:`CentreAccumulator.add`'s arguments) to
+        the centres, as eq X2 takes them.
+
+        A contribution of the trace from R (amplitude ``a`` on the FSA bases of its
+        departure from R and arrival at T, path kind ``p``) is, seen from T, the
+        amplitude ``E a^T E`` of path kind ``_REVERSE_PATH[p]`` at the same position,
+        length and spreading (both symmetric in T and R). Monostatic, the trace from R is
+        this one: every contribution is added with its mapped copy (one row when the
+        path kind is its own reverse).
+        """
+        if self.mode == "one-way":
+            self.acc.add(*args)
+            return
+        c, amp, length, spreading, path, mech = args
+        if self.mode == "forward":
+            self.acc.add(c, 0.5 * amp, length, spreading, path, mech)
+            return
+        amp_t = _RECIPROCAL_SIGN * amp.swapaxes(1, 2)
+        path_t = _REVERSE_PATH[path]
+        mech_t = mech + (path_t - path) * self.opt.max_bounces
+        if self.mode == "reverse":
+            self.acc.add(c, 0.5 * amp_t, length, spreading, path_t, mech_t)
+            return
+        own = path_t == path
+        a = 0.5 * amp
+        a[own] += 0.5 * amp_t[own]
+        other = ~own
+        self.acc.add(np.concatenate([c, c[other]]), np.concatenate([a, 0.5 * amp_t[other]]),
+                     np.concatenate([length, length[other]]),
+                     np.concatenate([spreading, spreading[other]]),
+                     np.concatenate([path, path_t[other]]),
+                     np.concatenate([mech, mech_t[other]]))
 
     # ----------------------------------------------------------------- occluder sets
     def _scenes(self, hull: bool, sea: bool) -> list:
@@ -575,7 +667,7 @@ class _Tracer:
         for hits, contributions in _ordered_map(trace, jobs):  # added in batch order
             self.n_hits += hits
             for args in contributions:
-                self.acc.add(*args)
+                self._add(args)
 
     def _rays(self, q, e1, e2, ui, vj, image: bool):
         """Launch rays through the grid points (ui, vj): directions, distances to the
@@ -891,16 +983,20 @@ def trace_signature(hull: TraceMesh, tx: ArrayLike, rx: ArrayLike, frequency_hz:
     if not (np.isfinite(frequency_hz) and frequency_hz > 0):
         raise ValueError(f"frequency_hz = {frequency_hz}: must be > 0 [Hz]")
     tr = _Tracer(hull, tx, rx, frequency_hz, options, sea, occluders, reference, variant)
-    tr.launch(image=False)
-    if sea is not None and sea.multipath:
-        if tr.tx[2] <= tr.z_sea or tr.rx[2] <= tr.z_sea:
-            raise ValueError("sea multipath needs the transmitter and the receiver above "
-                             "the mean sea level")
-        tr.launch(image=True)
+    multipath = sea is not None and sea.multipath
+    if multipath and (tr.tx[2] <= tr.z_sea or tr.rx[2] <= tr.z_sea):
+        raise ValueError("sea multipath needs the transmitter and the receiver above "
+                         "the mean sea level")
+    # Eq X2: bistatic, the trace from R too (into the same centres, after the trace from T)
+    tracers = [tr] + ([tr.reversed()] if tr.mode == "forward" else [])
+    for t in tracers:
+        t.launch(image=False)
+        if multipath:
+            t.launch(image=True)
     centres = tr.acc.centres(time, velocity, prune=options.prune)
     totals = tr.acc.totals.reshape(4, options.max_bounces, 2, 2)
-    return Signature(centres, totals, tr.reference, tr.tx_w, tr.rx_w, tr.delta, tr.n_rays,
-                     tr.n_hits)
+    return Signature(centres, totals, tr.reference, tr.tx_w, tr.rx_w, tr.delta,
+                     sum(t.n_rays for t in tracers), sum(t.n_hits for t in tracers))
 
 
 # ------------------------------------------------------------------------ the cache
