@@ -10,6 +10,10 @@ dBsm, HH, HV, VH, VV of the direct paths per bounce order, the phase of S_hv / S
   sight by 0, 22.5 and 45 deg (BSA closed form ``[[cos 2a, sin 2a], [sin 2a,
   -cos 2a]]``), and off its bisector (elevation 35 deg, azimuth 10 deg);
 - a triangular trihedral (a = 0.3 m) on its axis and off it.
+
+"The paper": Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006), "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar,
+doi:10.1109/RADAR.2006.1631862 (its Simulation 2 and 10 m boat).
 """
 
 from __future__ import annotations

@@ -23,6 +23,10 @@ References:
 One-way SBR (GO from T, PO towards R) breaks reciprocity off the specular directions:
 the dihedral 12.5 deg off its bisector by 3.5 dB in |S_hv| / |S_vh|, the paper's boat at
 Simulation 2's aspect by 33 dB; the tests of reciprocity below fail on it.
+
+"The paper": Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006), "A versatile bistatic &
+polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar,
+doi:10.1109/RADAR.2006.1631862 (its Simulation 2 and 10 m boat).
 """
 
 from __future__ import annotations

@@ -100,6 +100,9 @@ References
 .. [6] Tsang, L., Kong, J. A. and Ding, K.-H. (2000). *Scattering of Electromagnetic
    Waves: Theories and Applications*, Wiley, sec. 1.4 (reciprocity of the scattering
    matrix).
+.. [7] Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+   polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+   doi:10.1109/RADAR.2006.1631862 ("the paper": its Simulation 2 and 10 m boat).
 """
 
 from __future__ import annotations
