@@ -284,9 +284,16 @@ class ResidentSea:
         if missing:
             raise ValueError(f"draws: none given for the mechanisms {missing}")
         for m in names:
-            if np.shape(d[m]) != (n,):
-                raise ValueError(f"draws of shape {np.shape(d[m])} for {m!r}: need ({n},)")
+            shape = self._shape(d[m])
+            if shape != (n,):
+                raise ValueError(f"draws of shape {shape} for {m!r}: need ({n},)")
         return {m: d[m] for m in names}
+
+    def _shape(self, a: Any) -> tuple[int, ...]:
+        """Shape of a numpy input, (width,) of a value already on the device."""
+        if isinstance(a, self.xp.Complex | self.xp.Float):
+            return (self.xp.width(a),)
+        return np.shape(a)
 
     def _mask(self, hidden: Any) -> Any:
         if isinstance(hidden, np.ndarray):
