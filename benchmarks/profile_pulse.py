@@ -48,6 +48,8 @@ STAGES = [
     ("seaecho.radar.resident", "ResidentSea.echo", "fused sea echo (one kernel)", 1),
     ("seaecho.radar.resident", "ResidentSea.load", "upload held sea", 2),
     ("seaecho.radar.resident", "ResidentSea._nodes", "upload nodes (per sea state)", 2),
+    ("seaecho.radar.resident", "ResidentSea._terms", "trace the kernel (Python)", 2),
+    ("seaecho.radar.resident", "ResidentSea._frozen_terms", "replay the frozen kernel", 2),
     ("seaecho.backend", "DrJitNamespace.count", "wait for the kernel", 2),
     ("seaecho.scattering.facet", "speckled_facet_amplitudes", "scattering P1-P4", 1),
     ("seaecho.radar.system", "RadarSystem.scatterer_echo", "radar equation", 1),
@@ -121,6 +123,9 @@ def main() -> None:
     ap.add_argument("--grid", type=int, default=None, help="grid points per side")
     ap.add_argument("--reference", action="store_true",
                     help="the reference path (numpy glue between kernels)")
+    ap.add_argument("--freeze", choices=["on", "off"], default=None,
+                    help="replay the fused kernel with drjit.freeze (default: "
+                         "seaecho.radar.resident.FREEZE)")
     args = ap.parse_args()
 
     from seaecho.config import load_scene
@@ -140,6 +145,8 @@ def main() -> None:
     sim = Simulation(scene, base_dir=SIM2.parent)
     if args.reference:
         sim._resident = None
+    elif args.freeze is not None and sim._resident is not None:
+        sim._resident.freeze = args.freeze == "on"
     first = 40
     for p in (first, first + 1):  # compilation, BVH, lazy imports: not profiled
         sim.compress(sim.pulse(p))
@@ -152,8 +159,11 @@ def main() -> None:
         sim.compress(sim.pulse(p))
     wall, cpu = time.perf_counter() - w0, time.process_time() - c0
     n = len(pulses)
+    res = sim._resident
+    path = ("reference path" if res is None else
+            f"fused kernel, {'frozen' if res.freeze else 'traced'}")
     print(f"profile_pulse: Simulation 2, {scene.sea.nx}^2 sea, refresh_interval_s = "
-          f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses; "
+          f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses, {path}; "
           f"{os.cpu_count()} CPUs, load {load0:.2f} -> {os.getloadavg()[0]:.2f}")
     print(f"  set-up and 2 warm-up pulses: {setup[0]:.2f} s wall, {setup[1]:.2f} s CPU")
     print(f"  {'stage':44s} {'wall [ms]':>10s} {'CPU [ms]':>10s} {'calls':>6s}")
