@@ -145,7 +145,7 @@ def main() -> None:
     sim = Simulation(scene, base_dir=SIM2.parent)
     if args.reference:
         sim._resident = None
-    elif args.freeze is not None and sim._resident is not None:
+    elif args.freeze is not None and hasattr(sim._resident, "freeze"):
         sim._resident.freeze = args.freeze == "on"
     first = 40
     for p in (first, first + 1):  # compilation, BVH, lazy imports: not profiled
@@ -161,7 +161,7 @@ def main() -> None:
     n = len(pulses)
     res = sim._resident
     path = ("reference path" if res is None else
-            f"fused kernel, {'frozen' if res.freeze else 'traced'}")
+            f"fused kernel, {'frozen' if getattr(res, 'freeze', False) else 'traced'}")
     print(f"profile_pulse: Simulation 2, {scene.sea.nx}^2 sea, refresh_interval_s = "
           f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses, {path}; "
           f"{os.cpu_count()} CPUs, load {load0:.2f} -> {os.getloadavg()[0]:.2f}")

@@ -274,6 +274,39 @@ def test_cuda_fused_pulse_equals_the_cpu_one(tmp_path):
     assert np.abs(a - b).max() <= 1e-8 * np.abs(a).max()
 
 
+def _cuda_frozen_pulses(path: str) -> None:
+    """Three sea echoes of the small Simulation 2 on the CUDA variant, traced and frozen
+    (in its own process: one Mitsuba variant per process)."""
+    scene = _scene(tracing={"variant": "cuda_ad_mono_polarized"})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sims = [Simulation(scene, base_dir=SIM2.parent) for _ in range(2)]
+    sims[0]._resident.freeze, sims[1]._resident.freeze = False, True
+    out = []
+    for sim in sims:
+        for p in (0, 2, 5):
+            e = sim.sea_echo(p).echo.to_host()
+            out += [e.tau, np.stack(e.amplitudes).view(np.float64).ravel()]
+    out.append(np.array([sims[1]._resident._frozen.n_recordings], dtype=np.float64))
+    np.save(path, np.concatenate(out))
+
+
+@pytest.mark.gpu
+@pytest.mark.skipif(not backend.cuda_available(), reason="needs a CUDA GPU")
+def test_cuda_frozen_pulse_equals_the_traced_one(tmp_path):
+    # The frozen kernel replayed on drjit.cuda: the traced kernel's bytes, one recording
+    import subprocess
+
+    path = tmp_path / "frozen.npy"
+    res = subprocess.run([sys.executable, "-c", "import test_resident; "
+                          f"test_resident._cuda_frozen_pulses({str(path)!r})"],
+                         cwd=str(Path(__file__).parent), capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr[-3000:]
+    a = np.load(path)
+    traced, frozen = a[:-1][: (a.size - 1) // 2], a[:-1][(a.size - 1) // 2:]
+    assert traced.tobytes() == frozen.tobytes() and a[-1] == 1.0
+
+
 def test_sigma_map_in_one_kernel_equals_the_reference():
     # The dataset's NRCS map (Simulation.sea_truth) from the fused kernel: the same
     # per-cell sigma0 and visibility as the reference path's SeaEcho.sigma0_cells, to
