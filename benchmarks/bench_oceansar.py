@@ -202,7 +202,7 @@ warnings.simplefilter("ignore")
 from seaecho.config import load_scene
 from seaecho.simulation import Simulation
 
-path, pulses, skip, refresh, update, wake, channels = sys.argv[1:8]
+path, pulses, skip, refresh, update, wake, channels, prefetch = sys.argv[1:9]
 pulses, skip, update = int(pulses), int(skip), int(update)
 scene = load_scene(path)
 radar = {"sea_update_pulses": update}
@@ -218,6 +218,10 @@ sim = Simulation(scene, base_dir=os.path.dirname(path))
 wall, cpu, load = [], [], os.getloadavg()[0]
 for p in range(pulses + skip):
     w, c = time.perf_counter(), time.process_time()
+    if prefetch == "1" and p + 1 < pulses + skip and hasattr(sim, "prefetch_surface"):
+        # as Simulation.pulses does (versions before it have no prefetch_surface)
+        sim.surface_state(p)
+        sim.prefetch_surface(p + 1)
     sim.compress(sim.pulse(p))
     wall.append(time.perf_counter() - w)
     cpu.append(time.process_time() - c)
@@ -227,12 +231,13 @@ print(json.dumps({"wall": wall[skip:], "cpu": cpu[skip:], "load": load,
 
 
 def run_seaecho(pulses: int, skip: int, refresh: float, update: int, wake: bool,
-                channels: str) -> dict:
+                channels: str, prefetch: bool = True) -> dict:
     with tempfile.TemporaryDirectory() as d:
         child = Path(d) / "child.py"
         child.write_text(SEAECHO_CHILD)
         res = subprocess.run([sys.executable, str(child), str(SIM2), str(pulses), str(skip),
-                              str(refresh), str(update), "1" if wake else "0", channels],
+                              str(refresh), str(update), "1" if wake else "0", channels,
+                              "1" if prefetch else "0"],
                              capture_output=True, text=True)
     if res.returncode != 0:
         raise RuntimeError(f"seaecho failed:\n{res.stderr[-3000:]}")
@@ -301,6 +306,9 @@ def main() -> None:
                     "--seaecho-only)")
     ap.add_argument("--seaecho-only", action="store_true",
                     help="seaecho's cases only (e.g. to compare two versions of seaecho)")
+    ap.add_argument("--no-prefetch", action="store_true",
+                    help="seaecho's pulses without the next sea state computed ahead "
+                    "(Simulation.prefetch_surface, which Simulation.pulses uses)")
     ap.add_argument("--match", default="",
                     help="only the cases whose name contains this text")
     ap.add_argument("--oceansar-python", default=None,
@@ -316,19 +324,20 @@ def main() -> None:
         ap.error("--oceansar is required unless --seaecho-only")
     py = None if args.seaecho_only else oceansar_python(args.oceansar.resolve(),
                                                           args.oceansar_python)
+    pf = not args.no_prefetch
     cases = {
         "OceanSAR: new sea every pulse, Bragg every 12 pulses, HH+VV":
             lambda: run_oceansar(py, args.oceansar, args.pulses, args.skip, 12),
         "seaecho: held sea, shadowing refreshed every 0.1 s, quad-pol":
-            lambda: run_seaecho(args.pulses, args.skip, 0.1, 160, True, "all"),
+            lambda: run_seaecho(args.pulses, args.skip, 0.1, 160, True, "all", pf),
         "seaecho: held sea, shadowing refreshed every 0.1 s, HH+VV":
-            lambda: run_seaecho(args.pulses, args.skip, 0.1, 160, True, "HH,VV"),
+            lambda: run_seaecho(args.pulses, args.skip, 0.1, 160, True, "HH,VV", pf),
         "seaecho: held sea, shadowing re-traced every pulse, quad-pol":
-            lambda: run_seaecho(args.pulses, args.skip, 0.0, 160, True, "all"),
+            lambda: run_seaecho(args.pulses, args.skip, 0.0, 160, True, "all", pf),
         "seaecho: new sea every pulse (+ wake), quad-pol":
-            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, True, "all"),
+            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, True, "all", pf),
         "seaecho: new sea every pulse, no ship, HH+VV":
-            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, False, "HH,VV"),
+            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, False, "HH,VV", pf),
     }
     cases = {k: f for k, f in cases.items() if args.match in k
              and not (args.seaecho_only and k.startswith("OceanSAR"))}

@@ -10,6 +10,12 @@ indented and included in their parent. ``--reference`` runs the reference path (
 kernel per stage, numpy between them) instead of the fused pulse
 (``seaecho.radar.resident``).
 
+Stages that run on threads of their own (the ship's wake beside the ocean's synthesis in
+``Sea.state``, the next pulse's sea computed ahead as ``Simulation.pulses`` does:
+``--no-prefetch`` turns that off) overlap others: their CPU time counts every thread
+during their interval. ``--update 1`` draws a new sea every pulse; ``--freeze on`` replays
+the fused kernel with ``drjit.freeze``.
+
 On a shared machine the wall time is inflated by the other processes; the CPU time is
 the steadier figure (``docs/performance.md``). The load average is printed with it.
 """
@@ -123,6 +129,9 @@ def main() -> None:
     ap.add_argument("--grid", type=int, default=None, help="grid points per side")
     ap.add_argument("--reference", action="store_true",
                     help="the reference path (numpy glue between kernels)")
+    ap.add_argument("--no-prefetch", action="store_true",
+                    help="without the next pulse's sea computed ahead on a thread "
+                    "(Simulation.prefetch_surface, as Simulation.pulses does)")
     ap.add_argument("--freeze", choices=["on", "off"], default=None,
                     help="replay the fused kernel with drjit.freeze (default: "
                          "seaecho.radar.resident.FREEZE)")
@@ -155,7 +164,11 @@ def main() -> None:
     pulses = range(first + 2, first + 2 + args.pulses)
     load0 = os.getloadavg()[0]
     w0, c0 = time.perf_counter(), time.process_time()
+    ahead = not args.no_prefetch and hasattr(sim, "prefetch_surface")
     for p in pulses:
+        if ahead and sim.sea is not None:  # as Simulation.pulses does
+            sim.surface_state(p)
+            sim.prefetch_surface(p + 1)
         sim.compress(sim.pulse(p))
     wall, cpu = time.perf_counter() - w0, time.process_time() - c0
     n = len(pulses)

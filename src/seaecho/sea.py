@@ -84,7 +84,7 @@ def surface_kinematics(surface: SeaSurface, t: float) -> SurfaceKinematics:
 THREAD_MIN_NODES = 128 * 128
 
 
-class _Job:
+class ThreadJob:
     """``fn(*args)`` on a thread of its own; :meth:`result` joins it and returns its value
     or raises its exception (a plain thread per call: nothing to shut down, fork-safe)."""
 
@@ -169,7 +169,7 @@ class Sea:
         release the GIL): the same numbers, in less wall time on two cores.
         """
         threaded = self.ship is not None and self.x.size * self.y.size >= THREAD_MIN_NODES
-        job = _Job(self._ship_fields, t) if threaded else None
+        job = ThreadJob(self._ship_fields, t) if threaded else None
         f = self.surface.fields(t)
         w, mask = job.result() if threaded else self._ship_fields(t)
         shape = f.elevation.shape

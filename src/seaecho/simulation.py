@@ -127,6 +127,8 @@ class Simulation:
         self.engine = None
         self._resident = None
         self._state_cache: tuple[float, object] | None = None
+        # (time, job) of the sea state computed ahead on a thread (prefetch_surface)
+        self._prefetch: tuple[float, object] | None = None
         # Per-sea-state quantities, computed once per block of held pulses and reused by
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
         # depends only on (scene, pulse): the cache holds what the block index determines.
@@ -159,11 +161,37 @@ class Simulation:
         return float(self.radar.emission_time((pulse // self.block) * self.block))
 
     def surface_state(self, pulse: int):
-        """Sea state of ``pulse``'s block (memoised: the same for every pulse of a block)."""
+        """Sea state of ``pulse``'s block (memoised: the same for every pulse of a block;
+        taken from :meth:`prefetch_surface` when it was started for this block)."""
         t = self.surface_time(pulse)
         if self._state_cache is None or self._state_cache[0] != t:
-            self._state_cache = (t, self.sea.state(t))
+            ahead = self._prefetch
+            if ahead is not None and ahead[0] == t:
+                self._prefetch = None
+                state = ahead[1].result()
+            else:
+                state = self.sea.state(t)
+            self._state_cache = (t, state)
         return self._state_cache[1]
+
+    def prefetch_surface(self, pulse: int) -> None:
+        """Start computing the sea state of ``pulse``'s block on a thread of its own, if it
+        is not the one held (:meth:`pulses` does it for the next pulse).
+
+        The state is a pure function of its time, so the pulses' bytes do not change; the
+        sea's synthesis (scipy's FFTs, finufft, numpy: they release the GIL) runs while
+        the current pulse's serial stages (tracing, compaction, hull echo) leave a core
+        free. Does nothing without a sea or outside the run.
+        """
+        if self.sea is None or not 0 <= pulse < self.radar.n_pulses:
+            return
+        t = self.surface_time(pulse)
+        if ((self._state_cache is not None and self._state_cache[0] == t)
+                or (self._prefetch is not None and self._prefetch[0] == t)):
+            return
+        from .sea import ThreadJob
+
+        self._prefetch = (t, ThreadJob(self.sea.state, t))
 
     def surface_state_at(self, t: float):
         """Sea state held at time ``t`` [s]: that of the pulse emitted at or before t
@@ -385,7 +413,13 @@ class Simulation:
                                                      NDArray[np.complex128]]:
         """Raw and range-compressed samples of pulses ``start`` to ``stop - 1``, each
         (stop - start, channels, fast_time) [sqrt(W)]: :meth:`pulse` and :meth:`compress`."""
-        raw = np.stack([self.pulse(p) for p in range(start, stop)])
+        out = []
+        for p in range(start, stop):
+            if p + 1 < stop and self.sea is not None:
+                self.surface_state(p)  # this pulse's sea (computed ahead, if it was)
+                self.prefetch_surface(p + 1)  # the next one's, while this pulse runs
+            out.append(self.pulse(p))
+        raw = np.stack(out)
         return raw, self.compress(raw)
 
     def block_edges(self) -> NDArray[np.int64]:
