@@ -10,6 +10,12 @@ indented and included in their parent. ``--reference`` runs the reference path (
 kernel per stage, numpy between them) instead of the fused pulse
 (``seaecho.radar.resident``).
 
+Stages that run on threads of their own (the ship's wake beside the ocean's synthesis in
+``Sea.state``, the next pulse's sea computed ahead as ``Simulation.pulses`` does:
+``--no-prefetch`` turns that off) overlap others: their CPU time counts every thread
+during their interval. ``--update 1`` draws a new sea every pulse; ``--freeze on`` replays
+the fused kernel with ``drjit.freeze``.
+
 On a shared machine the wall time is inflated by the other processes; the CPU time is
 the steadier figure (``docs/performance.md``). The load average is printed with it.
 """
@@ -34,7 +40,12 @@ STAGES = [
     ("seaecho.simulation", "Simulation.pulse", "pulse (end to end, no compression)", 0),
     ("seaecho.sea", "Sea.state", "sea state (ocean + wake)", 1),
     ("seaecho.ocean.surface", "SeaSurface.fields", "ocean synthesis (FFTs)", 2),
+    ("seaecho.wake.kelvin", "KelvinWake.fields", "Kelvin wake", 2),
+    ("seaecho.wake.turbulent", "turbulent_wake_mask", "turbulent wake mask", 2),
     ("seaecho.simulation", "Simulation._block_quantities", "speckle draws + wake mask", 1),
+    ("seaecho.scattering.facet", "speckle_draws", "speckle draws (numpy)", 2),
+    ("seaecho.scattering.facet", "circular_gaussians", "speckle draws, further (numpy)", 2),
+    ("seaecho.rng", "facet_gaussians", "speckle draws (Philox4x32)", 2),
     ("seaecho.tracing.engine", "FacetEngine.geometry", "facet geometry (per held sea)", 1),
     ("seaecho.tracing.engine", "FacetEngine.facets", "facets (frames + visibility)", 1),
     ("seaecho.tracing.tracer", "FacetTracer.set_surface", "BVH rebuild", 2),
@@ -42,8 +53,13 @@ STAGES = [
     ("seaecho.tracing.engine", "FacetEngine.occlusion", "occlusion (refresh)", 2),
     ("seaecho.radar.resident", "ResidentSea.echo", "fused sea echo (one kernel)", 1),
     ("seaecho.radar.resident", "ResidentSea.load", "upload held sea", 2),
+    ("seaecho.radar.resident", "ResidentSea._nodes", "upload nodes (per sea state)", 2),
+    ("seaecho.radar.resident", "ResidentSea._terms", "trace the kernel (Python)", 2),
+    ("seaecho.radar.resident", "ResidentSea._frozen_terms", "replay the frozen kernel", 2),
+    ("seaecho.backend", "DrJitNamespace.count", "wait for the kernel", 2),
     ("seaecho.scattering.facet", "speckled_facet_amplitudes", "scattering P1-P4", 1),
     ("seaecho.radar.system", "RadarSystem.scatterer_echo", "radar equation", 1),
+    ("seaecho.tracing.hull_echo", "HullEchoes.echoes", "hull echoes", 1),
     ("seaecho.radar.system", "RadarSystem.receive", "receive (accumulation)", 1),
     ("seaecho.radar.echo", "accumulate", "NUFFT + iFFT", 2),
     ("seaecho.simulation", "Simulation.compress", "range compression", 0),
@@ -113,6 +129,12 @@ def main() -> None:
     ap.add_argument("--grid", type=int, default=None, help="grid points per side")
     ap.add_argument("--reference", action="store_true",
                     help="the reference path (numpy glue between kernels)")
+    ap.add_argument("--no-prefetch", action="store_true",
+                    help="without the next pulse's sea computed ahead on a thread "
+                    "(Simulation.prefetch_surface, as Simulation.pulses does)")
+    ap.add_argument("--freeze", choices=["on", "off"], default=None,
+                    help="replay the fused kernel with drjit.freeze (default: "
+                         "seaecho.radar.resident.FREEZE)")
     args = ap.parse_args()
 
     from seaecho.config import load_scene
@@ -132,6 +154,8 @@ def main() -> None:
     sim = Simulation(scene, base_dir=SIM2.parent)
     if args.reference:
         sim._resident = None
+    elif args.freeze is not None and hasattr(sim._resident, "freeze"):
+        sim._resident.freeze = args.freeze == "on"
     first = 40
     for p in (first, first + 1):  # compilation, BVH, lazy imports: not profiled
         sim.compress(sim.pulse(p))
@@ -140,12 +164,19 @@ def main() -> None:
     pulses = range(first + 2, first + 2 + args.pulses)
     load0 = os.getloadavg()[0]
     w0, c0 = time.perf_counter(), time.process_time()
+    ahead = not args.no_prefetch and hasattr(sim, "prefetch_surface")
     for p in pulses:
+        if ahead and sim.sea is not None:  # as Simulation.pulses does
+            sim.surface_state(p)
+            sim.prefetch_surface(p + 1)
         sim.compress(sim.pulse(p))
     wall, cpu = time.perf_counter() - w0, time.process_time() - c0
     n = len(pulses)
+    res = sim._resident
+    path = ("reference path" if res is None else
+            f"fused kernel, {'frozen' if getattr(res, 'freeze', False) else 'traced'}")
     print(f"profile_pulse: Simulation 2, {scene.sea.nx}^2 sea, refresh_interval_s = "
-          f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses; "
+          f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses, {path}; "
           f"{os.cpu_count()} CPUs, load {load0:.2f} -> {os.getloadavg()[0]:.2f}")
     print(f"  set-up and 2 warm-up pulses: {setup[0]:.2f} s wall, {setup[1]:.2f} s CPU")
     print(f"  {'stage':44s} {'wall [ms]':>10s} {'CPU [ms]':>10s} {'calls':>6s}")

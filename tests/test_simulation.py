@@ -165,6 +165,41 @@ def test_pulses_in_any_order_give_the_same_bytes(refresh):
     assert not np.array_equal(ordered[0], ordered[1])  # the platform moved
 
 
+def test_pulses_with_the_next_sea_computed_ahead_give_the_same_bytes(monkeypatch):
+    # Simulation.pulses computes the next pulse's sea state on a thread while the current
+    # pulse runs (prefetch_surface): a new sea every pulse, the block's bytes are those of
+    # each pulse computed alone, and every sea state but the first came from the thread
+    import threading
+
+    sc = _raytraced_scene(0.0, sea_update_pulses=1)
+    sim = Simulation(sc)
+    where = []
+    state = sim.sea.state
+
+    def spy(t):
+        where.append(threading.current_thread() is threading.main_thread())
+        return state(t)
+
+    monkeypatch.setattr(sim.sea, "state", spy)
+    raw, _ = sim.pulses(0, 4)
+    for p in range(4):
+        assert raw[p].tobytes() == Simulation(sc).pulse(p).tobytes(), p
+    assert sorted(where) == [False, False, False, True]  # pulse 0's own, then ahead
+
+
+def test_an_error_of_the_prefetched_sea_reaches_the_pulse(monkeypatch):
+    sim = Simulation(_raytraced_scene(0.0, sea_update_pulses=1))
+    sim.pulse(0)
+
+    def boom(t):
+        raise RuntimeError("sea failed")
+
+    monkeypatch.setattr(sim.sea, "state", boom)
+    sim.prefetch_surface(1)
+    with pytest.raises(RuntimeError, match="sea failed"):
+        sim.pulse(1)
+
+
 def test_refresh_traces_the_held_surface():
     # With the sea held and static platforms, occlusion at the refresh time t_ref is that
     # of the pulse's own time: refreshing every 1.5 pulse periods must give the bytes of

@@ -7,6 +7,7 @@ stages (tracing, radar) take its :class:`SurfaceState` arrays.
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass
 
 import numpy as np
@@ -79,6 +80,33 @@ def surface_kinematics(surface: SeaSurface, t: float) -> SurfaceKinematics:
     return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc)
 
 
+#: Grids with at least this many nodes compute the ship's wake on a second thread [-].
+THREAD_MIN_NODES = 128 * 128
+
+
+class ThreadJob:
+    """``fn(*args)`` on a thread of its own; :meth:`result` joins it and returns its value
+    or raises its exception (a plain thread per call: nothing to shut down, fork-safe)."""
+
+    def __init__(self, fn, *args) -> None:
+        self._out: list = []
+        self._thread = threading.Thread(target=self._run, args=(fn, args), daemon=True)
+        self._thread.start()
+
+    def _run(self, fn, args) -> None:
+        try:
+            self._out.append((True, fn(*args)))
+        except BaseException as exc:  # re-raised by result() in the caller's thread
+            self._out.append((False, exc))
+
+    def result(self):
+        self._thread.join()
+        ok, value = self._out[0]
+        if not ok:
+            raise value
+        return value
+
+
 class Sea:
     """The sea of a scene: surface realisation (seeded) and optional ship wake.
 
@@ -122,27 +150,41 @@ class Sea:
         (:func:`surface_kinematics`)."""
         return surface_kinematics(self.surface, t)
 
+    def _ship_fields(self, t: float):
+        """The Kelvin wake's fields (or None) and the turbulent-wake mask (or None)."""
+        w = None if self._wake is None else self._wake.fields(self.x, self.y, t)
+        mask = None
+        if self.ship is not None:
+            from .wake import turbulent_wake_mask
+
+            mask = turbulent_wake_mask(self.ship, self.x, self.y, t,
+                                       length=self.turbulent_wake_length)
+        return w, mask
+
     def state(self, t: float = 0.0) -> SurfaceState:
-        """Sea + wake at time ``t`` [s]."""
+        """Sea + wake at time ``t`` [s].
+
+        On grids of at least :data:`THREAD_MIN_NODES` nodes the ship's wake is computed
+        on a thread of its own while the wind sea is synthesised (finufft and numpy
+        release the GIL): the same numbers, in less wall time on two cores.
+        """
+        threaded = self.ship is not None and self.x.size * self.y.size >= THREAD_MIN_NODES
+        job = ThreadJob(self._ship_fields, t) if threaded else None
         f = self.surface.fields(t)
+        w, mask = job.result() if threaded else self._ship_fields(t)
         shape = f.elevation.shape
         wake_z = np.zeros(shape)
-        mask = np.zeros(shape)
         elevation, slope_x, slope_y = f.elevation, f.slope_x, f.slope_y
         velocity = f.velocity
-        if self._wake is not None:
-            w = self._wake.fields(self.x, self.y, t)
+        if w is not None:
             wake_z = w.elevation
             elevation = elevation + w.elevation
             slope_x = slope_x + w.slope_x
             slope_y = slope_y + w.slope_y
             velocity = velocity.copy()
             velocity[..., 2] += w.dzdt
-        if self.ship is not None:
-            from .wake import turbulent_wake_mask
-
-            mask = turbulent_wake_mask(self.ship, self.x, self.y, t,
-                                       length=self.turbulent_wake_length)
+        if mask is None:
+            mask = np.zeros(shape)
         return SurfaceState(
             t=float(t), x=self.x, y=self.y, elevation=elevation, slope_x=slope_x,
             slope_y=slope_y, velocity=velocity, wake_elevation=wake_z,
@@ -150,4 +192,4 @@ class Sea:
         )
 
 
-__all__ = ["Sea", "SurfaceKinematics", "SurfaceState", "surface_kinematics"]
+__all__ = ["THREAD_MIN_NODES", "Sea", "SurfaceKinematics", "SurfaceState", "surface_kinematics"]

@@ -51,7 +51,7 @@ from .conventions import CHANNELS
 from .guards import check_dataset, check_pulse
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
-from .rng import generator
+from .rng import facet_gaussians
 from .scattering.breaking import breaking_placement
 
 #: Names of the 2x2 scattering channels, (h, v) order flattened.
@@ -127,6 +127,8 @@ class Simulation:
         self.engine = None
         self._resident = None
         self._state_cache: tuple[float, object] | None = None
+        # (time, job) of the sea state computed ahead on a thread (prefetch_surface)
+        self._prefetch: tuple[float, object] | None = None
         # Per-sea-state quantities, computed once per block of held pulses and reused by
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
         # depends only on (scene, pulse): the cache holds what the block index determines.
@@ -159,11 +161,37 @@ class Simulation:
         return float(self.radar.emission_time((pulse // self.block) * self.block))
 
     def surface_state(self, pulse: int):
-        """Sea state of ``pulse``'s block (memoised: the same for every pulse of a block)."""
+        """Sea state of ``pulse``'s block (memoised: the same for every pulse of a block;
+        taken from :meth:`prefetch_surface` when it was started for this block)."""
         t = self.surface_time(pulse)
         if self._state_cache is None or self._state_cache[0] != t:
-            self._state_cache = (t, self.sea.state(t))
+            ahead = self._prefetch
+            if ahead is not None and ahead[0] == t:
+                self._prefetch = None
+                state = ahead[1].result()
+            else:
+                state = self.sea.state(t)
+            self._state_cache = (t, state)
         return self._state_cache[1]
+
+    def prefetch_surface(self, pulse: int) -> None:
+        """Start computing the sea state of ``pulse``'s block on a thread of its own, if it
+        is not the one held (:meth:`pulses` does it for the next pulse).
+
+        The state is a pure function of its time, so the pulses' bytes do not change; the
+        sea's synthesis (scipy's FFTs, finufft, numpy: they release the GIL) runs while
+        the current pulse's serial stages (tracing, compaction, hull echo) leave a core
+        free. Does nothing without a sea or outside the run.
+        """
+        if self.sea is None or not 0 <= pulse < self.radar.n_pulses:
+            return
+        t = self.surface_time(pulse)
+        if ((self._state_cache is not None and self._state_cache[0] == t)
+                or (self._prefetch is not None and self._prefetch[0] == t)):
+            return
+        from .sea import ThreadJob
+
+        self._prefetch = (t, ThreadJob(self.sea.state, t))
 
     def surface_state_at(self, t: float):
         """Sea state held at time ``t`` [s]: that of the pulse emitted at or before t
@@ -175,41 +203,68 @@ class Simulation:
         """Per-block quantities of ``pulse``'s block (memoised): wake damping per facet,
         speckle draws (held sea) and the breaking zones' placement.
 
-        The speckle draws come from the ``"speckle"`` stream of the block index, one pair
-        (g_K, g_B) per facet, so that facet j gets the same draw at every pulse of its
-        block whatever order the pulses are computed in; the unresolved-tilt nodes and the
-        breaking zones draw theirs from the ``"speckle-tilt"`` and ``"breaking"`` streams
-        of the block (so the first two keep their bytes). The breaking zones sit on the
-        facets of largest downward acceleration of the block's surface, covering the
-        fraction q of KHCC03 (:func:`seaecho.scattering.breaking.breaking_placement`).
+        The speckle draws are circular complex Gaussians of unit variance per facet
+        (:func:`seaecho.rng.facet_gaussians`: Philox4x32 keyed by (seed, stream, block),
+        counted by facet and draw), so that facet j gets the same draw at every pulse of
+        its block whatever order the pulses are computed in, on any number of threads or
+        workers: (g_K, g_B) from the ``"speckle"`` stream, the unresolved-tilt nodes and
+        the breaking zones from the ``"speckle-tilt"`` and ``"breaking"`` streams of the
+        block. They are drawn in one kernel on the scene's Dr.Jit back end and stay there
+        (numpy copies for the reference path, :meth:`_host_draws`). The breaking zones sit
+        on the facets of largest downward acceleration of the block's surface, covering
+        the fraction q of KHCC03 (:func:`seaecho.scattering.breaking.breaking_placement`).
         """
         from .geometry.mesh import to_facets
-        from .scattering.facet import circular_gaussians, speckle_draws
 
         block = pulse // self.block
         if self._block_cache is None or self._block_cache[0] != block:
             if self.evolving:
                 self._block_cache = (block, self._evolving_block(state))
                 return self._block_cache[1]
-            seed = self.radar.seed
-            g_k, g_b = speckle_draws(n_facets, generator(seed, "speckle", block))
+            seed, xp = self.radar.seed, self._draw_namespace()
+            g_k, g_b = facet_gaussians(n_facets, 2, seed, "speckle", block, xp=xp)
             draws = {"specular": g_k, "bragg": g_b}
             model = self.sea_model
             if model.tilt is not None:
-                nodes = circular_gaussians(n_facets, len(model.tilt.slopes),
-                                           generator(seed, "speckle-tilt", block))
+                nodes = facet_gaussians(n_facets, len(model.tilt.slopes), seed,
+                                        "speckle-tilt", block, xp=xp)
                 draws.update({f"bragg{j + 1}": g for j, g in enumerate(nodes)})
             q = {"damping": to_facets(state.wake_mask).reshape(-1), "draws": draws,
                  "breaking": None}
             if model.breaking is not None:
-                (g_w,) = circular_gaussians(n_facets, 1, generator(seed, "breaking", block))
+                (g_w,) = facet_gaussians(n_facets, 1, seed, "breaking", block, xp=xp)
                 draws["breaking"] = g_w
                 q["breaking"] = self.breaking_fraction(state)
-            for a in (q["damping"], q["breaking"], *draws.values()):  # held: on the device
+            for a in (q["damping"], q["breaking"]):  # held: on the device
                 if a is not None:
                     a.setflags(write=False)
             self._block_cache = (block, q)
         return self._block_cache[1]
+
+    def _draw_namespace(self):
+        """The back end the speckle is drawn on: the fused kernel's, else the scene's
+        variant's Dr.Jit where it runs, else numpy (:func:`seaecho.backend.namespace`)."""
+        if self._resident is not None:
+            return self._resident.xp
+        from .backend import namespace
+
+        return namespace("auto", self.variant)
+
+    @staticmethod
+    def _host_draws(held: dict) -> dict:
+        """The block's speckle draws as read-only numpy complex arrays (the reference
+        path's kernels take numpy), copied from the device once per block."""
+        if "host_draws" not in held:
+            out = {}
+            for m, g in held["draws"].items():
+                if not isinstance(g, np.ndarray):
+                    h = np.empty(g.real.numpy().shape, dtype=np.complex128)
+                    h.real, h.imag = g.real.numpy(), g.imag.numpy()
+                    h.setflags(write=False)
+                    g = h
+                out[m] = g
+            held["host_draws"] = out
+        return held["host_draws"]
 
     def _evolving_block(self, state) -> dict:
         """Per-block quantities of an evolving sea: wake damping, breaking placement, and
@@ -315,7 +370,7 @@ class Simulation:
         args = (facets.n_i, facets.n_s, facets.normal)
         model = self.sea_model.facet_model
         options = dict(self.sea_model.facet_options, breaking_fraction=held["breaking"])
-        draws = held["draws"]
+        draws = None if self.evolving else self._host_draws(held)
         if self.evolving:  # eqs D2-D4 evaluated inside the facet kernel
             draws = self._speckle_process(vis.size).draws(float(geo.time))
         amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,
@@ -358,7 +413,13 @@ class Simulation:
                                                      NDArray[np.complex128]]:
         """Raw and range-compressed samples of pulses ``start`` to ``stop - 1``, each
         (stop - start, channels, fast_time) [sqrt(W)]: :meth:`pulse` and :meth:`compress`."""
-        raw = np.stack([self.pulse(p) for p in range(start, stop)])
+        out = []
+        for p in range(start, stop):
+            if p + 1 < stop and self.sea is not None:
+                self.surface_state(p)  # this pulse's sea (computed ahead, if it was)
+                self.prefetch_surface(p + 1)  # the next one's, while this pulse runs
+            out.append(self.pulse(p))
+        raw = np.stack(out)
         return raw, self.compress(raw)
 
     def block_edges(self) -> NDArray[np.int64]:

@@ -274,6 +274,39 @@ def test_cuda_fused_pulse_equals_the_cpu_one(tmp_path):
     assert np.abs(a - b).max() <= 1e-8 * np.abs(a).max()
 
 
+def _cuda_frozen_pulses(path: str) -> None:
+    """Three sea echoes of the small Simulation 2 on the CUDA variant, traced and frozen
+    (in its own process: one Mitsuba variant per process)."""
+    scene = _scene(tracing={"variant": "cuda_ad_mono_polarized"})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sims = [Simulation(scene, base_dir=SIM2.parent) for _ in range(2)]
+    sims[0]._resident.freeze, sims[1]._resident.freeze = False, True
+    out = []
+    for sim in sims:
+        for p in (0, 2, 5):
+            e = sim.sea_echo(p).echo.to_host()
+            out += [e.tau, np.stack(e.amplitudes).view(np.float64).ravel()]
+    out.append(np.array([sims[1]._resident._frozen.n_recordings], dtype=np.float64))
+    np.save(path, np.concatenate(out))
+
+
+@pytest.mark.gpu
+@pytest.mark.skipif(not backend.cuda_available(), reason="needs a CUDA GPU")
+def test_cuda_frozen_pulse_equals_the_traced_one(tmp_path):
+    # The frozen kernel replayed on drjit.cuda: the traced kernel's bytes, one recording
+    import subprocess
+
+    path = tmp_path / "frozen.npy"
+    res = subprocess.run([sys.executable, "-c", "import test_resident; "
+                          f"test_resident._cuda_frozen_pulses({str(path)!r})"],
+                         cwd=str(Path(__file__).parent), capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr[-3000:]
+    a = np.load(path)
+    traced, frozen = a[:-1][: (a.size - 1) // 2], a[:-1][(a.size - 1) // 2:]
+    assert traced.tobytes() == frozen.tobytes() and a[-1] == 1.0
+
+
 def test_sigma_map_in_one_kernel_equals_the_reference():
     # The dataset's NRCS map (Simulation.sea_truth) from the fused kernel: the same
     # per-cell sigma0 and visibility as the reference path's SeaEcho.sigma0_cells, to
@@ -298,3 +331,82 @@ def test_sigma_map_in_one_kernel_equals_the_reference():
     assert truth["sigma0"].tobytes() == want.tobytes()
     np.testing.assert_array_equal(truth["visibility"], vis)
     assert np.any(vis == 0) and np.any(vis == 0.5)  # the boat's shadow, its edge
+
+
+# ------------------------------------------------------------------ frozen kernel
+def _frozen_pair(scene, base_dir=SIM2.parent):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        plain, frozen = (Simulation(scene, base_dir=base_dir) for _ in range(2))
+    plain._resident.freeze, frozen._resident.freeze = False, True
+    return plain, frozen
+
+
+def _same_echo(a, b):
+    return (a.tau.tobytes() == b.tau.tobytes()
+            and all(x.tobytes() == y.tobytes()
+                    for x, y in zip(a.amplitudes, b.amplitudes, strict=True)))
+
+
+@pytest.mark.parametrize(("refresh", "update"), [(0.0, 160), (0.1, 1)])
+def test_frozen_pulse_kernel_equals_the_traced_one(refresh, update):
+    # drjit.freeze replays the kernel recorded at the first pulse: the platform moves
+    # (positions bound as inputs), the occlusion is re-traced at every pulse (refresh 0)
+    # or the sea is new at every pulse (update 1); every pulse must be the traced
+    # kernel's to the byte, with one recording (a platform vector frozen as a constant
+    # would repeat the first pulse's ranges and phases)
+    plain, frozen = _frozen_pair(_scene(refresh=refresh, radar={"sea_update_pulses": update}))
+    for p in (0, 1, 4, 2):
+        assert _same_echo(plain.sea_echo(p).echo, frozen.sea_echo(p).echo), p
+    res = frozen._resident
+    assert res.freeze and res.freeze_error is None and res._frozen.n_recordings == 1
+    assert frozen.pulse(5).tobytes() == plain.pulse(5).tobytes()
+
+
+def test_frozen_bistatic_pulse_equals_the_traced_one():
+    # Simulation 1: transmitter and receiver apart (both positions, the receiver's
+    # velocity and both antennas' axes bound)
+    sim1 = SIM2.parent / "paper_sim1_bistatic_64m.toml"
+    scene = load_scene(sim1)
+    scene = scene.model_copy(update={"sea": scene.sea.model_copy(update={"nx": 48})})
+    plain, frozen = _frozen_pair(scene, sim1.parent)
+    for p in (0, 3):
+        assert _same_echo(plain.sea_echo(p).echo, frozen.sea_echo(p).echo), p
+    assert frozen._resident._frozen.n_recordings == 1
+
+
+def test_frozen_kernel_records_again_for_another_grid():
+    # The facet count is part of the recorded kernel: a surface of another size makes a
+    # second recording (not a replay at the old size), and the first size replays again.
+    # One ResidentSea (the 64 x 64 sea's constants) on both surfaces, traced and frozen.
+    small, big = (_frozen_pair(_scene(nx=n))[1] for n in (48, 64))
+    res = big._resident
+
+    def echo(sim, freeze):
+        res.freeze = freeze
+        st = sim.surface_state(1)
+        held = sim._block_quantities(1, st, res.n_facets(st))
+        geo = sim.radar.geometry(1)
+        _, *hidden = sim.engine.occlusion(geo.time, st)
+        return res.echo(geo, st, hidden, held["draws"], held["damping"])
+
+    ref_big, ref_small = echo(big, False), echo(small, False)
+    assert ref_big.tau.size != ref_small.tau.size
+    assert _same_echo(echo(big, True), ref_big)
+    assert res._frozen.n_recordings == 1
+    assert _same_echo(echo(small, True), ref_small)
+    assert res._frozen.n_recordings == 2
+    assert _same_echo(echo(big, True), ref_big)
+    assert res._frozen.n_recordings == 2
+
+
+def test_a_platform_view_that_is_not_bound_is_refused():
+    from seaecho.radar.resident import _BoundGeometry, _view_key
+
+    xp = backend.namespace("drjit")
+    rot = np.eye(3)
+    bound = _BoundGeometry(xp, {_view_key(rot[:, 2]): "bound"}, (rot,))
+    assert bound.vconst(np.asarray(rot)[:, 2]) == "bound"  # another view, same entries
+    with pytest.raises(RuntimeError, match="frozen as a constant"):
+        bound.vconst(rot[0])
+    bound.vconst(np.array([0.0, 0.0, 1.0]))  # a vector of its own: a constant

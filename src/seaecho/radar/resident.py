@@ -41,6 +41,7 @@ doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
+import os
 import weakref
 from typing import Any
 
@@ -54,7 +55,49 @@ from ..scattering.spectrum_table import BraggSpectrumTable
 from .kernels import facet_visibility, sea_echo_terms
 from .system import DeviceEcho, PulseGeometry, RadarSystem, ScattererEcho
 
-__all__ = ["ResidentSea", "resident_sea"]
+__all__ = ["FREEZE", "ResidentSea", "resident_sea"]
+
+#: Default of ``ResidentSea(freeze=...)``: the environment variable ``SEAECHO_FREEZE``
+#: ("1" on, "0" off), else off (docs/performance.md gives the measurements).
+FREEZE = os.environ.get("SEAECHO_FREEZE", "0") == "1"
+#: Recordings of the frozen kernel after which Dr.Jit warns (a scene whose pulses keep
+#: changing its structure would re-record at every pulse).
+FREEZE_WARN_AFTER = 10
+
+
+def _view_key(a: Any) -> tuple | None:
+    """(address, shape, strides) of a numpy array: the same for every view of the same
+    entries."""
+    if not isinstance(a, np.ndarray):
+        return None
+    return (a.__array_interface__["data"][0], a.shape, a.strides)
+
+
+class _BoundGeometry:
+    """A Dr.Jit namespace whose ``vconst`` returns bound values for given numpy arrays.
+
+    While a frozen pulse is recorded, the platform vectors of the pulse's geometry are
+    the frozen function's inputs: ``vconst(a)`` of one of those arrays, or of a view of
+    the same entries (``np.asarray``, a column), returns its input instead of a constant
+    that the recording would keep. Every other attribute is the namespace's.
+    """
+
+    def __init__(self, xp: Any, bindings: dict[tuple, Any], arrays: tuple) -> None:
+        self._xp = xp
+        self._bindings = bindings
+        self._arrays = arrays
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._xp, name)
+
+    def vconst(self, a: Any) -> Any:
+        hit = self._bindings.get(_view_key(a))
+        if hit is not None:
+            return hit
+        if isinstance(a, np.ndarray) and any(np.shares_memory(a, b) for b in self._arrays):
+            raise RuntimeError("a platform vector of the pulse would be frozen as a "
+                               "constant (a view of the geometry that is not bound)")
+        return self._xp.vconst(a)
 
 
 class ResidentSea:
@@ -81,6 +124,10 @@ class ResidentSea:
     breaking_tilt : float
         Forward tilt of the breaking zones ``theta_wb A_wb`` [rad] (BR5,
         ``SeaModel.facet_options``).
+    freeze : bool, optional
+        Record the pulse's kernel once with ``drjit.freeze`` and replay it at the next
+        pulses instead of tracing it in Python at each (the same bytes; tests). None
+        takes :data:`FREEZE`.
 
     Raises
     ------
@@ -92,7 +139,7 @@ class ResidentSea:
 
     def __init__(self, radar: RadarSystem, facet_model: tuple, *, variant: str | None = None,
                  model: str = "blend", cox_munk=None, tilt=None,
-                 breaking_tilt: float = 0.0) -> None:
+                 breaking_tilt: float = 0.0, freeze: bool | None = None) -> None:
         if model not in MODELS:
             raise ValueError(f"model = {model!r}: choose from {MODELS}")
         k, eps_r, spectrum, mss_u, mss_c, wind = facet_model
@@ -110,6 +157,12 @@ class ResidentSea:
                         float(wind))
         self._lo, self._hi = radar.window.bounds(radar.waveform.n_samples)
         self._surface: tuple[weakref.ref, dict] | None = None
+        #: replay the recorded pulse kernel (``drjit.freeze``) instead of tracing it
+        self.freeze = FREEZE if freeze is None else bool(freeze)
+        self._frozen = None
+        self._bound = None
+        #: why freezing was given up (a recording Dr.Jit refused), or None
+        self.freeze_error: str | None = None
 
     def _mechanisms(self, io: Boundary, damping: Any, breaking: Any = None):
         """``(n_i, n_s, N) -> mechanisms`` with the sea's values as kernel constants
@@ -191,21 +244,19 @@ class ResidentSea:
         n = facet_count(nx, ny)
         nodes = self._nodes(surface)
         io = Boundary(xp, n)
-        facets = facet_geometry_in(xp, nodes["x"], nodes["y"], nodes["z"], nodes["v"], nx, ny)
-        facets.update(hidden_tx=self._mask(hidden[0]), hidden_rx=self._mask(hidden[1]))
-        g = {m: io.complex(d) for m, d in self._draws(draws, n, breaking).items()}
-        t = sea_echo_terms(xp, self.radar, geometry, facets,
-                           self._mechanisms(io, damping, breaking), g, self._lo, self._hi)
-        c = len(t["amplitudes"])
-        # Each channel packed as the memory of a complex (N,) array, in the kernel (one
-        # buffer per channel: scatters into distinct arrays share the kernel)
-        idx = xp.arange(n)
-        packed = []
-        for a in t["amplitudes"]:
-            buf = xp.empty(2 * n)
-            xp.scatter(buf, xp.pair(xp.real(a), xp.imag(a)), idx)
-            packed.append(buf)
-        tau, keep = t["tau"], t["keep"]
+        # every per-facet input on the device before the kernel is traced (or replayed)
+        inputs = dict(
+            nodes=(nodes["x"], nodes["y"], nodes["z"], nodes["v"]),
+            hidden=(self._mask(hidden[0]), self._mask(hidden[1])),
+            draws={m: io.complex(d) for m, d in self._draws(draws, n, breaking).items()},
+            damping=None if damping is None else io.array(damping),
+            breaking=None if breaking is None else io.array(breaking),
+            table=self._values[2]._values(xp))
+        if self.freeze:
+            tau, keep, packed = self._frozen_terms(inputs, geometry, nx, ny)
+        else:
+            tau, keep, packed = self._terms(xp, inputs, geometry, nx, ny)
+        c = len(packed)
         xp.eval(tau, keep, *packed)
         kept = xp.count(keep)
         if kept < n:  # hidden facets or echoes outside the window: compacted in order
@@ -223,6 +274,74 @@ class ResidentSea:
             return DeviceEcho(xp, tau, tuple(packed), c)
         amplitudes = [xp.host(b).view(np.complex128) for b in packed]
         return ScattererEcho(xp.host(tau), amplitudes, None, None, None, None, None, None)
+
+    def _terms(self, xp, inputs: dict, geometry: PulseGeometry, nx: int, ny: int
+               ) -> tuple[Any, Any, list]:
+        """The pulse's kernel, traced: ``(tau, keep, packed channels)`` of every facet
+        (:meth:`echo`; ``inputs`` are device values, ``xp`` the namespace, or the one with
+        the geometry bound to inputs when frozen)."""
+        n = facet_count(nx, ny)
+        io = Boundary(xp, n)
+        facets = facet_geometry_in(xp, *inputs["nodes"], nx, ny)
+        facets.update(hidden_tx=inputs["hidden"][0], hidden_rx=inputs["hidden"][1])
+        t = sea_echo_terms(xp, self.radar, geometry, facets,
+                           self._mechanisms(io, inputs["damping"], inputs["breaking"]),
+                           inputs["draws"], self._lo, self._hi)
+        # Each channel packed as the memory of a complex (N,) array, in the kernel (one
+        # buffer per channel: scatters into distinct arrays share the kernel)
+        idx = xp.arange(n)
+        packed = []
+        for a in t["amplitudes"]:
+            buf = xp.empty(2 * n)
+            xp.scatter(buf, xp.pair(xp.real(a), xp.imag(a)), idx)
+            packed.append(buf)
+        return t["tau"], t["keep"], packed
+
+    def _frozen_terms(self, inputs: dict, geometry: PulseGeometry, nx: int, ny: int
+                      ) -> tuple[Any, Any, list]:
+        """:meth:`_terms` through ``drjit.freeze``: recorded at the first pulse (and again
+        when the grid, the inputs' types or the monostatic flag change), replayed at the
+        next ones without tracing.
+
+        The pulse's platform vectors (positions, receiver velocity, vertical axes, antenna
+        axes), the only values of the kernel that change from pulse to pulse, enter as
+        inputs: while recording, ``vconst`` of the geometry's arrays (or views of them)
+        returns those inputs (:class:`_BoundGeometry`), so a replay computes with the
+        current pulse's values. Everything else the kernel reads is an input too (Dr.Jit
+        refuses a recording that uses a variable it was not given).
+        """
+        xp = self.xp
+        tx, rx = geometry.tx, geometry.rx
+        plain = (tx.position, rx.position, rx.velocity, tx.rotation, rx.rotation,
+                 geometry.tx_axes, geometry.rx_axes)
+        if not all(isinstance(a, np.ndarray) and a.dtype == np.float64 for a in plain):
+            return self._terms(xp, inputs, geometry, nx, ny)  # views could not be bound
+        arrays = {"tx_position": tx.position, "rx_position": rx.position,
+                  "rx_velocity": rx.velocity, "tx_up": tx.rotation[:, 2],
+                  "rx_up": rx.rotation[:, 2]}
+        for side, axes in (("tx", geometry.tx_axes), ("rx", geometry.rx_axes)):
+            for j in range(3):
+                arrays[f"{side}_axis{j}"] = np.asarray(axes, dtype=np.float64)[:, j]
+        values = {name: xp.vconst(a) for name, a in arrays.items()}
+        self._bound = (geometry, {_view_key(a): values[name] for name, a in arrays.items()},
+                       plain)
+        monostatic = bool(np.array_equal(tx.position, rx.position))
+        if self._frozen is None:
+            self._frozen = xp.dr.freeze(self._record, warn_after=FREEZE_WARN_AFTER)
+        try:
+            return self._frozen({**inputs, "geometry": values}, nx, ny, monostatic)
+        except RuntimeError as exc:  # a kernel Dr.Jit cannot record: traced from now on
+            self.freeze, self._frozen, self.freeze_error = False, None, str(exc)
+            return self._terms(xp, inputs, geometry, nx, ny)
+        finally:
+            self._bound = None
+
+    def _record(self, inputs: dict, nx: int, ny: int, monostatic: bool
+                ) -> tuple[Any, Any, list]:
+        """The frozen function's body: :meth:`_terms` with the geometry bound."""
+        geometry, bindings, arrays = self._bound
+        return self._terms(_BoundGeometry(self.xp, bindings, arrays), inputs, geometry,
+                           nx, ny)
 
     def sigma_cells(self, geometry: PulseGeometry, surface, hidden: tuple,
                     damping: NDArray | None = None, *, breaking: NDArray | None = None
@@ -284,9 +403,16 @@ class ResidentSea:
         if missing:
             raise ValueError(f"draws: none given for the mechanisms {missing}")
         for m in names:
-            if np.shape(d[m]) != (n,):
-                raise ValueError(f"draws of shape {np.shape(d[m])} for {m!r}: need ({n},)")
+            shape = self._shape(d[m])
+            if shape != (n,):
+                raise ValueError(f"draws of shape {shape} for {m!r}: need ({n},)")
         return {m: d[m] for m in names}
+
+    def _shape(self, a: Any) -> tuple[int, ...]:
+        """Shape of a numpy input, (width,) of a value already on the device."""
+        if isinstance(a, self.xp.Complex | self.xp.Float):
+            return (self.xp.width(a),)
+        return np.shape(a)
 
     def _mask(self, hidden: Any) -> Any:
         if isinstance(hidden, np.ndarray):

@@ -301,6 +301,7 @@ class KelvinWake:
         self.breaking_limit = (ship.wake_breaking_limit if breaking_limit is None
                                else bool(breaking_limit))
         self._factors: dict = {}
+        self._waves: dict = {}
 
     # -- physics --------------------------------------------------------------------
     @property
@@ -335,11 +336,16 @@ class KelvinWake:
         xs = np.asarray(xs, dtype=np.float64)
         x_a = -0.5 * self.ship.length
         span = self.ship.length + 0.5 * self.transverse_wavelength
-        s = np.clip((xs - x_a) / span, 0.0, 1.0)
+        s = (xs - x_a) / span
+        # W = 0 ahead (s <= 0, cos 0 = 1) and 1 behind (s >= 1, cos pi = -1 exactly): the
+        # trigonometric functions are evaluated on the transition band only
+        w = (s >= 1.0).astype(np.float64)
+        dw = np.zeros(s.shape)
         inside = (s > 0.0) & (s < 1.0)
+        band = s[inside]
         # Eq W11
-        w = 0.5 * (1.0 - np.cos(np.pi * s))
-        dw = np.where(inside, 0.5 * np.pi / span * np.sin(np.pi * s), 0.0)
+        w[inside] = 0.5 * (1.0 - np.cos(np.pi * band))
+        dw[inside] = 0.5 * np.pi / span * np.sin(np.pi * band)
         return w, dw
 
     # -- synthesis ------------------------------------------------------------------
@@ -378,13 +384,19 @@ class KelvinWake:
             ds = length / self.max_nodes
         # quantise ds (cache key) to 1/64 octave steps downwards
         ds = float(2.0 ** (np.floor(64.0 * np.log2(ds)) / 64.0))
-        theta, dtheta = _nodes(float(self.k0), float(k_cut), ds, self.taper_fraction)
-        weights = self.amplitude(theta) * dtheta
-        if self.amplitude_model == "kriebel-seelig":
-            weights = weights * self.empirical_factor(k_cut)
-        if self.breaking_limit:
-            weights = weights * self.breaking_factor(theta, weights)
-        return theta.copy(), weights
+        key = (float(k_cut), ds)
+        if key not in self._waves:  # the ship's, the grid's and ds's: kept per key
+            theta, dtheta = _nodes(float(self.k0), float(k_cut), ds, self.taper_fraction)
+            weights = self.amplitude(theta) * dtheta
+            if self.amplitude_model == "kriebel-seelig":
+                weights = weights * self.empirical_factor(k_cut)
+            if self.breaking_limit:
+                weights = weights * self.breaking_factor(theta, weights)
+            if len(self._waves) >= 16:
+                self._waves.pop(next(iter(self._waves)))
+            self._waves[key] = (theta, weights)
+        theta, weights = self._waves[key]
+        return theta.copy(), weights.copy()
 
     def line_height(self, theta: NDArray, weights: NDArray, y: float, k_cut: float) -> float:
         """Largest crest-to-trough height of eq W4 along the lines y' = +-y [m].
@@ -587,23 +599,33 @@ class KelvinWake:
         return WakeFields(elevation, slope_x, slope_y, dzdt)
 
     def _synth_nufft(self, coeffs, kx, ky, x, y, dx, dy):
-        """Re sum_j c_j exp(-i k_j . r) on a uniform grid by a type-1 NUFFT."""
+        """Re sum_j c_j exp(-i k_j . r) of three coefficient sets on a uniform grid by
+        two type-1 NUFFTs.
+
+        Two real fields travel as one complex one: with the plane waves and their
+        mirrors (-k_j, conjugate weights), ``sum_j [(a_j + i b_j) e^(-i k_j.r)
+        + (a_j^* + i b_j^*) e^(+i k_j.r)] / 2 = Re A(r) + i Re B(r)``, so the elevation
+        and the x slope come out of one transform (2M points, which cost little next to
+        the transform's FFT) and the y slope out of a second.
+        """
         import finufft
 
         nx, ny = x.size, y.size
         # grid point i <-> mode m = i - n//2 (finufft CMCL order): r = r_c + m d
         xc, yc = x[nx // 2], y[ny // 2]
-        shifted = coeffs * np.exp(-1j * (kx * xc + ky * yc))[None, :]
+        a, b, c = coeffs * np.exp(-1j * (kx * xc + ky * yc))[None, :]
+        packed = np.stack([np.concatenate([a + 1j * b, np.conj(a) + 1j * np.conj(b)]),
+                           np.concatenate([c, np.conj(c)])]) * 0.5
         out = finufft.nufft2d1(
-            np.ascontiguousarray(ky * dy),
-            np.ascontiguousarray(kx * dx),
-            np.ascontiguousarray(shifted),
+            np.concatenate([ky * dy, -ky * dy]),
+            np.concatenate([kx * dx, -kx * dx]),
+            packed,
             (ny, nx),
             isign=-1,
             eps=self.eps,
             **({} if self.nthreads is None else {"nthreads": int(self.nthreads)}),
         )
-        return out[0].real, out[1].real, out[2].real
+        return out[0].real, out[0].imag, out[1].real
 
     @staticmethod
     def _synth_direct(coeffs, kx, ky, x, y, chunk: int = 2048):

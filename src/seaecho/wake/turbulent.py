@@ -198,12 +198,14 @@ def turbulent_wake_mask(
     """
     w0 = ship.beam if width_at_stern is None else float(width_at_stern)
     c_f = turbulent_wake_film_contrast_db(ship) if film_contrast_db is None else film_contrast_db
-    strip = turbulent_wake_strip(ship, x, y, t, length, width_at_stern)
+    strip, xs, core = _strip(ship, x, y, t, length, width_at_stern)
     if not np.any(strip):
         return strip
-    xs, _ = ship.to_ship_frame(np.asarray(x, dtype=np.float64)[None, :],
-                               np.asarray(y, dtype=np.float64)[:, None], t)
-    return strip * turbulent_damping_profile(xs - 0.5 * ship.length, w0, c_f)
+    # zero outside the strip's core (strip 0 there): the profile where it can be non-zero
+    mask = np.zeros(strip.shape)
+    mask[core] = strip[core] * turbulent_damping_profile(xs[core] - 0.5 * ship.length,
+                                                         w0, c_f)
+    return mask
 
 
 def turbulent_wake_strip(
@@ -241,6 +243,17 @@ def turbulent_wake_strip(
     ----------
     Reed & Milgram (2002); Milgram, Peltzer & Griffin (1993); Tennekes & Lumley (1972).
     """
+    return _strip(ship, x, y, t, length, width_at_stern)[0]
+
+
+def _strip(ship: Ship, x: ArrayLike, y: ArrayLike, t: float, length: float | None,
+           width_at_stern: float | None
+           ) -> tuple[NDArray[np.float64], NDArray[np.float64] | None, NDArray | None]:
+    """:func:`turbulent_wake_strip`, the ship-frame x' of the grid [m] and the core: the
+    grid points where the strip can be non-zero (``0 < xi < L_t`` and
+    ``|y'| < 0.7 w(L_t)``, a superset of eq W14's support, ``|y'| < 5 w / 8``), on which
+    alone the formulas are evaluated (the strip is exactly 0 elsewhere, as S(s <= 0)).
+    """
     x = np.asarray(x, dtype=np.float64)
     y = np.asarray(y, dtype=np.float64)
     if x.ndim != 1 or y.ndim != 1:
@@ -252,10 +265,12 @@ def turbulent_wake_strip(
     if not np.isfinite(w0) or w0 <= 0.0:
         raise ValueError(f"width_at_stern = {width_at_stern!r} m: must be > 0")
     if 0.2 * lt == 0.0:  # no strip (a subnormal length underflows the fade-out: 0/0)
-        return np.zeros((y.size, x.size))
+        return np.zeros((y.size, x.size)), None, None
     xs, ys = ship.to_ship_frame(x[None, :], y[:, None], t)
     xi = xs - 0.5 * ship.length  # distance behind the stern
     eta = np.abs(ys)
+    core = (xi > 0.0) & (xi < lt) & (eta < 0.7 * float(turbulent_wake_width(lt, w0)))
+    xi, eta = xi[core], eta[core]
     w = turbulent_wake_width(xi, w0)
     delta = 0.25 * w
     # Eq W14: onset behind the stern, fade-out at the end, smooth lateral edges. A strip
@@ -264,7 +279,9 @@ def turbulent_wake_strip(
     with np.errstate(over="ignore"):
         along = _smooth_step(xi / w0) * _smooth_step((lt - xi) / (0.2 * lt))
     across = _smooth_step((0.5 * w + 0.5 * delta - eta) / delta)
-    return along * across
+    strip = np.zeros(core.shape)
+    strip[core] = along * across
+    return strip, xs, core
 
 
 __all__ = ["turbulent_damping_profile", "turbulent_wake_film_contrast_db",
