@@ -403,8 +403,11 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
     img = acc.reshape((n_c,) + grid.shape)
     with np.errstate(divide="ignore", invalid="ignore"):
         s = np.where(gain > 0, img / gain, np.nan + 0j)
-        sigma0 = np.where(q > 0, np.abs(img) ** 2 / q, np.nan)
-        area = np.where(gain > 0, q / gain**2, np.nan)
+        # ratios before squares: a finite sigma0 or A_eff does not overflow on the way
+        sigma0 = np.where(q > 0, (np.abs(img) / np.sqrt(q)) ** 2, np.nan)
+        # A_eff is undefined (NaN) where sigma0 is: no pulse weighted, or an aperture that
+        # does not turn (q = 0); a 0 here made the Pauli powers / A_eff infinite
+        area = np.where((gain > 0) & (q > 0), (np.sqrt(q) / gain) ** 2, np.nan)
     coords = {
         "channel": ("channel", np.array(raw.channels)),
         "x": ("x", grid.x, {"units": "m", "long_name": "pixel centre, east"}),
