@@ -1,5 +1,5 @@
 """A focused image never holds Inf, nor NaN but at its undefined pixels: what the fuzzing
-suite found."""
+suite found, and the finite-output guard on images (``seaecho.guards.check_image``)."""
 
 from __future__ import annotations
 
@@ -8,6 +8,7 @@ import pytest
 import xarray as xr
 
 from seaecho.cli import main
+from seaecho.guards import NonFiniteEchoError, check_image, image_problems
 
 #: Shrunk from a scene of the fuzzing suite (tests/fuzz/test_fuzz_valid.py) that `check`
 #: accepted: a transmitter at rest, four linear channels, [image] with its defaults. The
@@ -54,8 +55,7 @@ def test_image_of_a_platform_at_rest_has_undefined_not_infinite_products(tmp_pat
     assert "wrote" in capsys.readouterr().out
     with xr.open_dataset(tmp_path / "r_image.nc", engine="h5netcdf") as img:
         img = img.load()
-    for name, v in img.data_vars.items():
-        assert not np.isinf(v.values).any(), name
+    assert image_problems(img) == []
     for name in ("resolution_area", "sigma0", "pauli"):  # undefined: NaN, not 0 or Inf
         assert np.isnan(img[name].values).all(), name
     assert np.isfinite(img["pauli_filtered"].values).all()
@@ -63,3 +63,74 @@ def test_image_of_a_platform_at_rest_has_undefined_not_infinite_products(tmp_pat
     hh = np.abs(img["image"].sel(channel="HH").values) ** 2
     assert np.isfinite(hh).all() and 10 * np.log10(hh.max()) == pytest.approx(0.0, abs=1.0)
 
+
+def _image(**over) -> xr.Dataset:
+    """A 2 x 3 image dataset with the variables the guard reads."""
+    gain = np.array([[1.0, 1.0, 0.0], [1.0, 1.0, 1.0]])
+    area = np.array([[2.0, 2.0, np.nan], [2.0, np.nan, 2.0]])
+    s = np.ones((2, 2, 3), dtype=complex)
+    s[:, 0, 2] = np.nan  # K = 0
+    sigma0 = np.abs(s) ** 2 / area
+    truth = np.ones((2, 2, 3))
+    truth[:, :, 0] = np.nan  # outside the tile
+    truth[1] = np.nan  # a circular channel: not in the raw's (linear) sigma map
+    data = {"image": s, "sigma0": sigma0, "gain": gain, "resolution_area": area,
+            "pauli": np.stack([sigma0[0]] * 3), "sigma0_truth": truth,
+            "tile": np.array([[0, 1, 1], [0, 1, 1]], dtype=np.uint8)}
+    data.update(over)
+    dims = {2: ("y", "x"), 3: ("channel", "y", "x")}
+    ds = xr.Dataset({k: (dims[np.ndim(v)] if k != "pauli" else ("component", "y", "x"), v)
+                     for k, v in data.items()},
+                    coords={"channel": ["HH", "RR"],
+                            "polarisation": ["HH", "HV", "VH", "VV"]})
+    return ds
+
+
+def test_guard_accepts_nan_only_at_undefined_pixels():
+    check_image(_image())  # every NaN above marks an undefined pixel
+    bad = _image()
+    bad["sigma0"].values[0, 1, 1] = np.inf
+    bad["gain"].values[1, 0] = np.nan
+    sigma0 = bad["sigma0"].values.copy()
+    sigma0[0, 0, 0] = np.nan  # A_eff is defined there
+    bad["sigma0"].values[:] = sigma0
+    bad["sigma0_truth"].values[0, 0, 1] = np.nan  # inside the tile, a linear channel
+    found = image_problems(bad)
+    assert found == ["sigma0 (1 Inf and 1 NaN of 12 values at defined pixels)",
+                     "gain (1 NaN of 6 values)",
+                     "sigma0_truth (1 NaN of 12 values at defined pixels)"]
+    with pytest.raises(NonFiniteEchoError, match=r"image of raw\.nc: non-finite values in "
+                       r"sigma0 \(1 Inf"):
+        check_image(bad, "raw.nc")
+
+
+def test_an_image_with_inf_stops_the_run_and_leaves_no_file(tmp_path, capsys, monkeypatch):
+    # The last line of defence: whatever overflows to Inf in a focusing is not written,
+    # exit 2, and the run's raw file (and figures) go with it: no partial output
+    from test_cli_image import SCENE  # a moving platform, one target, [image]
+
+    import seaecho.api
+
+    focus = seaecho.api.image
+
+    def overflowing(*a, **k):
+        img = focus(*a, **k)
+        img["sigma0"].values[0, 0, 0] = np.inf
+        return img
+
+    monkeypatch.setattr(seaecho.api, "image", overflowing)
+    scene = tmp_path / "s.toml"
+    scene.write_text(SCENE.replace("figures = false", "figures = true"))
+    rc = main(["run", str(scene), "-o", str(tmp_path / "r.nc"), "-q"])
+    err = capsys.readouterr().err
+    assert rc == 2 and "Traceback" not in err
+    assert "image of " in err and "r.nc: non-finite values in sigma0 (1 Inf of" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.toml"]
+    raw = tmp_path / "raw.nc"  # `seaecho image` alone: the same refusal, no image file
+    monkeypatch.setattr(seaecho.api, "image", focus)
+    assert main(["run", str(scene), "-o", str(raw), "-q", "--no-figures"]) == 0
+    (tmp_path / "raw_image.nc").unlink()
+    monkeypatch.setattr(seaecho.api, "image", overflowing)
+    assert main(["image", str(raw), "-o", str(tmp_path / "img.nc"), "-q"]) == 2
+    assert "non-finite values in sigma0" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["raw.nc", "s.toml"]

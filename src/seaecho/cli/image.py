@@ -66,12 +66,14 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
 
     from ..api import figures as draw
     from ..api import image, image_measures
+    from ..guards import check_image
     from ..io.dataset import write_dataset_atomic
     from ..io.run import quiet_invalid_netcdf
 
     timings: dict = {}
     t = time.perf_counter()
     img = image(raw_path, cfg, backend=backend, progress=progress, timings=timings)
+    check_image(img, str(raw_path))  # Inf, or NaN at a defined pixel: exit 2, no file
     with quiet_invalid_netcdf():
         write_dataset_atomic(img, out)
     wrote = [out]
