@@ -512,7 +512,9 @@ def scenes(runnable: bool = True) -> st.SearchStrategy[dict]:
 
 def _with_subfacet_slopes(d: dict) -> dict:
     """A sea whose unresolved waves carry slope at the carrier (the builder refuses a
-    calm sea without sub-facet slopes): else a 5 m/s fully developed sea."""
+    calm sea without sub-facet slopes, and a grid that resolves every wave longer than
+    the two-scale split): else a 5 m/s fully developed sea on a grid of at least 0.5 m
+    (the split, 2 pi / k_cut, is at most 0.9 m from the carriers' 1 GHz up)."""
     if not d["radar"].get("sea_clutter", True):
         return d
     import warnings
@@ -525,6 +527,9 @@ def _with_subfacet_slopes(d: dict) -> dict:
             build_sea_model(parse_scene(d))
     except ValueError:
         sea = {k: v for k, v in d["sea"].items() if k not in ("fetch_m", "depth_m")}
+        sea["size_x_m"] = max(sea["size_x_m"], 0.5 * sea["nx"])
+        sea["size_y_m"] = max(sea.get("size_y_m", sea["size_x_m"]),
+                              0.5 * sea.get("ny", sea["nx"]))
         d["sea"] = {**sea, "wind_speed_m_s": 5.0, "spectrum": "elfouhaily"}
     return d
 
