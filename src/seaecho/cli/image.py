@@ -42,6 +42,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--backend", choices=("drjit", "numpy"), default="drjit",
                    help="backprojection kernel (default drjit)")
     p.add_argument("--no-figures", action="store_true", help="do not write PNG figures")
+    p.add_argument("--max-memory-gb", type=float, metavar="GB", help="refuse an image whose "
+                   "estimated peak memory exceeds this (default: what is available, or "
+                   "SEAECHO_MAX_MEMORY_GB)")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar")
     p.set_defaults(func=run)
 
@@ -107,6 +110,14 @@ def run(args: argparse.Namespace) -> int:
     if out.resolve() == raw.resolve():
         raise UsageError(f"output {out} would overwrite the raw dataset")
     cfg = image_config(raw, **image_fields(args))
+    from ..api import open_dataset
+    from ..resources import check_image_memory
+    from . import check_memory_option
+
+    check_memory_option(args.max_memory_gb)
+    with open_dataset(raw) as ds:  # the pixels against the memory, before any is allocated
+        print(check_image_memory(ds, cfg, str(raw), args.max_memory_gb,
+                                 figures=not args.no_figures)[1])
     focus_to_files(raw, out, cfg, backend=args.backend, progress=not args.quiet,
                    figures=not args.no_figures)
     return 0

@@ -39,7 +39,7 @@ from .backprojection import PulseBlock, backproject, upsample
 from .calibration import Track, calibration_at, compressed_pulse_energy
 from .windows import AzimuthWindow
 
-__all__ = ["ImageGrid", "RawData", "focus", "focus_points"]
+__all__ = ["ImageGrid", "RawData", "default_extent", "focus", "focus_points"]
 
 #: Coverage (K / max K, amplitude) below which a pixel is flagged invalid (-20 dB).
 MIN_COVERAGE = 0.1
@@ -181,18 +181,23 @@ class RawData:
 
     def default_extent(self) -> tuple[float, float, float, float]:
         """The sea tile, or the targets' bounding box plus 20 range resolutions."""
-        ds = self.ds
-        if "x_cell" in ds and int(ds.attrs.get("sea_clutter", 1)):
-            x, y = ds["x"].values, ds["y"].values
-            dx, dy = x[1] - x[0], y[1] - y[0]
-            return (float(x[0]), float(x[-1] + dx), float(y[0]), float(y[-1] + dy))
-        if "target_position" in ds:
-            p = ds["target_position"].values
-            m = 20.0 * C0 / (2.0 * self.bandwidth)
-            return (float(p[:, 0].min() - m), float(p[:, 0].max() + m),
-                    float(p[:, 1].min() - m), float(p[:, 1].max() + m))
-        raise ValueError("the dataset has neither a sea tile nor targets: give the image "
-                         "extent")
+        return default_extent(self.ds, self.bandwidth)
+
+
+def default_extent(ds, bandwidth: float) -> tuple[float, float, float, float]:
+    """The default image extent of a raw dataset [m]: its sea tile, or its targets'
+    bounding box plus 20 range resolutions c / (2 B), B = ``bandwidth`` [Hz]."""
+    if "x_cell" in ds and int(ds.attrs.get("sea_clutter", 1)):
+        x, y = ds["x"].values, ds["y"].values
+        dx, dy = x[1] - x[0], y[1] - y[0]
+        return (float(x[0]), float(x[-1] + dx), float(y[0]), float(y[-1] + dy))
+    if "target_position" in ds:
+        p = ds["target_position"].values
+        m = 20.0 * C0 / (2.0 * bandwidth)
+        return (float(p[:, 0].min() - m), float(p[:, 0].max() + m),
+                float(p[:, 1].min() - m), float(p[:, 1].max() + m))
+    raise ValueError("the dataset has neither a sea tile nor targets: give the image "
+                     "extent")
 
 
 def _interpolate(nodes: ImageGrid, values: NDArray, grid: ImageGrid) -> NDArray:
