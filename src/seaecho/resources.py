@@ -618,6 +618,96 @@ def check_memory(scene, source: str, max_memory_gb: float | None = None,
     return est, line
 
 
+def worker_bytes(est: Estimate, threads: int = 1) -> float:
+    """Peak memory of one Dask worker [bytes] running a scene of estimate ``est`` with
+    ``threads`` threads: the process and, per thread, a simulation and a block of pulses
+    (each thread builds and keeps its own, ``seaecho.distributed.worker_simulation``),
+    or the start-up's antenna-pattern transient if larger; times :data:`SAFETY`."""
+    process = est.terms.get("process", 0.0)
+    own = sum(v for k, v in est.terms.items() if k not in _NOT_ON_A_WORKER)
+    return SAFETY * max(process + max(threads, 1) * own,
+                        process + est.terms.get("antenna pattern", 0.0))
+
+
+#: Terms of eq (M1) that are this process's, not a worker's.
+_NOT_ON_A_WORKER = ("process", "figures", "workers", "image", "antenna pattern")
+
+
+def check_workers_memory(scene, workers: dict, source: str, *, block: int | None = None,
+                         base_dir=".", fraction: float | None = None) -> Estimate:
+    """Refuse a run whose per-worker part does not fit in a Dask worker's memory limit.
+
+    Parameters
+    ----------
+    scene : seaecho.config.Scene
+    workers : dict
+        The scheduler's worker information (``Client.scheduler_info()["workers"]``):
+        address -> {"memory_limit": bytes (0 or None: no limit), "nthreads": int, ...}.
+    source : str
+        What to start the message with (the scene file).
+    block, base_dir
+        As for :func:`estimate`.
+    fraction : float, optional
+        Share of a worker's limit the run may use: default Dask's pause threshold
+        (``distributed.worker.memory.pause``, 0.8: a worker above it stops taking tasks,
+        and the run would wait for ever), or its terminate threshold (0.95) if pausing
+        is off.
+
+    Returns
+    -------
+    Estimate
+        The run's estimate (:func:`estimate` without figures).
+
+    Raises
+    ------
+    SceneError
+        Naming the workers whose limit is too small, the per-worker estimate, its
+        largest terms and the fields that drive them.
+    """
+    if fraction is None:
+        fraction = _dask_memory_fraction()
+    est = estimate(scene, figures=False, block=block, base_dir=base_dir)
+    short = []
+    for address, info in sorted(workers.items()):
+        limit = float(info.get("memory_limit") or 0.0)
+        threads = int(info.get("nthreads") or 1)
+        need = worker_bytes(est, threads)
+        if limit > 0 and need > fraction * limit:
+            short.append((address, limit, threads, need))
+    if short:
+        address, limit, threads, need = short[0]
+        named = {k: v for k, v in est.terms.items() if k not in _NOT_ON_A_WORKER}
+        top = sorted(((v, k) for k, v in named.items() if v > 0), reverse=True)[:2]
+        reasons = "; ".join(f"{k} {format_bytes(SAFETY * threads * v)} (set by "
+                            f"{est.drivers[k]})" for v, k in top)
+        others = f" and {len(short) - 1} more" if len(short) > 1 else ""
+        raise SceneError(
+            f"{source}: the run does not fit in the Dask workers' memory: worker {address}"
+            f"{others} (of {len(workers)}) has a memory limit of {format_bytes(limit)}, and "
+            f"a worker may use {fraction:g} of it (Dask pauses a worker above that); each "
+            f"of its {threads} threads holds a simulation and a block of pulses: estimated "
+            f"{format_bytes(need)} per worker. Largest terms: {reasons}. Give the workers "
+            "more memory (dask worker --memory-limit) or fewer threads, use "
+            "--block-pulses, or reduce those fields")
+    return est
+
+
+def _dask_memory_fraction() -> float:
+    """Dask's pause threshold of a worker's memory (else terminate, else 1)."""
+    try:
+        import dask
+
+        import distributed  # noqa: F401 - loads the distributed.* defaults
+
+        for key in ("pause", "terminate"):
+            value = dask.config.get(f"distributed.worker.memory.{key}", False)
+            if value:
+                return float(value)
+    except ImportError:  # pragma: no cover - dask is a dependency
+        pass
+    return 1.0
+
+
 def image_estimate(raw, cfg, figures: bool = True) -> Estimate:
     """Peak memory and time of ``seaecho image`` focusing the raw dataset ``raw`` with
     ``cfg`` (an ``ImageConfig``): the process base, the raw's per-pulse arrays, its truth
@@ -694,6 +784,7 @@ __all__ = [
     "available_memory",
     "check_image_memory",
     "check_memory",
+    "check_workers_memory",
     "describe",
     "estimate",
     "antenna_nodes",
@@ -709,4 +800,5 @@ __all__ = [
     "pixel_count",
     "memory_limit",
     "window_size",
+    "worker_bytes",
 ]
