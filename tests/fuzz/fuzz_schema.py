@@ -260,8 +260,12 @@ def _waveform(draw: Draw, d: dict, get: Get) -> dict:
         if b * t < 1.0:  # a chirp sweeps its band only if B T >= 1
             if 1.0 / t <= 1.0e10:
                 d["bandwidth_hz"] = 1.0 / t * draw(st.floats(1.0, 2.0))
+                while d["bandwidth_hz"] * t < 1.0:  # (1 / T) T may round below 1
+                    d["bandwidth_hz"] = math.nextafter(d["bandwidth_hz"], math.inf)
             else:
                 d["duration_s"] = min(1.0 / b * draw(st.floats(1.0, 2.0)), 1.0e-2)
+                while b * d["duration_s"] < 1.0 and d["duration_s"] < 1.0e-2:
+                    d["duration_s"] = math.nextafter(d["duration_s"], math.inf)
     else:
         d.pop("bandwidth_hz", None)
     return d
