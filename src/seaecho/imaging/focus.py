@@ -210,7 +210,8 @@ def _interpolate(nodes: ImageGrid, values: NDArray, grid: ImageGrid) -> NDArray:
     ky, kx = min(3, nodes.y.size - 1), min(3, nodes.x.size - 1)
     if kx < 1 or ky < 1:
         return np.broadcast_to(v, grid.shape).copy()
-    spline = RectBivariateSpline(nodes.y, nodes.x, v, kx=kx, ky=ky)
+    # scipy's kx is the degree along its first axis, here y
+    spline = RectBivariateSpline(nodes.y, nodes.x, v, kx=ky, ky=kx)
     return spline(grid.y, grid.x)
 
 
