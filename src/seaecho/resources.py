@@ -708,6 +708,20 @@ def _dask_memory_fraction() -> float:
     return 1.0
 
 
+def focus_shape(raw, cfg) -> tuple[int, int]:
+    """(ny, nx) pixels ``seaecho image`` makes of the raw dataset ``raw`` with ``cfg``:
+    its extent (default the raw's sea tile or targets' box) over its pixel (default a
+    quarter of the range resolution), as ``ImageGrid.from_extent`` counts them."""
+    from .imaging.focus import default_extent
+
+    a = raw.attrs
+    bandwidth = float(a.get("waveform_bandwidth_hz", a.get("sampling_rate_hz", 1.0)))
+    pixel = cfg.pixel_m if cfg.pixel_m is not None else C0 / (8.0 * bandwidth)
+    extent = cfg.extent_m if cfg.extent_m is not None else default_extent(raw, bandwidth)
+    x0, x1, y0, y1 = (float(v) for v in extent)
+    return pixel_count(y1 - y0, pixel), pixel_count(x1 - x0, pixel)
+
+
 def image_estimate(raw, cfg, figures: bool = True) -> Estimate:
     """Peak memory and time of ``seaecho image`` focusing the raw dataset ``raw`` with
     ``cfg`` (an ``ImageConfig``): the process base, the raw's per-pulse arrays, its truth
@@ -722,17 +736,11 @@ def image_estimate(raw, cfg, figures: bool = True) -> Estimate:
     figures : bool
         The command draws the image's figures (and ``cfg.figures``).
     """
-    from .imaging.focus import default_extent
-
     n_p = int(raw.sizes.get("pulse", 0))
     n_s = int(raw.sizes.get("fast_time", 0))
     c = int(raw.sizes.get("channel", 0))
-    a = raw.attrs
-    bandwidth = float(a.get("waveform_bandwidth_hz", a.get("sampling_rate_hz", 1.0)))
-    pixel = cfg.pixel_m if cfg.pixel_m is not None else C0 / (8.0 * bandwidth)
-    extent = cfg.extent_m if cfg.extent_m is not None else default_extent(raw, bandwidth)
-    x0, x1, y0, y1 = (float(v) for v in extent)
-    pixels = pixel_count(y1 - y0, pixel) * pixel_count(x1 - x0, pixel)
+    ny, nx = focus_shape(raw, cfg)
+    pixels = ny * nx
     cells = int(raw.sizes.get("y_cell", 0)) * int(raw.sizes.get("x_cell", 0))
     panels = IMAGE_PANELS if cfg.figures and figures else 0
     terms = {"process": M0_TARGETS, "pulses": M_PULSE * n_p,
@@ -764,6 +772,12 @@ def check_image_memory(raw, cfg, source: str, max_memory_gb: float | None = None
             f"{source}: [image].pixel_m = {cfg.pixel_m!r}, extent_m = {cfg.extent_m!r}: "
             f"{est.pixels} pixels, more than {MAX_PIXELS}; use a larger pixel or a "
             "smaller extent (--pixel-m, --extent)")
+    ny, nx = focus_shape(raw, cfg)
+    if ny < 2 or nx < 2:  # as seaecho.preflight.image_problems: the measures need 2 x 2
+        raise SceneError(
+            f"{source}: [image].pixel_m = {cfg.pixel_m!r}, extent_m = {cfg.extent_m!r}: "
+            f"an image of {ny} x {nx} pixels; it needs at least 2 x 2 (a smaller pixel or "
+            "a larger extent: --pixel-m, --extent)")
     limit, where = memory_limit(max_memory_gb)
     line = describe(est, limit, where)
     if not (math.isfinite(est.peak_bytes) and (limit is None or est.peak_bytes <= limit)):
@@ -787,6 +801,7 @@ __all__ = [
     "check_workers_memory",
     "describe",
     "estimate",
+    "focus_shape",
     "antenna_nodes",
     "gauss_markov_steps",
     "hull_sizes",

@@ -53,6 +53,9 @@ def test_image_writes_dataset_and_figures_reproducibly(raw, tmp_path, capsys):
     (["--pixel-m", "1e-4"], "more than"),
     (["--pixel-m", "-1"], "[image].pixel_m = -1.0"),
     (["--filter-size", "4"], "filter_size = 4: must be odd"),
+    # one pixel wide: the image measures died after the file was written (a traceback)
+    (["--extent", "0", "0.5", "0", "4", "--pixel-m", "0.5"], "8 x 1 pixels; it needs at "
+     "least 2 x 2"),
 ])
 def test_image_rejects_bad_options(raw, tmp_path, capsys, extra, message):
     out = tmp_path / "bad.nc"
