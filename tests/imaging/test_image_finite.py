@@ -134,3 +134,29 @@ def test_an_image_with_inf_stops_the_run_and_leaves_no_file(tmp_path, capsys, mo
     assert main(["image", str(raw), "-o", str(tmp_path / "img.nc"), "-q"]) == 2
     assert "non-finite values in sigma0" in capsys.readouterr().err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["raw.nc", "s.toml"]
+
+
+@pytest.mark.parametrize("power_w", [5e-324, 1e-200])
+def test_image_does_not_depend_on_the_transmit_power(tmp_path, power_w):
+    # s = I / K (eqs B2, K2): I and K are both proportional to sqrt(P_t), so the
+    # calibrated image of a point target is its scattering amplitude whatever P_t. Found
+    # by the fuzzing suite: at 5e-324 W the echoes (1e-170 sqrt(W)) flushed to zero in
+    # the backprojection's float32 samples and the image of a target was 0
+    from sar_helpers import point_scene, simulate
+
+    from seaecho.api import image
+
+    target = [{"position_m": (2.0, -1.5, 0.0), "rcs_m2": 10.0}]
+    grid = {"pixel_m": 0.5, "extent_m": (-2.0, 6.0, -6.0, 3.0)}
+    ref = image(simulate(point_scene(target, n_pulses=16), tmp_path / "ref.nc"), **grid)
+    weak = image(simulate(point_scene(target, n_pulses=16, transmit_power_w=power_w),
+                          tmp_path / "weak.nc"), **grid)
+    s0, s1 = ref["image"].values, weak["image"].values
+    assert 10 * np.log10(np.abs(s0).max() ** 2) == pytest.approx(10.0, abs=1.0)
+    np.testing.assert_allclose(s1, s0, rtol=0, atol=1e-5 * np.abs(s0).max())
+    # so are A_eff and sigma0 (eq K3: K^2 of 1e-340 underflowed, sigma0 was undefined)
+    for name in ("resolution_area", "sigma0"):
+        a0, a1 = ref[name].values, weak[name].values
+        assert np.isfinite(a0).all()
+        np.testing.assert_allclose(a1, a0, rtol=1e-4, atol=1e-5 * np.abs(a0).max())
+    assert image_problems(weak) == []

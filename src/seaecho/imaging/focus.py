@@ -200,6 +200,19 @@ def default_extent(ds, bandwidth: float) -> tuple[float, float, float, float]:
                      "extent")
 
 
+def _power_of_two_scale(y: NDArray) -> float:
+    """2^e near the largest |y| (1 if none is finite and > 0): the samples over it are of
+    order 1 in the kernels' float32, whatever the transmit power (1e-170 sqrt(W) echoes
+    of a 5e-324 W transmitter flushed to 0 in float32, 1e20 ones would overflow); a power
+    of two divides and multiplies back exactly, so data of ordinary magnitude keep their
+    bytes."""
+    with np.errstate(invalid="ignore", over="ignore"):
+        peak = float(np.max(np.abs(y), initial=0.0))
+    if not 0.0 < peak < np.inf:
+        return 1.0
+    return float(2.0 ** np.frexp(peak)[1])
+
+
 def _interpolate(nodes: ImageGrid, values: NDArray, grid: ImageGrid) -> NDArray:
     """Cubic (or lower, with few nodes) spline from the node grid to the pixels."""
     from scipy.interpolate import RectBivariateSpline
@@ -293,7 +306,8 @@ class _Processor:
                 t = time.perf_counter()
                 y = raw.compressed(start, stop, cfg.range_weighting, cfg.taylor_nbar,
                                    cfg.taylor_sidelobe_db)
-                up = upsample(y, cfg.upsample)
+                scale = _power_of_two_scale(y)  # eq B2 is linear in the samples
+                up = upsample(y / scale, cfg.upsample)
                 t_read += time.perf_counter() - t
                 sl = slice(start, stop)
                 block = PulseBlock(up, raw.t0, rate, track.tx[sl], track.rx[sl],
@@ -301,7 +315,7 @@ class _Processor:
                                    np.ones(stop - start))
                 t = time.perf_counter()
                 img, w = backproject(points, block, raw.carrier, self.window, self.backend)
-                acc += img
+                acc += img * scale
                 wsum += w
                 t_bp += time.perf_counter() - t
                 bar.update(stop - start)
@@ -395,7 +409,10 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
                       "one pulse): no azimuth resolution, so sigma0 (eq K3) is undefined; "
                       "the calibrated image (RCS) is still given", SamplingWarning,
                       stacklevel=3)
-    q_nodes = np.nan_to_num(cal.area * cal.gain**2, nan=0.0)  # K^2 A_eff, smooth
+    # K^2 A_eff (smooth), over g0^2, g0 ~ the largest K: a 5e-324 W transmitter's K^2
+    # (1e-340) underflowed to 0, and sigma0 with it
+    g0 = _power_of_two_scale(cal.gain)
+    q_nodes = np.nan_to_num(cal.area * (cal.gain / g0) ** 2, nan=0.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         inside = np.where(wsum[0] > 0, wsum[1] / wsum[0], 0.0).reshape(grid.shape)
     gain = np.maximum(_interpolate(nodes, cal.gain, grid), 0.0) * inside
@@ -410,10 +427,10 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
     with np.errstate(divide="ignore", invalid="ignore"):
         s = np.where(gain > 0, img / gain, np.nan + 0j)
         # ratios before squares: a finite sigma0 or A_eff does not overflow on the way
-        sigma0 = np.where(q > 0, (np.abs(img) / np.sqrt(q)) ** 2, np.nan)
+        sigma0 = np.where(q > 0, (np.abs(img) / g0 / np.sqrt(q)) ** 2, np.nan)
         # A_eff is undefined (NaN) where sigma0 is: no pulse weighted, or an aperture that
         # does not turn (q = 0); a 0 here made the Pauli powers / A_eff infinite
-        area = np.where((gain > 0) & (q > 0), (np.sqrt(q) / gain) ** 2, np.nan)
+        area = np.where((gain > 0) & (q > 0), (np.sqrt(q) / (gain / g0)) ** 2, np.nan)
     coords = {
         "channel": ("channel", np.array(raw.channels)),
         "x": ("x", grid.x, {"units": "m", "long_name": "pixel centre, east"}),
