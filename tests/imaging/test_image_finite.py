@@ -160,3 +160,42 @@ def test_image_does_not_depend_on_the_transmit_power(tmp_path, power_w):
         assert np.isfinite(a0).all()
         np.testing.assert_allclose(a1, a0, rtol=1e-4, atol=1e-5 * np.abs(a0).max())
     assert image_problems(weak) == []
+
+
+def test_noise_equivalent_rcs_bound_against_the_image_noise(tmp_path):
+    # image_noise_rcs is k T0 F B_n / N_s / (N_p A^2) (Skolnik 2008, eq 1.8, and eq K1)
+    # with the gains at their bound 10 and the ranges at the platform's height: on the
+    # broadside stripmap of isotropic antennas (G = 1) at 500 m height and 707 m slant
+    # range, the image's measured noise |s|^2 is that bound times 10^2 (gains) times
+    # (707 / 500)^4 = 4 (ranges): 400, to the noise's sampling error
+    from sar_helpers import point_scene, simulate
+
+    from seaecho.api import image
+    from seaecho.preflight import image_noise_rcs
+
+    grid = {"pixel_m": 0.5, "extent_m": (-4.0, 4.0, -4.0, 4.0)}
+    scene = point_scene([{"position_m": (0.0, 0.0, 0.0), "rcs_m2": 1e-12}], n_pulses=16,
+                        thermal_noise=True, transmit_power_w=1e-3, image=grid)
+    img = image(simulate(scene, tmp_path / "noise.nc"))
+    measured = float(np.mean(np.abs(img["image"].values) ** 2))
+    assert measured / image_noise_rcs(scene) == pytest.approx(400.0, rel=0.2)
+
+
+def test_an_image_of_noise_beyond_float32_is_refused_by_check(tmp_path, capsys):
+    # Found by the fuzzing suite: a 5e-324 W transmitter with thermal noise; the image's
+    # noise calibrates to 1e300+ m^2 (s = I / K, K of sqrt(5e-324 W)), which no image can
+    # hold: check and run refuse it by name, before anything is written
+    from test_cli_image import SCENE
+
+    scene = tmp_path / "s.toml"
+    scene.write_text(SCENE.replace("prf_hz = 500.0", "prf_hz = 500.0\nthermal_noise = "
+                                   "true\ntransmit_power_w = 5e-324"))
+    for command in ("check", "run"):
+        extra = ["-o", str(tmp_path / "r.nc"), "-q"] if command == "run" else []
+        assert main([command, str(scene), *extra]) == 2
+        err = capsys.readouterr().err
+        assert "[radar].transmit_power_w = 5e-324" in err and "noise-equivalent" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.toml"]
+    scene.write_text(SCENE.replace("prf_hz = 500.0", "prf_hz = 500.0\nthermal_noise = "
+                                   "true\ntransmit_power_w = 1e-20"))
+    assert main(["check", str(scene)]) == 0  # 1e-20 W: noise of 1e19 m^2 at least, held

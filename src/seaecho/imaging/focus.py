@@ -200,6 +200,15 @@ def default_extent(ds, bandwidth: float) -> tuple[float, float, float, float]:
                      "extent")
 
 
+def _single(a) -> NDArray:
+    """``a`` in single precision (complex64 if complex, else float32), as the image file
+    holds it: a value beyond its range is +-Inf, which the image's finite-output guard
+    (``seaecho.guards.check_image``) reports, so no overflow warning here."""
+    a = np.asarray(a)
+    with np.errstate(over="ignore"):
+        return a.astype(np.complex64 if np.iscomplexobj(a) else np.float32)
+
+
 def _power_of_two_scale(y: NDArray) -> float:
     """2^e near the largest |y| (1 if none is finite and > 0): the samples over it are of
     order 1 in the kernels' float32, whatever the transmit power (1e-170 sqrt(W) echoes
@@ -439,20 +448,20 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         "polarisation": ("polarisation", np.array(["HH", "HV", "VH", "VV"])),
     }
     data = {
-        "image": (("channel", "y", "x"), s.astype(np.complex64),
+        "image": (("channel", "y", "x"), _single(s),
                   {"units": "m", "long_name": "calibrated complex image s = I / K: |s|^2 "
                    "is the RCS sigma_mn at a point target's peak"}),
-        "sigma0": (("channel", "y", "x"), sigma0.astype(np.float32),
+        "sigma0": (("channel", "y", "x"), _single(sigma0),
                    {"units": "m2 m-2", "long_name": "|I|^2 / (K^2 A_eff): the mean over a "
                     "distributed target is its sigma0"}),
-        "gain": (("y", "x"), gain.astype(np.float32),
+        "gain": (("y", "x"), _single(gain),
                  {"units": "sqrt(W) m-1", "long_name": "K = sum_p w_p A_p (eq K2)"}),
-        "resolution_area": (("y", "x"), area.astype(np.float32),
+        "resolution_area": (("y", "x"), _single(area),
                             {"units": "m2", "long_name": "A_eff (eq K3): integral of the "
                              "squared normalised impulse response"}),
-        "coverage": (("y", "x"), coverage.astype(np.float32),
+        "coverage": (("y", "x"), _single(coverage),
                      {"units": "1", "long_name": "K / max K"}),
-        "inside_window": (("y", "x"), inside.astype(np.float32),
+        "inside_window": (("y", "x"), _single(inside),
                           {"units": "1", "long_name": "fraction of the weight sum_p w_p "
                            "whose echo is inside the receive window"}),
         "valid": (("y", "x"), valid.astype(np.uint8),
@@ -465,20 +474,20 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         with np.errstate(divide="ignore", invalid="ignore"):
             pauli = pauli / area[None]
         coords["component"] = ("component", np.array(PAULI_NAMES))
-        data["pauli"] = (("component", "y", "x"), pauli.astype(np.float32),
+        data["pauli"] = (("component", "y", "x"), _single(pauli),
                          {"units": "m2 m-2", "long_name": "Pauli powers (|HH-VV|^2, "
                           "|HV+VH|^2, |HH+VV|^2) / 2 in sigma0 units"})
     if cfg.speckle_filter != "none":
         stack = np.nan_to_num(sigma0)
         data["sigma0_filtered"] = (
             ("channel", "y", "x"),
-            speckle_filter(stack, cfg.speckle_filter, cfg.filter_size).astype(np.float32),
+            _single(speckle_filter(stack, cfg.speckle_filter, cfg.filter_size)),
             {"units": "m2 m-2", "long_name": f"sigma0, {cfg.speckle_filter} filter"})
         if pauli is not None:
             data["pauli_filtered"] = (
                 ("component", "y", "x"),
-                speckle_filter(np.nan_to_num(pauli), cfg.speckle_filter,
-                               cfg.filter_size).astype(np.float32),
+                _single(speckle_filter(np.nan_to_num(pauli), cfg.speckle_filter,
+                                       cfg.filter_size)),
                 {"units": "m2 m-2", "long_name": f"Pauli powers, {cfg.speckle_filter} "
                  "filter"})
     if cfg.looks != (1, 1):
@@ -488,8 +497,7 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         coords["x_look"] = ("x_look", multilook(grid.x[None, :], (1, lx))[0],
                             {"units": "m", "long_name": "centre of the look block"})
         data["sigma0_multilook"] = (("channel", "y_look", "x_look"),
-                                    multilook(np.nan_to_num(sigma0), cfg.looks)
-                                    .astype(np.float32),
+                                    _single(multilook(np.nan_to_num(sigma0), cfg.looks)),
                                     {"units": "m2 m-2", "long_name": f"sigma0, {ly} x {lx} "
                                      "looks (y, x)"})
     truth, truth_attrs = truth_on_grid(raw.ds, grid.x, grid.y, raw.channels)
