@@ -509,9 +509,24 @@ def scenes(runnable: bool = True) -> st.SearchStrategy[dict]:
         if "transmitter" not in d:
             d["transmitter"] = draw(section(PlatformConfig, ("transmitter",)))
         d = _scene(draw, d, lambda n: field_value(Scene, n))
-        return _with_subfacet_slopes(d)
+        return _with_image_noise_held(_with_subfacet_slopes(d))
 
     return build()
+
+
+def _with_image_noise_held(d: dict) -> dict:
+    """An [image] whose thermal noise its file can hold (the preflight refuses a
+    noise-equivalent RCS above ``MAX_IMAGE_NOISE_RCS``, e.g. at 5e-324 W): else 1 kW
+    and the default noise figure, else no thermal noise."""
+    from seaecho.preflight import MAX_IMAGE_NOISE_RCS, image_noise_rcs
+
+    if image_noise_rcs(parse_scene(d)) <= MAX_IMAGE_NOISE_RCS:
+        return d
+    d["radar"] = {**d["radar"], "transmit_power_w": 1.0e3}
+    d["radar"].pop("noise_figure_db", None)
+    if image_noise_rcs(parse_scene(d)) > MAX_IMAGE_NOISE_RCS:
+        d["radar"]["thermal_noise"] = False
+    return d
 
 
 def _with_subfacet_slopes(d: dict) -> dict:
