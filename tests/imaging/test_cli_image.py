@@ -176,3 +176,19 @@ def test_run_focuses_when_the_scene_has_an_image_section(tmp_path, capsys):
     assert "r_image.nc" in capsys.readouterr().out
     with xr.open_dataset(tmp_path / "r_image.nc", engine="h5netcdf") as img:
         assert img.attrs["azimuth_window"] == "hamming" and img.sizes["x"] == 16
+
+
+@pytest.mark.filterwarnings("ignore::seaecho.warnings.SamplingWarning")
+@pytest.mark.parametrize("backend", ["drjit", "numpy"])
+def test_a_processed_doppler_band_of_5e_324_hz_is_clean(raw, tmp_path, backend):
+    # Found by the fuzzing suite: 1 / B_a overflows to inf, and the Doppler offsets of
+    # eq (B4) with it (RuntimeWarnings from the window and the numpy kernel); the offsets
+    # are then outside the band: here no pulse is weighted, K = 0 and the image is NaN,
+    # undefined, at every pixel
+    from seaecho.guards import image_problems
+
+    out = tmp_path / "img.nc"
+    assert main(["image", raw, "-o", str(out), "-q", "--no-figures", "--backend", backend,
+                 "--pixel-m", "0.5", "--doppler-bandwidth-hz", "5e-324"]) == 0
+    with xr.open_dataset(out, engine="h5netcdf") as img:
+        assert image_problems(img.load()) == []

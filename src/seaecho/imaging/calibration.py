@@ -253,7 +253,8 @@ def calibration_at(points: ArrayLike, track: Track, tx_antenna, rx_antenna,
         xs = x[s:s + step]
         a = amplitude_factor(xs, track, tx_antenna, rx_antenna, transmit_power, lam)
         f = doppler(xs, track.tx, track.rx, track.tx_velocity, track.rx_velocity, lam)
-        w = window((f - fdc[None, :]) / window.bandwidth) * wp[None, :]
+        with np.errstate(over="ignore"):  # outside any band: W(+-inf) = 0
+            w = window((f - fdc[None, :]) / window.bandwidth) * wp[None, :]
         if delay_window is not None:
             tau = delays(xs, track.tx, track.rx, track.rx_velocity)
             w = w * ((tau >= delay_window[0]) & (tau <= delay_window[1]))
