@@ -421,7 +421,8 @@ def image_noise_rcs(scene) -> float:
     lam = C0 / r.carrier_frequency_hz
     b_n = r.noise_bandwidth_hz or r.sampling_rate_hz
     n_s = r.waveform.duration_s * r.sampling_rate_hz + 1.0
-    log_noise = (np.log10(K_B * T0 * b_n) + r.noise_figure_db / 10.0 - np.log10(n_s))
+    log_noise = (np.log10(K_B * T0) + np.log10(b_n) + r.noise_figure_db / 10.0
+                 - np.log10(n_s))  # (logs of each: B_n of 5e-324 Hz times k T0 is 0)
     pulses = pulses_of(scene)
     log_gains = log_ranges = 0.0
     platforms = [scene.transmitter, scene.receiver or scene.transmitter]

@@ -199,3 +199,8 @@ def test_an_image_of_noise_beyond_float32_is_refused_by_check(tmp_path, capsys):
     scene.write_text(SCENE.replace("prf_hz = 500.0", "prf_hz = 500.0\nthermal_noise = "
                                    "true\ntransmit_power_w = 1e-20"))
     assert main(["check", str(scene)]) == 0  # 1e-20 W: noise of 1e19 m^2 at least, held
+    # a noise bandwidth of 5e-324 Hz: k T0 B_n underflows, its logarithm does not (a
+    # divide-by-zero in log10, found by the fuzzing suite's mutations)
+    scene.write_text(SCENE.replace("prf_hz = 500.0", "prf_hz = 500.0\nthermal_noise = "
+                                   "true\nnoise_bandwidth_hz = 5e-324"))
+    assert main(["check", str(scene)]) == 0
