@@ -396,7 +396,8 @@ def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | N
             from . import distributed
 
             client = stack.enter_context(distributed.cluster(workers, scheduler))
-            runner = distributed.DaskBlocks(client, distributed.Job.of(scene, base))
+            runner = distributed.DaskBlocks(client, distributed.Job.of(scene, base),
+                                            block=block_pulses)
         if path is None:
             return sim.dataset(progress=progress, chunk=block_pulses, runner=runner)
         sim.run(path, progress=progress, chunk=block_pulses, resume=resume, runner=runner)

@@ -263,7 +263,10 @@ def build_sea_model(scene, frequency: float | None = None,
         # (eq P6).
         normals = "mesh" if scene.tracing.mode == "raytraced" else "vertex-mean"
         du, dc = facet_slope_deficit(spectrum, cfg.size_m, cfg.shape, normals)
-        mss_u, mss_c = mss_u + du, mss_c + dc
+        # the mesh's finite differences can give the facets more slope across the wind
+        # than the surface has (a deficit < 0, off the grid's axes): sub-facet slopes
+        # can add none then, not less than none
+        mss_u, mss_c = max(mss_u + du, 0.0), max(mss_c + dc, 0.0)
         quadrature = TiltQuadrature.unscented(mss_u, mss_c)
     breaking = None
     u10 = float(u10_from_u19_5(cfg.wind_speed_m_s))

@@ -115,9 +115,14 @@ class DaskBlocks:
     window : int, optional
         Blocks in flight for the ordered (netCDF) writer; default twice the cluster's
         threads.
+    block : int, optional
+        Pulses per block (``--block-pulses``), for the workers' memory check
+        (:func:`check_workers`).
     """
 
-    def __init__(self, client, job: Job, window: int | None = None):
+    def __init__(self, client, job: Job, window: int | None = None,
+                 block: int | None = None):
+        check_workers(client, job, block)
         self.client = client
         self.job = job
         self.window = window or max(2, 2 * sum(client.nthreads().values()))
@@ -156,6 +161,21 @@ class DaskBlocks:
     def _submit(self, fn, *args):
         # pure=False: every block is its own task (no deduplication by argument hash)
         return self.client.submit(partial(fn, self.job), *args, pure=False)
+
+
+def check_workers(client, job: Job, block: int | None = None) -> None:
+    """Refuse (:class:`~seaecho.config.SceneError`) a run whose per-worker memory
+    (``seaecho.resources.worker_bytes``: per thread a simulation and a block of pulses)
+    exceeds a worker's memory limit, from the scheduler's worker information; the
+    client's own memory is checked by ``seaecho.preflight.check_run``."""
+    from .resources import check_workers_memory
+
+    try:
+        info = client.scheduler_info(n_workers=-1)
+    except TypeError:  # older distributed: every worker without the argument
+        info = client.scheduler_info()
+    check_workers_memory(job.scene, dict(info.get("workers", {})), "the Dask cluster",
+                         block=block, base_dir=job.base_dir)
 
 
 @contextlib.contextmanager
@@ -226,7 +246,7 @@ def run(scene, path: str | os.PathLike, *, client, base_dir: str | os.PathLike =
     """
     sim = Simulation(scene, base_dir=base_dir) if simulation is None else simulation
     return sim.run(path, progress=progress, chunk=block, resume=resume,
-                   runner=DaskBlocks(client, Job.of(scene, base_dir)))
+                   runner=DaskBlocks(client, Job.of(scene, base_dir), block=block))
 
 
 # ------------------------------------------------------------------------- reductions
@@ -446,6 +466,6 @@ def write_summary(rows: list[dict], out_dir: str | os.PathLike) -> tuple[Path, P
     return csv_path, nc_path
 
 
-__all__ = ["Case", "DaskBlocks", "Job", "clutter_gates", "cluster", "compute_block",
-           "reduce_run", "run", "run_case", "store_block", "sweep", "sweep_cases",
-           "worker_environment", "worker_simulation", "write_summary"]
+__all__ = ["Case", "DaskBlocks", "Job", "check_workers", "clutter_gates", "cluster",
+           "compute_block", "reduce_run", "run", "run_case", "store_block", "sweep",
+           "sweep_cases", "worker_environment", "worker_simulation", "write_summary"]

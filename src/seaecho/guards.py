@@ -135,4 +135,60 @@ def check_dataset(ds) -> None:
             "are outside what the models can evaluate (see `seaecho check`)")
 
 
-__all__ = ["NonFiniteEchoError", "check_dataset", "check_pulse", "echo_kinds"]
+def _no_truth(ds) -> np.ndarray:
+    """(channel, y, x): outside the sea tile, or a channel the raw's sigma map does not
+    hold (circular, slanted bases: the map is in the linear HH, HV, VH, VV)."""
+    linear = np.isin(ds["channel"].values, ds["polarisation"].values)
+    return ~linear[:, None, None] | (ds["tile"].values == 0)[None]
+
+
+#: Image variables whose NaN marks an undefined pixel, and the pixels where it may:
+#: the calibrated image where no pulse is weighted (K = 0); sigma0, the Pauli powers and
+#: A_eff where A_eff is undefined (NaN: K = 0, or an aperture that does not turn); the
+#: truth outside the simulated sea tile and in channels it does not hold.
+UNDEFINED_PIXELS = {
+    "image": lambda ds: ds["gain"].values == 0,
+    "resolution_area": lambda ds: True,
+    "sigma0": lambda ds: np.isnan(ds["resolution_area"].values),
+    "pauli": lambda ds: np.isnan(ds["resolution_area"].values),
+    "sigma0_truth": _no_truth,
+}
+
+
+def image_problems(ds) -> list[str]:
+    """What is wrong with a focused image dataset (``seaecho.imaging.focus``): every float
+    variable holding +-Inf, and NaN anywhere but the undefined pixels of
+    :data:`UNDEFINED_PIXELS` (where NaN is the documented marker)."""
+    out = []
+    for name, v in ds.data_vars.items():
+        if v.dtype.kind not in "fc" or _finite(v.values):
+            continue
+        a = np.asarray(v.values)
+        n_inf = int(np.isinf(a).sum())
+        nan = np.isnan(a)
+        if name in UNDEFINED_PIXELS and nan.any():
+            nan &= ~np.broadcast_to(UNDEFINED_PIXELS[name](ds), a.shape)
+        n_nan = int(nan.sum())
+        if n_inf or n_nan:
+            what = [f"{n} {kind}" for n, kind in ((n_inf, "Inf"), (n_nan, "NaN"))
+                    if n]
+            out.append(f"{name} ({' and '.join(what)} of {a.size} values"
+                       + (" at defined pixels" if n_nan and name in UNDEFINED_PIXELS
+                          else "") + ")")
+    return out
+
+
+def check_image(ds, source: str = "") -> None:
+    """Raise :class:`NonFiniteEchoError` if :func:`image_problems` finds anything, before
+    the image is written."""
+    bad = image_problems(ds)
+    if bad:
+        raise NonFiniteEchoError(
+            (f"image of {source}: " if source else "image: ")
+            + "non-finite values in " + "; ".join(bad)
+            + ". The image is not written: the focusing overflowed or divided by zero "
+            "(see `seaecho check`)")
+
+
+__all__ = ["NonFiniteEchoError", "UNDEFINED_PIXELS", "check_dataset", "check_image",
+           "check_pulse", "echo_kinds", "image_problems"]

@@ -61,7 +61,7 @@ from numpy.typing import NDArray
 
 from .config import SceneError
 from .config.base import short_repr
-from .constants import C0
+from .constants import C0, K_B, T0
 from .resources import PERTURBATION_SIGMAS, Segment, nominal_segments, perturbation_bound
 
 #: Crest bound of a Gaussian sea in significant wave heights (2 H_s = 8 sigma).
@@ -394,6 +394,51 @@ def _material_problems(i: int, obj, shapes, frequency: float) -> list[str]:
     return []
 
 
+#: Largest noise-equivalent RCS [m^2] an ``[image]`` may have at its best pixel: its
+#: noise pixels (Rayleigh, up to ~20 times their mean over 4096^2 pixels), over areas
+#: down to 1e-4 m^2, stay below float32's 3.4e38 (the image file's precision).
+MAX_IMAGE_NOISE_RCS = 1.0e30
+
+
+def image_noise_rcs(scene) -> float:
+    """A lower bound of the noise-equivalent RCS of the ``[image]`` [m^2]: the RCS the
+    calibrated image s = I / K (eqs B2, K2 of ``seaecho.imaging``) gives the thermal
+    noise at the best-calibrated pixel; 0 without thermal noise.
+
+    The noise of one range-compressed sample (matched filter normalised to chi(0) = 1,
+    constant-envelope pulse of N_s = T f_s + 1 samples at most, any weighting raising it)
+    is at least sigma_c^2 = k T0 F B_n / N_s (Skolnik 2008, eq 1.8, for k T0 F B_n); over
+    the pulses, E|I_n|^2 = sigma_c^2 sum w_p^2 and K = sum w_p A_p <= sqrt(sum w_p^2
+    N_p) A_max (Cauchy-Schwarz), so the noise-equivalent RCS E|I_n|^2 / K^2 is at least
+    sigma_c^2 / (N_p A_max^2), with A_max of eq K1 at the antennas' largest possible
+    gains (4 pi a b / lambda^2 for an a x b aperture, Balanis 2016, eq 12-38, twice for
+    margin; else 10, above every built-in pattern's peak) and the ranges at least each
+    antenna's height above the image plane (or lambda / 2 pi).
+    """
+    r = scene.radar
+    if scene.image is None or not r.thermal_noise:
+        return 0.0
+    lam = C0 / r.carrier_frequency_hz
+    b_n = r.noise_bandwidth_hz or r.sampling_rate_hz
+    n_s = r.waveform.duration_s * r.sampling_rate_hz + 1.0
+    log_noise = (np.log10(K_B * T0) + np.log10(b_n) + r.noise_figure_db / 10.0
+                 - np.log10(n_s))  # (logs of each: B_n of 5e-324 Hz times k T0 is 0)
+    pulses = pulses_of(scene)
+    log_gains = log_ranges = 0.0
+    platforms = [scene.transmitter, scene.receiver or scene.transmitter]
+    for cfg in platforms:
+        ant = cfg.antenna
+        g = 10.0
+        if ant.pattern == "rectangular" and ant.width_m and ant.height_m:
+            g = max(g, 2.0 * 4.0 * np.pi * ant.width_m * ant.height_m / lam**2)
+        z, _ = min_height(cfg, pulses)
+        log_gains += np.log10(g)
+        log_ranges += 2.0 * np.log10(max(z - scene.image.height_m, lam / (2.0 * np.pi)))
+    log_a2 = (np.log10(r.transmit_power_w) + log_gains + 2.0 * np.log10(lam)
+              - 3.0 * np.log10(4.0 * np.pi) - log_ranges)
+    return float(10.0 ** min(log_noise - np.log10(r.n_pulses) - log_a2, 308.0))
+
+
 def image_problems(scene) -> list[str]:
     """``[image]`` the run cannot focus after writing the raw data (which would leave the
     raw file and no image): no extent given and nothing that sets a default one (no sea
@@ -429,6 +474,15 @@ def image_problems(scene) -> list[str]:
     elif cfg.looks[0] > ny or cfg.looks[1] > nx:
         out.append(f"[image].looks = {short_repr(cfg.looks)}: more looks (azimuth y, range "
                    f"x) than the image's {ny} x {nx} pixels")
+    noise = image_noise_rcs(scene)
+    if noise > MAX_IMAGE_NOISE_RCS:
+        r = scene.radar
+        out.append(f"[radar].transmit_power_w = {short_repr(r.transmit_power_w)}, "
+                   f"noise_figure_db = {short_repr(r.noise_figure_db)}: the [image]'s "
+                   f"thermal noise calibrates to an RCS of at least {noise:.3g} m^2 (noise-"
+                   f"equivalent, at its best pixel), more than {MAX_IMAGE_NOISE_RCS:g} m^2 "
+                   "the image can hold; raise transmit_power_w, lower noise_figure_db or "
+                   "noise_bandwidth_hz, or turn thermal_noise off")
     return out
 
 
@@ -494,6 +548,7 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
 
 __all__ = [
     "CREST_HS",
+    "MAX_IMAGE_NOISE_RCS",
     "PERTURBATION_SIGMAS",
     "Pulses",
     "Segment",
@@ -502,6 +557,7 @@ __all__ = [
     "crest_bound",
     "exhaustive_min_distance",
     "geometry_problems",
+    "image_noise_rcs",
     "image_problems",
     "min_distance",
     "min_height",

@@ -82,6 +82,9 @@ M_PIXEL = 120.0  #: per image pixel (calibration maps, coverage, products' tempo
 M_PIXEL_CHANNEL = 160.0  #: per image pixel and channel (accumulator, image, sigma0...)
 M_UPSAMPLED = 40.0  #: per upsampled sample of the focusing's block of pulses
 M_IMAGE_FIGURE = 60.0  #: per image pixel and figure panel drawn
+IMAGE_PANELS = 12  #: figure panels of an image (``seaecho.imaging.figures``)
+M_TRUTH_CELL = 100.0  #: per sea cell of a raw dataset read as the image's truth (sigma
+#: map, elevations, wake mask, the Kelvin amplitude's filter)
 #: Margin on the sum, so that the estimate stays above the measured peak.
 SAFETY = 1.15
 
@@ -385,12 +388,27 @@ def image_shape(scene) -> tuple[int, int]:
         y0, y1 = p[:, 1].min() - m, p[:, 1].max() + m
     else:
         return 0, 0  # no extent to focus on: seaecho.preflight.image_problems
-    def count(length: float) -> int:  # an infinite count (a 5e-324 m pixel) is capped
-        with np.errstate(over="ignore"):
-            n = np.float64(length) / pixel
-        return max(1, int(round(n))) if n < 1.0e15 else 10**15
+    return pixel_count(y1 - y0, pixel), pixel_count(x1 - x0, pixel)
 
-    return count(y1 - y0), count(x1 - x0)
+
+def pixel_count(length: float, pixel: float) -> int:
+    """Pixels of size ``pixel`` [m] along ``length`` [m], as ``ImageGrid.from_extent``
+    rounds them (at least 1); an infinite count (a 5e-324 m pixel) is capped at 1e15."""
+    with np.errstate(over="ignore"):
+        n = np.float64(length) / pixel
+    return max(1, int(round(n))) if n < 1.0e15 else 10**15
+
+
+def image_term(pixels: int, channels: int, n_pulses: int, n_samples: int, upsample: int,
+               panels: int, n_fft: int | None = None) -> float:
+    """Bytes of the focusing (eq M1's image term): the pixels' maps and products, one
+    block of upsampled pulses (at most :data:`IMAGE_BLOCK`, or the ``n_pulses``, of
+    ``next_fast_len(n_samples)`` samples; capped by ``n_fft`` where given) and the
+    figure panels."""
+    up = IMAGE_BLOCK * channels * upsample * next_fast_len(max(n_samples, 1))
+    up = min(up, n_pulses * channels * upsample * (n_fft or next_fast_len(max(n_samples, 1))))
+    return (M_PIXEL * pixels + M_PIXEL_CHANNEL * channels * pixels + M_UPSAMPLED * up
+            + M_IMAGE_FIGURE * panels * pixels)
 
 
 def image_pixels(scene) -> int:
@@ -449,11 +467,9 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     if workers:
         terms["workers"] = workers * worker
     if pixels:
-        panels = 12 if scene.image.figures and figures else 0
-        up = IMAGE_BLOCK * c * scene.image.upsample * next_fast_len(n_s)
-        terms["image"] = (M_PIXEL * pixels + M_PIXEL_CHANNEL * c * pixels
-                          + M_UPSAMPLED * min(up, n_p * c * scene.image.upsample * n_fft)
-                          + M_IMAGE_FIGURE * panels * pixels)
+        panels = IMAGE_PANELS if scene.image.figures and figures else 0
+        terms["image"] = image_term(pixels, c, n_p, n_s, scene.image.upsample, panels,
+                                    n_fft)
     window_fields = ("[radar].sampling_rate_hz, [radar.waveform].bandwidth_hz and "
                      "duration_s, the window (window_start_m/window_end_m, or the tile "
                      "and targets it covers), [radar].channels")
@@ -602,22 +618,202 @@ def check_memory(scene, source: str, max_memory_gb: float | None = None,
     return est, line
 
 
+def worker_bytes(est: Estimate, threads: int = 1) -> float:
+    """Peak memory of one Dask worker [bytes] running a scene of estimate ``est`` with
+    ``threads`` threads: the process and, per thread, a simulation and a block of pulses
+    (each thread builds and keeps its own, ``seaecho.distributed.worker_simulation``),
+    or the start-up's antenna-pattern transient if larger; times :data:`SAFETY`."""
+    process = est.terms.get("process", 0.0)
+    own = sum(v for k, v in est.terms.items() if k not in _NOT_ON_A_WORKER)
+    return SAFETY * max(process + max(threads, 1) * own,
+                        process + est.terms.get("antenna pattern", 0.0))
+
+
+#: Terms of eq (M1) that are this process's, not a worker's.
+_NOT_ON_A_WORKER = ("process", "figures", "workers", "image", "antenna pattern")
+
+
+def check_workers_memory(scene, workers: dict, source: str, *, block: int | None = None,
+                         base_dir=".", fraction: float | None = None) -> Estimate:
+    """Refuse a run whose per-worker part does not fit in a Dask worker's memory limit.
+
+    Parameters
+    ----------
+    scene : seaecho.config.Scene
+    workers : dict
+        The scheduler's worker information (``Client.scheduler_info()["workers"]``):
+        address -> {"memory_limit": bytes (0 or None: no limit), "nthreads": int, ...}.
+    source : str
+        What to start the message with (the scene file).
+    block, base_dir
+        As for :func:`estimate`.
+    fraction : float, optional
+        Share of a worker's limit the run may use: default Dask's pause threshold
+        (``distributed.worker.memory.pause``, 0.8: a worker above it stops taking tasks,
+        and the run would wait for ever), or its terminate threshold (0.95) if pausing
+        is off.
+
+    Returns
+    -------
+    Estimate
+        The run's estimate (:func:`estimate` without figures).
+
+    Raises
+    ------
+    SceneError
+        Naming the workers whose limit is too small, the per-worker estimate, its
+        largest terms and the fields that drive them.
+    """
+    if fraction is None:
+        fraction = _dask_memory_fraction()
+    est = estimate(scene, figures=False, block=block, base_dir=base_dir)
+    short = []
+    for address, info in sorted(workers.items()):
+        limit = float(info.get("memory_limit") or 0.0)
+        threads = int(info.get("nthreads") or 1)
+        need = worker_bytes(est, threads)
+        if limit > 0 and need > fraction * limit:
+            short.append((address, limit, threads, need))
+    if short:
+        address, limit, threads, need = short[0]
+        named = {k: v for k, v in est.terms.items() if k not in _NOT_ON_A_WORKER}
+        top = sorted(((v, k) for k, v in named.items() if v > 0), reverse=True)[:2]
+        reasons = "; ".join(f"{k} {format_bytes(SAFETY * threads * v)} (set by "
+                            f"{est.drivers[k]})" for v, k in top)
+        others = f" and {len(short) - 1} more" if len(short) > 1 else ""
+        raise SceneError(
+            f"{source}: the run does not fit in the Dask workers' memory: worker {address}"
+            f"{others} (of {len(workers)}) has a memory limit of {format_bytes(limit)}, and "
+            f"a worker may use {fraction:g} of it (Dask pauses a worker above that); each "
+            f"of its {threads} threads holds a simulation and a block of pulses: estimated "
+            f"{format_bytes(need)} per worker. Largest terms: {reasons}. Give the workers "
+            "more memory (dask worker --memory-limit) or fewer threads, use "
+            "--block-pulses, or reduce those fields")
+    return est
+
+
+def _dask_memory_fraction() -> float:
+    """Dask's pause threshold of a worker's memory (else terminate, else 1)."""
+    try:
+        import dask
+
+        import distributed  # noqa: F401 - loads the distributed.* defaults
+
+        for key in ("pause", "terminate"):
+            value = dask.config.get(f"distributed.worker.memory.{key}", False)
+            if value:
+                return float(value)
+    except ImportError:  # pragma: no cover - dask is a dependency
+        pass
+    return 1.0
+
+
+def focus_shape(raw, cfg) -> tuple[int, int]:
+    """(ny, nx) pixels ``seaecho image`` makes of the raw dataset ``raw`` with ``cfg``:
+    its extent (default the raw's sea tile or targets' box) over its pixel (default a
+    quarter of the range resolution), as ``ImageGrid.from_extent`` counts them."""
+    from .imaging.focus import default_extent
+
+    a = raw.attrs
+    bandwidth = float(a.get("waveform_bandwidth_hz", a.get("sampling_rate_hz", 1.0)))
+    pixel = cfg.pixel_m if cfg.pixel_m is not None else C0 / (8.0 * bandwidth)
+    extent = cfg.extent_m if cfg.extent_m is not None else default_extent(raw, bandwidth)
+    x0, x1, y0, y1 = (float(v) for v in extent)
+    return pixel_count(y1 - y0, pixel), pixel_count(x1 - x0, pixel)
+
+
+def image_estimate(raw, cfg, figures: bool = True) -> Estimate:
+    """Peak memory and time of ``seaecho image`` focusing the raw dataset ``raw`` with
+    ``cfg`` (an ``ImageConfig``): the process base, the raw's per-pulse arrays, its truth
+    and the image term of eq (M1), from the dataset's sizes and attributes only.
+
+    Parameters
+    ----------
+    raw : xarray.Dataset
+        The raw dataset, opened lazily (nothing is read but its attributes and the
+        coordinates the default extent needs).
+    cfg : seaecho.config.image.ImageConfig
+    figures : bool
+        The command draws the image's figures (and ``cfg.figures``).
+    """
+    n_p = int(raw.sizes.get("pulse", 0))
+    n_s = int(raw.sizes.get("fast_time", 0))
+    c = int(raw.sizes.get("channel", 0))
+    ny, nx = focus_shape(raw, cfg)
+    pixels = ny * nx
+    cells = int(raw.sizes.get("y_cell", 0)) * int(raw.sizes.get("x_cell", 0))
+    panels = IMAGE_PANELS if cfg.figures and figures else 0
+    terms = {"process": M0_TARGETS, "pulses": M_PULSE * n_p,
+             "truth": M_TRUTH_CELL * cells,
+             "image": image_term(pixels, c, n_p, n_s, cfg.upsample, panels)}
+    drivers = {"process": "(fixed)", "pulses": "the raw dataset's pulses",
+               "truth": "the raw dataset's sea grid",
+               "image": "[image].pixel_m and extent_m (--pixel-m, --extent: the pixels), "
+                        "the raw dataset's channels, [image].upsample, figures "
+                        "(--no-figures)"}
+    time_s = T_START["targets"] + T_BACKPROJECTION * pixels * n_p * c
+    return Estimate(SAFETY * sum(terms.values()), time_s, terms, drivers, n_s, 0, n_p, c,
+                    cells, pixels)
+
+
+def check_image_memory(raw, cfg, source: str, max_memory_gb: float | None = None,
+                       figures: bool = True) -> tuple[Estimate, str]:
+    """:func:`image_estimate` and its one-line description; :class:`SceneError` naming
+    the fields if the focusing cannot fit in the memory it may use (:func:`memory_limit`),
+    as :func:`check_memory` does for a run."""
+    from .imaging.focus import MAX_PIXELS
+
+    try:
+        est = image_estimate(raw, cfg, figures)
+    except ValueError as exc:  # no extent to default to
+        raise SceneError(f"{source}: {exc}") from None
+    if est.pixels > MAX_PIXELS:  # the focusing's own limit (ImageGrid.from_extent)
+        raise SceneError(
+            f"{source}: [image].pixel_m = {cfg.pixel_m!r}, extent_m = {cfg.extent_m!r}: "
+            f"{est.pixels} pixels, more than {MAX_PIXELS}; use a larger pixel or a "
+            "smaller extent (--pixel-m, --extent)")
+    ny, nx = focus_shape(raw, cfg)
+    if ny < 2 or nx < 2:  # as seaecho.preflight.image_problems: the measures need 2 x 2
+        raise SceneError(
+            f"{source}: [image].pixel_m = {cfg.pixel_m!r}, extent_m = {cfg.extent_m!r}: "
+            f"an image of {ny} x {nx} pixels; it needs at least 2 x 2 (a smaller pixel or "
+            "a larger extent: --pixel-m, --extent)")
+    limit, where = memory_limit(max_memory_gb)
+    line = describe(est, limit, where)
+    if not (math.isfinite(est.peak_bytes) and (limit is None or est.peak_bytes <= limit)):
+        reasons = "; ".join(f"{name} {format_bytes(SAFETY * est.terms[name])} (set by "
+                            f"{est.drivers[name]})" for name in est.largest_terms())
+        raise SceneError(
+            f"{source}: the image does not fit in memory: [image].pixel_m = "
+            f"{cfg.pixel_m!r}, extent_m = {cfg.extent_m!r}: {line}. Largest terms: "
+            f"{reasons}. Use larger pixels or a smaller extent, or raise the limit with "
+            f"--max-memory-gb or {ENV_LIMIT} if more memory is free")
+    return est, line
+
+
 __all__ = [
     "ENV_LIMIT",
     "SAFETY",
     "Estimate",
     "available_memory",
+    "check_image_memory",
     "check_memory",
+    "check_workers_memory",
     "describe",
     "estimate",
+    "focus_shape",
     "antenna_nodes",
     "gauss_markov_steps",
     "hull_sizes",
+    "image_estimate",
     "image_pixels",
+    "image_term",
     "image_shape",
     "nominal_positions",
     "nominal_segments",
     "perturbation_bound",
+    "pixel_count",
     "memory_limit",
     "window_size",
+    "worker_bytes",
 ]

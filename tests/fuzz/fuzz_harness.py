@@ -33,7 +33,8 @@ class Outcome:
     out: str
     err: str
     files: list[str]  #: what the command left in its folder besides the scene
-    finite: bool | None  #: every float/complex variable of the output finite (if written)
+    finite: bool | None  #: every float/complex variable of the output finite (if written),
+    #: and its image's (``[image]``) but at the undefined pixels (``seaecho.guards``)
 
 
 def scene_text(data: dict) -> str:
@@ -63,6 +64,14 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
             with xr.open_dataset(out_nc, engine="h5netcdf") as ds:
                 finite = all(bool(np.isfinite(v.values).all()) for v in ds.data_vars.values()
                              if v.dtype.kind in "fc")
+        img_nc = folder / "out_image.nc"
+        if img_nc.exists():  # [image]: no Inf, NaN only at its undefined pixels
+            import xarray as xr
+
+            from seaecho.guards import image_problems
+
+            with xr.open_dataset(img_nc, engine="h5netcdf") as ds:
+                finite = bool(finite) and not image_problems(ds.load())
         files = sorted(p.name for p in folder.iterdir() if p.name != "scene.toml")
         return Outcome(rc, o.getvalue(), e.getvalue(), files, finite)
 

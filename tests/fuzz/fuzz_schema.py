@@ -260,8 +260,12 @@ def _waveform(draw: Draw, d: dict, get: Get) -> dict:
         if b * t < 1.0:  # a chirp sweeps its band only if B T >= 1
             if 1.0 / t <= 1.0e10:
                 d["bandwidth_hz"] = 1.0 / t * draw(st.floats(1.0, 2.0))
+                while d["bandwidth_hz"] * t < 1.0:  # (1 / T) T may round below 1
+                    d["bandwidth_hz"] = math.nextafter(d["bandwidth_hz"], math.inf)
             else:
                 d["duration_s"] = min(1.0 / b * draw(st.floats(1.0, 2.0)), 1.0e-2)
+                while b * d["duration_s"] < 1.0 and d["duration_s"] < 1.0e-2:
+                    d["duration_s"] = math.nextafter(d["duration_s"], math.inf)
     else:
         d.pop("bandwidth_hz", None)
     return d
@@ -505,14 +509,31 @@ def scenes(runnable: bool = True) -> st.SearchStrategy[dict]:
         if "transmitter" not in d:
             d["transmitter"] = draw(section(PlatformConfig, ("transmitter",)))
         d = _scene(draw, d, lambda n: field_value(Scene, n))
-        return _with_subfacet_slopes(d)
+        return _with_image_noise_held(_with_subfacet_slopes(d))
 
     return build()
 
 
+def _with_image_noise_held(d: dict) -> dict:
+    """An [image] whose thermal noise its file can hold (the preflight refuses a
+    noise-equivalent RCS above ``MAX_IMAGE_NOISE_RCS``, e.g. at 5e-324 W): else 1 kW
+    and the default noise figure, else no thermal noise."""
+    from seaecho.preflight import MAX_IMAGE_NOISE_RCS, image_noise_rcs
+
+    if image_noise_rcs(parse_scene(d)) <= MAX_IMAGE_NOISE_RCS:
+        return d
+    d["radar"] = {**d["radar"], "transmit_power_w": 1.0e3}
+    d["radar"].pop("noise_figure_db", None)
+    if image_noise_rcs(parse_scene(d)) > MAX_IMAGE_NOISE_RCS:
+        d["radar"]["thermal_noise"] = False
+    return d
+
+
 def _with_subfacet_slopes(d: dict) -> dict:
     """A sea whose unresolved waves carry slope at the carrier (the builder refuses a
-    calm sea without sub-facet slopes): else a 5 m/s fully developed sea."""
+    calm sea without sub-facet slopes, and a grid that resolves every wave longer than
+    the two-scale split): else a 5 m/s fully developed sea on a grid of at least 0.5 m
+    (the split, 2 pi / k_cut, is at most 0.9 m from the carriers' 1 GHz up)."""
     if not d["radar"].get("sea_clutter", True):
         return d
     import warnings
@@ -525,6 +546,9 @@ def _with_subfacet_slopes(d: dict) -> dict:
             build_sea_model(parse_scene(d))
     except ValueError:
         sea = {k: v for k, v in d["sea"].items() if k not in ("fetch_m", "depth_m")}
+        sea["size_x_m"] = max(sea["size_x_m"], 0.5 * sea["nx"])
+        sea["size_y_m"] = max(sea.get("size_y_m", sea["size_x_m"]),
+                              0.5 * sea.get("ny", sea["nx"]))
         d["sea"] = {**sea, "wind_speed_m_s": 5.0, "spectrum": "elfouhaily"}
     return d
 

@@ -45,3 +45,25 @@ def test_interpolated_calibration_matches_the_direct_one():
     np.testing.assert_allclose(a / cal.area, 1.0, rtol=0.02)
     assert float(np.nanmedian(cal.area)) == pytest.approx(
         float(np.nanmedian(img["resolution_area"].values[valid])), rel=0.05)
+
+
+@pytest.mark.parametrize(("nx", "ny"), [(2, 100), (100, 2), (3, 70), (70, 70)])
+def test_node_interpolation_of_narrow_images(nx, ny):
+    # Found by the fuzzing suite: an image 2 pixels wide and 190 long (65 x 2 nodes) died
+    # in scipy's spline ("my > ky failed"): the degrees were given to the wrong axes. A
+    # spline of degree min(3, n - 1) per axis holds the polynomials of those degrees, so
+    # its interpolant of one is the polynomial itself (C. de Boor, A Practical Guide to
+    # Splines, Springer, 2001): the values between the nodes are the polynomial's
+    from seaecho.imaging.focus import ImageGrid, _interpolate
+
+    grid = ImageGrid(np.linspace(-3.0, 5.0, nx), np.linspace(-40.0, 0.0, ny))
+    nodes = grid.nodes()
+    dx, dy = min(3, nodes.x.size - 1), min(3, nodes.y.size - 1)
+
+    def f(x, y):
+        return (1.0 + 0.3 * x**dx + 0.2 * x) * (2.0 + 1e-4 * y**dy)
+
+    xx, yy = np.meshgrid(nodes.x, nodes.y)
+    out = _interpolate(nodes, f(xx, yy).ravel(), grid)
+    gx, gy = np.meshgrid(grid.x, grid.y)
+    np.testing.assert_allclose(out, f(gx, gy), rtol=1e-10)

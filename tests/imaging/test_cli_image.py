@@ -27,6 +27,7 @@ def test_image_writes_dataset_and_figures_reproducibly(raw, tmp_path, capsys):
     assert main(args) == 0
     printed = capsys.readouterr().out
     assert "wrote" in printed and "pixel-pulses/s" in printed
+    assert "estimated peak memory" in printed and "3136 image pixels" in printed
     for suffix in ("_rcs.png", "_pauli.png"):
         assert (tmp_path / f"img{suffix}").stat().st_size > 1000
     with xr.open_dataset(out, engine="h5netcdf") as img:
@@ -52,6 +53,9 @@ def test_image_writes_dataset_and_figures_reproducibly(raw, tmp_path, capsys):
     (["--pixel-m", "1e-4"], "more than"),
     (["--pixel-m", "-1"], "[image].pixel_m = -1.0"),
     (["--filter-size", "4"], "filter_size = 4: must be odd"),
+    # one pixel wide: the image measures died after the file was written (a traceback)
+    (["--extent", "0", "0.5", "0", "4", "--pixel-m", "0.5"], "8 x 1 pixels; it needs at "
+     "least 2 x 2"),
 ])
 def test_image_rejects_bad_options(raw, tmp_path, capsys, extra, message):
     out = tmp_path / "bad.nc"
@@ -59,6 +63,47 @@ def test_image_rejects_bad_options(raw, tmp_path, capsys, extra, message):
     err = capsys.readouterr().err
     assert message in err and "Traceback" not in err
     assert not out.exists() and list(tmp_path.iterdir()) == []
+
+
+def test_image_alone_refuses_what_cannot_fit_in_memory(raw, tmp_path, capsys):
+    # `seaecho image` runs the pixel-count memory estimate as `seaecho run` does: 0.002 m
+    # pixels over the targets' default box are 4000 x 4000 pixels (16 million, under the
+    # focusing's 4096^2), 13 GiB of maps and products: exit 2 naming the fields, no file
+    out = tmp_path / "big.nc"
+    args = ["image", raw, "-o", str(out), "-q", "--pixel-m", "0.002", "--extent", "-4", "4",
+            "-4", "4", "--max-memory-gb", "1"]
+    assert main(args) == 2
+    err = capsys.readouterr().err
+    assert "the image does not fit in memory: [image].pixel_m = 0.002" in err
+    assert "16000000 image pixels" in err and "--pixel-m, --extent" in err
+    assert "limit 0.931 GiB, --max-memory-gb" in err and "Traceback" not in err
+    assert list(tmp_path.iterdir()) == []
+    args[6] = "0.0019"  # 4211 x 4211: more than the focusing takes, whatever the memory
+    assert main(args[:-1] + ["1000"]) == 2
+    err = capsys.readouterr().err
+    assert "[image].pixel_m = 0.0019" in err and "17732521 pixels, more than 16777216" in err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_image_estimate_counts_the_pixels_the_focusing_makes(raw):
+    # Parity: the estimate's pixel count is ImageGrid.from_extent's, for a given extent and
+    # for the default one (the targets' box plus 20 range resolutions, a quarter of the
+    # range resolution per pixel)
+    from seaecho.api import image_config
+    from seaecho.imaging.focus import ImageGrid, RawData
+    from seaecho.resources import IMAGE_PANELS, image_estimate
+
+    with xr.open_dataset(raw, engine="h5netcdf") as ds:
+        rd = RawData(ds)
+        for fields in ({}, {"pixel_m": 0.3, "extent_m": (-5.0, 7.0, -2.0, 2.5)}):
+            cfg = image_config(ds, **fields)
+            pixel = cfg.pixel_m or 3e8 / (8 * rd.bandwidth)
+            grid = ImageGrid.from_extent(cfg.extent_m or rd.default_extent(), pixel)
+            est = image_estimate(ds, cfg, figures=True)
+            assert est.pixels == grid.shape[0] * grid.shape[1]
+            assert est.channels == 4 and est.n_pulses == 48
+            panels = IMAGE_PANELS if cfg.figures else 0
+            assert est.terms["image"] >= (120 + 160 * 4 + 60 * panels) * est.pixels
 
 
 def test_image_rejects_files_that_are_not_raw_datasets(raw, tmp_path, capsys):
@@ -131,3 +176,19 @@ def test_run_focuses_when_the_scene_has_an_image_section(tmp_path, capsys):
     assert "r_image.nc" in capsys.readouterr().out
     with xr.open_dataset(tmp_path / "r_image.nc", engine="h5netcdf") as img:
         assert img.attrs["azimuth_window"] == "hamming" and img.sizes["x"] == 16
+
+
+@pytest.mark.filterwarnings("ignore::seaecho.warnings.SamplingWarning")
+@pytest.mark.parametrize("backend", ["drjit", "numpy"])
+def test_a_processed_doppler_band_of_5e_324_hz_is_clean(raw, tmp_path, backend):
+    # Found by the fuzzing suite: 1 / B_a overflows to inf, and the Doppler offsets of
+    # eq (B4) with it (RuntimeWarnings from the window and the numpy kernel); the offsets
+    # are then outside the band: here no pulse is weighted, K = 0 and the image is NaN,
+    # undefined, at every pixel
+    from seaecho.guards import image_problems
+
+    out = tmp_path / "img.nc"
+    assert main(["image", raw, "-o", str(out), "-q", "--no-figures", "--backend", backend,
+                 "--pixel-m", "0.5", "--doppler-bandwidth-hz", "5e-324"]) == 0
+    with xr.open_dataset(out, engine="h5netcdf") as img:
+        assert image_problems(img.load()) == []

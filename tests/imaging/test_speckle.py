@@ -79,3 +79,18 @@ def test_refined_lee_smooths_flat_areas_and_keeps_edges():
     bias_lee = abs(np.median(out[0][:, col]) / np.median(out[0][:, 40]) - 1.0)
     bias_box = abs(np.median(box[:, col]) / np.median(box[:, 40]) - 1.0)
     assert bias_lee < 0.5 * bias_box
+
+
+def test_refined_lee_is_the_same_filter_at_any_scale():
+    # Eq (S1): b = (v - m^2 sigma_v^2) / (v (1 + sigma_v^2)) is unchanged when the
+    # intensities are scaled (v ~ c^2, m^2 ~ c^2), so filter(c I) = c filter(I) (Lee
+    # 1981). Intensities of 1e160 (a squared amplitude of 1e80) used to overflow the local
+    # variance E[I^2] - m^2 to Inf - Inf = NaN (found by the fuzzing suite via an
+    # infinite Pauli power); far below 1e-160 their squares underflowed to 0
+    rng = np.random.default_rng(2)
+    i = np.where(np.arange(32)[None, :] < 16, 1.0, 10.0) * rng.exponential(1.0, (32, 32))
+    ref = refined_lee(np.stack([i, 0.3 * i]))
+    for c in (1e160, 1e-200):
+        with np.errstate(all="raise"):
+            out = refined_lee(np.stack([c * i, 0.3 * c * i]))
+        np.testing.assert_allclose(out, c * ref, rtol=1e-12)

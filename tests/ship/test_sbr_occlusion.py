@@ -84,3 +84,20 @@ def test_transmitter_inside_the_hull_is_refused():
     v, f = canonical.sphere(1.0, 2)
     with pytest.raises(ValueError, match="bounding sphere"):
         trace_signature(TraceMesh.single(v, f), [0.5, 0, 0], [100.0, 0, 0], 10e9)
+
+
+def test_a_batch_of_no_rays_is_no_hits():
+    # Found by the fuzzing suite: when no ray of a batch hit at the first bounce, the
+    # second bounce asked Mitsuba to intersect empty arrays, and Dr.Jit aborted the whole
+    # process ("jit_var(r0): unknown variable!"), on the main thread as on a worker
+    from seaecho.tracing.sbr import _intersect, _mi_scene
+    from seaecho.tracing.variant import mitsuba_modules
+
+    _, mi, _ = mitsuba_modules()  # the process's variant, as the tracer takes it
+    keep: list = []
+    scene = _mi_scene(mi, np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0]]),
+                      np.array([[0, 1, 2]]), keep)
+    t, prim = _intersect(mi, scene, np.zeros((0, 3)), np.zeros((0, 3)))
+    assert t.shape == (0,) and prim.shape == (0,) and prim.dtype == np.int64
+    t, prim = _intersect(mi, scene, np.array([[0.2, 0.2, 1.0]]), np.array([[0, 0, -1.0]]))
+    assert t[0] == pytest.approx(1.0) and prim[0] == 0

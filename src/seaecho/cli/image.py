@@ -42,6 +42,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--backend", choices=("drjit", "numpy"), default="drjit",
                    help="backprojection kernel (default drjit)")
     p.add_argument("--no-figures", action="store_true", help="do not write PNG figures")
+    p.add_argument("--max-memory-gb", type=float, metavar="GB", help="refuse an image whose "
+                   "estimated peak memory exceeds this (default: what is available, or "
+                   "SEAECHO_MAX_MEMORY_GB)")
     p.add_argument("--quiet", "-q", action="store_true", help="no progress bar")
     p.set_defaults(func=run)
 
@@ -66,12 +69,14 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
 
     from ..api import figures as draw
     from ..api import image, image_measures
+    from ..guards import check_image
     from ..io.dataset import write_dataset_atomic
     from ..io.run import quiet_invalid_netcdf
 
     timings: dict = {}
     t = time.perf_counter()
     img = image(raw_path, cfg, backend=backend, progress=progress, timings=timings)
+    check_image(img, str(raw_path))  # Inf, or NaN at a defined pixel: exit 2, no file
     with quiet_invalid_netcdf():
         write_dataset_atomic(img, out)
     wrote = [out]
@@ -105,6 +110,14 @@ def run(args: argparse.Namespace) -> int:
     if out.resolve() == raw.resolve():
         raise UsageError(f"output {out} would overwrite the raw dataset")
     cfg = image_config(raw, **image_fields(args))
+    from ..api import open_dataset
+    from ..resources import check_image_memory
+    from . import check_memory_option
+
+    check_memory_option(args.max_memory_gb)
+    with open_dataset(raw) as ds:  # the pixels against the memory, before any is allocated
+        print(check_image_memory(ds, cfg, str(raw), args.max_memory_gb,
+                                 figures=not args.no_figures)[1])
     focus_to_files(raw, out, cfg, backend=args.backend, progress=not args.quiet,
                    figures=not args.no_figures)
     return 0

@@ -120,15 +120,22 @@ def run(args: argparse.Namespace) -> int:
         print(f"seaecho: interrupted; the blocks written so far are kept in "
               f"{part_path(out)}: continue with --resume", file=sys.stderr)
         return 130
+    wrote = [out]
     with ds:
         print(f"wrote {out} ({ds.sizes['pulse']} pulses x {ds.sizes['channel']} channels x "
               f"{ds.sizes['fast_time']} samples)")
         if not args.no_figures:
             for png in figures(ds, out.with_suffix("")):
+                wrote.append(png)
                 print(f"wrote {png}")
     if scene.image is not None:  # [image]: focus the raw data just written (seaecho image)
         from .image import focus_to_files
 
-        focus_to_files(out, out.with_name(out.stem + "_image.nc"), scene.image,
-                       progress=not args.quiet, figures=not args.no_figures)
+        try:
+            focus_to_files(out, out.with_name(out.stem + "_image.nc"), scene.image,
+                           progress=not args.quiet, figures=not args.no_figures)
+        except NonFiniteEchoError:  # the image guard: exit 2 leaves no file of this run
+            for path in wrote:
+                Path(path).unlink(missing_ok=True)
+            raise
     return 0

@@ -394,7 +394,8 @@ def backproject_numpy(pixels: ArrayLike, block: PulseBlock, carrier: float,
     step = max(1, max_elements // max(n_b, 1))
     for s in range(0, x.shape[0], step):  # tiles of pixels, each vectorised
         (xs,) = _pixel_pulse(x[s:s + step])
-        t = pulse_terms(xp, xs, pulse, par)
+        with np.errstate(over="ignore", invalid="ignore"):  # B_a of 5e-324 Hz: 1/B_a is
+            t = pulse_terms(xp, xs, pulse, par)  # inf, xi NaN or inf, outside the band
         wsum[0, s:s + step] = np.sum(t["w_band"], axis=1, dtype=np.float64)
         wsum[1, s:s + step] = np.sum(t["w"], axis=1, dtype=np.float64)
         base = (first + t["index"]) * stride

@@ -253,7 +253,8 @@ def calibration_at(points: ArrayLike, track: Track, tx_antenna, rx_antenna,
         xs = x[s:s + step]
         a = amplitude_factor(xs, track, tx_antenna, rx_antenna, transmit_power, lam)
         f = doppler(xs, track.tx, track.rx, track.tx_velocity, track.rx_velocity, lam)
-        w = window((f - fdc[None, :]) / window.bandwidth) * wp[None, :]
+        with np.errstate(over="ignore"):  # outside any band: W(+-inf) = 0
+            w = window((f - fdc[None, :]) / window.bandwidth) * wp[None, :]
         if delay_window is not None:
             tau = delays(xs, track.tx, track.rx, track.rx_velocity)
             w = w * ((tau >= delay_window[0]) & (tau <= delay_window[1]))
@@ -264,9 +265,16 @@ def calibration_at(points: ArrayLike, track: Track, tx_antenna, rx_antenna,
         g = delay_gradient(xs, track)
         g_dot = np.gradient(g, axis=1)
         jac = carrier * np.abs(g[..., 0] * g_dot[..., 1] - g[..., 1] * g_dot[..., 0])
+        # Eq (K3) is the same for A_p over any constant: over 2^e near each point's
+        # largest, its squares neither underflow (a 5e-324 W transmitter's A_p^2 is
+        # 1e-340) nor overflow; a power of two keeps the bytes of ordinary values
+        with np.errstate(divide="ignore"):
+            e = np.frexp(np.max(np.abs(w * a), axis=1, initial=0.0))[1]
+        wa = w * a * np.ldexp(1.0, -e)[:, None]
+        kn = np.sum(wa, axis=1)
         with np.errstate(divide="ignore", invalid="ignore"):
-            # Eq (K3); pulses of zero weight do not count even where jac = 0
-            terms = np.where(w > 0, (w * a) ** 2 / jac, 0.0)
-            area[s:s + step] = pulse_energy * np.sum(terms, axis=1) / (k * k)
+            # pulses of zero weight do not count even where jac = 0
+            terms = np.where(w > 0, wa**2 / jac, 0.0)
+            area[s:s + step] = pulse_energy * np.sum(terms, axis=1) / (kn * kn)
     area[~np.isfinite(area) | (area <= 0)] = np.nan
     return CalibrationMaps(gain, area)

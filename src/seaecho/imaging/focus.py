@@ -39,7 +39,7 @@ from .backprojection import PulseBlock, backproject, upsample
 from .calibration import Track, calibration_at, compressed_pulse_energy
 from .windows import AzimuthWindow
 
-__all__ = ["ImageGrid", "RawData", "focus", "focus_points"]
+__all__ = ["ImageGrid", "RawData", "default_extent", "focus", "focus_points"]
 
 #: Coverage (K / max K, amplitude) below which a pixel is flagged invalid (-20 dB).
 MIN_COVERAGE = 0.1
@@ -181,18 +181,45 @@ class RawData:
 
     def default_extent(self) -> tuple[float, float, float, float]:
         """The sea tile, or the targets' bounding box plus 20 range resolutions."""
-        ds = self.ds
-        if "x_cell" in ds and int(ds.attrs.get("sea_clutter", 1)):
-            x, y = ds["x"].values, ds["y"].values
-            dx, dy = x[1] - x[0], y[1] - y[0]
-            return (float(x[0]), float(x[-1] + dx), float(y[0]), float(y[-1] + dy))
-        if "target_position" in ds:
-            p = ds["target_position"].values
-            m = 20.0 * C0 / (2.0 * self.bandwidth)
-            return (float(p[:, 0].min() - m), float(p[:, 0].max() + m),
-                    float(p[:, 1].min() - m), float(p[:, 1].max() + m))
-        raise ValueError("the dataset has neither a sea tile nor targets: give the image "
-                         "extent")
+        return default_extent(self.ds, self.bandwidth)
+
+
+def default_extent(ds, bandwidth: float) -> tuple[float, float, float, float]:
+    """The default image extent of a raw dataset [m]: its sea tile, or its targets'
+    bounding box plus 20 range resolutions c / (2 B), B = ``bandwidth`` [Hz]."""
+    if "x_cell" in ds and int(ds.attrs.get("sea_clutter", 1)):
+        x, y = ds["x"].values, ds["y"].values
+        dx, dy = x[1] - x[0], y[1] - y[0]
+        return (float(x[0]), float(x[-1] + dx), float(y[0]), float(y[-1] + dy))
+    if "target_position" in ds:
+        p = ds["target_position"].values
+        m = 20.0 * C0 / (2.0 * bandwidth)
+        return (float(p[:, 0].min() - m), float(p[:, 0].max() + m),
+                float(p[:, 1].min() - m), float(p[:, 1].max() + m))
+    raise ValueError("the dataset has neither a sea tile nor targets: give the image "
+                     "extent")
+
+
+def _single(a) -> NDArray:
+    """``a`` in single precision (complex64 if complex, else float32), as the image file
+    holds it: a value beyond its range is +-Inf, which the image's finite-output guard
+    (``seaecho.guards.check_image``) reports, so no overflow warning here."""
+    a = np.asarray(a)
+    with np.errstate(over="ignore"):
+        return a.astype(np.complex64 if np.iscomplexobj(a) else np.float32)
+
+
+def _power_of_two_scale(y: NDArray) -> float:
+    """2^e near the largest |y| (1 if none is finite and > 0): the samples over it are of
+    order 1 in the kernels' float32, whatever the transmit power (1e-170 sqrt(W) echoes
+    of a 5e-324 W transmitter flushed to 0 in float32, 1e20 ones would overflow); a power
+    of two divides and multiplies back exactly, so data of ordinary magnitude keep their
+    bytes."""
+    with np.errstate(invalid="ignore", over="ignore"):
+        peak = float(np.max(np.abs(y), initial=0.0))
+    if not 0.0 < peak < np.inf:
+        return 1.0
+    return float(2.0 ** np.frexp(peak)[1])
 
 
 def _interpolate(nodes: ImageGrid, values: NDArray, grid: ImageGrid) -> NDArray:
@@ -205,7 +232,8 @@ def _interpolate(nodes: ImageGrid, values: NDArray, grid: ImageGrid) -> NDArray:
     ky, kx = min(3, nodes.y.size - 1), min(3, nodes.x.size - 1)
     if kx < 1 or ky < 1:
         return np.broadcast_to(v, grid.shape).copy()
-    spline = RectBivariateSpline(nodes.y, nodes.x, v, kx=kx, ky=ky)
+    # scipy's kx is the degree along its first axis, here y
+    spline = RectBivariateSpline(nodes.y, nodes.x, v, kx=ky, ky=kx)
     return spline(grid.y, grid.x)
 
 
@@ -287,7 +315,8 @@ class _Processor:
                 t = time.perf_counter()
                 y = raw.compressed(start, stop, cfg.range_weighting, cfg.taylor_nbar,
                                    cfg.taylor_sidelobe_db)
-                up = upsample(y, cfg.upsample)
+                scale = _power_of_two_scale(y)  # eq B2 is linear in the samples
+                up = upsample(y / scale, cfg.upsample)
                 t_read += time.perf_counter() - t
                 sl = slice(start, stop)
                 block = PulseBlock(up, raw.t0, rate, track.tx[sl], track.rx[sl],
@@ -295,7 +324,7 @@ class _Processor:
                                    np.ones(stop - start))
                 t = time.perf_counter()
                 img, w = backproject(points, block, raw.carrier, self.window, self.backend)
-                acc += img
+                acc += img * scale
                 wsum += w
                 t_bp += time.perf_counter() - t
                 bar.update(stop - start)
@@ -389,7 +418,10 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
                       "one pulse): no azimuth resolution, so sigma0 (eq K3) is undefined; "
                       "the calibrated image (RCS) is still given", SamplingWarning,
                       stacklevel=3)
-    q_nodes = np.nan_to_num(cal.area * cal.gain**2, nan=0.0)  # K^2 A_eff, smooth
+    # K^2 A_eff (smooth), over g0^2, g0 ~ the largest K: a 5e-324 W transmitter's K^2
+    # (1e-340) underflowed to 0, and sigma0 with it
+    g0 = _power_of_two_scale(cal.gain)
+    q_nodes = np.nan_to_num(cal.area * (cal.gain / g0) ** 2, nan=0.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         inside = np.where(wsum[0] > 0, wsum[1] / wsum[0], 0.0).reshape(grid.shape)
     gain = np.maximum(_interpolate(nodes, cal.gain, grid), 0.0) * inside
@@ -403,8 +435,11 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
     img = acc.reshape((n_c,) + grid.shape)
     with np.errstate(divide="ignore", invalid="ignore"):
         s = np.where(gain > 0, img / gain, np.nan + 0j)
-        sigma0 = np.where(q > 0, np.abs(img) ** 2 / q, np.nan)
-        area = np.where(gain > 0, q / gain**2, np.nan)
+        # ratios before squares: a finite sigma0 or A_eff does not overflow on the way
+        sigma0 = np.where(q > 0, (np.abs(img) / g0 / np.sqrt(q)) ** 2, np.nan)
+        # A_eff is undefined (NaN) where sigma0 is: no pulse weighted, or an aperture that
+        # does not turn (q = 0); a 0 here made the Pauli powers / A_eff infinite
+        area = np.where((gain > 0) & (q > 0), (np.sqrt(q) / (gain / g0)) ** 2, np.nan)
     coords = {
         "channel": ("channel", np.array(raw.channels)),
         "x": ("x", grid.x, {"units": "m", "long_name": "pixel centre, east"}),
@@ -413,20 +448,20 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         "polarisation": ("polarisation", np.array(["HH", "HV", "VH", "VV"])),
     }
     data = {
-        "image": (("channel", "y", "x"), s.astype(np.complex64),
+        "image": (("channel", "y", "x"), _single(s),
                   {"units": "m", "long_name": "calibrated complex image s = I / K: |s|^2 "
                    "is the RCS sigma_mn at a point target's peak"}),
-        "sigma0": (("channel", "y", "x"), sigma0.astype(np.float32),
+        "sigma0": (("channel", "y", "x"), _single(sigma0),
                    {"units": "m2 m-2", "long_name": "|I|^2 / (K^2 A_eff): the mean over a "
                     "distributed target is its sigma0"}),
-        "gain": (("y", "x"), gain.astype(np.float32),
+        "gain": (("y", "x"), _single(gain),
                  {"units": "sqrt(W) m-1", "long_name": "K = sum_p w_p A_p (eq K2)"}),
-        "resolution_area": (("y", "x"), area.astype(np.float32),
+        "resolution_area": (("y", "x"), _single(area),
                             {"units": "m2", "long_name": "A_eff (eq K3): integral of the "
                              "squared normalised impulse response"}),
-        "coverage": (("y", "x"), coverage.astype(np.float32),
+        "coverage": (("y", "x"), _single(coverage),
                      {"units": "1", "long_name": "K / max K"}),
-        "inside_window": (("y", "x"), inside.astype(np.float32),
+        "inside_window": (("y", "x"), _single(inside),
                           {"units": "1", "long_name": "fraction of the weight sum_p w_p "
                            "whose echo is inside the receive window"}),
         "valid": (("y", "x"), valid.astype(np.uint8),
@@ -439,20 +474,20 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         with np.errstate(divide="ignore", invalid="ignore"):
             pauli = pauli / area[None]
         coords["component"] = ("component", np.array(PAULI_NAMES))
-        data["pauli"] = (("component", "y", "x"), pauli.astype(np.float32),
+        data["pauli"] = (("component", "y", "x"), _single(pauli),
                          {"units": "m2 m-2", "long_name": "Pauli powers (|HH-VV|^2, "
                           "|HV+VH|^2, |HH+VV|^2) / 2 in sigma0 units"})
     if cfg.speckle_filter != "none":
         stack = np.nan_to_num(sigma0)
         data["sigma0_filtered"] = (
             ("channel", "y", "x"),
-            speckle_filter(stack, cfg.speckle_filter, cfg.filter_size).astype(np.float32),
+            _single(speckle_filter(stack, cfg.speckle_filter, cfg.filter_size)),
             {"units": "m2 m-2", "long_name": f"sigma0, {cfg.speckle_filter} filter"})
         if pauli is not None:
             data["pauli_filtered"] = (
                 ("component", "y", "x"),
-                speckle_filter(np.nan_to_num(pauli), cfg.speckle_filter,
-                               cfg.filter_size).astype(np.float32),
+                _single(speckle_filter(np.nan_to_num(pauli), cfg.speckle_filter,
+                                       cfg.filter_size)),
                 {"units": "m2 m-2", "long_name": f"Pauli powers, {cfg.speckle_filter} "
                  "filter"})
     if cfg.looks != (1, 1):
@@ -462,8 +497,7 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         coords["x_look"] = ("x_look", multilook(grid.x[None, :], (1, lx))[0],
                             {"units": "m", "long_name": "centre of the look block"})
         data["sigma0_multilook"] = (("channel", "y_look", "x_look"),
-                                    multilook(np.nan_to_num(sigma0), cfg.looks)
-                                    .astype(np.float32),
+                                    _single(multilook(np.nan_to_num(sigma0), cfg.looks)),
                                     {"units": "m2 m-2", "long_name": f"sigma0, {ly} x {lx} "
                                      "looks (y, x)"})
     truth, truth_attrs = truth_on_grid(raw.ds, grid.x, grid.y, raw.channels)

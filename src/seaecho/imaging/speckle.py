@@ -172,6 +172,11 @@ def refined_lee(intensities: ArrayLike, looks: float = 1.0) -> NDArray[np.float6
         a = a[None]
     if looks <= 0:
         raise ValueError(f"looks = {looks}: must be > 0")
+    # Eq (S1) is the same for intensities of any scale (b is homogeneous of degree 0):
+    # the statistics of a / max|a| cannot overflow in their squares, whatever a's unit
+    scale = float(np.max(np.abs(a), initial=0.0, where=np.isfinite(a)))
+    scale = scale if 0.0 < scale < np.inf else 1.0
+    a = a / scale
     span = a.sum(axis=0)
     # Means of the nine 3 x 3 sub-windows of each 7 x 7 window (offsets -2, 0, +2)
     m3 = uniform_filter(span, size=3, mode="reflect")
@@ -217,7 +222,7 @@ def refined_lee(intensities: ArrayLike, looks: float = 1.0) -> NDArray[np.float6
     with np.errstate(divide="ignore", invalid="ignore"):
         b = (var_span - mean_span**2 * sv2) / (var_span * (1.0 + sv2))
     b = np.clip(np.nan_to_num(b, nan=0.0, posinf=0.0, neginf=0.0), 0.0, 1.0)
-    out = means + b[None] * (a - means)
+    out = (means + b[None] * (a - means)) * scale
     return out[0] if single else out
 
 

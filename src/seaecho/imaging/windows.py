@@ -125,8 +125,10 @@ class AzimuthWindow:
     def __call__(self, xi: ArrayLike) -> NDArray[np.float64]:
         """W(xi) of eq (W1), zero for |xi| > 1/2 [-]."""
         xi = np.asarray(xi, dtype=float)
+        inside = np.abs(xi) <= 0.5
+        xi = np.where(inside, xi, 0.0)  # (an infinite offset, B_a of 5e-324 Hz, is outside)
         c = self.normalised
         w = np.full(xi.shape, c[0])
         for m in range(1, c.size):
             w += c[m] * np.cos(2.0 * np.pi * m * xi)
-        return np.where(np.abs(xi) <= 0.5, w, 0.0)
+        return np.where(inside, w, 0.0)

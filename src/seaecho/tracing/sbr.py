@@ -144,8 +144,10 @@ _REVERSE_PATH = np.array([0, 2, 1, 3], dtype=np.int64)
 _EPS0 = 1.0 / (1.25663706212e-6 * C0**2)
 #: Worker threads of a trace (batches of rays in parallel; the result does not depend
 #: on it). One by default: with several, a scene of the fuzzing suite aborted the process
-#: inside Mitsuba's ray intersection on a worker thread (Dr.Jit LLVM, not understood
-#: yet), so threads are opt-in through the environment variable ``SEAECHO_SBR_THREADS``.
+#: inside Mitsuba's ray intersection on a worker thread (Dr.Jit LLVM), so threads are
+#: opt-in through the environment variable ``SEAECHO_SBR_THREADS``. (An intersection of
+#: empty arrays, now never made, aborted it on the main thread too; that it was the
+#: worker threads' abort is likely, not verified.)
 THREADS = max(1, int(os.environ.get("SEAECHO_SBR_THREADS", 1)))
 
 
@@ -392,6 +394,8 @@ def _mi_scene(mi, vertices: NDArray, faces: NDArray, keep: list):
 def _intersect(mi, scene, o: NDArray, d: NDArray) -> tuple[NDArray, NDArray]:
     """Distance [m] (inf on a miss) and triangle index of each ray's first hit (the
     index is meaningless on a miss)."""
+    if o.shape[0] == 0:  # Dr.Jit aborts the process on a ray of empty arrays
+        return np.zeros(0), np.zeros(0, dtype=np.int64)
     import drjit as dr
 
     cols = [aligned(o[:, k], np.float32) for k in range(3)]
