@@ -287,14 +287,17 @@ def build_sea_model(scene, frequency: float | None = None,
 
 def _scene_bragg_wavenumber(scene, k: float) -> float:
     """Mean-plane Bragg wavenumber at the tile centre at the first pulse [rad/m]
-    (``k |(n_s - n_i)_h|``; 2 k sin 45 deg without a transmitter)."""
+    (``k |(n_s - n_i)_h|``; 2 k sin 45 deg without a transmitter, or with a platform at
+    the tile centre)."""
     if scene.transmitter is None:
         return float(2.0 * k * np.sin(np.pi / 4))
     tx, rx = _platforms(scene)
     t0 = scene.radar.start_time_s if scene.radar is not None else 0.0
     p_tx, p_rx = tx.state(t0).position, rx.state(t0).position
-    n_i = -p_tx / np.linalg.norm(p_tx)
-    n_s = p_rx / np.linalg.norm(p_rx)
+    r_tx, r_rx = np.linalg.norm(p_tx), np.linalg.norm(p_rx)
+    if not (r_tx > 0.0 and r_rx > 0.0):  # a platform at the tile centre (the preflight
+        return float(2.0 * k * np.sin(np.pi / 4))  # refuses it): no direction to it
+    n_i, n_s = -p_tx / r_tx, p_rx / r_rx
     return float(k * np.hypot(*(n_s - n_i)[:2]))
 
 

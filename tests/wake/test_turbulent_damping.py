@@ -7,6 +7,7 @@ doi:10.1109/RADAR.2006.1631862.
 """
 
 import tomllib
+import warnings
 
 import numpy as np
 import pytest
@@ -177,6 +178,23 @@ def test_builder_sets_the_scene_bragg_wavenumber_and_film():
     assert ship.bragg_wavenumber is None
     assert ship.turbulent_wake_film_elasticity == pytest.approx(0.025)
     assert ship.turbulent_wake_film_contrast_db == -4.0
+
+
+def test_scene_bragg_wavenumber_with_a_platform_at_the_tile_centre():
+    """A transmitter at the tile centre (which the preflight refuses) has no direction to
+    it: the builder falls back to 2 k sin 45 deg instead of dividing 0 by 0 (a
+    RuntimeWarning found by the fuzzing suite's geometry mutations)."""
+    from seaecho.build import _scene_bragg_wavenumber
+
+    with open(SIM2, "rb") as f:
+        data = tomllib.load(f)
+    data["transmitter"]["position_m"] = [0.0, 0.0, 0.0]
+    data["transmitter"].pop("velocity_m_s", None)
+    k = 2.0 * np.pi * 10.0e9 / C0
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        k_b = _scene_bragg_wavenumber(parse_scene(data), k)
+    assert k_b == pytest.approx(2.0 * k * np.sin(np.pi / 4))
 
 
 def test_simulated_wake_to_sea_contrast_through_the_facet_model():
