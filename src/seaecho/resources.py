@@ -57,6 +57,7 @@ from scipy.fft import next_fast_len
 
 from .config import SceneError
 from .constants import C0
+from .geometry.frames import tile_outline
 
 MiB = 1024.0**2
 GiB = 1024.0**3
@@ -221,13 +222,7 @@ def window_size(scene) -> tuple[int, int, int]:
         start, end = r.window_start_m, r.window_end_m
     else:
         lx, ly = scene.sea.size_m
-        s = np.linspace(-0.5, 0.5, 65)
-        edge = np.concatenate([np.stack([s * lx, np.full_like(s, -0.5 * ly)], -1),
-                               np.stack([s * lx, np.full_like(s, 0.5 * ly)], -1),
-                               np.stack([np.full_like(s, -0.5 * lx), s * ly], -1),
-                               np.stack([np.full_like(s, 0.5 * lx), s * ly], -1),
-                               [[0.0, 0.0]]])
-        points = np.concatenate([edge, np.zeros((edge.shape[0], 1))], axis=1)
+        points = tile_outline(lx, ly)
         rx_cfg = scene.receiver or scene.transmitter
         slack = 0.5 * (perturbation_bound(scene.transmitter) + perturbation_bound(rx_cfg))
         ranges = []
@@ -608,14 +603,21 @@ def check_memory(scene, source: str, max_memory_gb: float | None = None,
     est = estimate(scene, figures=figures, **kw)
     limit, where = memory_limit(max_memory_gb)
     line = describe(est, limit, where)
-    if not (math.isfinite(est.peak_bytes) and (limit is None or est.peak_bytes <= limit)):
-        reasons = "; ".join(f"{name} {format_bytes(SAFETY * est.terms[name])} (set by "
-                            f"{est.drivers[name]})" for name in est.largest_terms())
-        raise SceneError(
-            f"{source}: the run does not fit in memory: {line}. Largest terms: {reasons}. "
-            f"Reduce them, or raise the limit with --max-memory-gb or {ENV_LIMIT} if "
-            "more memory is free")
+    _refuse_over_limit(est, limit, f"{source}: the run does not fit in memory: {line}",
+                       "Reduce them")
     return est, line
+
+
+def _refuse_over_limit(est: Estimate, limit: float | None, what: str, advice: str) -> None:
+    """:class:`SceneError` naming the largest terms and their fields if ``est`` is not
+    finite or exceeds ``limit`` [B]; ``what`` opens the message, ``advice`` says what to
+    change before the limit's own advice."""
+    if math.isfinite(est.peak_bytes) and (limit is None or est.peak_bytes <= limit):
+        return
+    reasons = "; ".join(f"{name} {format_bytes(SAFETY * est.terms[name])} (set by "
+                        f"{est.drivers[name]})" for name in est.largest_terms())
+    raise SceneError(f"{what}. Largest terms: {reasons}. {advice}, or raise the limit with "
+                     f"--max-memory-gb or {ENV_LIMIT} if more memory is free")
 
 
 def worker_bytes(est: Estimate, threads: int = 1) -> float:
@@ -780,14 +782,9 @@ def check_image_memory(raw, cfg, source: str, max_memory_gb: float | None = None
             "a larger extent: --pixel-m, --extent)")
     limit, where = memory_limit(max_memory_gb)
     line = describe(est, limit, where)
-    if not (math.isfinite(est.peak_bytes) and (limit is None or est.peak_bytes <= limit)):
-        reasons = "; ".join(f"{name} {format_bytes(SAFETY * est.terms[name])} (set by "
-                            f"{est.drivers[name]})" for name in est.largest_terms())
-        raise SceneError(
-            f"{source}: the image does not fit in memory: [image].pixel_m = "
-            f"{cfg.pixel_m!r}, extent_m = {cfg.extent_m!r}: {line}. Largest terms: "
-            f"{reasons}. Use larger pixels or a smaller extent, or raise the limit with "
-            f"--max-memory-gb or {ENV_LIMIT} if more memory is free")
+    _refuse_over_limit(est, limit, f"{source}: the image does not fit in memory: "
+                       f"[image].pixel_m = {cfg.pixel_m!r}, extent_m = {cfg.extent_m!r}: "
+                       f"{line}", "Use larger pixels or a smaller extent")
     return est, line
 
 

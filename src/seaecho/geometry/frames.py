@@ -502,6 +502,32 @@ def beta_angle(n_i: ArrayLike, n_s: ArrayLike, normal: ArrayLike = Z_HAT) -> NDA
     return np.arccos(np.clip(cos_beta(NUMPY, vi, vs, nn), -1.0, 1.0))
 
 
+def tile_outline(size_x: float, size_y: float, n_edge: int = 65) -> NDArray[np.float64]:
+    """Points on the edges of a sea tile centred on the origin, and its centre [m].
+
+    Parameters
+    ----------
+    size_x, size_y : float
+        Tile size along x (east) and y (north) [m].
+    n_edge : int
+        Points per edge, corners included.
+
+    Returns
+    -------
+    ndarray, shape (4 n_edge + 1, 3)
+        The four edges (z = 0), then the centre: the points whose ranges bound the receive
+        window of a tile seen from any platform.
+    """
+    s = np.linspace(-0.5, 0.5, n_edge)
+    lx, ly = size_x, size_y
+    edge = np.concatenate([np.stack([s * lx, np.full_like(s, -0.5 * ly)], -1),
+                           np.stack([s * lx, np.full_like(s, 0.5 * ly)], -1),
+                           np.stack([np.full_like(s, -0.5 * lx), s * ly], -1),
+                           np.stack([np.full_like(s, 0.5 * lx), s * ly], -1),
+                           [[0.0, 0.0]]])
+    return np.concatenate([edge, np.zeros((edge.shape[0], 1))], axis=1)
+
+
 __all__ = [
     "DEGENERATE",
     "X_HAT",
@@ -511,6 +537,7 @@ __all__ = [
     "basis_rotation",
     "beta_angle",
     "bistatic_angles",
+    "tile_outline",
     "cos_beta",
     "directions_from_angles",
     "fsa_basis",

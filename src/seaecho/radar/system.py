@@ -29,6 +29,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..constants import C0
+from ..geometry.frames import tile_outline
 from ..rng import generator
 from .echo import ReceiveWindow, accumulate, accumulate_cuda
 from .equation import noise_power, thermal_noise
@@ -198,13 +199,7 @@ class RadarSystem:
         m = self.model
         lx, ly = m.tile_size if m.tile_size is not None else (0.0, 0.0)
         clutter = m.sea_clutter and m.tile_size is not None
-        s = np.linspace(-0.5, 0.5, 65)
-        edge = np.concatenate([np.stack([s * lx, np.full_like(s, -0.5 * ly)], -1),
-                               np.stack([s * lx, np.full_like(s, 0.5 * ly)], -1),
-                               np.stack([np.full_like(s, -0.5 * lx), s * ly], -1),
-                               np.stack([np.full_like(s, 0.5 * lx), s * ly], -1),
-                               [[0.0, 0.0]]])
-        points = np.concatenate([edge, np.zeros((edge.shape[0], 1))], axis=1)
+        points = tile_outline(lx, ly)
         ranges = []
         for pulse in (0, self.n_pulses - 1):
             t = float(self.emission_time(pulse))
