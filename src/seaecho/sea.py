@@ -80,6 +80,14 @@ def surface_kinematics(surface: SeaSurface, t: float) -> SurfaceKinematics:
     return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc)
 
 
+def vertical_acceleration(surface: SeaSurface, t: float) -> NDArray[np.float64]:
+    """The particles' vertical acceleration a_z = -omega^2 z of the wind sea at ``t``
+    [m/s^2], shape (ny, nx): ``surface_kinematics(surface, t).acceleration[..., 2]``, bit
+    for bit, by one inverse FFT instead of five (Lamb 1932, art. 228-229)."""
+    plus, minus = surface._travelling(t)
+    return surface._irfft(-surface._omega ** 2 * (plus + minus))
+
+
 #: Grids with at least this many nodes compute the ship's wake on a second thread [-].
 THREAD_MIN_NODES = 128 * 128
 
@@ -150,6 +158,11 @@ class Sea:
         (:func:`surface_kinematics`)."""
         return surface_kinematics(self.surface, t)
 
+    def vertical_acceleration(self, t: float = 0.0) -> NDArray[np.float64]:
+        """Vertical particle acceleration of the wind sea at ``t`` [m/s^2]
+        (:func:`vertical_acceleration`)."""
+        return vertical_acceleration(self.surface, t)
+
     def _ship_fields(self, t: float):
         """The Kelvin wake's fields (or None) and the turbulent-wake mask (or None)."""
         w = None if self._wake is None else self._wake.fields(self.x, self.y, t)
@@ -192,4 +205,5 @@ class Sea:
         )
 
 
-__all__ = ["THREAD_MIN_NODES", "Sea", "SurfaceKinematics", "SurfaceState", "surface_kinematics"]
+__all__ = ["THREAD_MIN_NODES", "Sea", "SurfaceKinematics", "SurfaceState", "surface_kinematics",
+           "vertical_acceleration"]

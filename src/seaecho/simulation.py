@@ -323,7 +323,7 @@ class Simulation:
         """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
 
         Downward acceleration of the wind sea at the state's time (linear kinematics,
-        :meth:`seaecho.sea.Sea.kinematics`) averaged over each facet's vertices; the
+        :meth:`seaecho.sea.Sea.vertical_acceleration`) averaged over each facet's vertices; the
         facets of largest value cover the fraction q of KHCC03
         (:func:`seaecho.scattering.breaking.breaking_placement`).
         """
@@ -331,7 +331,7 @@ class Simulation:
         from .scattering.breaking import breaking_placement
 
         stats = self.sea_model.breaking
-        acc = to_facets(self.sea.kinematics(state.t).acceleration[..., 2]).reshape(-1)
+        acc = to_facets(self.sea.vertical_acceleration(state.t)).reshape(-1)
         area = self.engine.geometry(state)[1]
         return breaking_placement(-acc, area, stats.q)
 

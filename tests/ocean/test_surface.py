@@ -120,10 +120,18 @@ def test_single_mode_moves_at_phase_speed():
     assert c == pytest.approx(omega / k, rel=1e-6)
 
 
-def test_slopes_and_vertical_velocity_are_derivatives():
-    """Spectral slopes equal finite differences of z; w = dz/dt equals (z(t+h)-z(t-h))/2h."""
+#: Round-off of the derived fields relative to their largest spectral component: float64,
+#: and float32 (an FFT of 2^16 points rounds at ~1e-7 of the field; module docstring).
+ROUND_OFF = {"double": 1e-9, "single": 2e-6}
+
+
+@pytest.mark.parametrize("precision", ["double", "single"])
+def test_slopes_and_vertical_velocity_are_derivatives(precision):
+    """Spectral slopes equal finite differences of z; w = dz/dt equals (z(t+h)-z(t-h))/2h,
+    to the round-off of the precision the derived fields are synthesised in."""
     spec = DirectionalSpectrum("pierson-moskowitz", "longuet-higgins", u19_5=5.0)
-    surf = _surface(spec, (64.0, 64.0), (256, 256))
+    surf = _surface(spec, (64.0, 64.0), (256, 256), precision=precision)
+    tol = ROUND_OFF[precision]
     f = surf.fields(2.0)
     z = f.elevation
     dzdx = (np.roll(z, -1, axis=1) - np.roll(z, 1, axis=1)) / (2 * surf.dx)
@@ -132,25 +140,43 @@ def test_slopes_and_vertical_velocity_are_derivatives():
     kx = 2 * np.pi * np.fft.fftfreq(z.shape[1], surf.dx)[None, :]
     factor = np.sinc(kx * surf.dx / np.pi)
     np.testing.assert_allclose(np.fft.fft2(dzdx), np.fft.fft2(f.slope_x) * factor,
-                               atol=1e-9 * np.abs(np.fft.fft2(dzdx)).max())
+                               atol=tol * np.abs(np.fft.fft2(dzdx)).max())
     dy = (np.roll(z, -1, axis=0) - np.roll(z, 1, axis=0)) / (2 * surf.dy)
     ky = 2 * np.pi * np.fft.fftfreq(z.shape[0], surf.dy)[:, None]
     factor_y = np.sinc(ky * surf.dy / np.pi)
     np.testing.assert_allclose(np.fft.fft2(dy), np.fft.fft2(f.slope_y) * factor_y,
-                               atol=1e-9 * np.abs(np.fft.fft2(dy)).max())
+                               atol=tol * np.abs(np.fft.fft2(dy)).max())
     h = 1e-4
     dzdt = (surf.elevation(2.0 + h) - surf.elevation(2.0 - h)) / (2 * h)
     np.testing.assert_allclose(f.velocity[..., 2], dzdt, atol=1e-6 * np.abs(dzdt).max() + 1e-9)
 
 
-def test_horizontal_orbital_velocity_deep_water():
+def test_single_precision_fields_match_double():
+    """Parity: the float32 synthesis of the slopes and velocities equals the float64 one
+    to float32 round-off (1e-6 of each field's largest value); the elevation is float64 in
+    both, bit for bit; every field is returned as float64."""
+    spec = DirectionalSpectrum("elfouhaily", "elfouhaily", u19_5=9.0)
+    a = _surface(spec, (128.0, 128.0), (256, 256), seed=5, precision="single").fields(3.0)
+    b = _surface(spec, (128.0, 128.0), (256, 256), seed=5, precision="double").fields(3.0)
+    assert a.elevation.tobytes() == b.elevation.tobytes()
+    for x, y in [(a.slope_x, b.slope_x), (a.slope_y, b.slope_y)] + [
+            (a.velocity[..., i], b.velocity[..., i]) for i in range(3)]:
+        assert x.dtype == np.float64 and x.shape == y.shape
+        assert 0 < np.abs(x - y).max() < 1e-6 * np.abs(y).max()
+    with pytest.raises(ValueError, match="precision"):
+        _surface(spec, precision="half")
+
+
+@pytest.mark.parametrize("precision", ["double", "single"])
+def test_horizontal_orbital_velocity_deep_water(precision):
     """Linear deep-water waves: the surface particle speed equals omega a, the same
     magnitude as the vertical velocity (circular orbits; Lamb 1932 art. 229), so the
     horizontal and vertical velocity variances along a narrow downwind sea match."""
     spec = DirectionalSpectrum("pierson-moskowitz", "longuet-higgins", u19_5=6.0, s=60.0)
-    f = _surface(spec, (128.0, 128.0), (128, 128), surface_tension=0.0).fields(1.0)
+    f = _surface(spec, (128.0, 128.0), (128, 128), surface_tension=0.0,
+                 precision=precision).fields(1.0)
     u, v, w = f.velocity[..., 0], f.velocity[..., 1], f.velocity[..., 2]
-    assert (u**2 + v**2).mean() == pytest.approx((w**2).mean(), rel=1e-9)
+    assert (u**2 + v**2).mean() == pytest.approx((w**2).mean(), rel=ROUND_OFF[precision])
 
 
 def test_same_seed_same_bytes_and_bad_grid():

@@ -30,7 +30,7 @@ from seaecho.scattering.facet import (
     speckled_facet_amplitudes,
 )
 from seaecho.scattering.spectrum_table import BraggSpectrumTable
-from seaecho.sea import surface_kinematics
+from seaecho.sea import surface_kinematics, vertical_acceleration
 
 K = 2 * np.pi * 10e9 / C0
 EPS = 55.9 - 37.0j
@@ -89,6 +89,16 @@ def test_placement_threshold_is_srokosz_gaussian_quantile():
     assert threshold == pytest.approx(sample, rel=0.02)
     assert threshold == pytest.approx(np.sqrt(2 * m4) * special.erfcinv(2 * q), rel=0.08)
     assert 0.1 < threshold / G < 0.6  # the order of the Phillips / Longuet-Higgins gamma
+
+
+def test_vertical_acceleration_is_the_kinematics_one_bit_for_bit():
+    # Parity: the one-FFT a_z that places the breaking zones equals the full kinematics'
+    # (whose threshold the Srokosz test above validates), at two times.
+    spec = DirectionalSpectrum(spectrum="elfouhaily", u19_5=10.0)
+    surf = SeaSurface(spec, (32.0, 32.0), (64, 64), np.random.default_rng(6))
+    for t in (0.0, 3.7):
+        a = surface_kinematics(surf, t).acceleration[..., 2]
+        assert vertical_acceleration(surf, t).tobytes() == a.tobytes()
 
 
 @pytest.mark.parametrize("backend", ["numpy", "drjit"])

@@ -26,6 +26,15 @@ u = (K / K) omega coth(K d) z for a wave travelling along K (Lamb 1932, art. 228
 
 The tessellated FFT approach is that of Tessendorf (2001) and Mastin et al. (1987).
 
+Precision. The elevation, which sets the echoes' phases (a two-way path of 2 z cos(theta)
+is 4 pi z / lambda of carrier phase), is synthesised in float64. The slopes and the
+velocities are synthesised by default in float32 (``precision="single"``) and returned as
+float64: an FFT of 2^18 points rounds at about 1e-7 of the field's rms, i.e. 1e-8 in
+slope and 1e-8 m/s in velocity for a sea of 0.1 rms slope and 0.1 m/s rms velocity, far
+below anything a facet's scattering or Doppler resolves, at a quarter of the float64
+transform's cost on this CPU (``docs/performance.md``). ``precision="double"`` synthesises
+every field in float64 (the parity reference of the tests).
+
 "The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
 polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
 NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
@@ -56,6 +65,8 @@ from .spectra import K_FLOOR, DirectionalSpectrum
 _REFINE_PEAKS = 4.0
 _REFINE_COARSE = 0.05
 _REFINE_SUB = 6
+#: Allowed ``SeaSurface(precision=...)``.
+PRECISIONS = ("single", "double")
 
 
 def grid_coordinates(size: float, n: int) -> NDArray[np.float64]:
@@ -148,6 +159,9 @@ class SeaSurface:
     surface_tension : float
         Kinematic surface tension [m^3/s^2] in the dispersion relation; 0 for eq 15 as
         printed.
+    precision : {"single", "double"}
+        Floating-point type in which the slopes and velocities are synthesised (the
+        elevation is always float64; see the module docstring).
 
     Notes
     -----
@@ -163,7 +177,10 @@ class SeaSurface:
         rng: np.random.Generator,
         depth: float | None = None,
         surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
+        precision: str = "single",
     ) -> None:
+        if precision not in PRECISIONS:
+            raise ValueError(f"precision = {precision!r}: allowed {PRECISIONS}")
         lx, ly = (float(v) for v in size)
         ny, nx = (int(v) for v in shape)
         if nx < 4 or ny < 4 or nx % 2 or ny % 2:
@@ -213,10 +230,20 @@ class SeaSurface:
             speed = np.where(k > 0, self._omega * coth / k, 0.0)
         self._ux = self._kx * speed
         self._uy = self._ky * speed
+        #: complex type of the slopes' and velocities' spectra
+        self.precision = precision
+        c = np.complex64 if precision == "single" else np.complex128
+        r = np.float32 if precision == "single" else np.float64
+        # multipliers of z_hat (slopes) and of plus - minus (velocities), in that order
+        self._derivatives = (
+            (1j * self._kx).astype(c), (1j * self._ky).astype(c),
+            (-1j * self._omega).astype(c), self._ux.astype(r), self._uy.astype(r))
 
-    def _irfft(self, spec: NDArray[np.complex128]) -> NDArray[np.float64]:
+    def _irfft(self, spec: NDArray[np.complexfloating]) -> NDArray[np.floating]:
+        """Inverse real FFT over the last two axes (a stack of spectra in one call), in
+        the precision of ``spec``."""
         ny, nx = self.shape
-        return scipy.fft.irfft2(spec, s=(ny, nx), norm="forward", workers=-1)
+        return scipy.fft.irfft2(spec, s=(ny, nx), axes=(-2, -1), norm="forward", workers=-1)
 
     def _travelling(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
         phase = np.exp(-1j * self._omega * t)  # Eq. 15 evolution, exp(-j omega t)
@@ -228,20 +255,33 @@ class SeaSurface:
         return self._irfft(plus + minus)
 
     def fields(self, t: float = 0.0) -> SurfaceFields:
-        """Elevation, slopes and surface velocity at time t [s]."""
+        """Elevation, slopes and surface velocity at time t [s].
+
+        The five derived fields go through one batched inverse FFT in the type of
+        ``precision`` (module docstring); every array returned is float64.
+        """
         plus, minus = self._travelling(t)
         z_hat = plus + minus
-        diff = plus - minus  # wave along +K minus wave along -K
         elevation = self._irfft(z_hat)
-        slope_x = self._irfft(1j * self._kx * z_hat)
-        slope_y = self._irfft(1j * self._ky * z_hat)
-        w = self._irfft(-1j * self._omega * diff)  # dz/dt
-        u = self._irfft(self._ux * diff)
-        v = self._irfft(self._uy * diff)
+        jkx, jky, jw, ux, uy = self._derivatives
+        c = jkx.dtype
+        z_c = z_hat.astype(c, copy=False)
+        diff = (plus - minus).astype(c, copy=False)  # wave along +K minus wave along -K
+        spectra = np.empty((5, *z_hat.shape), dtype=c)
+        np.multiply(jkx, z_c, out=spectra[0])  # dz/dx
+        np.multiply(jky, z_c, out=spectra[1])  # dz/dy
+        np.multiply(ux, diff, out=spectra[2])  # u
+        np.multiply(uy, diff, out=spectra[3])  # v
+        np.multiply(jw, diff, out=spectra[4])  # w = dz/dt
+        derived = self._irfft(spectra)
+        velocity = np.empty((*self.shape, 3))
+        for i in range(3):
+            velocity[..., i] = derived[2 + i]
         return SurfaceFields(
-            t=float(t), elevation=elevation, slope_x=slope_x, slope_y=slope_y,
-            velocity=np.stack([u, v, w], axis=-1),
+            t=float(t), elevation=elevation, slope_x=derived[0].astype(np.float64),
+            slope_y=derived[1].astype(np.float64), velocity=velocity,
         )
 
 
-__all__ = ["SeaSurface", "SurfaceFields", "cell_averaged_spectrum", "grid_coordinates"]
+__all__ = ["PRECISIONS", "SeaSurface", "SurfaceFields", "cell_averaged_spectrum",
+           "grid_coordinates"]
