@@ -694,25 +694,28 @@ class _Tracer:
         """Launch rays through the grid points (ui, vj): directions, distances to the
         grid, origins near the hull and their distance from the source, and the mask of
         the rays kept (those that meet the bounding sphere, above the sea for T')."""
-        g = ui[:, None] * e1 + vj[:, None] * e2
-        dv = g - q
-        ell = np.sqrt(_dot(dv, dv))
-        d = dv / ell[:, None]
+        # coordinates as contiguous rows (x, y, z) until the end (faster than (N, 3))
+        dv = np.empty((3, ui.size))
+        for k in range(3):
+            np.subtract(ui * e1[k] + vj * e2[k], q[k], out=dv[k])
+        ell = np.sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2])
+        d = dv / ell
         # Entry into the bounding sphere: origin of the Mitsuba ray (near the hull)
         # (the discriminant from the ray's distance to the centre, not b^2 - |q|^2 + r^2,
         # which cancels catastrophically for a far source), with a margin outside
-        b = d @ q
-        perp = q - b[:, None] * d
-        disc = self.radius**2 - _dot(perp, perp)
+        b = np.ascontiguousarray(d.T) @ q  # (BLAS, as the rows it replaced: the same bits)
+        perp = q[:, None] - b * d
+        disc = self.radius**2 - (perp[0] * perp[0] + perp[1] * perp[1] + perp[2] * perp[2])
         ok = disc > 0
         tau = -b - np.sqrt(np.maximum(disc, 0.0)) - 1e-3 * self.radius
         if image:
             # The ray from T' crosses the mean sea plane at the specular point S; the
             # trace starts there (the segment T'-S is the image of the real leg T-S)
-            ok &= d[:, 2] > 1e-9
-            t_s = (self.z_sea - q[2]) / np.where(ok, d[:, 2], 1.0)
+            ok &= d[2] > 1e-9
+            t_s = (self.z_sea - q[2]) / np.where(ok, d[2], 1.0)
             tau = np.maximum(tau, t_s)
-        d, ell, tau = _keep(ok, d, ell, tau)
+        d = np.compress(ok, d, axis=1).T
+        ell, tau = _keep(ok, ell, tau)
         return d, ell, tau, q + tau[:, None] * d, ok
 
     def _edge_cells(self, q, e1, e2, cells, centres, delta, nu, nv, image):
