@@ -729,27 +729,30 @@ class _Tracer:
         they hit. Plain cells that miss are dropped.
         """
         n_c = cells.size
-        # First and second hits of each cell's ray: hit flag, facet normal, point
+        # First and second hits of each cell's ray: hit flag, facet normal, point (the
+        # coordinates as rows x, y, z: contiguous gathers below)
         hit = np.zeros((2, n_c), dtype=bool)
-        nrm = np.zeros((2, n_c, 3), dtype=np.float32)
-        pts = np.zeros((2, n_c, 3), dtype=np.float32)
+        nrm = np.zeros((2, 3, n_c), dtype=np.float32)
+        pts = np.zeros((2, 3, n_c), dtype=np.float32)
         # First hit of each cell's ray, reused by the trace of the plain cells (Mitsuba's
         # distances are float32: kept exactly)
         first_t = np.full(n_c, np.inf, dtype=np.float32)
         first_prim = np.zeros(n_c, dtype=np.int32)
         # and the launch rays (direction, distance to the grid, origin's distance and
         # origin: :meth:`_rays`), so that the plain cells' trace does not make them again
-        ray_d = np.zeros((n_c, 3))
+        ray_d = np.zeros((3, n_c))
         ray_ell = np.zeros(n_c)
         ray_tau = np.zeros(n_c)
-        ray_o = np.zeros((n_c, 3))
+        ray_o = np.zeros((3, n_c))
 
         def first_hits(start):
             sl = slice(start, min(start + self.opt.batch, n_c))
             ui, vj = centres(cells[sl])
             d, ell, tau, o, ok = self._rays(q, e1, e2, ui, vj, image)
             rows = np.flatnonzero(ok) + start
-            ray_d[rows], ray_ell[rows], ray_tau[rows], ray_o[rows] = d, ell, tau, o
+            ray_ell[rows], ray_tau[rows] = ell, tau
+            for c in range(3):
+                ray_d[c, rows], ray_o[c, rows] = d[:, c], o[:, c]
             for k in range(min(2, self.opt.max_bounces)):
                 t, prim = _intersect(self.mi, self.hull_scene, o, d)
                 h = np.isfinite(t)
@@ -759,8 +762,10 @@ class _Tracer:
                 ng = _rows(self.normals, prim)
                 p = o + t[:, None] * d
                 hit[k, rows] = True
-                nrm[k, rows] = ng
-                pts[k, rows] = p
+                for c in range(3):
+                    nrm[k, c, rows], pts[k, c, rows] = ng[:, c], p[:, c]
+                if k == 1 or self.opt.max_bounces == 1:
+                    break
                 # the specular continuation, from the lit side
                 n = np.where((_dot(d, ng) > 0)[:, None], -ng, ng)
                 d = d - 2.0 * _dot(d, n)[:, None] * n
@@ -770,37 +775,48 @@ class _Tracer:
             pass  # each batch fills its own rows
         index = np.full(nu * nv, -1, dtype=np.int64)
         index[cells] = np.arange(n_c)
-        i, j = cells // nv, cells % nv
+        i, j = np.divmod(cells, nv)
         edge = np.zeros(n_c, dtype=bool)
         tol = 0.01 * delta
+
+        def gather(x, idx):  # rows x, y, z of x (3, n_c) float32 at idx, as float64
+            return [x[c].take(idx).astype(np.float64) for c in range(3)]
+
+        def dot3(x, y):  # as _dot, on rows (the same operations, the same bits)
+            return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]
+
         # Each pair of neighbours once (right and up; the test is symmetric in the pair,
         # to the last bit: dp changes sign, the dot products only their sign)
         for di, dj in ((1, 0), (0, 1)):
             ii, jj = i + di, j + dj
             inside = (ii >= 0) & (ii < nu) & (jj >= 0) & (jj < nv)
             nb = np.full(n_c, -1, dtype=np.int64)
-            nb[inside] = index[ii[inside] * nv + jj[inside]]
+            nb[inside] = index.take(ii[inside] * nv + jj[inside])
             has = nb >= 0
-            a_all, b_all = np.flatnonzero(has), nb[has]
+            a_all = np.flatnonzero(has)
+            b_all = nb.take(a_all)
             has_prev = np.zeros(n_c, dtype=bool)  # the cell on the other side exists
             has_prev[b_all] = True
             for k in range(2):
                 # a missing neighbour (off the grid or not covered): an edge if it hits
                 edge |= hit[k] & ~(has & has_prev)
-                ha, hb = hit[k, a_all], hit[k, b_all]
+                ha, hb = hit[k].take(a_all), hit[k].take(b_all)
                 rel = ha != hb
                 both = np.flatnonzero(ha & hb)
                 if both.size:
-                    a, b = a_all[both], b_all[both]
-                    na, nb_n = nrm[k, a].astype(float), nrm[k, b].astype(float)
-                    dp = pts[k, b].astype(float) - pts[k, a].astype(float)
-                    rel[both] = ((np.abs(_dot(na, nb_n)) < 1.0 - 5e-7)
-                                 | (np.abs(_dot(na, dp)) > tol) | (np.abs(_dot(nb_n, dp)) > tol))
+                    a, b = a_all.take(both), b_all.take(both)
+                    na, nb_n = gather(nrm[k], a), gather(nrm[k], b)
+                    dp = [pb - pa for pa, pb in zip(gather(pts[k], a), gather(pts[k], b),
+                                                    strict=True)]
+                    rel[both] = ((np.abs(dot3(na, nb_n)) < 1.0 - 5e-7)
+                                 | (np.abs(dot3(na, dp)) > tol) | (np.abs(dot3(nb_n, dp)) > tol))
                 edge[a_all[rel]] = True
                 edge[b_all[rel]] = True
         plain = hit[0] & ~edge
-        return cells[plain], cells[edge], _keep(plain, first_t, first_prim, ray_d, ray_ell,
-                                                ray_tau, ray_o)
+        return cells[plain], cells[edge], (*_keep(plain, first_t, first_prim),
+                                           np.compress(plain, ray_d, axis=1).T.copy(),
+                                           *_keep(plain, ray_ell, ray_tau),
+                                           np.compress(plain, ray_o, axis=1).T.copy())
 
     def _trace(self, q, u0, e1, e2, ui, vj, delta, image: bool, first=None
                ) -> tuple[int, list]:
