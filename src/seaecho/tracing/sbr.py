@@ -581,6 +581,15 @@ class _Tracer:
             return
         own = path_t == path
         a = 0.5 * amp
+        if own.all():  # a batch holds one path kind: one of these two, no row indexing
+            a += 0.5 * amp_t
+            self.acc.add(c, a, length, spreading, path, mech)
+            return
+        if not own.any():
+            self.acc.add(*(np.concatenate(x) for x in (
+                (c, c), (a, 0.5 * amp_t), (length, length), (spreading, spreading),
+                (path, path_t), (mech, mech_t))))
+            return
         a[own] += 0.5 * amp_t[own]
         other = ~own
         self.acc.add(np.concatenate([c, c[other]]), np.concatenate([a, 0.5 * amp_t[other]]),
