@@ -747,12 +747,11 @@ class _Tracer:
         # distances are float32: kept exactly)
         first_t = np.full(n_c, np.inf, dtype=np.float32)
         first_prim = np.zeros(n_c, dtype=np.int32)
-        # and the launch rays (direction, distance to the grid, origin's distance and
-        # origin: :meth:`_rays`), so that the plain cells' trace does not make them again
+        # and the launch rays (direction, distance to the grid, origin's distance from the
+        # source: :meth:`_rays`), so that the plain cells' trace does not make them again
         ray_d = np.zeros((3, n_c))
         ray_ell = np.zeros(n_c)
         ray_tau = np.zeros(n_c)
-        ray_o = np.zeros((3, n_c))
 
         def first_hits(start):
             sl = slice(start, min(start + self.opt.batch, n_c))
@@ -761,7 +760,7 @@ class _Tracer:
             rows = np.flatnonzero(ok) + start
             ray_ell[rows], ray_tau[rows] = ell, tau
             for c in range(3):
-                ray_d[c, rows], ray_o[c, rows] = d[:, c], o[:, c]
+                ray_d[c, rows] = d[:, c]
             for k in range(min(2, self.opt.max_bounces)):
                 t, prim = _intersect(self.mi, self.hull_scene, o, d)
                 h = np.isfinite(t)
@@ -824,8 +823,7 @@ class _Tracer:
         plain = hit[0] & ~edge
         return cells[plain], cells[edge], (*_keep(plain, first_t, first_prim),
                                            np.compress(plain, ray_d, axis=1).T.copy(),
-                                           *_keep(plain, ray_ell, ray_tau),
-                                           np.compress(plain, ray_o, axis=1).T.copy())
+                                           *_keep(plain, ray_ell, ray_tau))
 
     def _trace(self, q, u0, e1, e2, ui, vj, delta, image: bool, first=None
                ) -> tuple[int, list]:
@@ -836,7 +834,8 @@ class _Tracer:
         # First hits (rays that miss the hull cost nothing more)
         if first is not None:
             t, prim = first[0].astype(np.float64), first[1].astype(np.int64)
-            d, ell, tau, o = first[2:]
+            d, ell, tau = first[2:]
+            o = q + tau[:, None] * d  # as :meth:`_rays` made it (the same bits)
         else:
             d, ell, tau, o, _ = self._rays(q, e1, e2, ui, vj, image)
             t, prim = _intersect(self.mi, self.hull_scene, o, d)
