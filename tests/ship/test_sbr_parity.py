@@ -13,7 +13,10 @@ The case exercises every branch of the trace: the paper's 10 m boat with every t
 face dielectric (Fresnel, eqs O1-O2) and the others PEC, three bounces with edge
 refinement, the sea's multipath (the four path kinds, the rough-sea factor) over a
 traced wavy patch (shadowing, points under the waves), an occluding box, and the
-reciprocal mean of eq X2 both bistatic (two launches per source) and monostatic.
+reciprocal mean of eq X2 both bistatic (two launches per source) and monostatic. The
+paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). "A versatile bistatic &
+polarimetric marine radar simulator." Proc. 2006 IEEE Conference on Radar,
+doi:10.1109/RADAR.2006.1631862 (its 10 m boat, ``scenes/meshes/motor_boat_10m.ply``).
 """
 
 from __future__ import annotations

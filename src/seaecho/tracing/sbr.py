@@ -723,7 +723,7 @@ class _Tracer:
             ok &= d[2] > 1e-9
             t_s = (self.z_sea - q[2]) / np.where(ok, d[2], 1.0)
             tau = np.maximum(tau, t_s)
-        d = np.compress(ok, d, axis=1).T
+        d = np.ascontiguousarray(np.compress(ok, d, axis=1).T)  # (N, 3) C-ordered, as before
         ell, tau = _keep(ok, ell, tau)
         return d, ell, tau, q + tau[:, None] * d, ok
 
