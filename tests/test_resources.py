@@ -156,3 +156,74 @@ def test_perturbation_step_of_5e_324_is_refused(tmp_path, capsys):
     assert main(["check", str(scene)]) == 2
     err = capsys.readouterr().err
     assert "perturbation unbounded" in err and "step_s" in err and "Traceback" not in err
+
+
+TRIHEDRAL = ROOT / "scenes" / "calibration_trihedral.toml"
+
+
+def test_bistatic_hull_traces_count_the_reverse_launch():
+    """A bistatic trace launches from T and from R (the reciprocal mean, eq X2 of
+    ``seaecho.tracing.sbr``): the estimate counts two sources, the monostatic one."""
+    from seaecho.resources import hull_sizes
+
+    d = tomllib.loads(TRIHEDRAL.read_text())
+    mono = parse_scene(d)
+    d["receiver"] = {"motion": "fixed", "position_m": [-400.0, 150.0, 250.0],
+                     "antenna": dict(d["transmitter"]["antenna"])}
+    bi = parse_scene(d)
+    (hm,), (hb,) = hull_sizes(mono, TRIHEDRAL.parent), hull_sizes(bi, TRIHEDRAL.parent)
+    assert (hm.sources, hb.sources) == (1, 2)
+    assert hm.traces == hb.traces == 1  # fixed platforms, a fixed reflector
+    em = estimate(mono, figures=False, base_dir=TRIHEDRAL.parent)
+    eb = estimate(bi, figures=False, base_dir=TRIHEDRAL.parent)
+    assert eb.hull_rays == pytest.approx(2 * em.hull_rays, rel=1e-12)
+    assert em.hull_rays == pytest.approx(hm.grid, rel=1e-12)
+
+
+def test_reciprocal_trace_is_two_one_way_launches():
+    """What the factor 2 above stands for: the rays of a bistatic reciprocal trace are
+    those of the one-way traces from T and from R (a 0.2 m PEC plate)."""
+    import numpy as np
+
+    from seaecho.tracing.sbr import SBROptions, TraceMesh, trace_signature
+
+    v = np.array([[-0.1, -0.1, 0.0], [0.1, -0.1, 0.0], [0.1, 0.1, 0.0], [-0.1, 0.1, 0.0]])
+    plate = TraceMesh.single(v, [[0, 1, 2], [0, 2, 3]])
+    tx, rx = np.array([-30.0, 0.0, 40.0]), np.array([20.0, 25.0, 35.0])
+    one = SBROptions(reciprocal=False, max_bounces=1)
+    both = trace_signature(plate, tx, rx, 10e9, options=SBROptions(max_bounces=1))
+    n_t = trace_signature(plate, tx, rx, 10e9, options=one).n_rays
+    n_r = trace_signature(plate, rx, tx, 10e9, options=one).n_rays
+    assert both.n_rays == n_t + n_r and n_t > 0 and n_r > 0
+
+
+def test_antenna_normalisation_time_follows_its_quadrature(monkeypatch):
+    """The estimate sizes the pattern normalisation by the nodes the normalisation
+    uses (the Gauss-Legendre rule of order 2 n_u that
+    ``seaecho.radar.antennas.aperture_radiated_power`` asks scipy for), with the band
+    and margin of its docstring: n = ceil(z + 4 z^(1/3)) + 32, z_u = pi (A + B) / 2,
+    z_phi = pi B (A >= B the sides in wavelengths). A monostatic radar's aperture
+    counts once (the normalisation is cached)."""
+    import math
+
+    import scipy.special
+
+    from seaecho.constants import C0
+    from seaecho.radar import antennas
+    from seaecho.resources import antenna_quadratures
+
+    scene = load_scene(ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml")
+    assert scene.receiver is None
+    ant = scene.transmitter.antenna
+    lam = C0 / scene.radar.carrier_frequency_hz
+    big, small = sorted((ant.width_m / lam, ant.height_m / lam), reverse=True)
+    z_u, z_phi = math.pi * (big + small) / 2, math.pi * small
+    expected = (math.ceil(z_u + 4 * z_u ** (1 / 3)) + 32,
+                math.ceil(z_phi + 4 * z_phi ** (1 / 3)) + 32)
+    assert antenna_quadratures(scene) == [expected]
+    orders = []
+    real = scipy.special.roots_legendre
+    monkeypatch.setattr(scipy.special, "roots_legendre",
+                        lambda n: orders.append(n) or real(n))
+    antennas.aperture_radiated_power.__wrapped__(ant.width_m, ant.height_m, lam)
+    assert orders == [2 * expected[0]]

@@ -22,11 +22,14 @@ targets, and m_F the figures drawn from the whole raw and compressed arrays (0 w
 rest (the run loop's memory is not all returned to the system).
 
 Or, if larger, M_0 + M_A: the normalisation of a rectangular aperture's pattern (eq A1
-of ``seaecho.radar.antennas``, computed when the radar is built) integrates it on
-n_theta = 8 D / lambda + 96 Gauss-Legendre nodes (D the aperture's larger side), whose
-n_theta x n_theta eigenvalue problem and 2 n_theta^2-point grid take
-M_A = m_a n_theta^2 + 200 MiB and a time t_a n_theta^3: a 100 m aperture at 1 THz would
-need petabytes, so the estimate refuses it.
+of ``seaecho.radar.antennas``, computed when the radar is built), bounded by
+M_A = m_a n_theta^2 + 200 MiB with n_theta = 8 D / lambda + 96 (D the aperture's larger
+side): a 100 m aperture at 1 THz would need petabytes, so the estimate refuses it. Its
+time is that of the quadrature ``seaecho.radar.antennas.aperture_radiated_power`` makes
+(``aperture_quadrature``: n_u Gauss-Legendre nodes in u times n_phi trapezoid nodes in
+phi): t_l (2 n_u)^2 for the Gauss-Legendre rule (a symmetric tridiagonal eigenvalue
+problem of order 2 n_u) plus t_q n_u n_phi for the sum, once per distinct aperture (the
+normalisation is cached: a monostatic radar's receiver costs nothing more).
 
 The coefficients are upper envelopes of the peak RSS measured by
 ``benchmarks/bench_resources.py`` (``ru_maxrss`` of the child process) on scenes that
@@ -37,7 +40,9 @@ that its measured peak is below the estimate.
 
 Time (order of magnitude only, measured on one loaded 2-core machine): a start-up of a
 few seconds plus a set-up per sea grid point (surface, wake, sigma maps), then per pulse
-t_c N_cells + t_f C N_fft log2 N_fft + t_t K, then the figures per value drawn.
+t_c N_cells + t_f C N_fft log2 N_fft + t_t K, then the figures per value drawn; each hull
+trace t_r per launch-grid cell, launch (1, or 2 with sea multipath) and source (2
+bistatic: the reciprocal mean of ``seaecho.tracing.sbr`` traces from T and from R).
 
 The memory a run may use is the smallest of the memory the system reports available
 (``MemAvailable`` of ``/proc/meminfo``), the cgroup's limit less its usage, and the
@@ -77,7 +82,9 @@ M_ANTENNA = 40.0  #: per n_theta^2 of a rectangular aperture's normalisation
 M_ANTENNA_GRID = 200 * MiB  #: its integration grid (chunks of 2e6 directions)
 M_SBR_RAY = 1200.0  #: per ray of a hull trace's batch (about 1 kB per ray)
 SBR_BATCH = 1 << 18  #: rays per batch (``seaecho.tracing.sbr.SBROptions.batch``)
-M_SBR_CELL = 24.0  #: per cell of a hull trace's launch grid (coverage mask, indices)
+M_SBR_CELL = 44.0  #: per cell of a hull trace's launch grid (coverage mask, indices, the
+#: edge test's hits and the launch rays it keeps for the plain cells: the trace of
+#: Simulation 1's boat peaked 43 MB higher with them, 2.1e6 cells)
 M_CENTRE = 200.0  #: per scattering centre of a cached hull signature
 M_PIXEL = 120.0  #: per image pixel (calibration maps, coverage, products' temporaries)
 M_PIXEL_CHANNEL = 160.0  #: per image pixel and channel (accumulator, image, sigma0...)
@@ -98,9 +105,9 @@ T_FFT = 4.0e-9
 T_TARGET = 2.0e-6
 T_PULSE = 2.0e-2
 T_FIGURE = 4.0e-6  #: per pulse, channel and sample drawn
-T_ANTENNA = 3.0e-10  #: per n_theta^3 (Gauss-Legendre nodes: eigenvalues)
-T_ANTENNA_GRID = 2.0e-7  #: per direction of the normalisation grid
-T_RAY = 6.0e-6  #: per launch-grid cell of a hull trace (docs/ship.md: ~12 us per hit)
+T_LEGENDRE = 6.0e-8  #: per (2 n_u)^2 of the normalisation's Gauss-Legendre rule
+T_QUADRATURE = 1.5e-7  #: per node n_u x n_phi of the normalisation's quadrature
+T_RAY = 1.5e-6  #: per launch-grid cell, launch and source of a hull trace
 T_BACKPROJECTION = 2.0e-8  #: per pixel, pulse and channel of the focusing
 
 #: Environment variable that sets the memory limit [GB].
@@ -132,7 +139,8 @@ class Estimate:
     n_samples, n_fft, n_pulses, channels, cells, pixels : int
         The sizes that enter the model (``pixels``: of the ``[image]``).
     hull_rays : float
-        Launch-grid cells over every trace of the hulls (:class:`HullSize`).
+        Launch-grid cells over every launch, source and trace of the hulls
+        (:class:`HullSize`).
     """
 
     peak_bytes: float
@@ -279,6 +287,22 @@ def antenna_nodes(scene) -> list[tuple[str, int]]:
     return out
 
 
+def antenna_quadratures(scene) -> list[tuple[int, int]]:
+    """Quadrature nodes ``(n_u, n_phi)`` of each distinct rectangular aperture's pattern
+    normalisation (``seaecho.radar.antennas.aperture_quadrature``; the normalisation is
+    cached, so an aperture met twice, such as a monostatic radar's, counts once)."""
+    from .radar.antennas import aperture_quadrature
+
+    lam = C0 / scene.radar.carrier_frequency_hz
+    sizes = []
+    for name in ("transmitter", "receiver"):
+        cfg = getattr(scene, name) or scene.transmitter
+        a = cfg.antenna
+        if a.pattern == "rectangular" and (a.width_m, a.height_m) not in sizes:
+            sizes.append((a.width_m, a.height_m))
+    return [aperture_quadrature(w, h, lam) for w, h in sizes]
+
+
 def nominal_positions(cfg, t: NDArray) -> NDArray[np.float64]:
     """Nominal positions of a platform section at times ``t`` (P,) [m], shape (P, 3)."""
     t = np.asarray(t, dtype=float)
@@ -303,12 +327,16 @@ class HullSize:
         Launch-grid cells per launch, (2 radius / delta)^2 with delta = lambda / n the
         ray spacing: the rectangle that holds the hull's projection, at most.
     launches : int
-        Launches per trace: 1, or 2 with sea multipath (from T and from its image).
+        Launches per trace and source: 1, or 2 with sea multipath (from T and from its
+        image).
     traces : int
         Traces over the run (``seaecho.targets.centres.refresh_schedule`` on the nominal
         tracks).
     centres : float
         Bound on the scattering centres of one trace: 4 path kinds x (2 radius / cell)^2.
+    sources : int
+        Sources the rays leave from: 2 when bistatic (the reciprocal mean, eq X2 of
+        ``seaecho.tracing.sbr``, traces from T and from R), 1 monostatic.
     """
 
     name: str
@@ -317,6 +345,7 @@ class HullSize:
     launches: int
     traces: int
     centres: float
+    sources: int = 1
 
 
 def hull_sizes(scene, base_dir=".") -> list[HullSize]:
@@ -355,7 +384,8 @@ def hull_sizes(scene, base_dir=".") -> list[HullSize]:
         delta = lam / cfg.rays_per_wavelength
         out.append(HullSize(cfg.name, radius, (2.0 * radius / delta) ** 2,
                             2 if cfg.sea_multipath else 1, traces,
-                            4.0 * (2.0 * radius / cfg.signature_cell_m) ** 2))
+                            4.0 * (2.0 * radius / cfg.signature_cell_m) ** 2,
+                            1 if np.array_equal(tx, rx) else 2))
     return out
 
 
@@ -497,13 +527,14 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
         per_pulse += T_CELL[mode] * cells
     per_pulse += sum(T_TARGET * h.centres for h in hulls)
     start = T_START[mode] + T_CELL_SETUP[mode] * cells if sea else T_START["targets"]
-    pulses = n_p * per_pulse + sum(T_RAY * h.grid * h.launches * h.traces for h in hulls)
+    rays = sum(h.grid * h.launches * h.sources * h.traces for h in hulls)
+    pulses = n_p * per_pulse + T_RAY * rays
     if workers:
         pulses /= workers
     time_s = start + pulses + (T_FIGURE * n_p * c * n_s if figures else 0.0) + sum(
-        T_ANTENNA * n**3 + T_ANTENNA_GRID * 2 * n**2 for _, n in nodes)
+        T_LEGENDRE * (2 * n_u) ** 2 + T_QUADRATURE * n_u * n_phi
+        for n_u, n_phi in antenna_quadratures(scene))
     time_s += T_BACKPROJECTION * pixels * n_p * c
-    rays = sum(h.grid * h.launches * h.traces for h in hulls)
     return Estimate(peak, time_s, terms, drivers, n_s, n_fft, n_p, c, cells, pixels, rays)
 
 
@@ -800,6 +831,7 @@ __all__ = [
     "estimate",
     "focus_shape",
     "antenna_nodes",
+    "antenna_quadratures",
     "gauss_markov_steps",
     "hull_sizes",
     "image_estimate",

@@ -119,6 +119,23 @@ def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: 
             * _sinc(xp, height * d.z / wavelength))
 
 
+def aperture_quadrature(width: float, height: float, wavelength: float) -> tuple[int, int]:
+    """Nodes ``(n_u, n_phi)`` of :func:`aperture_radiated_power`'s quadrature of eq A3:
+    the band of each integrand plus the margin ``4 z^(1/3) + 32`` (its docstring).
+    (``seaecho.resources`` sizes the normalisation's time from them.)
+
+    Parameters
+    ----------
+    width, height, wavelength : float
+        Aperture width, height and wavelength [m].
+    """
+    a, b = sorted((width / wavelength, height / wavelength), reverse=True)
+    band_u, band_phi = 0.5 * np.pi * (a + b), np.pi * b
+    n_u = int(np.ceil(band_u + 4.0 * np.cbrt(band_u))) + 32
+    n_phi = int(np.ceil(band_phi + 4.0 * np.cbrt(band_phi))) + 32
+    return n_u, n_phi
+
+
 @lru_cache(maxsize=64)
 def aperture_radiated_power(width: float, height: float, wavelength: float) -> float:
     """Integral of |F|^2 over the sphere [sr] for eq (A1)'s normalisation.
@@ -165,9 +182,7 @@ def aperture_radiated_power(width: float, height: float, wavelength: float) -> f
     from scipy.special import roots_legendre
 
     a, b = sorted((width / wavelength, height / wavelength), reverse=True)
-    band_u, band_phi = 0.5 * np.pi * (a + b), np.pi * b
-    n_u = int(np.ceil(band_u + 4.0 * np.cbrt(band_u))) + 32
-    n_phi = int(np.ceil(band_phi + 4.0 * np.cbrt(band_phi))) + 32
+    n_u, n_phi = aperture_quadrature(width, height, wavelength)
     x, w = roots_legendre(2 * n_u)
     u, w = x[n_u:], w[n_u:]  # u > 0 (the integrand is even in u)
     phi = np.pi * (np.arange(n_phi) + 0.5) / n_phi  # period pi: both halves of 2 pi
@@ -430,6 +445,7 @@ __all__ = [
     "Antenna",
     "antenna_axes",
     "aperture_field",
+    "aperture_quadrature",
     "aperture_radiated_power",
     "builtin_gain",
     "port_coefficients",

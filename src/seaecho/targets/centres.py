@@ -130,20 +130,24 @@ def equivalent_positions(points: ArrayLike, length: ArrayLike, tx: ArrayLike, rx
         False where the gradient vanishes (|g| < 0.05, a bistatic angle above 177 deg,
         near forward scatter, where the delay does not locate a point).
     """
-    c = np.array(points, dtype=np.float64, copy=True)
+    # the coordinates as three contiguous rows (the same operations as on (N, 3) rows,
+    # elementwise, to the bit; faster)
+    c = np.array(np.asarray(points, dtype=np.float64).reshape(-1, 3).T, order="C")
     target = np.asarray(length, dtype=np.float64)
     t = np.asarray(tx, dtype=np.float64)
     r = np.asarray(rx, dtype=np.float64)
-    ok = np.ones(c.shape[0], dtype=bool)
+    ok = np.ones(c.shape[1], dtype=bool)
+    g = np.empty_like(c)
     for _ in range(iterations):
-        dt, dr = c - t, c - r
-        rt, rr = _norm(dt), _norm(dr)
-        g = dt / rt[:, None] + dr / rr[:, None]
-        g2 = g[:, 0] ** 2 + g[:, 1] ** 2 + g[:, 2] ** 2
+        dt, dr = c - t[:, None], c - r[:, None]
+        rt = np.sqrt(dt[0] ** 2 + dt[1] ** 2 + dt[2] ** 2)
+        rr = np.sqrt(dr[0] ** 2 + dr[1] ** 2 + dr[2] ** 2)
+        np.add(dt / rt, dr / rr, out=g)
+        g2 = g[0] ** 2 + g[1] ** 2 + g[2] ** 2
         ok = g2 > 0.05**2
         step = np.where(ok, (target - rt - rr) / np.where(ok, g2, 1.0), 0.0)
-        c += step[:, None] * g
-    return c, ok
+        c += step * g
+    return np.ascontiguousarray(c.T), ok
 
 
 #: Cell indices are packed in 20 bits per axis (+-2^19 cells: +-52 km at 0.1 m).

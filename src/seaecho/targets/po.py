@@ -113,6 +113,16 @@ def _cross(a: NDArray, b: NDArray) -> NDArray:
     return out
 
 
+def _cross_rows(a: NDArray, b: NDArray) -> NDArray:
+    """Cross product of vectors given as rows x, y, z (a (3, N) array or three rows)."""
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def _dot_rows(a: NDArray, b: NDArray) -> NDArray:
+    """Dot product of vectors given as rows x, y, z (the order of :func:`_dot`)."""
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
 def reflect(d: NDArray, n: NDArray, e: NDArray, r_h: NDArray, r_v: NDArray
             ) -> tuple[NDArray, NDArray]:
     """Reflected direction and field of ray tubes on flat facets, eqs O1-O2.
@@ -229,12 +239,16 @@ def po_components(alpha: NDArray, beta: NDArray, r_h: NDArray, r_v: NDArray,
     v_h, v_v : (N, P) complex arrays
         ``h_s . V`` and ``v_s . V``.
     """
-    a1, b1, c1 = _cross(n, h_l), _cross(n, v_i), _cross(n, v_r)
+    # the vectors as rows x, y, z (contiguous: the same operations as on (N, 3) rows,
+    # to the bit, faster)
+    n, h_l, v_i, v_r, h_s, v_s = (np.ascontiguousarray(np.asarray(x).T)
+                                  for x in (n, h_l, v_i, v_r, h_s, v_s))
+    a1, b1, c1 = _cross_rows(n, h_l), _cross_rows(n, v_i), _cross_rows(n, v_r)
     out = []
     for e1, e2 in ((h_s, v_s), (v_s, h_s)):
         # projections on e1 of eta J and on e2 of M
-        e1a, e1b, e1c = _dot(e1, a1)[:, None], _dot(e1, b1)[:, None], _dot(e1, c1)[:, None]
-        e2a, e2b, e2c = _dot(e2, a1)[:, None], _dot(e2, b1)[:, None], _dot(e2, c1)[:, None]
+        e1a, e1b, e1c = (_dot_rows(e1, x)[:, None] for x in (a1, b1, c1))
+        e2a, e2b, e2c = (_dot_rows(e2, x)[:, None] for x in (a1, b1, c1))
         rh, rv = r_h[:, None], r_v[:, None]
         j = beta * ((1.0 + rv) * e1a) - alpha * (e1b + rh * e1c)
         m = -alpha * ((1.0 + rh) * e2a) - beta * (e2b + rv * e2c)

@@ -430,6 +430,17 @@ def _blocked(scenes: list, o: NDArray, target: NDArray, eps: float = 0.0,
     return shadow_rays(scenes, o, d, np.minimum(np.maximum(r - eps, 0.0), reach))
 
 
+def _keep(mask: NDArray, *arrays: NDArray) -> tuple[NDArray, ...]:
+    """The rows of each array where ``mask`` is True (``np.compress``: the same rows as
+    ``a[mask]``, several times faster for (N, 3) and (N, 2, 2) arrays)."""
+    return tuple(np.compress(mask, a, axis=0) for a in arrays)
+
+
+def _rows(a: NDArray, idx: NDArray) -> NDArray:
+    """``a[idx]`` (rows by index, ``take``: several times faster for (N, 3) arrays)."""
+    return a.take(idx, axis=0)
+
+
 def _dot(a: NDArray, b: NDArray) -> NDArray:
     """Dot product over the last axis (faster than einsum for (N, 3))."""
     return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1] + a[..., 2] * b[..., 2]
@@ -520,6 +531,7 @@ class _Tracer:
                 self.patch_local = (np.asarray(x, float) - self.centre[0],
                                     np.asarray(y, float) - self.centre[1],
                                     np.asarray(z, float) - self.centre[2])
+                self.patch_top = max(float(self.patch_local[2].max()), self.z_sea)
         # Radius about the hull's centre holding every mesh traced (hull, objects, sea)
         self.geo_radius = max([self.radius] + [float(np.sqrt(_dot(x, x)).max())
                                                for x in geo_local])
@@ -569,6 +581,15 @@ class _Tracer:
             return
         own = path_t == path
         a = 0.5 * amp
+        if own.all():  # a batch holds one path kind: one of these two, no row indexing
+            a += 0.5 * amp_t
+            self.acc.add(c, a, length, spreading, path, mech)
+            return
+        if not own.any():
+            self.acc.add(*(np.concatenate(x) for x in (
+                (c, c), (a, 0.5 * amp_t), (length, length), (spreading, spreading),
+                (path, path_t), (mech, mech_t))))
+            return
         a[own] += 0.5 * amp_t[own]
         other = ~own
         self.acc.add(np.concatenate([c, c[other]]), np.concatenate([a, 0.5 * amp_t[other]]),
@@ -600,8 +621,10 @@ class _Tracer:
         level = np.full(p.shape[0], self.z_sea)
         if self.patch_box is not None:
             x, y, z = self.patch_local
-            inside = ((p[:, 0] >= x[0]) & (p[:, 0] <= x[-1]) & (p[:, 1] >= y[0])
-                      & (p[:, 1] <= y[-1]))
+            # only the points below the patch's crest can be under it (the others keep
+            # the mean level, which is below the crest: the same answer, no interpolation)
+            inside = ((p[:, 2] < self.patch_top) & (p[:, 0] >= x[0]) & (p[:, 0] <= x[-1])
+                      & (p[:, 1] >= y[0]) & (p[:, 1] <= y[-1]))
             if inside.any():
                 from scipy.interpolate import RegularGridInterpolator
 
@@ -655,7 +678,7 @@ class _Tracer:
         self.n_rays += plain.size + edge.size * m * m
         step = self.opt.batch
         jobs = [(plain[a:a + step], 1, None if first is None else
-                 (first[0][a:a + step], first[1][a:a + step]))
+                 tuple(x[a:a + step] for x in first))
                 for a in range(0, plain.size, step)]
         # Edge cells: m x m sub-tubes of side delta / m
         per = max(1, self.opt.batch // (m * m))
@@ -680,25 +703,28 @@ class _Tracer:
         """Launch rays through the grid points (ui, vj): directions, distances to the
         grid, origins near the hull and their distance from the source, and the mask of
         the rays kept (those that meet the bounding sphere, above the sea for T')."""
-        g = ui[:, None] * e1 + vj[:, None] * e2
-        dv = g - q
-        ell = np.sqrt(_dot(dv, dv))
-        d = dv / ell[:, None]
+        # coordinates as contiguous rows (x, y, z) until the end (faster than (N, 3))
+        dv = np.empty((3, ui.size))
+        for k in range(3):
+            np.subtract(ui * e1[k] + vj * e2[k], q[k], out=dv[k])
+        ell = np.sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2])
+        d = dv / ell
         # Entry into the bounding sphere: origin of the Mitsuba ray (near the hull)
         # (the discriminant from the ray's distance to the centre, not b^2 - |q|^2 + r^2,
         # which cancels catastrophically for a far source), with a margin outside
-        b = d @ q
-        perp = q - b[:, None] * d
-        disc = self.radius**2 - _dot(perp, perp)
+        b = np.ascontiguousarray(d.T) @ q  # (BLAS, as the rows it replaced: the same bits)
+        perp = q[:, None] - b * d
+        disc = self.radius**2 - (perp[0] * perp[0] + perp[1] * perp[1] + perp[2] * perp[2])
         ok = disc > 0
         tau = -b - np.sqrt(np.maximum(disc, 0.0)) - 1e-3 * self.radius
         if image:
             # The ray from T' crosses the mean sea plane at the specular point S; the
             # trace starts there (the segment T'-S is the image of the real leg T-S)
-            ok &= d[:, 2] > 1e-9
-            t_s = (self.z_sea - q[2]) / np.where(ok, d[:, 2], 1.0)
+            ok &= d[2] > 1e-9
+            t_s = (self.z_sea - q[2]) / np.where(ok, d[2], 1.0)
             tau = np.maximum(tau, t_s)
-        d, ell, tau = d[ok], ell[ok], tau[ok]
+        d = np.ascontiguousarray(np.compress(ok, d, axis=1).T)  # (N, 3) C-ordered, as before
+        ell, tau = _keep(ok, ell, tau)
         return d, ell, tau, q + tau[:, None] * d, ok
 
     def _edge_cells(self, q, e1, e2, cells, centres, delta, nu, nv, image):
@@ -712,31 +738,42 @@ class _Tracer:
         they hit. Plain cells that miss are dropped.
         """
         n_c = cells.size
-        # First and second hits of each cell's ray: hit flag, facet normal, point
+        # First and second hits of each cell's ray: hit flag, facet normal, point (the
+        # coordinates as rows x, y, z: contiguous gathers below)
         hit = np.zeros((2, n_c), dtype=bool)
-        nrm = np.zeros((2, n_c, 3), dtype=np.float32)
-        pts = np.zeros((2, n_c, 3), dtype=np.float32)
+        nrm = np.zeros((2, 3, n_c), dtype=np.float32)
+        pts = np.zeros((2, 3, n_c), dtype=np.float32)
         # First hit of each cell's ray, reused by the trace of the plain cells (Mitsuba's
         # distances are float32: kept exactly)
         first_t = np.full(n_c, np.inf, dtype=np.float32)
         first_prim = np.zeros(n_c, dtype=np.int32)
+        # and the launch rays (direction, distance to the grid, origin's distance from the
+        # source: :meth:`_rays`), so that the plain cells' trace does not make them again
+        ray_d = np.zeros((3, n_c))
+        ray_ell = np.zeros(n_c)
+        ray_tau = np.zeros(n_c)
 
         def first_hits(start):
             sl = slice(start, min(start + self.opt.batch, n_c))
             ui, vj = centres(cells[sl])
-            d, _, _, o, ok = self._rays(q, e1, e2, ui, vj, image)
+            d, ell, tau, o, ok = self._rays(q, e1, e2, ui, vj, image)
             rows = np.flatnonzero(ok) + start
+            ray_ell[rows], ray_tau[rows] = ell, tau
+            for c in range(3):
+                ray_d[c, rows] = d[:, c]
             for k in range(min(2, self.opt.max_bounces)):
                 t, prim = _intersect(self.mi, self.hull_scene, o, d)
                 h = np.isfinite(t)
-                rows, o, d, t, prim = rows[h], o[h], d[h], t[h], prim[h]
+                rows, o, d, t, prim = _keep(h, rows, o, d, t, prim)
                 if k == 0:
                     first_t[rows], first_prim[rows] = t, prim
-                ng = self.normals[prim]
+                ng = _rows(self.normals, prim)
                 p = o + t[:, None] * d
                 hit[k, rows] = True
-                nrm[k, rows] = ng
-                pts[k, rows] = p
+                for c in range(3):
+                    nrm[k, c, rows], pts[k, c, rows] = ng[:, c], p[:, c]
+                if k == 1 or self.opt.max_bounces == 1:
+                    break
                 # the specular continuation, from the lit side
                 n = np.where((_dot(d, ng) > 0)[:, None], -ng, ng)
                 d = d - 2.0 * _dot(d, n)[:, None] * n
@@ -746,50 +783,65 @@ class _Tracer:
             pass  # each batch fills its own rows
         index = np.full(nu * nv, -1, dtype=np.int64)
         index[cells] = np.arange(n_c)
-        i, j = cells // nv, cells % nv
+        i, j = np.divmod(cells, nv)
         edge = np.zeros(n_c, dtype=bool)
         tol = 0.01 * delta
+
+        def gather(x, idx):  # rows x, y, z of x (3, n_c) float32 at idx, as float64
+            return [x[c].take(idx).astype(np.float64) for c in range(3)]
+
+        def dot3(x, y):  # as _dot, on rows (the same operations, the same bits)
+            return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]
+
         # Each pair of neighbours once (right and up; the test is symmetric in the pair,
         # to the last bit: dp changes sign, the dot products only their sign)
         for di, dj in ((1, 0), (0, 1)):
             ii, jj = i + di, j + dj
             inside = (ii >= 0) & (ii < nu) & (jj >= 0) & (jj < nv)
             nb = np.full(n_c, -1, dtype=np.int64)
-            nb[inside] = index[ii[inside] * nv + jj[inside]]
+            nb[inside] = index.take(ii[inside] * nv + jj[inside])
             has = nb >= 0
-            a_all, b_all = np.flatnonzero(has), nb[has]
+            a_all = np.flatnonzero(has)
+            b_all = nb.take(a_all)
             has_prev = np.zeros(n_c, dtype=bool)  # the cell on the other side exists
             has_prev[b_all] = True
             for k in range(2):
                 # a missing neighbour (off the grid or not covered): an edge if it hits
                 edge |= hit[k] & ~(has & has_prev)
-                ha, hb = hit[k, a_all], hit[k, b_all]
+                ha, hb = hit[k].take(a_all), hit[k].take(b_all)
                 rel = ha != hb
                 both = np.flatnonzero(ha & hb)
                 if both.size:
-                    a, b = a_all[both], b_all[both]
-                    na, nb_n = nrm[k, a].astype(float), nrm[k, b].astype(float)
-                    dp = pts[k, b].astype(float) - pts[k, a].astype(float)
-                    rel[both] = ((np.abs(_dot(na, nb_n)) < 1.0 - 5e-7)
-                                 | (np.abs(_dot(na, dp)) > tol) | (np.abs(_dot(nb_n, dp)) > tol))
+                    a, b = a_all.take(both), b_all.take(both)
+                    na, nb_n = gather(nrm[k], a), gather(nrm[k], b)
+                    dp = [pb - pa for pa, pb in zip(gather(pts[k], a), gather(pts[k], b),
+                                                    strict=True)]
+                    rel[both] = ((np.abs(dot3(na, nb_n)) < 1.0 - 5e-7)
+                                 | (np.abs(dot3(na, dp)) > tol) | (np.abs(dot3(nb_n, dp)) > tol))
                 edge[a_all[rel]] = True
                 edge[b_all[rel]] = True
         plain = hit[0] & ~edge
-        return cells[plain], cells[edge], (first_t[plain], first_prim[plain])
+        return cells[plain], cells[edge], (*_keep(plain, first_t, first_prim),
+                                           np.compress(plain, ray_d, axis=1).T.copy(),
+                                           *_keep(plain, ray_ell, ray_tau))
 
     def _trace(self, q, u0, e1, e2, ui, vj, delta, image: bool, first=None
                ) -> tuple[int, list]:
         """Trace one batch of rays: (hits radiated, the contributions for
         ``CentreAccumulator.add`` in order). ``first``: the rays' first hits (distance,
-        triangle) when :meth:`_edge_cells` traced them already."""
-        d, ell, tau, o, ok = self._rays(q, e1, e2, ui, vj, image)
+        triangle) and the rays (:meth:`_rays`, every one kept) when :meth:`_edge_cells`
+        traced them already."""
         # First hits (rays that miss the hull cost nothing more)
-        if first is not None and ok.all():
+        if first is not None:
             t, prim = first[0].astype(np.float64), first[1].astype(np.int64)
+            d, ell, tau = first[2:]
+            o = q + tau[:, None] * d  # as :meth:`_rays` made it (the same bits)
         else:
+            d, ell, tau, o, _ = self._rays(q, e1, e2, ui, vj, image)
             t, prim = _intersect(self.mi, self.hull_scene, o, d)
         hit = np.isfinite(t)
-        d, ell, tau, o, t, prim = d[hit], ell[hit], tau[hit], o[hit], t[hit], prim[hit]
+        if not hit.all():
+            d, ell, tau, o, t, prim = _keep(hit, d, ell, tau, o, t, prim)
         # Tube cross-section per unit distance (normal to d)
         a1, b1 = delta * e1, delta * e2
         ta = (a1 - d * (d @ a1)[:, None]) / ell[:, None]
@@ -828,11 +880,12 @@ class _Tracer:
             else:
                 t, prim = _intersect(mi, self.hull_scene, o, d)
                 hit = np.isfinite(t)
-                o, d, s0, ta, tb, t, prim = (a[hit] for a in (o, d, s0, ta, tb, t, prim))
-                e = tuple(a[hit] for a in e)
+                if not hit.all():
+                    o, d, s0, ta, tb, t, prim = _keep(hit, o, d, s0, ta, tb, t, prim)
+                    e = _keep(hit, *e)
             p = o + t[:, None] * d
             s = s0 + t
-            ng = self.normals[prim]
+            ng = _rows(self.normals, prim)
             cosd = _dot(d, ng)
             n = np.where((cosd > 0)[:, None], -ng, ng)
             off = p + self.eps_off * n
@@ -850,14 +903,14 @@ class _Tracer:
             blocked |= self._under_water(p)
             if blocked.any():
                 keep = ~blocked
-                o, d, s, ta, tb, p, n, prim, off = (
-                    a[keep] for a in (o, d, s, ta, tb, p, n, prim, off))
-                e = tuple(a[keep] for a in e)
+                o, d, s, ta, tb, p, n, prim, off = _keep(keep, o, d, s, ta, tb, p, n, prim,
+                                                         off)
+                e = _keep(keep, *e)
             if d.shape[0] == 0:
                 return hits
             hits += d.shape[0]
             # Eqs O1-O2 with the facet's material
-            eps = self.eps[prim]
+            eps = self.eps.take(prim)
             pec = np.isnan(eps.real)
             cos_i = -_dot(d, n)
             r_h = np.full(d.shape[0], -1.0 + 0j)
@@ -908,7 +961,7 @@ class _Tracer:
             idx = np.flatnonzero(ok)
             if idx.size == 0:
                 continue
-            ps, offs, shs = p[idx], off[idx], sh[idx]
+            ps, offs, shs = _rows(p, idx), _rows(off, idx), _rows(sh, idx)
             if last:
                 # Specular point S2 on the mean plane, then the leg S2 -> R
                 s2 = ps + ((self.z_sea - ps[:, 2]) / shs[:, 2])[:, None] * shs
@@ -922,14 +975,14 @@ class _Tracer:
             idx = idx[~blocked]
             if idx.size == 0:
                 continue
-            shs = sh[idx]
+            shs = _rows(sh, idx)
             # Eqs O3-O4 (on the receive basis) and O6
             h_s, v_s = local_basis(shs, np.broadcast_to(_Z, shs.shape))
-            alpha, beta, r_h, r_v, h_l, v_i, v_r = (a[idx] for a in fields)
+            alpha, beta, r_h, r_v, h_l, v_i, v_r = (_rows(a, idx) for a in fields)
             comp = np.empty((idx.size, 2, 2), dtype=np.complex128)
-            comp[:, 0, :], comp[:, 1, :] = po_components(alpha, beta, r_h, r_v, n[idx], h_l,
+            comp[:, 0, :], comp[:, 1, :] = po_components(alpha, beta, r_h, r_v, _rows(n, idx), h_l,
                                                          v_i, v_r, h_s, v_s)
-            f = shape_function(k * (shs - d[idx]), a_fp[idx], b_fp[idx])
+            f = shape_function(k * (shs - _rows(d, idx)), _rows(a_fp, idx), _rows(b_fp, idx))
             if last:
                 gh, gv = sea_reflection(np.arcsin(np.clip(-shs[:, 2], 0.0, 1.0)),
                                         self.sea.eps_r, self.sea.sigma_h, k,
@@ -937,14 +990,17 @@ class _Tracer:
                 comp[:, 0, :] *= gh[:, None]
                 comp[:, 1, :] *= gv[:, None]
             # Eq C1: a = -jk / sqrt(4 pi) A F (e_m . V_n)
-            amp = comp * ((-1j * k / np.sqrt(4.0 * np.pi)) * area[idx] * f)[:, None, None]
-            length = s[idx] + dist[idx]
-            spreading = s[idx] * dist[idx]
-            pw = p[idx] + self.centre
+            amp = comp * ((-1j * k / np.sqrt(4.0 * np.pi)) * area.take(idx) * f)[:, None, None]
+            s_i, dist_i = s.take(idx), dist.take(idx)
+            length = s_i + dist_i
+            spreading = s_i * dist_i
+            pw = _rows(p, idx) + self.centre
             c, good = equivalent_positions(pw, length, self.tx_w, self.rx_w)
             path = first + 2 * last
             n_good = int(good.sum())
-            out.append((c[good], amp[good], length[good], spreading[good],
+            if not good.all():
+                c, amp, length, spreading = _keep(good, c, amp, length, spreading)
+            out.append((c, amp, length, spreading,
                         np.full(n_good, path, dtype=np.int64),
                         np.full(n_good, path * self.opt.max_bounces + bounce,
                                 dtype=np.int64)))
