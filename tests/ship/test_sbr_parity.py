@@ -97,10 +97,14 @@ def test_trace_matches_the_implementation_before_the_speed_up(case):
     s = trace_signature(hull, tx, rx, 2.0e9, sea=sea, occluders=occluders,
                         options=SBROptions())
     n_rays, n_hits, n_centres, s_sum, totals = REFERENCE[case]
-    assert (s.n_rays, s.n_hits, len(s.centres)) == (n_rays, n_hits, n_centres)
-    # the same bits on the machine that printed them; 1e-12 leaves room for another
-    # BLAS or libm
-    assert float(np.abs(s.centres.s).sum()) == pytest.approx(s_sum, rel=1e-12)
+    # The machine that printed the reference gives the same bits. Another CPU's ray
+    # tracer (Embree's vector width) or libm may flip a ray grazing a triangle edge, which
+    # moves a hit count by one and a total by ~1 / n_hits: 1e-3 allows a few such rays
+    # and is far below what a slip of the kind above does (tens of percent).
+    assert s.n_rays == n_rays  # the launch grid is plain arithmetic
+    assert s.n_hits == pytest.approx(n_hits, rel=1e-3)
+    assert len(s.centres) == pytest.approx(n_centres, rel=1e-3)
+    assert float(np.abs(s.centres.s).sum()) == pytest.approx(s_sum, rel=1e-3)
     got = s.totals.sum(axis=1).reshape(4, 4)
-    np.testing.assert_allclose(got, np.array(totals), rtol=1e-12,
-                               atol=1e-12 * np.abs(totals).max())
+    np.testing.assert_allclose(got, np.array(totals), rtol=1e-3,
+                               atol=1e-3 * np.abs(totals).max())
