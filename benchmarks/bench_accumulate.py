@@ -62,6 +62,36 @@ def _time(fn, make, repeat):
     return (np.median(walls), np.min(walls), np.median(cpus), np.min(cpus)), out
 
 
+def bench_case(k: int, n: int, c: int, repeat: int, pool, rng) -> None:
+    """Print the lines of K points, N modes, C channels."""
+    w = ReceiveWindow(t0=20e-6, n_samples=n - PULSE - 2 * GUARD, sampling_rate=FS)
+    spec = np.fft.fft(np.exp(1j * np.pi * np.linspace(-1, 1, PULSE) ** 2 * 8), n)
+    lo, hi = w.bounds(PULSE)
+    taus = [rng.uniform(lo, hi, k) for _ in range(3)]
+    rows = [rng.standard_normal(k) + 1j * rng.standard_normal(k) for _ in range(c)]
+    sub = slice(0, 20000)
+    ref = accumulate_direct(taus[-1][sub], np.stack([r[sub] for r in rows]), spec, w)
+
+    def make(i):
+        return taus[i % 3], rows
+
+    cases = [
+        ("before (per channel)", lambda t, r: _before(t, r, spec, w, pool)),
+        ("new, double", lambda t, r: accumulate(t, r, spec, w)),
+        ("new, double, 1 thread", lambda t, r: accumulate(t, r, spec, w, workers=1)),
+        ("new, single (float32)", lambda t, r: accumulate(t, r, spec, w, precision="single")),
+    ]
+    base = None
+    for name, fn in cases:
+        (wm, wmin, cm, cmin), _ = _time(fn, make, repeat)
+        # the same method on the subset, against the direct sum
+        err = np.linalg.norm(fn(taus[-1][sub], [r[sub] for r in rows]) - ref)
+        base = base or wm
+        print(f"  {k:8d} {n:5d}  {name:22s} {1e3 * wm:7.1f} ({1e3 * wmin:5.1f}) "
+              f"{1e3 * cm:7.1f} ({1e3 * cmin:5.1f})  {err / np.linalg.norm(ref):11.1e}"
+              + (f"   x{base / wm:.2f} wall" if name != cases[0][0] else ""))
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--points", type=float, nargs="+", default=[1e5, 5e5, 1e6])
@@ -80,34 +110,7 @@ def main() -> None:
           f"  {'rel. l2 err':>11s}")
     for k in (int(p) for p in args.points):
         for n in args.modes:
-            w = ReceiveWindow(t0=20e-6, n_samples=n - PULSE - 2 * GUARD, sampling_rate=FS)
-            spec = np.fft.fft(np.exp(1j * np.pi * np.linspace(-1, 1, PULSE) ** 2 * 8), n)
-            lo, hi = w.bounds(PULSE)
-            taus = [rng.uniform(lo, hi, k) for _ in range(3)]
-            rows = [rng.standard_normal(k) + 1j * rng.standard_normal(k) for _ in range(c)]
-            sub = slice(0, 20000)
-            ref = accumulate_direct(taus[-1][sub], np.stack([r[sub] for r in rows]), spec, w)
-            ref_norm = np.linalg.norm(ref)
-
-            def make(i, taus=taus, rows=rows):
-                return taus[i % 3], rows
-
-            cases = [
-                ("before (per channel)", lambda t, r: _before(t, r, spec, w, pool)),
-                ("new, double", lambda t, r: accumulate(t, r, spec, w)),
-                ("new, double, 1 thread", lambda t, r: accumulate(t, r, spec, w, workers=1)),
-                ("new, single (float32)",
-                 lambda t, r: accumulate(t, r, spec, w, precision="single")),
-            ]
-            base = None
-            for name, fn in cases:
-                (wm, wmin, cm, cmin), _ = _time(fn, make, args.repeat)
-                # the same method on the subset, against the direct sum
-                err = np.linalg.norm(fn(taus[-1][sub], [r[sub] for r in rows]) - ref)
-                base = base or wm
-                print(f"  {k:8d} {n:5d}  {name:22s} {1e3 * wm:7.1f} ({1e3 * wmin:5.1f}) "
-                      f"{1e3 * cm:7.1f} ({1e3 * cmin:5.1f})  {err / ref_norm:11.1e}"
-                      + (f"   x{base / wm:.2f} wall" if name != cases[0][0] else ""))
+            bench_case(k, n, c, args.repeat, pool, rng)
     print(f"  load at the end {os.getloadavg()[0]:.2f}")
 
 
