@@ -14,7 +14,9 @@ of each result from the exact direct sum of eq (E2) is printed beside it (on a 2
 point subset of the scatterers for speed).
 
 Delays are uniform over the receive window (the echo of a sea that fills the beam), the
-amplitudes circular Gaussian (speckle).
+amplitudes circular Gaussian (speckle); the "VH = -HV" lines give the third channel the
+negative of the second to rounding, as monostatic reciprocity does in the FSA bases
+(the accumulation then transforms three channels).
 """
 
 from __future__ import annotations
@@ -69,23 +71,36 @@ def bench_case(k: int, n: int, c: int, repeat: int, pool, rng) -> None:
     lo, hi = w.bounds(PULSE)
     taus = [rng.uniform(lo, hi, k) for _ in range(3)]
     rows = [rng.standard_normal(k) + 1j * rng.standard_normal(k) for _ in range(c)]
+    mirrored = list(rows)
+    if c == 4:  # monostatic reciprocity: VH = -HV to rounding (the fused kernel's output)
+        mirrored[2] = -rows[1] * (1.0 + 1e-15 * rng.standard_normal(k))
     sub = slice(0, 20000)
     ref = accumulate_direct(taus[-1][sub], np.stack([r[sub] for r in rows]), spec, w)
 
     def make(i):
         return taus[i % 3], rows
 
+    def make_mirrored(i):
+        return taus[i % 3], mirrored
+
     cases = [
         ("before (per channel)", lambda t, r: _before(t, r, spec, w, pool)),
         ("new, double", lambda t, r: accumulate(t, r, spec, w)),
         ("new, double, 1 thread", lambda t, r: accumulate(t, r, spec, w, workers=1)),
         ("new, single (float32)", lambda t, r: accumulate(t, r, spec, w, precision="single")),
+        ("new, double, VH = -HV", lambda t, r: accumulate(t, r, spec, w)),
+        ("new, single, VH = -HV", lambda t, r: accumulate(t, r, spec, w, precision="single")),
     ]
+    if c != 4:
+        cases = cases[:4]
+    ref_m = accumulate_direct(taus[-1][sub], np.stack([r[sub] for r in mirrored]), spec, w)
     base = None
     for name, fn in cases:
-        (wm, wmin, cm, cmin), _ = _time(fn, make, repeat)
+        m = "VH" in name
+        (wm, wmin, cm, cmin), _ = _time(fn, make_mirrored if m else make, repeat)
         # the same method on the subset, against the direct sum
-        err = np.linalg.norm(fn(taus[-1][sub], [r[sub] for r in rows]) - ref)
+        err = np.linalg.norm(fn(taus[-1][sub], [r[sub] for r in (mirrored if m else rows)])
+                             - (ref_m if m else ref))
         base = base or wm
         print(f"  {k:8d} {n:5d}  {name:22s} {1e3 * wm:7.1f} ({1e3 * wmin:5.1f}) "
               f"{1e3 * cm:7.1f} ({1e3 * cmin:5.1f})  {err / np.linalg.norm(ref):11.1e}"
