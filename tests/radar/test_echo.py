@@ -233,6 +233,18 @@ def test_channel_mirrored_only_at_its_start_is_transformed(small_chunks):
         assert _rel_l2(got, want) <= 5e-9
 
 
+def test_kept_plans_are_bounded_and_remade_plans_give_the_same_bytes():
+    # Each thread keeps at most MAX_PLANS finufft plans (one per period, tolerance and
+    # precision); a plan evicted and made again gives the same bytes.
+    s, w, spec = _setup()
+    tau, a = _scatterers(w, 3000)
+    first = accumulate(tau, a, spec, w, method="nufft", workers=1)
+    for extra in range(echo.MAX_PLANS + 2):  # other periods in between
+        accumulate(tau, a, np.fft.fft(s, spec.size + 1 + extra), w, method="nufft", workers=1)
+    assert len(echo._PLANS.plans) == echo.MAX_PLANS
+    assert accumulate(tau, a, spec, w, method="nufft", workers=1).tobytes() == first.tobytes()
+
+
 def test_single_channel_and_empty_input():
     # A (K,) row gives a (n_samples,) trace equal to that channel of the (C, K) call; no
     # scatterers give zeros of the right shapes; both precisions.

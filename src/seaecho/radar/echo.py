@@ -279,9 +279,11 @@ def _phasors_nufft(tau: NDArray, rows: list[NDArray], window: ReceiveWindow, n: 
     chunk one single-threaded transform per channel on a worker thread (finufft releases
     the GIL), the partial sums added in chunk order (the same bytes for any workers).
 
-    A channel that is +-1 times an earlier one to within the bound of :func:`_mirrors`
-    (monostatic reciprocity: HV = -VH in the FSA bases) is not transformed: its sum is
-    that of the earlier channel times +-1, which adds at most 1 % of ``eps`` to its error.
+    A channel that :func:`_mirror_candidates` finds to be +-1 times an earlier one
+    (monostatic reciprocity: VH = -HV in the FSA bases) is not transformed: its sum is
+    that of the earlier channel times +-1 when the whole channel's difference d adds at
+    most :data:`MIRROR_TOLERANCE` x eps to its error (||F(d)||_2 <= sqrt(N) ||d||_1),
+    and is transformed after all otherwise.
     """
     bounds = _chunk_bounds(tau.size)
     m = len(bounds) - 1
@@ -354,6 +356,9 @@ def _mirror_candidates(rows: list[NDArray]) -> dict[int, tuple[int, float]]:
 
 _PLANS = threading.local()
 
+#: finufft plans kept per thread (periods N, tolerances and precisions in use).
+MAX_PLANS = 4
+
 
 def _plan(n: int, eps: float, dtype: type):
     """This thread's finufft type-1 plan for N modes (made once per thread, reused by
@@ -365,6 +370,8 @@ def _plan(n: int, eps: float, dtype: type):
         plans = _PLANS.plans = {}
     key = (n, eps, np.dtype(dtype).name)
     if key not in plans:
+        if len(plans) >= MAX_PLANS:  # the oldest goes (a run uses one or two)
+            del plans[next(iter(plans))]
         # spread_sort=0: the fine grid of a pulse (2 N points) stays in the cache, and
         # sorting a chunk's points costs more than it saves (docs/performance.md)
         plans[key] = finufft.Plan(1, (n,), n_trans=1, eps=eps, isign=-1,
