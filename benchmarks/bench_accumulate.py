@@ -13,6 +13,11 @@ the new method with ``workers=1`` (its CPU time is the work). The relative l2 di
 of each result from the exact direct sum of eq (E2) is printed beside it (on a 20 000
 point subset of the scatterers for speed).
 
+``--sim2`` adds the sea echo of one pulse of Simulation 2 (its 520 840 facets, 210 modes;
+the error against the exact direct sum of eq E2) and the time of finufft's options on it:
+a plan per call or kept, ``spread_sort``, ``upsampfac``, ``spread_kerevalmeth``, one
+batched plan (``n_trans``), the tolerance, float32.
+
 Delays are uniform over the receive window (the echo of a sea that fills the beam), the
 amplitudes circular Gaussian (speckle); the "VH = -HV" lines give the third channel the
 negative of the second to rounding, as monostatic reciprocity does in the FSA bases
@@ -107,12 +112,111 @@ def bench_case(k: int, n: int, c: int, repeat: int, pool, rng) -> None:
               + (f"   x{base / wm:.2f} wall" if name != cases[0][0] else ""))
 
 
+def sim2_pulse():
+    """(tau, per-channel amplitudes, pulse spectrum, window) of the sea echo of one pulse of
+    Simulation 2 (the fused kernel's output, as ``RadarSystem.receive`` gets it)."""
+    import warnings
+    from pathlib import Path
+
+    import seaecho.radar.system as system
+    from seaecho.config import load_scene
+    from seaecho.simulation import Simulation
+
+    path = Path(__file__).resolve().parents[1] / "scenes" / "paper_sim2_sar_128m_wind55.toml"
+    got = []
+    inner = system.accumulate
+
+    def grab(tau, amplitudes, spec, window, *args, **kwargs):
+        got.append((np.array(tau), [np.array(a) for a in amplitudes], np.asarray(spec),
+                    window))
+        return inner(tau, amplitudes, spec, window, *args, **kwargs)
+
+    system.accumulate = grab
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            Simulation(load_scene(path), base_dir=path.parent).pulse(40)
+    finally:
+        system.accumulate = inner
+    return max(got, key=lambda g: g[0].size)  # the sea (the other set: the hull)
+
+
+def bench_sim2(repeat: int, pool) -> None:
+    """The accumulation of a Simulation 2 pulse: methods, and finufft's options."""
+    import finufft
+
+    tau, rows, spec, w = sim2_pulse()
+    n, k = spec.size, tau.size
+    x = 2.0 * np.pi * ((tau - w.t0) * w.sampling_rate / n)
+    x = np.mod(x + np.pi, 2.0 * np.pi) - np.pi
+    exact = np.zeros((len(rows), n), dtype=complex)  # eq (E2) summed directly, in blocks
+    modes = np.fft.fftfreq(n, 1.0 / n)
+    for i in range(0, k, 20000):
+        exact += np.stack([r[i:i + 20000] for r in rows]) @ np.exp(
+            -1j * np.outer(x[i:i + 20000], modes))
+    ref = np.fft.ifft(exact * spec, axis=-1)[:, :w.n_samples]
+    mirrored = np.abs(rows[2] + rows[1]).max() / np.abs(rows[1]).max()
+    print(f"\nSimulation 2 pulse: {k} facets, {len(rows)} channels, N = {n} modes "
+          f"(max |VH + HV| / max |HV| = {mirrored:.1e}); load {os.getloadavg()[0]:.2f}")
+    cases = [
+        ("before (per channel)", lambda: _before(tau, rows, spec, w, pool)),
+        ("new, double", lambda: accumulate(tau, rows, spec, w)),
+        ("new, double, 1 thread", lambda: accumulate(tau, rows, spec, w, workers=1)),
+        ("new, single (float32)", lambda: accumulate(tau, rows, spec, w, precision="single")),
+    ]
+    for name, fn in cases:
+        (wm, wmin, cm, cmin), out = _time(fn, lambda i: (), repeat)
+        err = np.linalg.norm(out - ref, axis=1) / np.linalg.norm(ref, axis=1)
+        print(f"  {name:22s} wall {1e3 * wm:6.1f} ({1e3 * wmin:5.1f}) CPU {1e3 * cm:6.1f} "
+              f"({1e3 * cmin:5.1f}) ms; rel. l2 err per channel "
+              + " ".join(f"{e:.1e}" for e in err))
+
+    print(f"  finufft options, one thread, the {len(rows)} channels (CPU ms, median; "
+          f"rel. l2 err of the phasor sums):")
+
+    def plan(**kw):
+        opts = {"eps": 1e-9, "isign": -1, "modeord": 1, "nthreads": 1, **kw}
+        return finufft.Plan(1, (n,), **opts)
+
+    x32 = x.astype(np.float32)
+    rows32 = [r.astype(np.complex64) for r in rows]
+    stacked = np.stack(rows)
+    fresh = ("nufft1d1 per call (plan made and freed)",
+             lambda: [finufft.nufft1d1(x, r, n_modes=n, eps=1e-9, isign=-1, modeord=1,
+                                       nthreads=1) for r in rows])
+    variants = [fresh, ("np.mod fold of the points", lambda: np.mod(x + np.pi, 2 * np.pi))]
+    for label, kw, data, pts in [
+            ("kept plan, spread_sort auto", {}, rows, x),
+            ("kept plan, spread_sort 0", {"spread_sort": 0}, rows, x),
+            ("kept plan, spread_sort 1", {"spread_sort": 1}, rows, x),
+            ("kept plan, upsampfac 1.25", {"upsampfac": 1.25}, rows, x),
+            ("kept plan, spread_kerevalmeth 0", {"spread_kerevalmeth": 0}, rows, x),
+            ("n_trans = C (stacked channels)", {"n_trans": len(rows)}, [stacked], x),
+            *[(f"kept plan, eps {e:g}", {"eps": e}, rows, x)
+              for e in (1e-8, 1e-7, 1e-6, 1e-5)],
+            ("float32, eps 1e-5", {"eps": 1e-5, "dtype": "complex64"}, rows32, x32)]:
+        p = plan(**kw)
+        p.setpts(pts)
+        variants.append((label, lambda p=p, data=data: [p.execute(d) for d in data]))
+    for label, fn in variants:
+        (_, _, cm, _), out = _time(fn, lambda i: (), repeat)
+        err = ""
+        if label != "np.mod fold of the points":
+            got = np.concatenate([np.atleast_2d(o) for o in out])
+            err = f"{np.linalg.norm(got - exact) / np.linalg.norm(exact):9.1e}"
+        print(f"    {label:42s} {1e3 * cm:7.1f} {err}")
+    print(f"  load at the end {os.getloadavg()[0]:.2f}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--points", type=float, nargs="+", default=[1e5, 5e5, 1e6])
     ap.add_argument("--modes", type=int, nargs="+", default=[512, 2048])
     ap.add_argument("--channels", type=int, default=4)
     ap.add_argument("--repeat", type=int, default=7)
+    ap.add_argument("--sim2", action="store_true",
+                    help="also a pulse of Simulation 2 (its facets, 210 modes) and finufft's "
+                         "options on it")
     args = ap.parse_args()
 
     cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
@@ -127,6 +231,8 @@ def main() -> None:
         for n in args.modes:
             bench_case(k, n, c, args.repeat, pool, rng)
     print(f"  load at the end {os.getloadavg()[0]:.2f}")
+    if args.sim2:
+        bench_sim2(args.repeat, pool)
 
 
 if __name__ == "__main__":
