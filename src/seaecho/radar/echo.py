@@ -252,12 +252,36 @@ def accumulate(tau: ArrayLike, amplitudes: ArrayLike, pulse_spectrum: ArrayLike,
     return out[0] if squeeze else out
 
 
-def _points(tau: NDArray, window: ReceiveWindow, n: int) -> NDArray[np.float64]:
-    """Eq (E2): phasor points x_k = 2 pi (tau_k - t0) f_s / N folded into [-pi, pi)."""
-    u = (tau - window.t0) * (window.sampling_rate / n)  # periods
-    u -= np.floor(u + 0.5)
+def _points(tau: NDArray, window: ReceiveWindow, n: int,
+            out: NDArray | None = None) -> NDArray[np.float64]:
+    """Eq (E2): phasor points x_k = 2 pi (tau_k - t0) f_s / N folded into [-pi, pi)
+    (written into ``out`` if given; no temporaries of the points' size)."""
+    u = np.subtract(tau, window.t0, out=out)
+    u *= window.sampling_rate / n  # periods
+    tmp = np.empty(min(_BLOCK, u.size))
+    for i in range(0, u.size, _BLOCK):  # u -= floor(u + 1/2), block by block
+        seg = u[i:i + _BLOCK]
+        t = tmp[:seg.size]
+        np.add(seg, 0.5, out=t)
+        seg -= np.floor(t, out=t)
     u *= 2.0 * np.pi
     return u
+
+
+#: Elements per block of the element-wise passes over a chunk (a small buffer that stays
+#: in the cache; temporaries of a chunk's size cost page faults at every pulse).
+_BLOCK = 8192
+
+
+def _scratch(name: str, size: int, dtype: type) -> NDArray:
+    """This thread's buffer ``name`` of at least ``size`` elements (kept between calls)."""
+    bufs = getattr(_PLANS, "scratch", None)
+    if bufs is None:
+        bufs = _PLANS.scratch = {}
+    buf = bufs.get(name)
+    if buf is None or buf.size < size or buf.dtype != dtype:
+        buf = bufs[name] = np.empty(size, dtype=dtype)
+    return buf[:size]
 
 
 def _chunk_bounds(k: int) -> list[int]:
@@ -296,18 +320,26 @@ def _phasors_nufft(tau: NDArray, rows: list[NDArray], window: ReceiveWindow, n: 
 
     def run(i: int, channels: list[int], skip: dict) -> tuple[NDArray, NDArray]:
         lo, hi = bounds[i], bounds[i + 1]
-        x = _points(tau[lo:hi], window, n)
+        x = _points(tau[lo:hi], window, n, out=_scratch("x", hi - lo, np.float64))
+        if dtype is not np.complex128:
+            x32 = _scratch("x32", hi - lo, np.float32)
+            np.copyto(x32, x, casting="same_kind")
+            x = x32
         plan = _plan(n, eps, dtype)
-        plan.setpts(x if dtype is np.complex128 else x.astype(np.float32))
+        plan.setpts(x)  # the plan reads x at each execute: this thread's buffer
         part = np.zeros((len(rows), n), dtype=dtype)
-        l1 = np.zeros(len(rows))  # ||a_j - s a_c||_1 of this chunk's mirrored channels
+        l1 = np.zeros(len(rows))  # bounds of ||a_c - s a_src||_1 of the skipped channels
         for c in channels:  # a handful of channels
             if c in skip:
                 src, sign = skip[c]
-                l1[c] = np.abs(rows[c][lo:hi] - sign * rows[src][lo:hi]).sum()
+                l1[c] = _l1_difference(rows[c][lo:hi], rows[src][lo:hi], sign)
                 continue
             a = rows[c][lo:hi]
-            plan.execute(a if dtype is np.complex128 else a.astype(dtype), out=part[c])
+            if dtype is not np.complex128:
+                a32 = _scratch("a32", hi - lo, dtype)
+                np.copyto(a32, a, casting="same_kind")
+                a = a32
+            plan.execute(a, out=part[c])
         return part, l1
 
     def gather(channels: list[int], skip: dict) -> tuple[NDArray, NDArray]:
@@ -325,13 +357,29 @@ def _phasors_nufft(tau: NDArray, rows: list[NDArray], window: ReceiveWindow, n: 
     redo = []
     for c, (src, sign) in mirrors.items():
         # the skipped sum's error: ||F(d)||_2 <= sqrt(N) ||d||_1 for d = a_c - s a_src
-        if np.sqrt(n) * l1[c] <= MIRROR_TOLERANCE * eps * np.linalg.norm(total[src]):
+        norm = np.sqrt(np.sum(total[src].real ** 2 + total[src].imag ** 2))
+        if np.sqrt(n) * l1[c] <= MIRROR_TOLERANCE * eps * norm:
             total[c] = sign * total[src]
         else:
             redo.append(c)
     if redo:  # not mirrored after all (the probe of _mirror_candidates was misled)
         again, _ = gather(redo, {})
         total[redo] = again[redo]
+    return total
+
+
+def _l1_difference(a: NDArray, b: NDArray, sign: float, block: int = _BLOCK) -> float:
+    """sum_k |Re d_k| + |Im d_k| >= ||d||_1 for d = a - sign b, in blocks of a small
+    buffer (no temporaries of the chunk's size: their page faults cost more than the sum).
+    """
+    buf = np.empty(min(block, a.size), dtype=np.complex128)
+    op = np.subtract if sign > 0 else np.add
+    total = 0.0
+    for i in range(0, a.size, block):
+        d = buf[:min(block, a.size - i)]
+        op(a[i:i + block], b[i:i + block], out=d)
+        v = d.view(np.float64)
+        total += float(np.abs(v, out=v).sum())
     return total
 
 
