@@ -132,6 +132,9 @@ def main() -> None:
     ap.add_argument("--no-prefetch", action="store_true",
                     help="without the next pulse's sea computed ahead on a thread "
                     "(Simulation.prefetch_surface, as Simulation.pulses does)")
+    ap.add_argument("--nufft-precision", choices=["double", "single"], default="double",
+                    help="precision of the accumulation's NUFFT (seaecho.radar.echo."
+                         "accumulate; the simulation's default is double)")
     ap.add_argument("--freeze", choices=["on", "off"], default=None,
                     help="replay the fused kernel with drjit.freeze (default: "
                          "seaecho.radar.resident.FREEZE)")
@@ -149,6 +152,11 @@ def main() -> None:
     scene = scene.model_copy(update=update)
     timer = Timer()
     found = install(timer)
+    if args.nufft_precision != "double":  # the receive stage's calls, still timed
+        import seaecho.radar.system as system
+
+        system.accumulate = functools.partial(system.accumulate,
+                                              precision=args.nufft_precision)
     warnings.simplefilter("ignore")
     w0, c0 = time.perf_counter(), time.process_time()
     sim = Simulation(scene, base_dir=SIM2.parent)
@@ -176,7 +184,8 @@ def main() -> None:
     path = ("reference path" if res is None else
             f"fused kernel, {'frozen' if getattr(res, 'freeze', False) else 'traced'}")
     print(f"profile_pulse: Simulation 2, {scene.sea.nx}^2 sea, refresh_interval_s = "
-          f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses, {path}; "
+          f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses, {path}, "
+          f"NUFFT {args.nufft_precision}; "
           f"{os.cpu_count()} CPUs, load {load0:.2f} -> {os.getloadavg()[0]:.2f}")
     print(f"  set-up and 2 warm-up pulses: {setup[0]:.2f} s wall, {setup[1]:.2f} s CPU")
     print(f"  {'stage':44s} {'wall [ms]':>10s} {'CPU [ms]':>10s} {'calls':>6s}")
