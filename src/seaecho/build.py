@@ -453,7 +453,8 @@ def build_radar(scene) -> RadarModel:
         tile_size=tuple(scene.sea.size_m), sea_clutter=r.sea_clutter,
         targets=_targets(scene), seed=scene.run.seed, range_weighting=r.range_weighting,
         taylor_nbar=r.taylor_nbar, taylor_sidelobe_db=r.taylor_sidelobe_db,
-        sea_update_pulses=r.sea_update_pulses, sigma_map_pulse=r.sigma_map_pulse)
+        sea_update_pulses=r.sea_update_pulses, sigma_map_pulse=r.sigma_map_pulse,
+        accumulation_precision=r.accumulation_precision)
 
 
 # -------------------------------------------------------------------------- the facets

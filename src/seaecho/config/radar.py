@@ -283,6 +283,12 @@ class RadarConfig(Section):
     sea_update_pulses: int = Field(
         1, ge=1, le=10_000_000, description="recompute the sea surface every N pulses [-]"
     )
+    accumulation_precision: Literal["double", "single"] = Field(
+        "double",
+        description="floating point of the echo accumulation's non-uniform FFT (eq E2): "
+        "'double' (error ~5e-10 of each channel's echo) or 'single' (~1e-5, i.e. -98 dB, "
+        "about half the CPU time; CPU only, a GPU run keeps double; docs/performance.md)",
+    )
     thermal_noise: bool = Field(False, description="add receiver thermal noise k T0 F B")
     noise_figure_db: float = Field(3.0, ge=0.0, le=50.0, description="noise figure F [dB]")
     noise_bandwidth_hz: float | None = Field(

@@ -99,6 +99,9 @@ class RadarModel:
         The sea surface is recomputed every N pulses.
     sigma_map_pulse : int
         Pulse whose sigma maps a run saves.
+    accumulation_precision : str
+        Floating point of the echo accumulation's NUFFT ('double' or 'single',
+        :func:`seaecho.radar.echo.accumulate`).
     """
 
     carrier: float
@@ -128,6 +131,7 @@ class RadarModel:
     taylor_sidelobe_db: float = 35.0
     sea_update_pulses: int = 1
     sigma_map_pulse: int = 0
+    accumulation_precision: str = "double"
 
     @property
     def monostatic(self) -> bool:

@@ -321,7 +321,8 @@ class RadarSystem:
             else:
                 tau, amp = e.tau[keep], [a[keep] for a in e.amplitudes]
             if tau.size:
-                out += accumulate(tau, amp, self._spectrum, self.window)
+                out += accumulate(tau, amp, self._spectrum, self.window,
+                                  precision=self.model.accumulation_precision)
         if self.model.thermal_noise if noise is None else noise:
             out += thermal_noise(out.shape, self.noise_power,
                                  generator(self.seed, "noise", pulse))
