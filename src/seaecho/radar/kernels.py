@@ -196,7 +196,8 @@ def facet_visibility(xp, geometry, facets: dict[str, Any]) -> tuple[Any, Any, An
 
 
 def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: Any,
-                   draws: dict[str, Any], lo: float, hi: float) -> dict[str, Any]:
+                   draws: dict[str, Any], lo: float, hi: float, *,
+                   scattering: Any = None) -> dict[str, Any]:
     """One pulse of sea facets over a namespace: visibility, eqs P1-P4, eqs R1 and R3.
 
     Parameters
@@ -219,6 +220,11 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
     lo, hi : float
         Delays [s] outside which an echo cannot reach the receive window
         (``ReceiveWindow.keep``).
+    scattering : array namespace, optional
+        The namespace of eqs P1-P4 (``mechanisms_of`` and the speckle; ``xp`` in float32,
+        ``xp.with_precision("single")``): the directions, normals, areas and draws are
+        cast to it, and the amplitudes it gives enter eqs R1 and R3, which stay in
+        ``xp``. Default ``xp``.
 
     Returns
     -------
@@ -226,10 +232,12 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
         ``tau`` [s], ``amplitudes`` (one complex value per channel) [sqrt(W)] and ``keep``
         (Bool: visible and inside the window), for every facet.
     """
+    xs = xp if scattering is None else scattering
     visible, n_i, n_s = facet_visibility(xp, geometry, facets)
     # Eqs P1-P4 with the facet's area times its visibility (0 or 1)
     area = facets["area"] * xp.select(visible, xp.const(1.0), xp.const(0.0))
-    s = speckle(xp, mechanisms_of(n_i, n_s, facets["normal"]), draws, area)
+    mech = mechanisms_of(xs.cast(n_i), xs.cast(n_s), xs.cast(facets["normal"]))
+    s = speckle(xs, mech, {m: xs.cast(g) for m, g in draws.items()}, xs.cast(area))
     # Eqs R1, R3
     t = echo_terms(xp, radar, geometry, facets["centroid"], facets["velocity"], s)
     keep = visible & (t["tau"] > lo) & (t["tau"] < hi)
