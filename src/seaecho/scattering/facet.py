@@ -91,10 +91,13 @@ from .spm import HeightSpectrum, azimuth_cos_sin, bragg_matrix, bragg_vector
 from .twoscale import check_spm_validity
 
 MODELS = ("blend", "kirchhoff", "spm")
-#: Working precision of eqs P1-P7 in the Dr.Jit kernels: ``"single"`` (float32, the
-#: default) or ``"double"``; the environment variable ``SEAECHO_SCATTERING_PRECISION``
-#: sets it. The geometry, the delays and the carrier phase are float64 in either, and the
-#: numpy path is float64 throughout (docs/scattering.md, "Working precision").
+#: Working precision of eqs P1-P7 in a simulation's per-pulse Dr.Jit kernels (the fused
+#: pulse of ``radar.resident`` and the reference path of ``Simulation.sea_echo``):
+#: ``"single"`` (float32, the default) or ``"double"``, from the environment variable
+#: ``SEAECHO_SCATTERING_PRECISION``. The geometry, the delays, the carrier phase and the
+#: radar equation's magnitudes are float64 in either; the functions of this module take
+#: ``precision="double"`` unless told otherwise, and numpy is float64 throughout
+#: (docs/scattering.md, "Working precision").
 PRECISION = os.environ.get("SEAECHO_SCATTERING_PRECISION", "single")
 BACKENDS = ("auto", "numpy", "drjit")
 
@@ -508,13 +511,12 @@ def _namespace(backend: str, spectrum: Any, variant: str | None):
 def _evaluate_mechanisms(backend, variant, n_i, n_s, normal, k, eps_r, spectrum,
                          mss_upwind, mss_crosswind, wind_direction, wake_damping,
                          breaking_fraction, breaking_tilt, local, model, cox_munk, tilt,
-                         precision=None):
+                         precision="double"):
     """The kernel set-up shared by the per-facet entry points: the namespace of the
-    scattering formulas (the back end's in ``precision``, :data:`PRECISION` by default),
-    its boundary, the kernel inputs and the mechanisms' (lazy) matrices with their
-    context."""
+    scattering formulas (the back end's in ``precision``), its boundary, the kernel
+    inputs and the mechanisms' (lazy) matrices with their context."""
     xp = _namespace(backend, spectrum, variant)
-    xs = xp.with_precision(PRECISION if precision is None else precision)
+    xs = xp.with_precision(precision)
     n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
     n = n_i.shape[0]
     io = Boundary(xp, n)
@@ -550,6 +552,7 @@ def facet_terms(
     tilt: TiltQuadrature | None = None,
     breaking_fraction: ArrayLike | None = None,
     breaking_tilt: float = 0.0,
+    precision: str = "double",
 ) -> FacetTerms:
     """Mechanism matrices ``K``, ``B`` and weights ``w`` of facets (eqs P1-P2, B1-B4).
 
@@ -602,6 +605,10 @@ def facet_terms(
         Fraction ``q`` of each facet covered by breaking zones, in [0, 1] (eq P7).
     breaking_tilt : float
         Forward tilt of the breaking zones ``theta_wb A_wb`` [rad] (BR5).
+    precision : {"double", "single"}
+        Working precision of the formulas on the Dr.Jit back end (float64 or float32;
+        the inputs are cast to it, the results returned as float64 / complex128); numpy
+        is float64 whatever is asked. A simulation's kernels take :data:`PRECISION`.
 
     Returns
     -------
@@ -618,7 +625,7 @@ def facet_terms(
     xp, io, n, args, mech, ctx = _evaluate_mechanisms(
         backend, variant, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
         wind_direction, wake_damping, breaking_fraction, breaking_tilt, local, model,
-        cox_munk, tilt)
+        cox_munk, tilt, precision)
     names = list(mech)
     res = io.numpy(ctx["weight"], *[mech[m][0] for m in names])
     weight = res.pop(0).reshape(n, 4)
@@ -772,6 +779,7 @@ def speckled_facet_amplitudes(
     tilt: TiltQuadrature | None = None,
     breaking_fraction: ArrayLike | None = None,
     breaking_tilt: float = 0.0,
+    precision: str = "double",
 ) -> NDArray:
     """Eqs P1-P7 in one pass: speckled amplitudes ``a_mn`` [m] of facets, shape (N, 4).
 
@@ -779,7 +787,8 @@ def speckled_facet_amplitudes(
     :func:`facet_terms`, ``area`` (N,) [m^2]): :func:`mechanisms` followed by
     :func:`speckle`, which the Dr.Jit back end evaluates as one kernel, so that the
     mechanism matrices never come back to numpy (the per-pulse path of a simulation).
-    The back ends agree within rounding (tests).
+    The back ends agree within rounding (tests); ``precision`` as :func:`facet_terms`
+    (``"single"``: within 1e-5 of the float64 amplitudes, tests).
 
     ``draws`` is ``(g_K, g_B)`` (:func:`speckle_draws`), a dict of (N,) complex draws,
     one per mechanism (:data:`MECHANISMS`), or a callable ``draws(xp, io, context)``
@@ -796,7 +805,7 @@ def speckled_facet_amplitudes(
     xp, io, n, args, mech, ctx = _evaluate_mechanisms(
         backend, variant, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
         wind_direction, wake_damping, breaking_fraction, breaking_tilt, local, model,
-        cox_munk, tilt)
+        cox_munk, tilt, precision)
     names = list(mech)
     if callable(draws):
         # the evolving speckle's phases in float64 (io.xp), from float64 directions
