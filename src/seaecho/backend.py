@@ -109,11 +109,14 @@ DEFAULT_VARIANT = "llvm_ad_mono_polarized"
 #: (float32, complex64; Dr.Jit only, for the scattering stage of the facet kernels).
 PRECISIONS = ("double", "single")
 #: Per precision: ``tiny``, a positive threshold below which a square of a value counts as
-#: 0 (far above the smallest normal number), and ``exp_cap``, the largest exponent the
+#: 0 (far above the smallest normal number); ``exp_cap``, the largest exponent the
 #: formulas let ``exp`` take (a power of ``e`` that still leaves room for the products
 #: that follow: exp(700) ~ 1e304 in float64, exp(80) ~ 6e34 in float32, whose largest is
-#: 3.4e38).
-_LIMITS = {"double": (1e-200, 700.0), "single": (1e-30, 80.0)}
+#: 3.4e38); ``degenerate``, the length of the tangential part of a unit direction below
+#: which it counts as along a plane's normal (``geometry.frames.DEGENERATE``: 1e-9 in
+#: float64; 1e-5 in float32, whose rounding leaves up to about 5e-7 of an exactly
+#: degenerate one, e.g. the specular normal of a monostatic geometry, -n_i).
+_LIMITS = {"double": (1e-200, 700.0, 1e-9), "single": (1e-30, 80.0, 1e-5)}
 
 #: Byte alignment of the buffers handed to Dr.Jit (a cache line; the widest AVX-512 load).
 ALIGNMENT = 64
@@ -264,7 +267,7 @@ class NumpyNamespace:
     #: numpy evaluates every formula in float64 (the reference of the single-precision
     #: Dr.Jit kernels): :meth:`with_precision` returns this namespace whatever is asked.
     precision = "double"
-    tiny, exp_cap = _LIMITS["double"]
+    tiny, exp_cap, degenerate = _LIMITS["double"]
 
     sqrt = staticmethod(np.sqrt)
     exp = staticmethod(np.exp)
@@ -455,7 +458,7 @@ class DrJitNamespace:
         self.dr = dr
         self.module = m
         self.precision = precision
-        self.tiny, self.exp_cap = _LIMITS[precision]
+        self.tiny, self.exp_cap, self.degenerate = _LIMITS[precision]
         single = precision == "single"
         self.Float = m.Float32 if single else m.Float64
         self.Complex = m.Complex2f if single else m.Complex2f64
