@@ -212,7 +212,7 @@ def cos_beta(xp, n_i: Any, n_s: Any, N: Any) -> Any:
     """
     d = n_s - n_i
     qn = xp.norm(d)
-    ok = qn > xp.degenerate
+    ok = qn > DEGENERATE
     return xp.select(ok, xp.dot(d, N) / xp.select(ok, qn, 1.0), 0.0)
 
 

@@ -80,7 +80,7 @@ def specular_direction(xp, n_i: Any, n_s: Any, fallback: Any) -> Any:
     """
     d = n_s - n_i
     qn = xp.norm(d)
-    ok = qn > xp.degenerate
+    ok = qn > frames.DEGENERATE
     return xp.select(ok, d * (1.0 / xp.select(ok, qn, 1.0)), fallback)
 
 
