@@ -452,9 +452,9 @@ def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwin
         def lookup(kx, ky, fn=spectrum):
             return np.asarray(fn(kx, ky), dtype=float)
     else:
-        values = per_facet(spectrum)
+        values = xs.cast(per_facet(spectrum))
 
-        def lookup(kx, ky, values=xs.cast(values)):
+        def lookup(kx, ky, values=values):
             return values
 
     w = float(wind_direction)
