@@ -1051,7 +1051,8 @@ class Boundary:
         if self.xp.dr.is_complex_v(a):  # Complex2f64, or Complex2f of a float32 stage
             return (np.asarray(a.real.numpy(), dtype=np.float64),
                     np.asarray(a.imag.numpy(), dtype=np.float64))
-        return np.asarray(a.numpy(), dtype=np.float64), None
+        a = np.asarray(a.numpy())
+        return (a.astype(np.float64) if a.dtype == np.float32 else a), None
 
     def _assemble(self, entries: list, tail: tuple[int, ...] | str | None) -> NDArray:
         parts = [self._parts(e) for e in entries]
