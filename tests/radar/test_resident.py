@@ -426,11 +426,12 @@ def test_float32_scattering_against_the_float64_kernel():
     # became a random one in float32, would fail.
     scene = _scene(scattering={"model": "blend+breaking", "unresolved_tilt": True})
     single, double = _pair(scene)
-    assert single._resident.xs.precision == "single"
     r = single._resident
-    double._resident = ResidentSea(r.radar, double.sea_model.facet_model, model=r.model,
-                                   cox_munk=r.cox_munk, tilt=r.tilt,
-                                   breaking_tilt=r.breaking_tilt, precision="double")
+    for sim, precision in ((single, "single"), (double, "double")):
+        sim._resident = ResidentSea(r.radar, sim.sea_model.facet_model, model=r.model,
+                                    cox_munk=r.cox_munk, tilt=r.tilt,
+                                    breaking_tilt=r.breaking_tilt, precision=precision)
+        assert sim._resident.xs.precision == precision
     for p in (0, 4):
         a, b = single.sea_echo(p).echo, double.sea_echo(p).echo
         assert a.tau.tobytes() == b.tau.tobytes()
