@@ -384,7 +384,7 @@ class Simulation:
         else:
             pos, vel, amp = centres[visible], facets.velocity[visible], amp[visible]
         echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2),
-                                         variant=self.variant)
+                                         variant=self.variant, precision=PRECISION)
         sig = None
         if sigma:
             sig = facet_terms(*args, *model, wake_damping=damping, local=facets,
