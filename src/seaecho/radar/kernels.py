@@ -8,19 +8,23 @@ directions, antenna gains (eq A1 and the built-in patterns of
 and the amplitude with the carrier phase (eq R1). :func:`scatterer_echo` evaluates it
 with numpy (``RadarSystem.scatterer_echo_numpy``) or as one fused Dr.Jit kernel on the
 CPU (``drjit.llvm``) or a CUDA GPU (``drjit.cuda``), about 20x faster than numpy on 2
-cores at half a million facets (``benchmarks/bench_radar.py``). Every operation is
-float64: ranges keep sub-micrometre precision and the carrier phase 2 pi f_c tau is
-reduced modulo one cycle before its sine and cosine. Per-pulse values (platform
-positions, velocities, antenna axes) enter as opaque constants: one compiled kernel per
-run.
+cores at half a million facets (``benchmarks/bench_radar.py``). The delays, directions,
+carrier phase and amplitude magnitude are float64: ranges keep sub-micrometre precision
+and the carrier phase 2 pi f_c tau is reduced modulo one cycle before its sine and
+cosine. The antenna gains, port states and polarimetric factor are evaluated in the
+namespace ``scattering`` when one is given (the sea's float32 kernels), else in
+float64. Per-pulse values (platform positions, velocities, antenna axes) enter as opaque
+constants: one compiled kernel per run.
 
 :func:`sea_echo_terms` chains the sea's per-pulse stages for a set of facets: facing test
 and ray-traced visibility (eq G1 and the local angles of :mod:`seaecho.geometry.frames`),
 the speckled facet amplitudes (eqs P1-P4, :func:`seaecho.scattering.facet.mechanisms`
 and :func:`~seaecho.scattering.facet.speckle`) and :func:`echo_terms`. These are the same
 functions, called with the same values, as the reference path of
-``Simulation.sea_echo`` (a Dr.Jit kernel per stage, numpy in between), so Dr.Jit records
-them as one kernel whose numbers are those of the reference to the last bit (tests);
+``Simulation.sea_echo`` (a Dr.Jit kernel per stage, numpy in between; both in the
+working precision ``seaecho.scattering.facet.PRECISION``, float32 by default, where eqs
+P1-P4 and the gains and ports are concerned), so Dr.Jit records them as one kernel whose
+numbers are those of the reference to the last bit (tests);
 :class:`seaecho.radar.resident.ResidentSea` runs it on device-resident facets.
 """
 

@@ -29,7 +29,10 @@ sea_echo_terms`) as one kernel per pulse on the back end of the scene's Mitsuba 
 The mechanisms are those of the reference path: the Kirchhoff/SPM blend, the Bragg term
 averaged over the unresolved tilts (eq P6, ``tilt``) and the breaking zones (eq P7); the
 numbers are those of the reference path, bit for bit (the same operations on the same
-values; tests). The kernel holds the facets where the surface put them, which is the held
+values; tests). Eqs P1-P7, the antenna gains and the port states are evaluated in float32
+(``precision``; the delays, the carrier phase and the amplitudes' magnitude in float64),
+within 2e-6 of each channel's largest amplitude of the float64 kernel (docs/scattering.md,
+"Working precision"). The kernel holds the facets where the surface put them, which is the held
 sea (``[scattering] sea_motion = "held"``, the paper's); an evolving sea (phase centres
 carried between updates, speckle evolving at each pulse) runs the reference path
 (:func:`resident_sea` returns None; docs/dynamics.md).
