@@ -83,6 +83,7 @@ __all__ = [
     "DEFAULT_VARIANT",
     "NUMPY",
     "VARIANTS",
+    "PRECISIONS",
     "Boundary",
     "DrJitNamespace",
     "Mat2",
@@ -103,6 +104,19 @@ __all__ = [
 VARIANTS = ("llvm_ad_mono_polarized", "cuda_ad_mono_polarized")
 #: CPU through libLLVM (``seaecho._llvm``).
 DEFAULT_VARIANT = "llvm_ad_mono_polarized"
+
+#: Working precisions of a namespace: ``"double"`` (float64, complex128) and ``"single"``
+#: (float32, complex64; Dr.Jit only, for the scattering stage of the facet kernels).
+PRECISIONS = ("double", "single")
+#: Per precision: ``tiny``, a positive threshold below which a square of a value counts as
+#: 0 (far above the smallest normal number); ``exp_cap``, the largest exponent the
+#: formulas let ``exp`` take (a power of ``e`` that still leaves room for the products
+#: that follow: exp(700) ~ 1e304 in float64, exp(80) ~ 6e34 in float32, whose largest is
+#: 3.4e38); ``degenerate``, the length of the tangential part of a unit direction below
+#: which it counts as along a plane's normal (``geometry.frames.DEGENERATE``: 1e-9 in
+#: float64; 1e-5 in float32, whose rounding leaves up to about 5e-7 of an exactly
+#: degenerate one, e.g. the specular normal of a monostatic geometry, -n_i).
+_LIMITS = {"double": (1e-200, 700.0, 1e-9), "single": (1e-30, 80.0, 1e-5)}
 
 #: Byte alignment of the buffers handed to Dr.Jit (a cache line; the widest AVX-512 load).
 ALIGNMENT = 64
@@ -250,6 +264,10 @@ class NumpyNamespace:
 
     name = "numpy"
     is_numpy = True
+    #: numpy evaluates every formula in float64 (the reference of the single-precision
+    #: Dr.Jit kernels): :meth:`with_precision` returns this namespace whatever is asked.
+    precision = "double"
+    tiny, exp_cap, degenerate = _LIMITS["double"]
 
     sqrt = staticmethod(np.sqrt)
     exp = staticmethod(np.exp)
@@ -282,6 +300,17 @@ class NumpyNamespace:
     def select_lazy(self, c: Any, fn: Callable[[], Any], b: Any) -> Any:
         """``select(c, fn(), b)``, calling ``fn`` only if some ``c`` holds (rare cases)."""
         return self.select(c, fn(), b) if np.any(c) else b
+
+    def with_precision(self, precision: str) -> NumpyNamespace:
+        """This namespace: numpy is the float64 reference whatever ``precision`` asks
+        (``"double"`` or ``"single"``)."""
+        _check_precision(precision)
+        return self
+
+    @staticmethod
+    def cast(a: Any) -> Any:
+        """``a`` unchanged (numpy values are float64 already)."""
+        return a
 
     # vectors
     @staticmethod
@@ -398,17 +427,25 @@ NUMPY = NumpyNamespace()
 
 
 class DrJitNamespace:
-    """A Dr.Jit namespace on ``drjit.llvm`` (CPU) or ``drjit.cuda`` (GPU), float64.
+    """A Dr.Jit namespace on ``drjit.llvm`` (CPU) or ``drjit.cuda`` (GPU).
 
     Build it with :func:`drjit_namespace`. Arrays are 1-D (one entry per facet or
     scatterer); width-1 arrays (constants) broadcast.
+
+    ``precision`` ``"double"`` (the default) works in ``Float64``/``Complex2f64``;
+    ``"single"`` in ``Float32``/``Complex2f`` (its ``Float``, ``Complex``, ``Array3``,
+    ``const`` and ``table`` are float32): :meth:`with_precision` gives the other one of
+    the same back end and :meth:`cast` converts values into it. Dr.Jit promotes a float32
+    operand mixed with a float64 one to float64, so a formula evaluated on single values
+    with this namespace's constants stays float32 throughout.
     """
 
     is_numpy = False
 
-    def __init__(self, backend: str) -> None:
+    def __init__(self, backend: str, precision: str = "double") -> None:
         if backend not in ("llvm", "cuda"):
             raise ValueError(f"backend = {backend!r}: allowed 'llvm', 'cuda'")
+        _check_precision(precision)
         from ._llvm import configure_llvm
 
         configure_llvm()
@@ -420,9 +457,12 @@ class DrJitNamespace:
         self.name = backend
         self.dr = dr
         self.module = m
-        self.Float = m.Float64
-        self.Complex = m.Complex2f64
-        self.Array3 = m.Array3f64
+        self.precision = precision
+        self.tiny, self.exp_cap, self.degenerate = _LIMITS[precision]
+        single = precision == "single"
+        self.Float = m.Float32 if single else m.Float64
+        self.Complex = m.Complex2f if single else m.Complex2f64
+        self.Array3 = m.Array3f if single else m.Array3f64
         self.UInt = m.UInt32
         self.Int = m.Int32
         self.Float32 = m.Float32
@@ -456,6 +496,25 @@ class DrJitNamespace:
     def select_lazy(self, c: Any, fn: Callable[[], Any], b: Any) -> Any:
         """``select(c, fn(), b)`` (a kernel evaluates both sides anyway)."""
         return self.select(c, fn(), b)
+
+    def with_precision(self, precision: str) -> DrJitNamespace:
+        """The namespace of the same back end in ``precision`` (``"double"``,
+        ``"single"``)."""
+        return _drjit_namespace(self.name, precision)
+
+    def cast(self, a: Any) -> Any:
+        """``a`` (a real, complex or 3-vector value, or a :class:`Mat2` of them) in this
+        namespace's precision; Python numbers and masks as they are."""
+        if isinstance(a, Mat2):
+            return a.map(self.cast)
+        if isinstance(a, int | float | complex | self.Bool):
+            return a
+        m = self.module
+        if isinstance(a, m.Complex2f64 | m.Complex2f):
+            return a if isinstance(a, self.Complex) else self.Complex(a)
+        if isinstance(a, m.Array3f64 | m.Array3f):
+            return a if isinstance(a, self.Array3) else self.Array3(a)
+        return a if isinstance(a, self.Float) else self.Float(a)
 
     def vec(self, x: Any, y: Any, z: Any) -> Any:
         return self.Array3(x, y, z)
@@ -501,7 +560,8 @@ class DrJitNamespace:
         return self.Array3(*(self.const(c) for c in np.asarray(a, dtype=np.float64).reshape(3)))
 
     def table(self, values: NDArray) -> Any:
-        return self.Float(aligned(values))
+        return self.Float(aligned(values, np.float32 if self.precision == "single"
+                                  else np.float64))
 
     def index(self, x: Any) -> Any:
         return self.UInt(x)
@@ -659,9 +719,15 @@ def exact_cuda_math() -> None:
     dr.set_flag(dr.JitFlag.FastMath, False)
 
 
+def _check_precision(precision: str) -> None:
+    if precision not in PRECISIONS:
+        raise ValueError(f"precision = {precision!r}: allowed "
+                         f"{', '.join(map(repr, PRECISIONS))}")
+
+
 @functools.cache
-def _drjit_namespace(backend: str) -> DrJitNamespace:
-    return DrJitNamespace(backend)
+def _drjit_namespace(backend: str, precision: str = "double") -> DrJitNamespace:
+    return DrJitNamespace(backend, precision)
 
 
 def namespace(backend: str = "drjit", variant: str | None = None):
@@ -982,9 +1048,11 @@ class Boundary:
         if _is_constant(a) or self.xp.is_numpy:
             a = np.asarray(a)
             return (a.real, a.imag) if np.iscomplexobj(a) else (a, None)
-        if isinstance(a, self.xp.Complex):
-            return np.asarray(a.real.numpy()), np.asarray(a.imag.numpy())
-        return np.asarray(a.numpy()), None
+        if self.xp.dr.is_complex_v(a):  # Complex2f64, or Complex2f of a float32 stage
+            return (np.asarray(a.real.numpy(), dtype=np.float64),
+                    np.asarray(a.imag.numpy(), dtype=np.float64))
+        a = np.asarray(a.numpy())
+        return (a.astype(np.float64) if a.dtype == np.float32 else a), None
 
     def _assemble(self, entries: list, tail: tuple[int, ...] | str | None) -> NDArray:
         parts = [self._parts(e) for e in entries]

@@ -349,7 +349,7 @@ class Simulation:
         """
         if self.sea is None:
             raise ValueError("sea clutter is off in this scene ([radar] sea_clutter)")
-        from .scattering.facet import facet_terms, speckled_facet_amplitudes
+        from .scattering.facet import PRECISION, facet_terms, speckled_facet_amplitudes
 
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
@@ -376,7 +376,7 @@ class Simulation:
         amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,
                                         draws=draws, wake_damping=damping,
                                         local=facets, variant=self.variant,
-                                        **options)
+                                        precision=PRECISION, **options)
         centres = self.phase_centres(pulse, st)
         visible = vis > 0
         if visible.all():  # the usual case: no copies
@@ -384,11 +384,12 @@ class Simulation:
         else:
             pos, vel, amp = centres[visible], facets.velocity[visible], amp[visible]
         echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2),
-                                         variant=self.variant)
+                                         variant=self.variant, precision=PRECISION)
         sig = None
         if sigma:
             sig = facet_terms(*args, *model, wake_damping=damping, local=facets,
-                              variant=self.variant, **options).sigma() * vis[:, None]
+                              variant=self.variant, precision=PRECISION,
+                              **options).sigma() * vis[:, None]
         return SeaEcho(echo, sig, facets)
 
     # ------------------------------------------------------------------- one pulse

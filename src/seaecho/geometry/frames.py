@@ -61,7 +61,7 @@ from numpy.typing import ArrayLike, NDArray
 from ..backend import NUMPY, Boundary, Mat2
 
 #: Below this norm a cross product is treated as zero (the direction is along the normal).
-DEGENERATE = 1e-9
+DEGENERATE = 1e-9  # the float64 namespaces' ``degenerate`` (backend._LIMITS)
 _DEGENERATE = DEGENERATE  # former name
 
 Z_HAT = np.array([0.0, 0.0, 1.0])
@@ -89,7 +89,7 @@ def tangential_part(xp, n: Any, N: Any) -> tuple[Any, Any]:
     bases and for the local azimuths alike, which directions are degenerate.
     """
     t = n - xp.dot(n, N) * N
-    degenerate = xp.norm(t) < DEGENERATE
+    degenerate = xp.norm(t) < xp.degenerate
     return xp.select_lazy(degenerate, lambda: reference_tangent(xp, N), t), degenerate
 
 

@@ -8,19 +8,23 @@ directions, antenna gains (eq A1 and the built-in patterns of
 and the amplitude with the carrier phase (eq R1). :func:`scatterer_echo` evaluates it
 with numpy (``RadarSystem.scatterer_echo_numpy``) or as one fused Dr.Jit kernel on the
 CPU (``drjit.llvm``) or a CUDA GPU (``drjit.cuda``), about 20x faster than numpy on 2
-cores at half a million facets (``benchmarks/bench_radar.py``). Every operation is
-float64: ranges keep sub-micrometre precision and the carrier phase 2 pi f_c tau is
-reduced modulo one cycle before its sine and cosine. Per-pulse values (platform
-positions, velocities, antenna axes) enter as opaque constants: one compiled kernel per
-run.
+cores at half a million facets (``benchmarks/bench_radar.py``). The delays, directions,
+carrier phase and amplitude magnitude are float64: ranges keep sub-micrometre precision
+and the carrier phase 2 pi f_c tau is reduced modulo one cycle before its sine and
+cosine. The antenna gains, port states and polarimetric factor are evaluated in the
+namespace ``scattering`` when one is given (the sea's float32 kernels), else in
+float64. Per-pulse values (platform positions, velocities, antenna axes) enter as opaque
+constants: one compiled kernel per run.
 
 :func:`sea_echo_terms` chains the sea's per-pulse stages for a set of facets: facing test
 and ray-traced visibility (eq G1 and the local angles of :mod:`seaecho.geometry.frames`),
 the speckled facet amplitudes (eqs P1-P4, :func:`seaecho.scattering.facet.mechanisms`
 and :func:`~seaecho.scattering.facet.speckle`) and :func:`echo_terms`. These are the same
 functions, called with the same values, as the reference path of
-``Simulation.sea_echo`` (a Dr.Jit kernel per stage, numpy in between), so Dr.Jit records
-them as one kernel whose numbers are those of the reference to the last bit (tests);
+``Simulation.sea_echo`` (a Dr.Jit kernel per stage, numpy in between; both in the
+working precision ``seaecho.scattering.facet.PRECISION``, float32 by default, where eqs
+P1-P4 and the gains and ports are concerned), so Dr.Jit records them as one kernel whose
+numbers are those of the reference to the last bit (tests);
 :class:`seaecho.radar.resident.ResidentSea` runs it on device-resident facets.
 """
 
@@ -44,15 +48,18 @@ __all__ = ["antenna_gain", "echo_terms", "facet_visibility", "port_matrix", "sca
            "scatterer_echo_drjit", "sea_echo_terms"]
 
 
-def antenna_gain(xp, antenna, d: Any, axes: Any) -> Any:
+def antenna_gain(xp, antenna, d: Any, axes: Any, xs: Any = None) -> Any:
     """Power gain [-] of ``antenna`` towards unit world directions ``d`` (eq A1 et al.).
 
     ``axes`` (3, 3): the antenna axes in the world (columns boresight, width, height);
-    the direction in the antenna frame is ``axes^T d``.
+    the direction in the antenna frame is ``axes^T d``. ``xs``: the namespace the gain is
+    evaluated in (``d`` one of its values; ``xp`` by default), the axes entering as
+    ``xp``'s constants cast to it.
     """
+    xs = xp if xs is None else xs
     a = np.asarray(axes, dtype=np.float64)
-    d_local = xp.vec(*(xp.dot(d, xp.vconst(a[:, j])) for j in range(3)))
-    return antenna.gain_local(d_local, xp=xp)
+    d_local = xs.vec(*(xs.dot(d, xs.cast(xp.vconst(a[:, j]))) for j in range(3)))
+    return antenna.gain_local(d_local, xp=xs)
 
 
 def _coefficient(xp, c: complex) -> Any:
@@ -79,7 +86,8 @@ def port_matrix(xp, coefficients: NDArray, n: Any, up: Any) -> Mat2:
     return c @ basis_change(xp, world, own)
 
 
-def echo_terms(xp, radar, geometry, p: Any, v: Any, s: Mat2) -> dict[str, Any]:
+def echo_terms(xp, radar, geometry, p: Any, v: Any, s: Mat2, *,
+               scattering: Any = None) -> dict[str, Any]:
     """Eqs (R1), (R3), (A1), (A2) for scatterers, over an array namespace.
 
     Parameters
@@ -93,6 +101,12 @@ def echo_terms(xp, radar, geometry, p: Any, v: Any, s: Mat2) -> dict[str, Any]:
         Scatterer positions at the emission [m] and velocities [m/s].
     s : Mat2 of complex
         Scattering amplitudes [m] on the world FSA bases, (h, v) order.
+    scattering : array namespace, optional
+        Where the antenna gains, the port states and the polarimetric factor are
+        evaluated (the sea's float32 namespace, ``xp.with_precision("single")``): the
+        directions are cast to it, the gains and the factor cast back. The delays, the
+        directions, the carrier phase and the radar equation's magnitude stay in ``xp``.
+        Default ``xp``.
 
     Returns
     -------
@@ -100,6 +114,7 @@ def echo_terms(xp, radar, geometry, p: Any, v: Any, s: Mat2) -> dict[str, Any]:
         ``tau, r_t, r_r, g_t, g_r`` [s, m, m, -, -], ``n_i, n_s`` (vectors [-]) and
         ``amplitudes``: one complex array per channel of ``radar.channels`` [sqrt(W)].
     """
+    xs = xp if scattering is None else scattering
     tx, rx = geometry.tx, geometry.rx
     p_tx = xp.vconst(tx.position)
     p_rx = xp.vconst(rx.position)
@@ -110,16 +125,17 @@ def echo_terms(xp, radar, geometry, p: Any, v: Any, s: Mat2) -> dict[str, Any]:
     r_t, r_r = C0 * tau_t, C0 * tau_r
     n_i = (p_b - p_tx) * (1.0 / r_t)
     n_s = (p_rx + v_rx * tau - p_b) * (1.0 / r_r)
-    g_t = antenna_gain(xp, radar.tx_antenna, n_i, geometry.tx_axes)
-    g_r = antenna_gain(xp, radar.rx_antenna, -n_s, geometry.rx_axes)
+    d_i, d_s = xs.cast(n_i), xs.cast(n_s)
+    g_t = xp.cast(antenna_gain(xp, radar.tx_antenna, d_i, geometry.tx_axes, xs))
+    g_r = xp.cast(antenna_gain(xp, radar.rx_antenna, -d_s, geometry.rx_axes, xs))
     # Port states on the world FSA bases (receive: the conjugate states, eq A2)
-    t_ports = port_matrix(xp, port_coefficients(radar.tx_antenna.basis,
+    t_ports = port_matrix(xs, port_coefficients(radar.tx_antenna.basis,
                                                 radar.tx_antenna.cross_polar_isolation_db),
-                          n_i, xp.vconst(tx.rotation[:, 2]))
-    r_ports = port_matrix(xp, np.conj(port_coefficients(
+                          d_i, xs.cast(xp.vconst(tx.rotation[:, 2])))
+    r_ports = port_matrix(xs, np.conj(port_coefficients(
         radar.rx_antenna.basis, radar.rx_antenna.cross_polar_isolation_db)),
-        n_s, xp.vconst(rx.rotation[:, 2]))
-    m = polarimetric_factor(r_ports, s, t_ports)
+        d_s, xs.cast(xp.vconst(rx.rotation[:, 2])))
+    m = polarimetric_factor(r_ports, xs.cast(s), t_ports)
     # Eq (R1): real amplitude and carrier phase exp(-j 2 pi f_c tau)
     a = carrier(xp, radar.carrier, tau) * amplitude_factor(
         xp, radar.transmit_power, g_t, g_r, radar.wavelength, r_t, r_r)
@@ -128,7 +144,7 @@ def echo_terms(xp, radar, geometry, p: Any, v: Any, s: Mat2) -> dict[str, Any]:
 
 
 def scatterer_echo(xp, radar, geometry, p: NDArray, v: NDArray, s: NDArray,
-                   directions: bool = True) -> dict[str, NDArray]:
+                   directions: bool = True, scattering: Any = None) -> dict[str, NDArray]:
     """:func:`echo_terms` of numpy scatterers, evaluated in namespace ``xp``.
 
     Parameters
@@ -143,6 +159,8 @@ def scatterer_echo(xp, radar, geometry, p: NDArray, v: NDArray, s: NDArray,
         Scattering amplitudes [m] on the world FSA bases, (h, v) order.
     directions : bool
         Also return the unit directions n_i, n_s.
+    scattering : array namespace, optional
+        As :func:`echo_terms` (the sea's reference path: the fused kernel's float32).
 
     Returns
     -------
@@ -158,7 +176,7 @@ def scatterer_echo(xp, radar, geometry, p: NDArray, v: NDArray, s: NDArray,
     k = p.shape[0]
     io = Boundary(xp, k)
     sm = Mat2(*(io.complex(s[:, a, b]) for a in range(2) for b in range(2)))
-    t = echo_terms(xp, radar, geometry, io.vec3(p), io.vec3(v), sm)
+    t = echo_terms(xp, radar, geometry, io.vec3(p), io.vec3(v), sm, scattering=scattering)
     names = ["tau", "r_t", "r_r", "g_t", "g_r"] + (["n_i", "n_s"] if directions else [])
     res = io.numpy(*(t[n] for n in names), Rows(t["amplitudes"]))
     out = dict(zip(names, res[:-1], strict=True))
@@ -196,7 +214,8 @@ def facet_visibility(xp, geometry, facets: dict[str, Any]) -> tuple[Any, Any, An
 
 
 def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: Any,
-                   draws: dict[str, Any], lo: float, hi: float) -> dict[str, Any]:
+                   draws: dict[str, Any], lo: float, hi: float, *,
+                   scattering: Any = None) -> dict[str, Any]:
     """One pulse of sea facets over a namespace: visibility, eqs P1-P4, eqs R1 and R3.
 
     Parameters
@@ -219,6 +238,11 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
     lo, hi : float
         Delays [s] outside which an echo cannot reach the receive window
         (``ReceiveWindow.keep``).
+    scattering : array namespace, optional
+        The namespace of eqs P1-P4 (``mechanisms_of`` and the speckle; ``xp`` in float32,
+        ``xp.with_precision("single")``): the directions, normals, areas and draws are
+        cast to it, and the amplitudes it gives enter eqs R1 and R3, which stay in
+        ``xp``. Default ``xp``.
 
     Returns
     -------
@@ -226,11 +250,14 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
         ``tau`` [s], ``amplitudes`` (one complex value per channel) [sqrt(W)] and ``keep``
         (Bool: visible and inside the window), for every facet.
     """
+    xs = xp if scattering is None else scattering
     visible, n_i, n_s = facet_visibility(xp, geometry, facets)
     # Eqs P1-P4 with the facet's area times its visibility (0 or 1)
     area = facets["area"] * xp.select(visible, xp.const(1.0), xp.const(0.0))
-    s = speckle(xp, mechanisms_of(n_i, n_s, facets["normal"]), draws, area)
+    mech = mechanisms_of(xs.cast(n_i), xs.cast(n_s), xs.cast(facets["normal"]))
+    s = speckle(xs, mech, {m: xs.cast(g) for m, g in draws.items()}, xs.cast(area))
     # Eqs R1, R3
-    t = echo_terms(xp, radar, geometry, facets["centroid"], facets["velocity"], s)
+    t = echo_terms(xp, radar, geometry, facets["centroid"], facets["velocity"], s,
+                   scattering=scattering)
     keep = visible & (t["tau"] > lo) & (t["tau"] < hi)
     return dict(tau=t["tau"], amplitudes=t["amplitudes"], keep=keep)

@@ -29,7 +29,10 @@ sea_echo_terms`) as one kernel per pulse on the back end of the scene's Mitsuba 
 The mechanisms are those of the reference path: the Kirchhoff/SPM blend, the Bragg term
 averaged over the unresolved tilts (eq P6, ``tilt``) and the breaking zones (eq P7); the
 numbers are those of the reference path, bit for bit (the same operations on the same
-values; tests). The kernel holds the facets where the surface put them, which is the held
+values; tests). Eqs P1-P7, the antenna gains and the port states are evaluated in float32
+(``precision``; the delays, the carrier phase and the amplitudes' magnitude in float64),
+within 2e-6 of each channel's largest amplitude of the float64 kernel (docs/scattering.md,
+"Working precision"). The kernel holds the facets where the surface put them, which is the held
 sea (``[scattering] sea_motion = "held"``, the paper's); an evolving sea (phase centres
 carried between updates, speckle evolving at each pulse) runs the reference path
 (:func:`resident_sea` returns None; docs/dynamics.md).
@@ -50,7 +53,7 @@ from numpy.typing import NDArray
 
 from ..backend import Boundary, drjit_namespace
 from ..geometry.mesh import facet_count, facet_geometry_in
-from ..scattering.facet import MODELS, mechanism_sigma, mechanisms
+from ..scattering.facet import MODELS, PRECISION, mechanism_sigma, mechanisms
 from ..scattering.spectrum_table import BraggSpectrumTable
 from .kernels import facet_visibility, sea_echo_terms
 from .system import DeviceEcho, PulseGeometry, RadarSystem, ScattererEcho
@@ -128,6 +131,10 @@ class ResidentSea:
         Record the pulse's kernel once with ``drjit.freeze`` and replay it at the next
         pulses instead of tracing it in Python at each (the same bytes; tests). None
         takes :data:`FREEZE`.
+    precision : {"single", "double"}, optional
+        Working precision of the scattering formulas (eqs P1-P7) in the kernel; None
+        takes :data:`seaecho.scattering.facet.PRECISION`. The geometry, the delays, the
+        carrier phase and the radar equation's magnitudes are float64 in either.
 
     Raises
     ------
@@ -139,7 +146,8 @@ class ResidentSea:
 
     def __init__(self, radar: RadarSystem, facet_model: tuple, *, variant: str | None = None,
                  model: str = "blend", cox_munk=None, tilt=None,
-                 breaking_tilt: float = 0.0, freeze: bool | None = None) -> None:
+                 breaking_tilt: float = 0.0, freeze: bool | None = None,
+                 precision: str | None = None) -> None:
         if model not in MODELS:
             raise ValueError(f"model = {model!r}: choose from {MODELS}")
         k, eps_r, spectrum, mss_u, mss_c, wind = facet_model
@@ -148,6 +156,8 @@ class ResidentSea:
         if np.ndim(mss_u) or np.ndim(mss_c):
             raise ValueError("ResidentSea takes the sub-facet slope variances as numbers")
         self.xp = drjit_namespace(variant)
+        #: the namespace of the scattering formulas (eqs P1-P7)
+        self.xs = self.xp.with_precision(PRECISION if precision is None else precision)
         self.radar = radar
         self.model = model
         self.cox_munk = cox_munk
@@ -166,18 +176,19 @@ class ResidentSea:
 
     def _mechanisms(self, io: Boundary, damping: Any, breaking: Any = None):
         """``(n_i, n_s, N) -> mechanisms`` with the sea's values as kernel constants
-        (the inputs of ``scattering.facet._kernel_inputs``, so the same kernel values)."""
-        xp = self.xp
+        (the inputs of ``scattering.facet._kernel_inputs`` cast by ``_cast_inputs``, so
+        the same kernel values), in the namespace :attr:`xs` of the scattering formulas."""
+        xp, xs = self.xs, self.xs
         k, eps_r, table, mss_u, mss_c, wind = self._values
 
         def lookup(kx, ky):
-            return table.lookup(xp, kx, ky)
+            return table.lookup(xs, kx, ky)
 
         consts = dict(k=xp.const(k), eps_r=xp.cconst(eps_r), spectrum=lookup,
                       mss_upwind=xp.const(mss_u), mss_crosswind=xp.const(mss_c),
                       cos_wind=xp.const(np.cos(wind)), sin_wind=xp.const(np.sin(wind)),
-                      damping=None if damping is None else io.array(damping),
-                      breaking=None if breaking is None else io.array(breaking),
+                      damping=None if damping is None else xs.cast(io.array(damping)),
+                      breaking=None if breaking is None else xs.cast(io.array(breaking)),
                       breaking_tilt=xp.const(self.breaking_tilt))
 
         def of(n_i, n_s, normal):
@@ -251,7 +262,7 @@ class ResidentSea:
             draws={m: io.complex(d) for m, d in self._draws(draws, n, breaking).items()},
             damping=None if damping is None else io.array(damping),
             breaking=None if breaking is None else io.array(breaking),
-            table=self._values[2]._values(xp))
+            table=self._values[2]._values(self.xs))
         if self.freeze:
             tau, keep, packed = self._frozen_terms(inputs, geometry, nx, ny)
         else:
@@ -286,7 +297,7 @@ class ResidentSea:
         facets.update(hidden_tx=inputs["hidden"][0], hidden_rx=inputs["hidden"][1])
         t = sea_echo_terms(xp, self.radar, geometry, facets,
                            self._mechanisms(io, inputs["damping"], inputs["breaking"]),
-                           inputs["draws"], self._lo, self._hi)
+                           inputs["draws"], self._lo, self._hi, scattering=self.xs)
         # Each channel packed as the memory of a complex (N,) array, in the kernel (one
         # buffer per channel: scatters into distinct arrays share the kernel)
         idx = xp.arange(n)
@@ -375,8 +386,10 @@ class ResidentSea:
         facets.update(hidden_tx=self._mask(hidden[0]), hidden_rx=self._mask(hidden[1]))
         visible, n_i, n_s = facet_visibility(xp, geometry, facets)
         vis = xp.select(visible, xp.const(1.0), xp.const(0.0))
-        mech = self._mechanisms(io, damping, breaking)(n_i, n_s, facets["normal"])
-        sigma = mechanism_sigma(xp, mech)
+        xs = self.xs
+        mech = self._mechanisms(io, damping, breaking)(xs.cast(n_i), xs.cast(n_s),
+                                                       xs.cast(facets["normal"]))
+        sigma = mechanism_sigma(xs, mech)
         sig, vis_h, area = io.numpy(sigma, vis, facets["area"])
         rcs = sig.reshape(n, 4) * vis_h[:, None] * area[:, None]  # [m^2] per facet
         grid = (ny - 1, nx - 1, 2)

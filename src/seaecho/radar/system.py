@@ -226,7 +226,8 @@ class RadarSystem:
     # ------------------------------------------------------------------ scatterers
     def scatterer_echo(self, geometry: PulseGeometry, positions: ArrayLike,
                        velocities: ArrayLike, s: ArrayLike, directions: bool = False, *,
-                       variant: str | None = None) -> ScattererEcho:
+                       variant: str | None = None, precision: str = "double"
+                       ) -> ScattererEcho:
         """Delays and per-channel amplitudes of scatterers, eqs (R1) and (R3).
 
         Evaluates :func:`seaecho.radar.kernels.echo_terms` as one fused Dr.Jit kernel
@@ -251,6 +252,12 @@ class RadarSystem:
         variant : str, optional
             Mitsuba variant of the Dr.Jit kernel: ``"llvm_ad_mono_polarized"`` (CPU,
             default) or ``"cuda_ad_mono_polarized"`` (GPU).
+        precision : {"double", "single"}
+            Working precision of the antenna gains, port states and polarimetric factor
+            in the Dr.Jit kernel (``kernels.echo_terms``, ``scattering``): the sea's
+            reference path passes ``seaecho.scattering.facet.PRECISION``, as its fused
+            kernel does; delays, directions, carrier phase and the amplitude's magnitude
+            are float64 in either.
 
         Returns
         -------
@@ -264,7 +271,9 @@ class RadarSystem:
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
         s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
-        r = scatterer_echo(drjit_namespace(variant), self, geometry, p, v, s, directions)
+        xp = drjit_namespace(variant)
+        xs = None if precision == "double" else xp.with_precision(precision)
+        r = scatterer_echo(xp, self, geometry, p, v, s, directions, scattering=xs)
         return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
                              r["g_r"], r.get("n_i"), r.get("n_s"))
 

@@ -411,7 +411,7 @@ def breaking_matrix(xp, n_i: Any, n_s: Any, N: Any, basis_i: tuple[Any, Any],
     # Eq BR5: isotropic Gaussian slopes about the tilted plane, pi / cos^4 P; plus the
     # front term.
     log_spec = -(z_u * z_u + z_c * z_c) * (1.0 / S_WB2) - math.log(S_WB2) - 4.0 * xp.log(cn)
-    spec = xp.select(valid, xp.exp(xp.minimum(log_spec, 700.0)), 0.0)
+    spec = xp.select(valid, xp.exp(xp.minimum(log_spec, xp.exp_cap)), 0.0)
     amp = xp.select(lit, xp.sqrt(spec + EPS_WB / S_WB2), 0.0)
     # Eq BR6: T = A_s^T diag(-1, 1) A_i with the bases of the bisector facet.
     h, v_i = frames_ns.fsa_basis(xp, n_i, n_sp)

@@ -71,6 +71,7 @@ References
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -90,6 +91,14 @@ from .spm import HeightSpectrum, azimuth_cos_sin, bragg_matrix, bragg_vector
 from .twoscale import check_spm_validity
 
 MODELS = ("blend", "kirchhoff", "spm")
+#: Working precision of eqs P1-P7 in a simulation's per-pulse Dr.Jit kernels (the fused
+#: pulse of ``radar.resident`` and the reference path of ``Simulation.sea_echo``):
+#: ``"single"`` (float32, the default) or ``"double"``, from the environment variable
+#: ``SEAECHO_SCATTERING_PRECISION``. The geometry, the delays, the carrier phase and the
+#: radar equation's magnitudes are float64 in either; the functions of this module take
+#: ``precision="double"`` unless told otherwise, and numpy is float64 throughout
+#: (docs/scattering.md, "Working precision").
+PRECISION = os.environ.get("SEAECHO_SCATTERING_PRECISION", "single")
 BACKENDS = ("auto", "numpy", "drjit")
 
 #: Facets behind which the transmitter or receiver lies (local cosine below) do not echo.
@@ -422,9 +431,12 @@ def speckle(xp, mech: Mapping[str, tuple[Any, Any]], draws: Mapping[str, Any],
 # ----------------------------------------------------------------- the numpy boundary
 def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind,
                    mss_crosswind, wind_direction, wake_damping, n: int,
-                   breaking_fraction=None, breaking_tilt: float = 0.0) -> dict:
-    """Namespace arrays and constants of :func:`mechanisms` from numpy inputs."""
+                   breaking_fraction=None, breaking_tilt: float = 0.0, xs=None) -> dict:
+    """Namespace arrays and constants of :func:`mechanisms` from numpy inputs, in
+    ``io.xp`` (float64; :func:`_cast_inputs` casts them), the spectrum's look-up in ``xs``
+    (the namespace of the scattering formulas, ``io.xp`` by default)."""
     xp = io.xp
+    xs = xp if xs is None else xs
 
     def per_facet(a):
         return io.array(np.broadcast_to(np.asarray(a, dtype=float), (n,))) if np.ndim(
@@ -432,7 +444,7 @@ def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwin
 
     if isinstance(spectrum, BraggSpectrumTable):
         def lookup(kx, ky, table=spectrum):
-            return table.lookup(xp, kx, ky)
+            return table.lookup(xs, kx, ky)
     elif callable(spectrum):
         if not xp.is_numpy:
             raise ValueError("the Dr.Jit back end needs spectrum to be a BraggSpectrumTable")
@@ -440,13 +452,13 @@ def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwin
         def lookup(kx, ky, fn=spectrum):
             return np.asarray(fn(kx, ky), dtype=float)
     else:
-        values = per_facet(spectrum)
+        values = xs.cast(per_facet(spectrum))
 
         def lookup(kx, ky, values=values):
             return values
 
     w = float(wind_direction)
-    return dict(
+    args = dict(
         n_i=io.vec3(n_i), n_s=io.vec3(n_s), N=io.vec3(normal), k=xp.const(k),
         eps_r=xp.cconst(eps_r), spectrum=lookup, mss_upwind=per_facet(mss_upwind),
         mss_crosswind=per_facet(mss_crosswind), cos_wind=xp.const(math.cos(w)),
@@ -456,6 +468,16 @@ def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwin
         breaking=None if breaking_fraction is None else per_facet(
             _fraction(breaking_fraction)),
         breaking_tilt=xp.const(breaking_tilt))
+    return args
+
+
+def _cast_inputs(xs, args: dict) -> dict:
+    """The inputs of :func:`mechanisms` cast to the namespace ``xs`` of the scattering
+    formulas: the kernels of the reference path and the fused pulse kernel
+    (``radar.resident``) cast the same float64 values, so both start from the same
+    float32 ones."""
+    return {name: v if name == "spectrum" or v is None else xs.cast(v)
+            for name, v in args.items()}
 
 
 def _fraction(q) -> Any:
@@ -488,22 +510,25 @@ def _namespace(backend: str, spectrum: Any, variant: str | None):
 
 def _evaluate_mechanisms(backend, variant, n_i, n_s, normal, k, eps_r, spectrum,
                          mss_upwind, mss_crosswind, wind_direction, wake_damping,
-                         breaking_fraction, breaking_tilt, local, model, cox_munk, tilt):
-    """The kernel set-up shared by the per-facet entry points: the namespace, its
-    boundary, the kernel inputs and the mechanisms' (lazy) matrices with their context."""
+                         breaking_fraction, breaking_tilt, local, model, cox_munk, tilt,
+                         precision="double"):
+    """The kernel set-up shared by the per-facet entry points: the namespace of the
+    scattering formulas (the back end's in ``precision``), its boundary, the kernel
+    inputs and the mechanisms' (lazy) matrices with their context."""
     xp = _namespace(backend, spectrum, variant)
+    xs = xp.with_precision(precision)
     n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
     n = n_i.shape[0]
     io = Boundary(xp, n)
     args = _kernel_inputs(io, n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
                           np.asarray(normal, dtype=float).reshape(-1, 3), k, complex(eps_r),
                           spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n,
-                          breaking_fraction, breaking_tilt)
+                          breaking_fraction, breaking_tilt, xs)
     frames_in = _local_frames(local, n) if (local is not None and xp.is_numpy) else None
     ctx: dict = {}
-    mech = mechanisms(xp, **args, model=model, cox_munk=cox_munk, local=frames_in,
-                      tilt=tilt, context=ctx)
-    return xp, io, n, args, mech, ctx
+    mech = mechanisms(xs, **_cast_inputs(xs, args), model=model, cox_munk=cox_munk,
+                      local=frames_in, tilt=tilt, context=ctx)
+    return xs, io, n, args, mech, ctx
 
 
 def facet_terms(
@@ -527,6 +552,7 @@ def facet_terms(
     tilt: TiltQuadrature | None = None,
     breaking_fraction: ArrayLike | None = None,
     breaking_tilt: float = 0.0,
+    precision: str = "double",
 ) -> FacetTerms:
     """Mechanism matrices ``K``, ``B`` and weights ``w`` of facets (eqs P1-P2, B1-B4).
 
@@ -579,6 +605,10 @@ def facet_terms(
         Fraction ``q`` of each facet covered by breaking zones, in [0, 1] (eq P7).
     breaking_tilt : float
         Forward tilt of the breaking zones ``theta_wb A_wb`` [rad] (BR5).
+    precision : {"double", "single"}
+        Working precision of the formulas on the Dr.Jit back end (float64 or float32;
+        the inputs are cast to it, the results returned as float64 / complex128); numpy
+        is float64 whatever is asked. A simulation's kernels take :data:`PRECISION`.
 
     Returns
     -------
@@ -595,7 +625,7 @@ def facet_terms(
     xp, io, n, args, mech, ctx = _evaluate_mechanisms(
         backend, variant, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
         wind_direction, wake_damping, breaking_fraction, breaking_tilt, local, model,
-        cox_munk, tilt)
+        cox_munk, tilt, precision)
     names = list(mech)
     res = io.numpy(ctx["weight"], *[mech[m][0] for m in names])
     weight = res.pop(0).reshape(n, 4)
@@ -749,6 +779,7 @@ def speckled_facet_amplitudes(
     tilt: TiltQuadrature | None = None,
     breaking_fraction: ArrayLike | None = None,
     breaking_tilt: float = 0.0,
+    precision: str = "double",
 ) -> NDArray:
     """Eqs P1-P7 in one pass: speckled amplitudes ``a_mn`` [m] of facets, shape (N, 4).
 
@@ -756,7 +787,8 @@ def speckled_facet_amplitudes(
     :func:`facet_terms`, ``area`` (N,) [m^2]): :func:`mechanisms` followed by
     :func:`speckle`, which the Dr.Jit back end evaluates as one kernel, so that the
     mechanism matrices never come back to numpy (the per-pulse path of a simulation).
-    The back ends agree within rounding (tests).
+    The back ends agree within rounding (tests); ``precision`` as :func:`facet_terms`
+    (``"single"``: within 1e-5 of the float64 amplitudes, tests).
 
     ``draws`` is ``(g_K, g_B)`` (:func:`speckle_draws`), a dict of (N,) complex draws,
     one per mechanism (:data:`MECHANISMS`), or a callable ``draws(xp, io, context)``
@@ -773,15 +805,19 @@ def speckled_facet_amplitudes(
     xp, io, n, args, mech, ctx = _evaluate_mechanisms(
         backend, variant, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
         wind_direction, wake_damping, breaking_fraction, breaking_tilt, local, model,
-        cox_munk, tilt)
+        cox_munk, tilt, precision)
     names = list(mech)
     if callable(draws):
-        ctx.update(n_i=args["n_i"], n_s=args["n_s"], k=args["k"])
-        g = draws(xp, io, ctx)
+        # the evolving speckle's phases in float64 (io.xp), from float64 directions
+        ctx.update(n_i=args["n_i"], n_s=args["n_s"], k=args["k"],
+                   bragg_vector=bragg_vector(io.xp, args["n_i"], args["n_s"], args["N"],
+                                             args["k"]))
+        g = draws(io.xp, io, ctx)
     else:
         d = _draw_map(draws, names, n)
         g = {m: io.complex(d[m]) for m in names}
-    a = speckle(xp, mech, g, io.array(np.asarray(area, dtype=float).reshape(n)))
+    a = speckle(xp, mech, {m: xp.cast(v) for m, v in g.items()},
+                xp.cast(io.array(np.asarray(area, dtype=float).reshape(n))))
     (out,) = io.numpy(a)
     return out.reshape(n, 4)
 

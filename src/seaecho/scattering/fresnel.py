@@ -53,11 +53,11 @@ def reflection(xp, cos_theta: Any, eps_r: Any) -> tuple[Any, Any]:
     # Eq R1 (TE, horizontal); the denominators vanish only for eps_r = 1 at grazing
     # incidence (no interface), where R = 0.
     den_h = c + root
-    zh = xp.abs2(den_h) < 1e-200
+    zh = xp.abs2(den_h) < xp.tiny
     r_h = xp.select(zh, 0.0, (c - root) / xp.select(zh, 1.0, den_h))
     # Eq R2 (TM, vertical).
     den_v = eps_r * c + root
-    zv = xp.abs2(den_v) < 1e-200
+    zv = xp.abs2(den_v) < xp.tiny
     r_v = xp.select(zv, 0.0, (eps_r * c - root) / xp.select(zv, 1.0, den_v))
     return r_h, r_v
 

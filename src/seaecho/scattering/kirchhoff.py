@@ -61,8 +61,13 @@ from .validity import KirchhoffValidityWarning
 #: Half-width of the Kirchhoff domain around specular [deg] (paper sec. III-B).
 KIRCHHOFF_DOMAIN_DEG = 20.0
 
-#: exp() argument cap: keeps sigma finite where |q|/q_N explodes (q_N -> 0).
+#: exp() argument cap: keeps sigma finite where |q|/q_N explodes (q_N -> 0); the
+#: namespace's ``exp_cap``, 700 in float64 (80 in the float32 kernels).
 _LOG_CAP = 700.0
+#: Normalised slopes beyond which the Gram-Charlier factor is evaluated at this value: the
+#: Gaussian there is exp(-800) (0 in float64), and the factor's fourth powers stay finite
+#: in float32.
+_GC_SLOPE_CAP = 40.0
 #: Below this cosine between the specular normal and the plane's normal: no specular point.
 _GRAZING = 1e-12
 
@@ -136,7 +141,8 @@ def specular_weight(xp, n_sp: Any, N: Any, e_u: Any, e_c: Any, mss_upwind: Any,
     plane's wind frame ``Z_u = -(N_sp . e_u) / (N_sp . N)``,
     ``Z_c = -(N_sp . e_c) / (N_sp . N)``; ``P`` is the Gaussian of eq K3 (slope
     variances ``mss_upwind``, ``mss_crosswind``), or with ``cox_munk`` the Gaussian of
-    its own variances times ``gc`` (eq K4). ``log_w`` is capped at 700 (``q_N -> 0``);
+    its own variances times ``gc`` (eq K4). ``log_w`` is capped at the namespace's
+    ``exp_cap`` (700 in float64; ``q_N -> 0``);
     ``gc = 0`` where the specular normal points into the plane (``q_N <= 0``).
 
     Returns
@@ -158,9 +164,14 @@ def specular_weight(xp, n_sp: Any, N: Any, e_u: Any, e_c: Any, mss_upwind: Any,
         gc = xp.select(valid, 1.0, 0.0)
     else:
         log_p = gaussian_log_pdf(z_u, z_c, cox_munk.mss_upwind, cox_munk.mss_crosswind, xp=xp)
-        gc = xp.select(valid, cox_munk_factor(z_u, z_c, cox_munk, xp=xp), 0.0)
+        cap_u = _GC_SLOPE_CAP * math.sqrt(cox_munk.mss_upwind)
+        cap_c = _GC_SLOPE_CAP * math.sqrt(cox_munk.mss_crosswind)
+        gc = xp.select(valid, cox_munk_factor(xp.clip(z_u, -cap_u, cap_u),
+                                              xp.clip(z_c, -cap_c, cap_c), cox_munk, xp=xp),
+                       0.0)
     # Eq K1: pi (|q| / q_N)^4 P, with |q| / q_N = 1 / cos_n.
-    log_w = xp.minimum(math.log(math.pi) - 4.0 * xp.log(cn) + log_p, _LOG_CAP)
+    log_w = xp.minimum(math.log(math.pi) - 4.0 * xp.log(cn) + log_p,
+                       xp.exp_cap)
     return log_w, gc
 
 

@@ -81,7 +81,7 @@ class BraggSpectrumTable:
         evaluate this function.
         """
         kmag = xp.sqrt(kx * kx + ky * ky)
-        u = (xp.log(xp.maximum(kmag, 1e-300)) - self.log_k0) * (1.0 / self.dlog_k)
+        u = (xp.log(xp.maximum(kmag, xp.tiny)) - self.log_k0) * (1.0 / self.dlog_k)
         inside = (u >= 0.0) & (u <= self.n_k - 1)
         u = xp.clip(u, 0.0, self.n_k - 1.000001)
         i0 = xp.floor(u)
@@ -104,9 +104,10 @@ class BraggSpectrumTable:
         """The table in ``xp``'s memory (copied to a Dr.Jit device once per namespace)."""
         if xp.is_numpy:
             return self.values
-        if xp.name not in self._device_values:
-            self._device_values[xp.name] = xp.table(self.values)
-        return self._device_values[xp.name]
+        key = (xp.name, xp.precision)
+        if key not in self._device_values:
+            self._device_values[key] = xp.table(self.values)
+        return self._device_values[key]
 
     def lookup_drjit(self, kx, ky):
         """Eq T2 on Dr.Jit LLVM arrays (former entry point; see :meth:`lookup`)."""
