@@ -24,7 +24,16 @@ def _text(m) -> str:
     return m.text if m.text is not None else scene_text(m.data)
 
 
+#: Refusals of a valid scene for its size: a mutation that is itself valid (a target
+#: added far away, an optional name removed) may push the run or its image over the
+#: memory or pixel limits; such a refusal names the fields that set the size, not the
+#: mutated one.
+RESOURCE_REFUSALS = ("does not fit in memory", "pixels, more than")
+
+
 def _names_the_field(m, err: str) -> bool:
+    if any(r in err for r in RESOURCE_REFUSALS):
+        return "[image]." in err or "[radar]." in err or "[sea]." in err
     return not m.names or any(n in err for n in m.names)
 
 
