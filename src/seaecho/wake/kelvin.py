@@ -414,20 +414,25 @@ class KelvinWake:
         k_cut : float
             Band limit [rad/m].
         """
+        import finufft
+
         lam0 = self.transverse_wavelength
         x0 = 0.5 * self.ship.length + 0.5 * lam0
         x1 = x0 + y / np.tan(KELVIN_HALF_ANGLE) + 8.0 * lam0
-        xs = np.arange(x0, x1, 0.5 * np.pi / k_cut)
+        step = 0.5 * np.pi / k_cut
+        n = int(np.arange(x0, x1, step).size)
         kappa = self.k0 / np.cos(theta) ** 2
         kx, ky = kappa * np.cos(theta), kappa * np.sin(theta)
+        # Eq W4 on the line x'_n = x0 + n step (ship frame) is a type-1 non-uniform FFT:
+        # sum_j w_j e^{-i (x0 kx_j + y' ky_j)} e^{-i n p_j} with p_j = step kx_j (|p_j| <=
+        # pi / 2 below the band limit); finufft's modes m = n - n // 2 take the factor
+        # e^{-i (n // 2) p_j} into the strengths.
+        p = step * kx
         h = 0.0
         for side in (1.0, -1.0):
-            z = np.zeros(xs.size)
-            for j0 in range(0, theta.size, 1024):
-                sl = slice(j0, j0 + 1024)
-                # Eq W4 on the line (ship frame).
-                ph = np.exp(-1j * (np.outer(xs, kx[sl]) + side * y * ky[sl][None, :]))
-                z += (ph @ weights[sl]).real
+            c = weights * np.exp(-1j * (x0 * kx + side * y * ky + (n // 2) * p))
+            z = finufft.nufft1d1(p, c.astype(np.complex128), n_modes=n, eps=1e-12, isign=-1,
+                                 nthreads=1).real
             h = max(h, float(z.max() - z.min()))
         return h
 
