@@ -263,6 +263,21 @@ MUTATIONS = [
              ("tests/imaging/test_monostatic_point_target.py",),
              "eq B2's carrier phase exp(-j 2 pi f_c tau) (numpy and Dr.Jit, one formula): "
              "the pulses do not add up"),
+    # --- the speed work: faster evaluations that must keep their numbers
+    Mutation("mirrored-channel-sign", S + "radar/echo.py",
+             "total[c] = sign * total[src]", "total[c] = total[src]",
+             ("tests/radar/test_echo.py",),
+             "the monostatic VH sum taken as +HV (FSA reciprocity gives VH = -HV)"),
+    Mutation("nufft-chunk-dropped", S + "radar/echo.py",
+             "for p, d in parts[1:]:", "for p, d in parts[1:-1]:",
+             ("tests/radar/test_echo.py",), "the last chunk of points left out of eq E2"),
+    Mutation("ocean-slope-x-with-ky", S + "ocean/surface.py",
+             "np.multiply(jkx, z_c, out=spectra[0])", "np.multiply(jky, z_c, out=spectra[0])",
+             ("tests/ocean/test_surface.py",), "the x slope's batched spectrum multiplied by j Ky"),
+    Mutation("kelvin-line-shift-sign", S + "wake/kelvin.py",
+             "side * y * ky + (n // 2) * p))", "side * y * ky - (n // 2) * p))",
+             ("tests/wake/test_wake_speed_parity.py",),
+             "the line height's NUFFT with its mode shift the wrong way"),
 ]
 
 
