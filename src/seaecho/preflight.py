@@ -293,7 +293,9 @@ def geometry_problems(scene) -> list[str]:
                 dist, at = float(d[0]), f"at pulse {p[0]}"
             else:
                 nominal = platform.nominal_state(radar.start_time_s).position
-                dist, at = float(np.linalg.norm(look[0] - nominal)), "at the first pulse"
+                # hypot: no overflow of the squares, whatever the coordinates
+                dist = float(np.hypot.reduce(np.abs(look[0] - nominal)))
+                at = "at the first pulse"
             if not dist >= d_min:
                 problems.append(
                     f"[{name}].antenna.look_at_m = {short_repr(ant.look_at_m)}: "

@@ -57,6 +57,11 @@ def _minimal(**sea):
         ({**_minimal(), "ship": {"length_m": 10, "beam_m": 4, "draft_m": 1}},
          ["speed_kn", "speed_m_s"]),
         ({**_minimal(), "radarr": {}}, ["radarr", "unknown key"]),
+        # an unbounded look-at point overflowed the preflight's distance (found by the
+        # fuzzing suite): bounded as the platforms' positions
+        ({**_minimal(), "transmitter": {"position_m": (0, 0, 150), "antenna": {
+            "width_m": 0.5, "height_m": 0.5, "look_at_m": (1e308, 0, 0)}}},
+         ["look_at_m", "1e+308", "+-1e+08"]),
     ],
 )
 def test_bad_values_name_field_value_and_allowed(data, fragments):

@@ -113,7 +113,8 @@ class AntennaConfig(Section):
         description="cross-polar isolation of each port [dB]; omit for ideal ports",
     )
     look_at_m: Vec3 | None = Field(
-        None, description="point the boresight at this world point (x, y, z) [m]"
+        None, description="point the boresight at this world point (x, y, z), each within "
+        "+-1e8 [m]"
     )
     track_look_at: bool = Field(
         False,
@@ -143,6 +144,9 @@ class AntennaConfig(Section):
                              "(exactly one)")
         if self.track_look_at and self.look_at_m is None:
             raise ValueError("track_look_at needs look_at_m")
+        if self.look_at_m is not None and not all(abs(c) <= _POS for c in self.look_at_m):
+            raise ValueError(f"look_at_m = {list(self.look_at_m)}: each component must be "
+                             f"within +-{_POS:g} m")
         return self
 
     @property
