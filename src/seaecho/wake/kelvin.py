@@ -420,7 +420,7 @@ class KelvinWake:
         x0 = 0.5 * self.ship.length + 0.5 * lam0
         x1 = x0 + y / np.tan(KELVIN_HALF_ANGLE) + 8.0 * lam0
         step = 0.5 * np.pi / k_cut
-        n = int(np.arange(x0, x1, step).size)
+        n = len(np.arange(x0, x1, step))  # the dense sum's sample count, as arange rounds
         kappa = self.k0 / np.cos(theta) ** 2
         kx, ky = kappa * np.cos(theta), kappa * np.sin(theta)
         # Eq W4 on the line x'_n = x0 + n step (ship frame) is a type-1 non-uniform FFT:
@@ -431,8 +431,7 @@ class KelvinWake:
         h = 0.0
         for side in (1.0, -1.0):
             c = weights * np.exp(-1j * (x0 * kx + side * y * ky + (n // 2) * p))
-            z = finufft.nufft1d1(p, c.astype(np.complex128), n_modes=n, eps=1e-12, isign=-1,
-                                 nthreads=1).real
+            z = finufft.nufft1d1(p, c, n_modes=n, eps=1e-12, isign=-1, nthreads=1).real
             h = max(h, float(z.max() - z.min()))
         return h
 
