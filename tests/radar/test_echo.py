@@ -311,3 +311,15 @@ def test_accumulation_in_a_forked_process_after_one_in_the_parent():
     with mp.get_context("fork").Pool(1) as pool:
         there = pool.apply_async(accumulate, (tau, a, spec, w), {"workers": 2}).get(timeout=60)
     assert there.tobytes() == here.tobytes()
+
+
+def test_one_pool_per_worker_count_whatever_the_chunk_count(small_chunks):
+    # Pulses whose scatterer counts give 2, 5 and 8 chunks run on the same pool (its
+    # threads keep their plans and buffers between pulses): a pool per chunk count would
+    # start new threads, each planning and faulting in its buffers again.
+    s, w, spec = _setup()
+    echo._pool.cache_clear()
+    for k in (2 * echo.MIN_CHUNK_POINTS, 5 * echo.MIN_CHUNK_POINTS, 9 * echo.MIN_CHUNK_POINTS):
+        tau, a = _scatterers(w, k)
+        accumulate(tau, a, spec, w, method="nufft", workers=3)
+    assert echo._pool.cache_info().currsize == 1

@@ -314,7 +314,10 @@ def _phasors_nufft(tau: NDArray, rows: list[NDArray], window: ReceiveWindow, n: 
     if workers is None:
         workers = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else (
             os.cpu_count() or 1)
-    workers = max(1, min(int(workers), m))
+    # one pool per worker count asked, whatever the pulse's chunk count: its threads keep
+    # their plans and buffers from pulse to pulse (a pool per chunk count would not)
+    pool_size = max(1, min(int(workers), NUFFT_CHUNKS))
+    workers = min(pool_size, m)
     dtype = np.complex128 if precision == "double" else np.complex64
     mirrors = _mirror_candidates(rows)
 
@@ -345,7 +348,7 @@ def _phasors_nufft(tau: NDArray, rows: list[NDArray], window: ReceiveWindow, n: 
     def gather(channels: list[int], skip: dict) -> tuple[NDArray, NDArray]:
         jobs = [functools.partial(run, i, channels, skip) for i in range(m)]
         parts = [j() for j in jobs] if workers == 1 else list(
-            _pool(workers).map(lambda j: j(), jobs))
+            _pool(pool_size).map(lambda j: j(), jobs))
         total = parts[0][0].astype(np.complex128)
         l1 = parts[0][1]
         for p, d in parts[1:]:  # in chunk order, whichever thread finished first

@@ -178,7 +178,7 @@ class ResidentSea:
         """``(n_i, n_s, N) -> mechanisms`` with the sea's values as kernel constants
         (the inputs of ``scattering.facet._kernel_inputs`` cast by ``_cast_inputs``, so
         the same kernel values), in the namespace :attr:`xs` of the scattering formulas."""
-        xp, xs = self.xs, self.xs
+        xp = xs = self.xs  # here xp is the scattering precision's namespace (float32)
         k, eps_r, table, mss_u, mss_c, wind = self._values
 
         def lookup(kx, ky):

@@ -61,9 +61,6 @@ from .validity import KirchhoffValidityWarning
 #: Half-width of the Kirchhoff domain around specular [deg] (paper sec. III-B).
 KIRCHHOFF_DOMAIN_DEG = 20.0
 
-#: exp() argument cap: keeps sigma finite where |q|/q_N explodes (q_N -> 0); the
-#: namespace's ``exp_cap``, 700 in float64 (80 in the float32 kernels).
-_LOG_CAP = 700.0
 #: Normalised slopes beyond which the Gram-Charlier factor is evaluated at this value: the
 #: Gaussian there is exp(-800) (0 in float64), and the factor's fourth powers stay finite
 #: in float32.
