@@ -254,8 +254,10 @@ def accumulate(tau: ArrayLike, amplitudes: ArrayLike, pulse_spectrum: ArrayLike,
 
 def _points(tau: NDArray, window: ReceiveWindow, n: int,
             out: NDArray | None = None) -> NDArray[np.float64]:
-    """Eq (E2): phasor points x_k = 2 pi (tau_k - t0) f_s / N folded into [-pi, pi)
-    (written into ``out`` if given; no temporaries of the points' size)."""
+    """Eq (E2): phasor points x_k = 2 pi (tau_k - t0) f_s / N [rad] folded into [-pi, pi)
+    (written into ``out`` if given; no temporaries of the points' size), from the delays
+    tau [s], the window's start t0 [s] and sampling rate f_s [Hz], and the period N
+    [samples]."""
     u = np.subtract(tau, window.t0, out=out)
     u *= window.sampling_rate / n  # periods
     tmp = np.empty(min(_BLOCK, u.size))
