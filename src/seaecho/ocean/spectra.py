@@ -547,3 +547,6 @@ __all__ = [
     "register_spreading",
     "u10_from_u19_5",
 ]
+
+# The spectra defined in their own modules register themselves on import.
+from . import romeiser as _romeiser  # noqa: E402, F401  (Romeiser et al. 1997)

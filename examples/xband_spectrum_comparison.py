@@ -1,0 +1,202 @@
+"""X-band HH, VV and VV/HH of the mean-plane model: which part sets the polarisation ratio.
+
+Run: ``python examples/xband_spectrum_comparison.py [OUTDIR]`` (default ``docs/figures``).
+Writes ``xband_spectrum_comparison.csv`` and prints the Markdown tables of
+docs/scattering.md ("X-band VV/HH: the short-wave spectrum"). Monostatic, two-scale +
+breaking (``sea_sigma``), averaged over the looks upwind, crosswind (x2) and downwind, sea
+water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py``):
+
+* X band (9.3 GHz), sea states 2-5, 5-30 deg grazing: the Elfouhaily et al. (1997)
+  spectrum ("E97", before) and the Romeiser, Alpers & Wismann (1997) spectrum ("RAW97",
+  after), against Nathanson's table, the GIT and the NRL models (``tests/reference_models.py``);
+* the other candidates at X band with E97: the scale split (k/4 instead of k/3), the tilt
+  average (untilted SPM + breaking), the breaking zones (two-scale alone);
+* C band (5.3 GHz), 20-50 deg incidence: VV against CMOD5.N and VV/HH against Mouche et
+  al. (2005), for both spectra.
+
+About 1 min of CPU.
+"""
+
+from __future__ import annotations
+
+import csv
+import sys
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+
+from reference_models import (  # noqa: E402
+    NATHANSON_XBAND,
+    SEA_STATE_WIND,
+    cmod5n,
+    git_sigma0,
+    mouche_pr,
+    nrl_sigma0,
+)
+from seaecho.ocean.seawater import sea_water_permittivity  # noqa: E402
+from seaecho.ocean.spectra import DirectionalSpectrum  # noqa: E402
+from seaecho.ocean.wind import u19_5_from_u10  # noqa: E402
+from seaecho.scattering.models import sea_sigma  # noqa: E402
+from seaecho.warnings import ValidityWarning  # noqa: E402
+
+LOOKS_DEG = (0.0, 90.0, 180.0, 270.0)
+X_GHZ = 9.3
+C_GHZ = 5.3
+GRAZING_DEG = (5.0, 10.0, 20.0, 30.0)
+SEA_STATES = (2, 3, 4, 5)
+SPECTRA = (("E97", "elfouhaily"), ("RAW97", "romeiser"))
+
+
+def look_averaged(model: str, f_hz: float, u10: float, inc_deg, spectrum: str = "elfouhaily",
+                  cut_ratio: float = 1.0 / 3.0) -> np.ndarray:
+    """Monostatic sigma0 (n, 4) [linear] averaged over the four looks; wind towards +x."""
+    eps = sea_water_permittivity(f_hz, 20.0, 35.0)
+    spec = DirectionalSpectrum(spectrum=spectrum, spreading="elfouhaily",
+                               u19_5=float(u19_5_from_u10(u10)))
+    th = np.radians(np.atleast_1d(np.asarray(inc_deg, dtype=float)))[:, None]
+    phi_i = np.pi + np.radians(LOOKS_DEG)[None, :]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ValidityWarning)
+        s = sea_sigma(model, th + 0 * phi_i, phi_i, th + 0 * phi_i, phi_i + np.pi, f_hz,
+                      spec, eps, cut_ratio=cut_ratio)
+    return s.mean(axis=1)
+
+
+def db(x) -> np.ndarray:
+    return 10.0 * np.log10(np.maximum(x, 1e-30))
+
+
+def references(ss: int, grazing: float) -> dict[str, tuple[float, float]]:
+    """(HH, VV) [dB] of the published X-band models at a sea state and grazing angle."""
+    u10 = SEA_STATE_WIND[ss]
+    out = {
+        "GIT": tuple(float(np.mean([git_sigma0(X_GHZ, u10, grazing, p, a) for a in LOOKS_DEG]))
+                     for p in "HV"),
+        "NRL": tuple(float(nrl_sigma0(X_GHZ, ss, grazing, p)) for p in "HV"),
+    }
+    if grazing in NATHANSON_XBAND[("H", ss)]:
+        out["Nathanson"] = tuple(NATHANSON_XBAND[(p, ss)][grazing] for p in "HV")
+    return out
+
+
+def xband_rows() -> list[dict]:
+    rows = []
+    for ss in SEA_STATES:
+        u10 = SEA_STATE_WIND[ss]
+        inc = 90.0 - np.array(GRAZING_DEG)
+        runs = {name: db(look_averaged("two-scale+breaking", X_GHZ * 1e9, u10, inc, sp))
+                for name, sp in SPECTRA}
+        runs["E97 cut k/4"] = db(look_averaged("two-scale+breaking", X_GHZ * 1e9, u10, inc,
+                                               cut_ratio=0.25))
+        q, wb = _breaking_share(u10, inc)
+        runs["E97 untilted"] = db((1.0 - q) * look_averaged("spm", X_GHZ * 1e9, u10, inc) + wb)
+        runs["E97 no breaking"] = db(look_averaged("two-scale", X_GHZ * 1e9, u10, inc))
+        for j, g in enumerate(GRAZING_DEG):
+            ref = references(ss, g)
+            row = {"sea_state": ss, "u10_m_s": u10, "grazing_deg": g}
+            for name, val in runs.items():
+                row[f"{name} HH"] = round(float(val[j, 0]), 2)
+                row[f"{name} VV"] = round(float(val[j, 3]), 2)
+            for name, (hh, vv) in ref.items():
+                row[f"{name} HH"] = round(hh, 2)
+                row[f"{name} VV"] = round(vv, 2)
+            rows.append(row)
+    return rows
+
+
+def _breaking_share(u10: float, inc_deg) -> tuple[float, np.ndarray]:
+    """``q`` and ``q sigma_wb`` (n, 4) of eq BR1, for the untilted candidate: the
+    two-scale+breaking rows minus their regular part ``(1 - q)`` two-scale."""
+    from seaecho.constants import C0
+    from seaecho.scattering.breaking import breaking_statistics
+
+    q = breaking_statistics(u10, 2.0 * np.pi * X_GHZ * 1e9 / C0).q
+    with_wb = look_averaged("two-scale+breaking", X_GHZ * 1e9, u10, inc_deg)
+    regular = look_averaged("two-scale", X_GHZ * 1e9, u10, inc_deg)
+    return q, with_wb - (1.0 - q) * regular
+
+
+def cband_rows() -> list[dict]:
+    rows = []
+    inc = np.array([20.0, 30.0, 40.0, 50.0])
+    for u10 in (5.0, 10.0, 15.0):
+        cmod = db(np.mean([cmod5n(u10, p, inc) for p in LOOKS_DEG], axis=0))
+        pr = db(np.mean([mouche_pr(inc, p) for p in LOOKS_DEG], axis=0))
+        runs = {name: look_averaged("two-scale+breaking", C_GHZ * 1e9, u10, inc, sp)
+                for name, sp in SPECTRA}
+        for j, t in enumerate(inc):
+            row = {"u10_m_s": u10, "incidence_deg": float(t), "CMOD5.N VV": round(cmod[j], 2),
+                   "Mouche PR": round(pr[j], 2)}
+            for name, s in runs.items():
+                row[f"{name} VV"] = round(float(db(s[j, 3])), 2)
+                row[f"{name} PR"] = round(float(db(s[j, 3] / s[j, 0])), 2)
+            rows.append(row)
+    return rows
+
+
+def _fmt(x: float) -> str:
+    return "-" if x is None or not np.isfinite(x) else f"{x:.1f}"
+
+
+def markdown(xrows: list[dict], crows: list[dict]) -> str:
+    lines = ["X band (9.3 GHz), two-scale + breaking, sigma0 [dB] (HH / VV, VV/HH):", "",
+             "| SS (U10) | grazing | E97 HH / VV | E97 VV/HH | RAW97 HH / VV | RAW97 VV/HH "
+             "| Nathanson HH / VV | GIT HH / VV | NRL HH / VV | refs VV/HH |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in xrows:
+        nat = (f"{r['Nathanson HH']:.0f} / {r['Nathanson VV']:.0f}" if "Nathanson HH" in r
+               else "-")
+        prs = [r[f"{n} VV"] - r[f"{n} HH"] for n in ("Nathanson", "GIT", "NRL")
+               if f"{n} HH" in r]
+        lines.append(
+            f"| {r['sea_state']} ({r['u10_m_s']}) | {r['grazing_deg']:.0f} "
+            f"| {_fmt(r['E97 HH'])} / {_fmt(r['E97 VV'])} | {_fmt(r['E97 VV'] - r['E97 HH'])} "
+            f"| {_fmt(r['RAW97 HH'])} / {_fmt(r['RAW97 VV'])} "
+            f"| {_fmt(r['RAW97 VV'] - r['RAW97 HH'])} | {nat} "
+            f"| {_fmt(r['GIT HH'])} / {_fmt(r['GIT VV'])} | {_fmt(r['NRL HH'])} / "
+            f"{_fmt(r['NRL VV'])} | {min(prs):.1f}-{max(prs):.1f} |")
+    lines += ["", "Candidates at X band with E97, change against E97 two-scale + breaking "
+              "[dB] (HH / VV / VV/HH), ranges over sea states 2-5:", "",
+              "| grazing | cut k/4 | untilted SPM | no breaking | RAW97 spectrum |",
+              "|---|---|---|---|---|"]
+    for g in GRAZING_DEG:
+        cells = []
+        for name in ("E97 cut k/4", "E97 untilted", "E97 no breaking", "RAW97"):
+            sub = [r for r in xrows if r["grazing_deg"] == g]
+            dh = [r[f"{name} HH"] - r["E97 HH"] for r in sub]
+            dv = [r[f"{name} VV"] - r["E97 VV"] for r in sub]
+            dp = [a - b for a, b in zip(dv, dh, strict=True)]
+            cells.append(" / ".join(f"{min(d):+.1f}..{max(d):+.1f}" for d in (dh, dv, dp)))
+        lines.append(f"| {g:.0f} | " + " | ".join(cells) + " |")
+    lines += ["", "C band (5.3 GHz), two-scale + breaking, VV [dB] and VV/HH [dB]:", "",
+              "| U10 | incidence | E97 VV | RAW97 VV | CMOD5.N | E97 VV/HH | RAW97 VV/HH "
+              "| Mouche PR |", "|---|---|---|---|---|---|---|---|"]
+    for r in crows:
+        lines.append(f"| {r['u10_m_s']:.0f} | {r['incidence_deg']:.0f} | {_fmt(r['E97 VV'])} "
+                     f"| {_fmt(r['RAW97 VV'])} | {_fmt(r['CMOD5.N VV'])} "
+                     f"| {_fmt(r['E97 PR'])} | {_fmt(r['RAW97 PR'])} "
+                     f"| {_fmt(r['Mouche PR'])} |")
+    return "\n".join(lines)
+
+
+def main(outdir: str = "docs/figures") -> Path:
+    xrows = xband_rows()
+    crows = cband_rows()
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    path = out / "xband_spectrum_comparison.csv"
+    keys = sorted({k for r in xrows for k in r}, key=lambda k: list(xrows[0]).index(k)
+                  if k in xrows[0] else 999)
+    with path.open("w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        w.writerows(xrows)
+    print(markdown(xrows, crows))
+    return path
+
+
+if __name__ == "__main__":
+    print(main(*sys.argv[1:]))
