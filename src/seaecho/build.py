@@ -115,7 +115,7 @@ def check_sea(sea) -> None:
     from .ocean.limits import BREAKING_RATIO, fetch_range, min_depth, significant_height
 
     # The fetch laws that read fetch_m: the spectrum's, and Elfouhaily's spreading's
-    laws = [sea.spectrum] if sea.spectrum != "pierson-moskowitz" else []
+    laws = [sea.spectrum] if sea.spectrum in ("jonswap", "elfouhaily") else []
     if sea.spreading == "elfouhaily" and "elfouhaily" not in laws:
         laws.append("elfouhaily")
     for law in laws if sea.fetch_m is not None else ():

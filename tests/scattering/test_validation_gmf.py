@@ -43,10 +43,11 @@ def _db(x):
     return 10.0 * np.log10(x)
 
 
-def _seaecho(model, f_hz, u10, inc_deg, cut_ratio=TWO_SCALE_CUT_RATIO):
+def _seaecho(model, f_hz, u10, inc_deg, cut_ratio=TWO_SCALE_CUT_RATIO, spectrum="elfouhaily"):
     """Look-averaged monostatic sigma0 (..., 4) of a seaecho mean-plane model."""
     eps = sea_water_permittivity(f_hz, 20.0, 35.0)
-    spec = DirectionalSpectrum(u19_5=float(u19_5_from_u10(u10)))  # wind blows towards +x
+    spec = DirectionalSpectrum(spectrum=spectrum,  # wind blows towards +x
+                               u19_5=float(u19_5_from_u10(u10)))
     th = np.radians(np.atleast_1d(np.asarray(inc_deg, dtype=float)))[:, None]
     # A look at angle a from upwind: the radar looks towards pi + a (against the wind).
     phi_i = np.pi + np.radians(LOOKS_DEG)[None, :]
@@ -202,3 +203,81 @@ def test_nathanson_vv_at_30_deg_grazing_lies_below_cmod5n(ss):
     x_band = _db(_seaecho("two-scale+breaking", 9.3e9, u10, [60.0])[0, 3])
     assert abs(c_band - cmod) < 2.0
     assert abs(x_band - c_band) < 0.5
+
+
+# --- X band with the Romeiser, Alpers & Wismann (1997) spectrum -------------------------
+
+XBAND_POINTS = [(ss, g) for ss in (2, 3, 4, 5) for g in (5.0, 10.0, 20.0, 30.0)]
+
+
+def _xband_references(ss, grazing):
+    """{model: (HH, VV)} [dB] of the published X-band models (9.3 GHz): GIT (look-averaged,
+    wind U10), NRL (sea state) and Nathanson's table where it has the grazing angle."""
+    u10 = SEA_STATE_WIND[ss]
+    out = {"GIT": tuple(np.mean([git_sigma0(9.3, u10, grazing, p, a) for a in LOOKS_DEG])
+                        for p in "HV"),
+           "NRL": tuple(float(nrl_sigma0(9.3, ss, grazing, p)) for p in "HV")}
+    if grazing in NATHANSON_XBAND[("H", ss)]:
+        out["Nathanson"] = tuple(NATHANSON_XBAND[(p, ss)][grazing] for p in "HV")
+    return out
+
+
+def _outside(value, refs):
+    """How far [dB] ``value`` lies outside the span of the published values (0 inside)."""
+    return max(min(refs) - value, value - max(refs), 0.0)
+
+
+@pytest.mark.parametrize(("ss", "grazing"), XBAND_POINTS)
+def test_xband_levels_with_raw97_against_published_models(ss, grazing):
+    """X band, 5-30 deg grazing, sea states 2-5, two-scale + breaking with the RAW97
+    spectrum: HH and VV within 3 dB of the span of the published models (GIT, NRL,
+    Nathanson; measured: HH 0-2.7 dB outside it, VV 0-0.6 dB). With the Elfouhaily
+    spectrum VV lies 2.8-6.4 dB above that span (the excess of the tests above); RAW97
+    removes it."""
+    refs = _xband_references(ss, grazing)
+    ours = _db(_seaecho("two-scale+breaking", 9.3e9, SEA_STATE_WIND[ss], [90.0 - grazing],
+                        spectrum="romeiser")[0])
+    assert _outside(ours[0], [hh for hh, _ in refs.values()]) < 3.0
+    assert _outside(ours[3], [vv for _, vv in refs.values()]) < 3.0
+
+
+@pytest.mark.parametrize(("ss", "grazing"), XBAND_POINTS)
+def test_xband_polarisation_ratio_with_raw97(ss, grazing):
+    """X-band VV/HH with RAW97 against the published models' VV/HH (GIT, NRL, Nathanson):
+
+    * at 5-10 deg grazing within 2 dB of their span (measured 0-1.4 dB outside; E97:
+      3.0-5.6 dB above);
+    * at 20-30 deg, a known remaining disagreement, kept visible: VV/HH is 0-4.6 dB
+      above their span (4 of the 8 points more than 2 dB: sea state 2 at 20 and 30 deg,
+      3 at 20, 4 at 30; E97: 2.7-7.1 dB), because the two-scale Bragg HH at 60-70 deg incidence is
+      12-16 dB below VV with either spectrum and the breaking zones' HH (KHCC03) does not
+      fill the gap there (docs/scattering.md);
+    * everywhere RAW97's ratio is closer to the references than E97's."""
+    refs = _xband_references(ss, grazing)
+    u10 = SEA_STATE_WIND[ss]
+    ratios = [vv - hh for hh, vv in refs.values()]
+    new = _db(_seaecho("two-scale+breaking", 9.3e9, u10, [90.0 - grazing],
+                       spectrum="romeiser")[0])
+    old = _db(_seaecho("two-scale+breaking", 9.3e9, u10, [90.0 - grazing])[0])
+    pr_new, pr_old = new[3] - new[0], old[3] - old[0]
+    if grazing <= 10.0:
+        assert _outside(pr_new, ratios) < 2.0
+    else:
+        assert pr_new - max(ratios) < 5.0
+    assert _outside(pr_new, ratios) < _outside(pr_old, ratios)
+
+
+@pytest.mark.parametrize("u10", [5.0, 10.0, 15.0])
+def test_cband_with_raw97_within_the_cband_tolerances(u10):
+    """C band with RAW97, 30-50 deg incidence: VV within 2 dB of CMOD5.N (measured
+    0-1.9 dB) and VV/HH within 2 dB of Mouche et al. (2005) (measured 0.3-1.99 dB; E97:
+    0-1.5 dB): the tolerances of the E97 tests above, met, with the ratio 0.4-0.6 dB
+    further from Mouche's than E97's. At 20 deg VV is 1-2 dB closer to CMOD5.N than E97's."""
+    inc = np.array([20.0, 30.0, 40.0, 50.0])
+    ours = _seaecho("two-scale+breaking", 5.3e9, u10, inc, spectrum="romeiser")
+    e97 = _seaecho("two-scale+breaking", 5.3e9, u10, inc)
+    cmod = _db(np.mean([cmod5n(u10, p, inc) for p in LOOKS_DEG], axis=0))
+    pr = _db(np.mean([mouche_pr(inc, p) for p in LOOKS_DEG], axis=0))
+    np.testing.assert_array_less(np.abs(_db(ours[1:, 3]) - cmod[1:]), 2.0)
+    np.testing.assert_array_less(np.abs(_db(ours[1:, 3] / ours[1:, 0]) - pr[1:]), 2.0)
+    assert abs(_db(ours[0, 3]) - cmod[0]) < abs(_db(e97[0, 3]) - cmod[0])

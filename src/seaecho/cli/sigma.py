@@ -70,9 +70,10 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="wind speed U19.5 at 19.5 m [m/s] (default 4.53, paper Fig. 3)")
     p.add_argument("--wind-direction-deg", type=float,
                    help="direction the wind blows towards, CCW from +x [deg] (default 0)")
-    p.add_argument("--spectrum", choices=("elfouhaily", "pierson-moskowitz", "jonswap"),
+    p.add_argument("--spectrum", choices=("elfouhaily", "pierson-moskowitz", "jonswap",
+                                          "romeiser"),
                    help="omnidirectional wave spectrum (default elfouhaily)")
-    p.add_argument("--spreading", choices=("elfouhaily", "longuet-higgins"),
+    p.add_argument("--spreading", choices=("elfouhaily", "longuet-higgins", "romeiser"),
                    help="directional spreading (default elfouhaily)")
     p.add_argument("--fetch-m", type=float, default=None, help="fetch [m] (jonswap)")
     p.add_argument("--slopes", choices=SLOPE_MODELS, default="gaussian",

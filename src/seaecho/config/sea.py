@@ -13,8 +13,8 @@ from pydantic import Field, model_validator
 
 from .base import Section
 
-SpectrumName = Literal["pierson-moskowitz", "jonswap", "elfouhaily"]
-SpreadingName = Literal["longuet-higgins", "elfouhaily"]
+SpectrumName = Literal["pierson-moskowitz", "jonswap", "elfouhaily", "romeiser"]
+SpreadingName = Literal["longuet-higgins", "elfouhaily", "romeiser"]
 
 #: Lowest wind [m/s]: the lower limit of Beaufort force 1 ("light air, ripples with the
 #: appearance of scales"); below it, force 0, the sea is "like a mirror" (the Beaufort
@@ -33,12 +33,16 @@ class SeaConfig(Section):
     spectrum: SpectrumName = Field(
         "elfouhaily",
         description="omnidirectional wave spectrum (paper eqs 4-5): 'pierson-moskowitz', "
-        "'jonswap' (fetch-limited) or 'elfouhaily' (unified, with capillary waves)",
+        "'jonswap' (fetch-limited), 'elfouhaily' (unified, with capillary waves) or "
+        "'romeiser' (Romeiser, Alpers & Wismann 1997: short waves fitted to L- to Ka-band "
+        "scatterometer data; X-band VV and VV/HH closer to the clutter tables, "
+        "docs/scattering.md)",
     )
     spreading: SpreadingName = Field(
         "longuet-higgins",
         description="directional spreading function: 'longuet-higgins' cos^2s(psi/2) "
-        "(paper eq 6) or 'elfouhaily' (Elfouhaily et al. 1997)",
+        "(paper eq 6), 'elfouhaily' (Elfouhaily et al. 1997) or 'romeiser' (Romeiser et "
+        "al. 1997, Gaussian about the wind)",
     )
     spreading_s: float = Field(
         1.0,

@@ -76,8 +76,9 @@ RAW97_C1 = 400.0
 def wind_exponent(k: ArrayLike) -> NDArray[np.float64]:
     """Exponent beta(k) of the wind speed in RAW97's spectrum [-] (eq 41, eq R3).
 
-    ``S_1d ~ U10^beta``: 0 for long waves (a saturated equilibrium range), about 1.2-1.3
-    around the X-band Bragg waves (300-400 rad/m), falling again in the capillary range.
+    ``S_1d ~ U10^beta``: 0 for long waves (a saturated equilibrium range), largest near
+    216 rad/m (1.59), 1.17-1.32 at the X-band Bragg waves (338-384 rad/m), falling again
+    in the capillary range.
     """
     k = np.asarray(k, dtype=np.float64)
     k1, k2, k3, k4, k5 = RAW97_K_BETA
