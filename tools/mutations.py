@@ -278,6 +278,19 @@ MUTATIONS = [
              "side * y * ky + (n // 2) * p))", "side * y * ky - (n // 2) * p))",
              ("tests/wake/test_wake_speed_parity.py",),
              "the line height's NUFFT with its mode shift the wrong way"),
+    Mutation("raw97-short-wave-rise-lost", S + "ocean/romeiser.py",
+             "np.sqrt(1.0 + (k / k6) ** 7.2)", "np.sqrt(1.0 + (k / k6) ** 2.2)",
+             ("tests/ocean/test_romeiser.py", "tests/scattering/test_validation_gmf.py"),
+             "RAW97's eq 42 with a slower rise above 280 rad/m: X-band Bragg waves too low"),
+    Mutation("raw97-wind-exponent-centre", S + "ocean/romeiser.py",
+             "np.exp(-(((k - k4) / k5) ** 2)))", "np.exp(-(((k + k4) / k5) ** 2)))",
+             ("tests/ocean/test_romeiser.py", "tests/scattering/test_validation_gmf.py"),
+             "RAW97's wind exponent (eq 41) centred at -140 rad/m: short waves hardly grow "
+             "with the wind"),
+    Mutation("raw97-spreading-over-real-line", S + "ocean/romeiser.py",
+             "norm = np.sqrt(np.pi / a) * erf(np.pi * np.sqrt(a))", "norm = np.sqrt(np.pi / a)",
+             ("tests/ocean/test_romeiser.py",),
+             "RAW97's spreading normalised over the real line, not (-pi, pi]"),
 ]
 
 

@@ -1,9 +1,9 @@
 """The Romeiser, Alpers & Wismann (1997) spectrum ("RAW97", ``seaecho.ocean.romeiser``).
 
-The paper's figures could not be read from here, so the spectrum is checked against (i) an
+Romeiser et al.'s figures could not be read from here, so the spectrum is checked against (i) an
 independent implementation of the same equations (OceanSAR, TU Delft, ``spec/romeiser97.py``
 and ``spread/romeiser97.py``: values below computed from its expressions), (ii) what the
-paper says its spectrum is for: the Bragg level of the C-band scatterometers, where it
+article says its spectrum is for: the Bragg level of the C-band scatterometers, where it
 must agree with the Elfouhaily et al. (1997) spectrum that was fitted to the same
 C-band backscatter (and the Cox & Munk slopes), and a short-wave saturation that falls
 between the C- and X-band Bragg wavenumbers; (iii) closed forms (the spreading's unit
@@ -120,3 +120,18 @@ def test_elfouhaily_unchanged():
     saturation at 384 rad/m, 7 m/s: 6.8e-3, docs/scattering.md)."""
     assert 384.0**3 * elfouhaily(384.0, float(u19_5_from_u10(7.0))) == pytest.approx(6.8e-3,
                                                                                       rel=0.02)
+
+
+def test_scene_selects_raw97_and_ignores_the_fetch():
+    """``[sea] spectrum = "romeiser"``: the builder's spectrum is RAW97 (no fetch law: a
+    fetch_m is not checked against Elfouhaily's or JONSWAP's, as with Pierson-Moskowitz)."""
+    from seaecho.build import sea_spectrum
+    from seaecho.config import parse_scene
+
+    scene = parse_scene({"sea": {"spectrum": "romeiser", "spreading": "romeiser",
+                                 "wind_speed_m_s": 8.0, "fetch_m": 10.0, "size_x_m": 8.0,
+                                 "nx": 64},
+                         "tracing": {"mode": "analytic"}})
+    spec = sea_spectrum(scene)
+    assert (spec.spectrum, spec.spreading) == ("romeiser", "romeiser")
+    np.testing.assert_allclose(spec.omni([384.0]), romeiser(np.array([384.0]), 8.0))

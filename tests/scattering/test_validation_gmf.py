@@ -250,7 +250,7 @@ def test_xband_polarisation_ratio_with_raw97(ss, grazing):
     * at 20-30 deg, a known remaining disagreement, kept visible: VV/HH is 0-4.6 dB
       above their span (4 of the 8 points more than 2 dB: sea state 2 at 20 and 30 deg,
       3 at 20, 4 at 30; E97: 2.7-7.1 dB), because the two-scale Bragg HH at 60-70 deg incidence is
-      12-16 dB below VV with either spectrum and the breaking zones' HH (KHCC03) does not
+      11-16 dB below VV with either spectrum and the breaking zones' HH (KHCC03) does not
       fill the gap there (docs/scattering.md);
     * everywhere RAW97's ratio is closer to the references than E97's."""
     refs = _xband_references(ss, grazing)
