@@ -52,10 +52,12 @@ F = 9.3e9
 SIZE, N = 256.0, 256
 
 
-def simulated(u10: float, seed: int = 1) -> np.ndarray:
+def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
+              grazing_deg=GRAZING) -> np.ndarray:
     """Facet-sum sigma0 (grazing, 4) averaged over the four looks [m^2/m^2]."""
+    grazing_deg = np.asarray(grazing_deg, dtype=float)
     sc = parse_scene({
-        "sea": {"spectrum": "elfouhaily", "spreading": "elfouhaily",
+        "sea": {"spectrum": spectrum, "spreading": "elfouhaily",
                 "wind_speed_m_s": float(u19_5_from_u10(u10)), "size_x_m": SIZE, "nx": N},
         "run": {"seed": seed},
         "scattering": {"model": "blend+breaking"},
@@ -65,9 +67,9 @@ def simulated(u10: float, seed: int = 1) -> np.ndarray:
     model = build_sea_model(sc, F)
     st = sea.state(0.0)
     acc = to_facets(sea.kinematics(0.0).acceleration[..., 2]).reshape(-1)
-    out = np.zeros((GRAZING.size, 4))
+    out = np.zeros((grazing_deg.size, 4))
     area_h = (SIZE * (N - 1) / N) ** 2
-    for i, g in enumerate(np.radians(GRAZING)):
+    for i, g in enumerate(np.radians(grazing_deg)):
         for look in np.radians(LOOKS_DEG):
             # the radar looks towards pi + look from the wind: upwind for look = 0
             d = np.array([np.cos(g) * np.cos(look), np.cos(g) * np.sin(look), np.sin(g)])
