@@ -135,3 +135,25 @@ def test_scene_selects_raw97_and_ignores_the_fetch():
     spec = sea_spectrum(scene)
     assert (spec.spectrum, spec.spreading) == ("romeiser", "romeiser")
     np.testing.assert_allclose(spec.omni([384.0]), romeiser(np.array([384.0]), 8.0))
+
+
+def test_sigma_command_line_takes_raw97(tmp_path):
+    """``seaecho sigma --spectrum romeiser``: the CSV holds sea_sigma's numbers with RAW97
+    (X band, 10 deg grazing upwind, U19.5 7.4 m/s), VV several dB below E97's."""
+    from seaecho.cli import main
+    from seaecho.ocean.seawater import meissner_wentz
+    from seaecho.scattering.models import sea_sigma
+
+    rows = {}
+    for name in ("romeiser", "elfouhaily"):
+        out = tmp_path / f"{name}.csv"
+        assert main(["sigma", "--model", "two-scale+breaking", "--spectrum", name,
+                     "--frequency-ghz", "9.3", "--wind-speed", "7.4", "--theta-i-deg", "80",
+                     "--theta-s-deg", "80", "--phi-s-deg", "180", "--no-figure",
+                     "-o", str(out)]) == 0
+        rows[name] = np.loadtxt(out, delimiter=",", skiprows=1)
+    spec = DirectionalSpectrum("romeiser", "elfouhaily", u19_5=7.4)
+    ref = sea_sigma("two-scale+breaking", np.radians(80.0), 0.0, np.radians(80.0), np.pi,
+                    9.3e9, spec, meissner_wentz(9.3e9, 20.0, 35.0))
+    np.testing.assert_allclose(rows["romeiser"][4:], 10 * np.log10(ref), atol=1e-3)
+    assert rows["elfouhaily"][7] - rows["romeiser"][7] > 3.0
