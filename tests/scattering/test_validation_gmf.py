@@ -12,7 +12,8 @@ References (implemented in ``tests/reference_models.py`` with provenance notes):
 
 Monostatic, sigma0 averaged over the four looks upwind, crosswind (2) and downwind
 (the references are azimuth averages or are averaged the same way), sea water at 20 degC
-and 35 psu, Elfouhaily spectrum, U19.5 from U10 by seaecho.ocean.wind. The tolerances are
+and 35 psu, Elfouhaily spectrum (the tests at the end: the Romeiser, Alpers & Wismann
+1997 spectrum), U19.5 from U10 by seaecho.ocean.wind. The tolerances are
 what the models reach; the disagreements that remain are asserted as such so that they stay visible.
 """
 
