@@ -66,6 +66,15 @@ def test_ground_point_monostatic_and_bistatic_round_trip():
     p = ground_point(tx, rx, u, r)
     np.testing.assert_allclose(half_path(p, tx, rx), r, rtol=1e-12)
     assert np.all(p[:, 2] == 0.0)
+    # the calibration scene's receiver: its boresight ray meets the path's ellipse twice;
+    # the 3-D boresight picks the point it looks at (the origin), the 2-D azimuth the
+    # nearer one
+    tx1, rx1 = np.array([[-500.0, 0.0, 300.0]]), np.array([[200.0, 100.0, 80.0]])
+    r0 = half_path(np.zeros(3), tx1[0], rx1[0])
+    np.testing.assert_allclose(ground_point(tx1, rx1, -rx1, [r0])[0], 0.0, atol=1e-8)
+    near = ground_point(tx1, rx1, -rx1[:, :2], [r0])[0]
+    assert np.hypot(*(near[:2] - rx1[0, :2])) < np.hypot(*rx1[0, :2])
+    assert half_path(near, tx1[0], rx1[0]) == pytest.approx(r0, rel=1e-12)
     # inside the direct path: no point
     assert np.isnan(ground_point(tx[:1], rx[:1], u[:1], [300.0])).all()
 

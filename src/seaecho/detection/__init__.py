@@ -5,12 +5,14 @@ and SAR images (y x x) in; detections out. Reading datasets and writing tables i
 :mod:`seaecho.io.detections`; :func:`seaecho.detect` and :func:`seaecho.score` join them.
 """
 
-from .association import associate, ground_point, half_path, interpolate_truth
+from .association import associate, ground_point, half_path, interpolate_truth, nearest_object
 from .cfar import CFAR, KINDS
 from .clutter_map import ClutterMap, m_of_n
+from .frames import Frame, ObjectTruth, detect_frames, opportunity_groups
 from .plots import extract_plots
-from .scoring import opportunity_peaks, pd_at_pfa, roc, score_tables
+from .scoring import opportunity_peaks, pd_at_pfa, roc, roc_from_statistic, score_tables
 
-__all__ = ["CFAR", "KINDS", "ClutterMap", "associate", "extract_plots", "ground_point",
+__all__ = ["CFAR", "KINDS", "ClutterMap", "Frame", "ObjectTruth", "associate", "detect_frames",
+           "extract_plots", "ground_point", "nearest_object", "opportunity_groups",
            "half_path", "interpolate_truth", "m_of_n", "opportunity_peaks", "pd_at_pfa",
-           "roc", "score_tables"]
+           "roc", "roc_from_statistic", "score_tables"]

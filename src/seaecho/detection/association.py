@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["associate", "ground_point", "half_path", "interpolate_truth"]
+__all__ = ["associate", "ground_point", "half_path", "interpolate_truth", "nearest_object"]
 
 
 def interpolate_truth(truth_time_s: ArrayLike, truth_position: ArrayLike,
@@ -72,10 +72,35 @@ def associate(time_s: ArrayLike, position: ArrayLike, truth_time_s: ArrayLike,
     n_obj = np.asarray(truth_position).shape[1]
     if pos.shape[0] == 0 or n_obj == 0:
         return np.full(pos.shape[0], -1, np.int64)
-    where = interpolate_truth(truth_time_s, truth_position, time_s)
+    return nearest_object(pos, interpolate_truth(truth_time_s, truth_position, time_s), gate)
+
+
+def nearest_object(position: ArrayLike, where: ArrayLike, gate: ArrayLike) -> NDArray:
+    """The nearest object within its gate, for positions and objects at the same times.
+
+    Parameters
+    ----------
+    position : array_like
+        (n, d) detection positions [m].
+    where : array_like
+        (n, object, d) object positions at each detection's time [m] (NaN: absent).
+    gate : array_like
+        (object,) or scalar gate [m].
+
+    Returns
+    -------
+    ndarray of int
+        (n,) object index, -1 for none.
+    """
+    pos = np.asarray(position, dtype=float)
+    where = np.asarray(where, dtype=float)
+    n_obj = where.shape[1]
+    if pos.shape[0] == 0 or n_obj == 0:
+        return np.full(pos.shape[0], -1, np.int64)
     dist = np.sqrt(((where - pos[:, None, :]) ** 2).sum(axis=-1))  # (n, object)
     gate = np.broadcast_to(np.asarray(gate, dtype=float), (n_obj,))
-    inside = dist <= gate[None, :]
+    with np.errstate(invalid="ignore"):
+        inside = dist <= gate[None, :]
     score = np.where(inside, dist, np.inf)
     best = np.argmin(score, axis=1)
     return np.where(inside.any(axis=1), best, -1).astype(np.int64)
@@ -110,7 +135,10 @@ def ground_point(tx: ArrayLike, rx: ArrayLike, direction: ArrayLike,
     tx, rx : array_like
         (n, 3) transmitter and receiver positions [m].
     direction : array_like
-        (n, 2) horizontal unit vectors (the receive antenna's azimuth).
+        (n, 2) horizontal unit vectors (the receive antenna's azimuth), or (n, 3)
+        boresights: then, where the ray meets the path's ellipse twice (a receiver
+        outside it, as in a bistatic geometry), the point nearer the boresight's
+        direction.
     half_path_m : array_like
         (n,) half bistatic paths [m].
 
@@ -121,7 +149,8 @@ def ground_point(tx: ArrayLike, rx: ArrayLike, direction: ArrayLike,
         path (inside the direct path, or behind the receiver).
     """
     tx, rx = np.asarray(tx, dtype=float), np.asarray(rx, dtype=float)
-    u = np.asarray(direction, dtype=float)
+    boresight = np.asarray(direction, dtype=float)
+    u = boresight[..., :2] / np.linalg.norm(boresight[..., :2], axis=-1, keepdims=True)
     big_l = 2.0 * np.asarray(half_path_m, dtype=float)
     d = rx[..., :2] - tx[..., :2]
     du = (d * u).sum(axis=-1)
@@ -136,7 +165,17 @@ def ground_point(tx: ArrayLike, rx: ArrayLike, direction: ArrayLike,
         a_len = (k[..., None] - 2.0 * roots * du[..., None]) / (2.0 * big_l[..., None])
     # the squarings hold only with 0 < a <= L: the other roots are spurious
     ok = (roots >= 0) & (a_len > 0) & (a_len <= big_l[..., None]) & np.isfinite(roots)
-    s = np.where(ok, roots, np.inf).min(axis=-1)
+    if boresight.shape[-1] == 3:  # the root seen nearest the boresight
+        p = rx[..., None, :2] + roots[..., None] * u[..., None, :]
+        los = np.concatenate([p - rx[..., None, :2],
+                              np.broadcast_to(-rx[..., None, 2:], p.shape[:-1] + (1,))], -1)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            cos = (los * boresight[..., None, :]).sum(-1) / np.linalg.norm(los, axis=-1)
+        cos = np.where(ok, cos, -np.inf)
+        pick = np.argmax(cos, axis=-1)[..., None]
+        s = np.where(ok.any(axis=-1), np.take_along_axis(roots, pick, -1)[..., 0], np.inf)
+    else:
+        s = np.where(ok, roots, np.inf).min(axis=-1)
     s = np.where(np.isfinite(s), s, np.nan)
     xy = rx[..., :2] + s[..., None] * u
     return np.concatenate([xy, np.where(np.isnan(s), np.nan, 0.0)[..., None]], axis=-1)

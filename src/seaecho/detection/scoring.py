@@ -19,7 +19,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["opportunity_peaks", "pd_at_pfa", "roc", "score_tables"]
+__all__ = ["opportunity_peaks", "pd_at_pfa", "roc", "roc_from_statistic", "score_tables"]
 
 
 def score_tables(det_look: ArrayLike, det_object: ArrayLike, det_cells: ArrayLike,
@@ -136,10 +136,18 @@ def roc(detector: Callable[[NDArray], NDArray], power: ArrayLike, groups: ArrayL
         opportunities whose peak is above), each sorted by increasing threshold.
     """
     stat = np.asarray(detector(np.asarray(power, dtype=float)), dtype=float)
-    g = np.asarray(groups)
-    if stat.shape != g.shape:
+    if stat.shape != np.shape(groups):
         raise ValueError(f"the detector returned shape {stat.shape}, the power has "
-                         f"{g.shape}: a detector maps each cell to one statistic")
+                         f"{np.shape(groups)}: a detector maps each cell to one statistic")
+    return roc_from_statistic(stat, groups, n_groups, thresholds)
+
+
+def roc_from_statistic(statistic: ArrayLike, groups: ArrayLike, n_groups: int,
+                       thresholds: ArrayLike | None = None) -> dict[str, NDArray]:
+    """:func:`roc` from a statistic already computed (same arguments, ``statistic`` in
+    place of the detector and the power)."""
+    stat = np.asarray(statistic, dtype=float)
+    g = np.asarray(groups)
     background = np.sort(stat[(g == -1) & np.isfinite(stat)])
     peaks = np.sort(opportunity_peaks(stat, g, n_groups))
     if thresholds is None:
