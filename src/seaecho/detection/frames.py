@@ -95,8 +95,9 @@ class Frame:
         (rows, object, 3) object positions at each row's time [m].
     ndim : int
         1: cells join along columns only (range profiles); 2: over both axes.
-    area_m2 : float
-        Area of the tested cells of one look [m^2] (NaN when unknown).
+    cell_area_m2 : float or ndarray
+        Area of each cell [m^2], broadcastable to (rows, cols) (NaN when unknown): the
+        tested cells' sum per look is the area a look covers.
     """
 
     kind: str
@@ -109,7 +110,7 @@ class Frame:
     locate: Callable[[NDArray, NDArray], dict]
     truth_xyz: NDArray
     ndim: int = 1
-    area_m2: float = float("nan")
+    cell_area_m2: float | NDArray = float("nan")
     extra: dict = field(default_factory=dict)
 
 
@@ -212,7 +213,9 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
             tested[:n - 1] = False
         cells += int(tested.sum())
         looks += int(np.unique(fr.look[tested.any(axis=1)]).size)
-        areas.append(fr.area_m2)
+        n_fr = max(int(np.unique(fr.look[tested.any(axis=1)]).size), 1)
+        areas.append(float(np.sum(np.broadcast_to(fr.cell_area_m2, tested.shape)[tested]))
+                     / n_fr)
         p = extract_plots(fr.power, hits, np.where(tested, est, np.nan), ndim=fr.ndim)
         row, col = p["centroid"][:, 0], p["centroid"][:, 1]
         peak_row = p["peak_index"][:, 0]

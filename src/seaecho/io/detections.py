@@ -202,7 +202,7 @@ def sweep_frames(power: list[NDArray], azimuth_deg: list[NDArray], time_s: list[
         gate = 0.5 * np.asarray(truth.extent_m, dtype=float) + np.maximum(
             res, np.nanmedian(r_obj, axis=0) * gate_az if where.shape[1] else res)
         r_ground = np.linalg.norm(cell - rx[:, None, :2], axis=-1)
-        area = float(np.nansum(r_ground * min(step, 2 * np.pi) * dr))
+        cell_area = np.nan_to_num(r_ground * min(step, 2 * np.pi) * dr)
 
         def locate(row, col, az=az, tx=tx, rx=rx, u=u, i=i):
             k = np.clip(np.rint(row).astype(np.int64), 0, az.size - 1)
@@ -217,7 +217,7 @@ def sweep_frames(power: list[NDArray], azimuth_deg: list[NDArray], time_s: list[
 
         frames.append(Frame("ppi", p, np.full(n_az, i), t, np.nan_to_num(cell, nan=1e30),
                             where[..., :2], np.atleast_1d(gate), locate, where, ndim=2,
-                            area_m2=area, extra={"circular": circular}))
+                            cell_area_m2=cell_area, extra={"circular": circular}))
     return frames
 
 
@@ -332,10 +332,8 @@ def image_frames(img, channel: str | None = None,
             out["range_m"] = half_path(p, tx[m], rx[m])
         return out
 
-    tested = np.isfinite(power)
     return [Frame("image", power, np.zeros(y.size, np.int64), np.full(y.size, t_mid), cell,
-                  where[..., :2], gate, locate, where, ndim=2,
-                  area_m2=float(tested.sum()) * pixel * pixel)]
+                  where[..., :2], gate, locate, where, ndim=2, cell_area_m2=pixel * pixel)]
 
 
 def _format(v) -> str:
@@ -375,14 +373,17 @@ def read_table(path: str | os.PathLike) -> tuple[dict[str, NDArray], dict[str, s
     import csv
 
     header: dict[str, str] = {}
-    with open(path, encoding="utf-8", newline="") as f:
-        body = []
-        for line in f:
-            if line.startswith("#"):
-                k, _, v = line[1:].partition("=")
-                header[k.strip()] = v.strip()
-            else:
-                body.append(line)
+    body = []
+    try:
+        with open(path, encoding="utf-8", newline="") as f:
+            for line in f:
+                if line.startswith("#"):
+                    k, _, v = line[1:].partition("=")
+                    header[k.strip()] = v.strip()
+                else:
+                    body.append(line)
+    except UnicodeDecodeError:
+        raise ValueError("not a CSV table (not UTF-8 text)") from None
     rows = list(csv.reader(body))
     if not rows:
         raise ValueError(f"{os.fspath(path)}: no header row")
