@@ -8,9 +8,9 @@ From Python (:mod:`seaecho.api`, docs/python-api.md)::
 
 ``load_scene``, ``parse_scene``, ``with_overrides``, ``simulate``, ``surface``, ``trace``,
 ``compare``, ``sigma``, ``wave_spectrum``, ``permittivity``, ``image``,
-``image_measures``, ``figures``, ``detect``, ``score``, ``stonesoup_readers``, ``save`` and
-``open_dataset`` return scenes, xarray
-objects and files; they are imported on first use, so ``import seaecho`` stays
+``image_measures``, ``figures``, ``detect``, ``score``, ``roc``, ``stonesoup_readers``,
+``save`` and ``open_dataset`` return scenes, xarray objects and files; they are imported
+on first use, so ``import seaecho`` stays
 fast. The package is split by pipeline stage (see ``docs/design.md``): ``config`` (scene
 files), ``ocean`` (spectra, surfaces, sea water), ``wake`` (ship wakes), ``scattering``
 (polarimetric sea scattering), ``tracing`` (Sionna RT / Mitsuba facets), ``geometry``
@@ -39,6 +39,7 @@ __all__ = [
     "open_dataset",
     "parse_scene",
     "permittivity",
+    "roc",
     "save",
     "score",
     "sigma",
@@ -64,6 +65,7 @@ if TYPE_CHECKING:  # pragma: no cover
         open_dataset,
         parse_scene,
         permittivity,
+        roc,
         save,
         score,
         sigma,

@@ -23,6 +23,7 @@ function                      gives                            command line
 :func:`figures`               the command line's PNG figures   ``run``, ``image``
 :func:`detect`                CFAR detections, their truth     ``seaecho detect``
 :func:`score`                 P_D, false alarms, P_FA          ``seaecho score``
+:func:`roc`                   ROC curve of any detector
 :func:`stonesoup_readers`     Stone Soup readers of an export  ``detect --stonesoup``
 :func:`save`, :func:`open_dataset`  netCDF files (complex variables included)
 ============================  ===============================  =========================
@@ -85,6 +86,7 @@ __all__ = [
     "open_dataset",
     "parse_scene",
     "permittivity",
+    "roc",
     "save",
     "scene_summary",
     "score",
@@ -1756,3 +1758,75 @@ def write_detections(detections: xr.Dataset, truth: xr.Dataset, path: PathLike
     b = write_table(p.with_name(p.stem + "_truth" + p.suffix),
                     {k: truth[k].values for k in truth.data_vars}, header)
     return [a, b]
+
+
+def roc(datasets: Any, detector: Any, *, channel: str | None = None,
+        thresholds: ArrayLike | None = None, truth: Any = None,
+        exclusion: float = 4.0) -> dict:
+    """ROC curve of a detector on runs, images or PPI sweeps, by sweeping its threshold
+    (docs/detection.md).
+
+    Parameters
+    ----------
+    datasets : dataset, path, or a list of them
+        What :func:`detect` takes; a list pools its looks (scenes x seeds).
+    detector : callable
+        ``power (rows, cols) -> statistic`` of the same shape, larger for a target, NaN
+        where not tested: a :class:`seaecho.detection.CFAR` (1-D along the columns,
+        range; 2-D over both) or a user's function.
+    channel : str, optional
+        Channel (default the first).
+    thresholds : array_like, optional
+        Thresholds on the statistic (default: from the statistics' quantiles).
+    truth : seaecho.detection.ObjectTruth, optional
+        The objects, in place of each dataset's own.
+    exclusion : float
+        Cells within ``exclusion`` gates of an object but outside its gate (its range
+        sidelobes, its spread) are left out of the background.
+
+    Returns
+    -------
+    dict
+        ``threshold``, ``pfa`` (fraction of the background's tested cells above: cells
+        beyond every object's exclusion zone), ``pd`` (fraction of the opportunities,
+        an object in a look, whose largest statistic in its gate is above),
+        ``n_background``,
+        ``n_opportunities``, and per opportunity ``opportunity_object`` (name) and
+        ``opportunity_peak`` (largest statistic in the gate): P_D per object at any
+        threshold.
+    """
+    import numpy as np
+
+    from .detection import opportunity_groups, opportunity_peaks, roc_from_statistic
+
+    def f_names(frame, item):
+        return list(truth.names) if truth is not None else list(
+            _object_names(item, None, frame.kind))
+
+    if not callable(detector):
+        raise SceneError(f"detector = {detector!r}: a callable power -> statistic")
+    items = datasets if isinstance(datasets, list | tuple) else [datasets]
+    stats, groups, n, objects = [], [], 0, []
+    for item in items:
+        try:
+            frames = _detection_frames(item, channel, truth, None, None)[0]
+        except ValueError as exc:
+            raise SceneError(str(exc)) from None
+        for f in frames:
+            stat = np.asarray(detector(f.power), dtype=float)
+            if stat.shape != f.power.shape:
+                raise SceneError(f"detector returned shape {stat.shape} for power of shape "
+                                 f"{f.power.shape}: one statistic per cell")
+            g, table = opportunity_groups(f, np.isfinite(stat), n, exclusion)
+            n += table["look"].size
+            objects.append(np.asarray(f_names(f, item))[table["object"]]
+                           if table["object"].size else np.zeros(0, str))
+            stats.append(stat.ravel())
+            groups.append(g.ravel())
+    stat, g = np.concatenate(stats), np.concatenate(groups)
+    out = roc_from_statistic(stat, g, n, thresholds)
+    out["n_background"] = int(((g == -1) & np.isfinite(stat)).sum())
+    out["n_opportunities"] = int(n)
+    out["opportunity_object"] = np.concatenate(objects) if objects else np.zeros(0, str)
+    out["opportunity_peak"] = opportunity_peaks(stat, g, n)
+    return out

@@ -114,8 +114,8 @@ class Frame:
     extra: dict = field(default_factory=dict)
 
 
-def opportunity_groups(frame: Frame, tested: NDArray, first_group: int = 0
-                       ) -> tuple[NDArray, dict[str, NDArray]]:
+def opportunity_groups(frame: Frame, tested: NDArray, first_group: int = 0,
+                       exclusion: float = 1.0) -> tuple[NDArray, dict[str, NDArray]]:
     """Label each cell with its opportunity (look, object) when inside the object's gate.
 
     Parameters
@@ -125,11 +125,15 @@ def opportunity_groups(frame: Frame, tested: NDArray, first_group: int = 0
         (rows, cols) cells the detector tests.
     first_group : int
         Label of the frame's first opportunity (labels run on across frames).
+    exclusion : float
+        Cells beyond an object's gate but within ``exclusion`` gates of it are labelled
+        -2: neither the object nor the background (its own range sidelobes and spread,
+        which a ROC should not count as false alarms of the background).
 
     Returns
     -------
     groups : ndarray of int
-        (rows, cols): opportunity label, -1 for the background.
+        (rows, cols): opportunity label, -1 for the background, -2 in an exclusion zone.
     table : dict
         Per opportunity: ``look``, ``object``, ``row`` (the first row of the look
         where the object is inside the tested cells).
@@ -145,13 +149,16 @@ def opportunity_groups(frame: Frame, tested: NDArray, first_group: int = 0
     for o in range(n_obj):  # a few objects; every cell at once
         d = np.sqrt(((cell - frame.truth_coord[:, o, None, :]) ** 2).sum(-1))
         inside = (d <= frame.gate_m[o]) & tested
+        if exclusion > 1.0:
+            near = (d <= exclusion * frame.gate_m[o]) & ~inside & (groups == -1)
+            groups = np.where(near, -2, groups)
         seen = np.zeros(looks.size, bool)
         seen[np.unique(look_index[inside.any(axis=1)])] = True
         ids = np.full(looks.size, -1, np.int64)
         ids[seen] = label + np.arange(seen.sum())
         label += int(seen.sum())
         g = ids[look_index][:, None]
-        groups = np.where(inside & (groups < 0), g, groups)
+        groups = np.where(inside & (groups < 0), g, groups)  # an exclusion gives way
         # the opportunity's row: the first of its look where the object is in the cells
         any_row = np.flatnonzero(inside.any(axis=1))
         first = np.full(looks.size, rows, np.int64)
