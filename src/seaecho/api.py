@@ -1447,7 +1447,8 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
         (peak, [W] or [m^2] for an image), ``snr_db`` (estimate: peak over the noise
         estimate, minus one), ``n_cells``, ``object`` (name, '' for a false alarm),
         ``object_index`` (-1); attributes: the detector, ``alpha``, ``cells_tested``,
-        ``n_looks``, ``area_m2`` (per look; NaN when unknown).
+        ``n_looks``, ``area_m2`` (per look; NaN when unknown), ``position_sigma_m`` (a
+        plot's position error, the Stone Soup measurement noise).
     truth : xarray.Dataset
         Dimension ``opportunity`` (one object in one look, inside the tested cells):
         ``look``, ``time``, ``object``, ``object_index``, ``x_m``, ``y_m``, ``vx_m_s``,
@@ -1498,7 +1499,9 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
              "alpha": float(alpha), "channel": channel or "", "source": source,
              "cells_tested": int(totals["cells_tested"]), "n_looks": int(totals["n_looks"]),
              "area_m2": float(totals["area_m2"]),
-             "m_of_n": "" if m_of_n is None else f"{m_of_n[0]}/{m_of_n[1]}"}
+             "m_of_n": "" if m_of_n is None else f"{m_of_n[0]}/{m_of_n[1]}",
+             "position_sigma_m": float(frames[0].extra.get("position_sigma_m", 1.0))
+             if frames else 1.0}
     detections = xr.Dataset(columns, attrs=attrs)
     vel = _truth_velocity(frames, opps)
     t_cols = {"look": ("opportunity", opps["look"]),
@@ -1560,7 +1563,6 @@ def write_stonesoup_dir(detections: xr.Dataset, truth: xr.Dataset,
                         directory: PathLike) -> dict:
     """Write :func:`detect`'s tables in the forms Stone Soup's CSV readers take
     (:func:`seaecho.io.detections.write_stonesoup`); returns the paths."""
-    import numpy as np
 
     from .io.detections import write_stonesoup
 
@@ -1579,10 +1581,9 @@ def write_stonesoup_dir(detections: xr.Dataset, truth: xr.Dataset,
     tr = {k: truth[v].values for k, v in (("time_s", "time"), ("object", "object"),
                                           ("x_m", "x_m"), ("y_m", "y_m"),
                                           ("vx_m_s", "vx_m_s"), ("vy_m_s", "vy_m_s"))}
-    kind = detections.attrs.get("kind", "profile")
-    res = float(np.nanmedian(np.abs(np.diff(detections["range_m"].values)))) \
-        if "range_m" in detections and detections.sizes["detection"] > 1 else 1.0
-    sigma = max(res, 1.0) if kind != "image" else 1.0
+    # the plots' position error: the range resolution (range profiles; the arc of a ray
+    # spacing at mid range if larger, PPI), half the image's resolution (images)
+    sigma = float(detections.attrs.get("position_sigma_m", 1.0))
     return write_stonesoup(d, det, tr, (sigma, sigma))
 
 

@@ -141,7 +141,8 @@ def profile_frames(run, channel: str | None = None,
         return {"pulse": pulses[k], "range_m": r, "x_m": p[:, 0], "y_m": p[:, 1]}
 
     return [Frame("profile", power, pulses.copy(), t, rng[None, :, None], r_obj, gate,
-                  locate, where, ndim=1)]
+                  locate, where, ndim=1,
+                  extra={"position_sigma_m": _range_resolution(run)})]
 
 
 def sweep_frames(power: list[NDArray], azimuth_deg: list[NDArray], time_s: list[NDArray],
@@ -217,7 +218,9 @@ def sweep_frames(power: list[NDArray], azimuth_deg: list[NDArray], time_s: list[
 
         frames.append(Frame("ppi", p, np.full(n_az, i), t, np.nan_to_num(cell, nan=1e30),
                             where[..., :2], np.atleast_1d(gate), locate, where, ndim=2,
-                            cell_area_m2=cell_area, extra={"circular": circular}))
+                            cell_area_m2=cell_area, extra={
+                                "circular": circular, "position_sigma_m": max(
+                                    res, float(np.median(rng)) * step)}))
     return frames
 
 
@@ -333,7 +336,8 @@ def image_frames(img, channel: str | None = None,
         return out
 
     return [Frame("image", power, np.zeros(y.size, np.int64), np.full(y.size, t_mid), cell,
-                  where[..., :2], gate, locate, where, ndim=2, cell_area_m2=pixel * pixel)]
+                  where[..., :2], gate, locate, where, ndim=2, cell_area_m2=pixel * pixel,
+                  extra={"position_sigma_m": res / 2.0})]
 
 
 def _format(v) -> str:
