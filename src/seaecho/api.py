@@ -1342,8 +1342,9 @@ def _detection_frames(dataset, channel, truth, radar_position_m, azimuth_gate_de
         except (OSError, ValueError) as exc:
             raise SceneError(f"{source}: not a seaecho run or image ({exc})") from None
         with ds:
-            if "compressed" in ds or "image" in ds:
-                return _detection_frames(ds.load(), channel, truth, radar_position_m,
+            if "compressed" in ds or "image" in ds:  # the raw pulses stay on disk
+                ds = ds.drop_vars(["raw"], errors="ignore").load()
+                return _detection_frames(ds, channel, truth, radar_position_m,
                                          azimuth_gate_deg)[:2] + (source,)
         try:
             frames = iod.cfradial_sweeps(dataset, channel, radar_position_m, truth,
@@ -1496,7 +1497,9 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
         object=("detection", name_of[obj].astype(str)),
         object_index=("detection", obj))
     attrs = {"kind": kind, "detector": text, "cfar": cfar, "pfa": float(pfa),
-             "alpha": float(alpha), "channel": channel or "", "source": source,
+             "alpha": float(alpha),
+             "channel": str(frames[0].extra.get("channel", channel or "")) if frames else "",
+             "source": source,
              "cells_tested": int(totals["cells_tested"]), "n_looks": int(totals["n_looks"]),
              "area_m2": float(totals["area_m2"]),
              "m_of_n": "" if m_of_n is None else f"{m_of_n[0]}/{m_of_n[1]}",

@@ -245,3 +245,40 @@ def test_cli_detect_score_and_bad_input(calibration_run, tmp_path, capsys):
         err = capsys.readouterr().err
         assert msg in err and "Traceback" not in err, (argv, err)
     assert not (tmp_path / "e.csv").exists()
+
+
+def test_cfradial2_file_sweeps(tmp_path):
+    # The CfRadial 2 layout (xradar's DataTree, sweep_N groups, azimuth x range, azimuth
+    # clockwise from north, per-ray time, {channel}_re/_im samples); a radar 15 m up at
+    # the scene's origin and a target at azimuth 90 deg (east), 1500 m
+    rng = np.random.default_rng(11)
+    n_az, n_r = 180, 160
+    rng_m = 1000.0 + 7.5 * np.arange(n_r)
+    r_t = np.hypot(1500.0, 15.0)
+    i = int(np.argmin(np.abs(rng_m - r_t)))
+    groups = {}
+    for k in range(2):
+        re = rng.standard_normal((n_az, n_r)) / np.sqrt(2)
+        im = rng.standard_normal((n_az, n_r)) / np.sqrt(2)
+        re[44:47, i] = 100.0  # azimuths 88, 90, 92 deg
+        az = np.arange(n_az) * 2.0
+        groups[f"/sweep_{k}"] = xr.Dataset(
+            {"HH_re": (("azimuth", "range"), re.astype(np.float32)),
+             "HH_im": (("azimuth", "range"), im.astype(np.float32))},
+            coords={"azimuth": ("azimuth", az), "range": ("range", rng_m),
+                    "time": ("azimuth", k * 3.0 + az / 360.0 * 3.0)})
+    root = xr.Dataset(coords={"altitude": ((), 15.0)})
+    tree = xr.DataTree.from_dict({"/": root, **groups})
+    path = tmp_path / "ppi.nc"
+    tree.to_netcdf(path, engine="h5netcdf")
+    truth = ObjectTruth(np.array([0.0]), np.array([[[1500.0, 0.0, 0.0]]]), ("buoy",),
+                        np.array([0.0]))
+    det, tr = seaecho.detect(path, cfar="ca", pfa=1e-6, train=(3, 5), guard=(1, 2),
+                             truth=truth)
+    assert det.attrs["kind"] == "ppi" and det.attrs["channel"] == "HH"
+    on = det.where(det.object == "buoy", drop=True)
+    assert on.sizes["detection"] == 2 and set(on.sweep.values) == {0, 1}
+    np.testing.assert_allclose(on.azimuth_deg, 90.0, atol=1e-3)  # float32 samples
+    np.testing.assert_allclose(on.x_m, 1500.0, atol=8.0)
+    np.testing.assert_allclose(on.y_m, 0.0, atol=0.05)
+    assert seaecho.score(det, tr)["pd_object"] == {0: (2, 2, 1.0)}

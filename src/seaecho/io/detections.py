@@ -142,7 +142,7 @@ def profile_frames(run, channel: str | None = None,
 
     return [Frame("profile", power, pulses.copy(), t, rng[None, :, None], r_obj, gate,
                   locate, where, ndim=1,
-                  extra={"position_sigma_m": _range_resolution(run)})]
+                  extra={"position_sigma_m": _range_resolution(run), "channel": ch})]
 
 
 def sweep_frames(power: list[NDArray], azimuth_deg: list[NDArray], time_s: list[NDArray],
@@ -236,12 +236,15 @@ def run_sweeps(run, channel: str | None = None, truth: ObjectTruth | None = None
     tx = np.asarray(run["tx_position"].values, dtype=float)
     rx = np.asarray(run["rx_position"].values, dtype=float)
     groups = [np.flatnonzero(sweep == k) for k in dict.fromkeys(sweep.tolist())]
-    return sweep_frames([np.abs(z[g]) ** 2 for g in groups], [az[g] for g in groups],
+    frames = sweep_frames([np.abs(z[g]) ** 2 for g in groups], [az[g] for g in groups],
                         [t[g] for g in groups], run["range"].values,
                         [tx[g] for g in groups], [rx[g] for g in groups],
                         truth=run_truth(run) if truth is None else truth,
                         azimuth_gate_deg=azimuth_gate_deg,
                         range_resolution_m=_range_resolution(run))
+    for f in frames:
+        f.extra["channel"] = ch
+    return frames
 
 
 def cfradial_sweeps(path: str | os.PathLike, channel: str | None = None,
@@ -285,8 +288,11 @@ def cfradial_sweeps(path: str | os.PathLike, channel: str | None = None,
         rng = first["range"].values.astype(float)
     finally:
         tree.close()
-    return sweep_frames(power, az, t, rng, [pos] * len(names), truth=truth,
-                        azimuth_gate_deg=azimuth_gate_deg)
+    frames = sweep_frames(power, az, t, rng, [pos] * len(names), truth=truth,
+                          azimuth_gate_deg=azimuth_gate_deg)
+    for f in frames:
+        f.extra["channel"] = ch
+    return frames
 
 
 def image_truth(img) -> tuple[ObjectTruth, float]:
@@ -337,7 +343,7 @@ def image_frames(img, channel: str | None = None,
 
     return [Frame("image", power, np.zeros(y.size, np.int64), np.full(y.size, t_mid), cell,
                   where[..., :2], gate, locate, where, ndim=2, cell_area_m2=pixel * pixel,
-                  extra={"position_sigma_m": res / 2.0})]
+                  extra={"position_sigma_m": res / 2.0, "channel": ch})]
 
 
 def _format(v) -> str:
@@ -350,13 +356,19 @@ def write_table(path: str | os.PathLike, columns: Mapping[str, NDArray],
                 header: Mapping[str, object] | None = None) -> Path:
     """Write a table as CSV atomically: ``# key = value`` lines, then a header row and
     one row per entry. NaN is written as an empty field (no data)."""
+    import csv
+    import io
+
     from .dataset import atomic_path
 
     names = list(columns)
     cols = [np.asarray(columns[k]) for k in names]
     n = cols[0].size if cols else 0
-    lines = [f"# {k} = {_format(v)}" for k, v in (header or {}).items()]
-    lines.append(",".join(names))
+    buf = io.StringIO()
+    for k, v in (header or {}).items():
+        buf.write(f"# {k} = {' '.join(_format(v).split())}\n")
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(names)
 
     def cell(v):
         if isinstance(v, float | np.floating):
@@ -364,10 +376,10 @@ def write_table(path: str | os.PathLike, columns: Mapping[str, NDArray],
         return str(v)
 
     for i in range(n):  # rows of a table of plots, not cells
-        lines.append(",".join(cell(c[i]) for c in cols))
+        w.writerow([cell(c[i]) for c in cols])
     path = Path(path)
     with atomic_path(path) as tmp:
-        tmp.write_text("\n".join(lines) + "\n", encoding="utf-8")
+        tmp.write_text(buf.getvalue(), encoding="utf-8")
     return path
 
 
