@@ -282,3 +282,22 @@ def test_cfradial2_file_sweeps(tmp_path):
     np.testing.assert_allclose(on.x_m, 1500.0, atol=8.0)
     np.testing.assert_allclose(on.y_m, 0.0, atol=0.05)
     assert seaecho.score(det, tr)["pd_object"] == {0: (2, 2, 1.0)}
+
+
+def test_per_pulse_truth_of_several_objects_is_used():
+    # A run with per-pulse truth (truth_position (pulse, object, xyz), an object
+    # coordinate and a length per object) in place of its point targets: the objects are
+    # those of the truth, gated by half their length plus the range resolution
+    ds, _ = synthetic_run(n_pulses=50)
+    pos = np.repeat(ds.target_position.values[None], 50, axis=0)
+    ds = ds.drop_vars(["target_position", "target_velocity", "target"])
+    ds["truth_position"] = (("pulse", "object", "xyz"), pos)
+    ds["object_length_m"] = (("object",), np.array([0.0, 0.0, 20.0]))
+    ds = ds.assign_coords(object=["a", "b", "ship"])
+    truth = seaecho.io.detections.run_truth(ds)
+    assert truth.names == ("a", "b", "ship")
+    np.testing.assert_array_equal(truth.extent_m, [0.0, 0.0, 20.0])
+    det, tr = seaecho.detect(ds, pfa=1e-4, train=8, guard=2)
+    assert set(tr.object.values) == {"a", "b", "ship"}
+    gate = float(seaecho.io.detections.profile_frames(ds)[0].gate_m[2])
+    assert gate == pytest.approx(10.0 + C0 / (2 * 100e6))

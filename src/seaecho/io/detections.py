@@ -299,12 +299,17 @@ def image_truth(img) -> tuple[ObjectTruth, float]:
     """The image's point targets at the aperture's middle time, and that time [s]."""
     n = int(img.attrs.get("n_pulses", 1))
     prf = float(img.attrs.get("prf_hz", 1.0))
-    t_mid = 0.5 * (n - 1) / prf
+    radar = json.loads(img.attrs.get("scene_json", "{}") or "{}").get("radar") or {}
+    t_mid = float(radar.get("start_time_s", 0.0) or 0.0) + 0.5 * (n - 1) / prf
     if "target_position" not in img:
         return ObjectTruth(np.array([t_mid]), np.zeros((1, 0, 3)), (), np.zeros(0)), t_mid
     p = (np.asarray(img["target_position"].values, dtype=float)
          + t_mid * np.asarray(img["target_velocity"].values, dtype=float))
     names = tuple(str(x) for x in img["target"].values)
+    listed = [t.get("name") for t in json.loads(img.attrs.get("scene_json", "{}") or "{}")
+              .get("targets") or []]
+    if "target" not in img.coords and len(listed) == len(names) and all(listed):
+        names = tuple(str(x) for x in listed)  # an image keeps the targets' order
     return ObjectTruth(np.array([t_mid]), p[None], names, np.zeros(len(names))), t_mid
 
 
