@@ -1459,6 +1459,7 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
     import xarray as xr
 
     from .detection import detect_frames
+    from .detection.theory import pfa_m_of_n
 
     if not (isinstance(pfa, int | float) and 0.0 < pfa < 1.0):
         raise SceneError(f"pfa = {pfa}: the design false-alarm probability must be in "
@@ -1503,6 +1504,9 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
              "cells_tested": int(totals["cells_tested"]), "n_looks": int(totals["n_looks"]),
              "area_m2": float(totals["area_m2"]),
              "m_of_n": "" if m_of_n is None else f"{m_of_n[0]}/{m_of_n[1]}",
+             # P_FA of a cell after M of N independent pulses (Richards 2014, ch. 6)
+             "pfa_integrated": float(pfa) if m_of_n is None else float(
+                 pfa_m_of_n(pfa, int(m_of_n[0]), int(m_of_n[1]))),
              "position_sigma_m": float(frames[0].extra.get("position_sigma_m", 1.0))
              if frames else 1.0}
     detections = xr.Dataset(columns, attrs=attrs)

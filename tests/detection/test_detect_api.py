@@ -100,6 +100,8 @@ def test_m_of_n_and_clutter_map_on_profiles():
     q = float(theory.pfa_m_of_n(p1, 3, 4))
     hit, n, _ = s["pd_object"][2]
     assert n == 597 and abs(hit / n - q) < 0.06
+    assert det.attrs["pfa_integrated"] == pytest.approx(
+        sum(stats.binom.pmf(j, 4, 1e-2) for j in (3, 4)), rel=1e-9)
     # The clutter map learns each cell's own level: a target that stays in its cell is
     # part of the map, its ratio exponential of mean 1 as noise (Nitzberg 1986), so it is
     # detected at the false-alarm rate; the map's P_FA per cell is the design's
