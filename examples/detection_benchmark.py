@@ -40,24 +40,28 @@ PFA = 1e-3
 TRAIN, GUARD = 8, 2
 
 
-def scene(seed: int, wind_m_s: float, n_pulses: int):
+def scene(seed: int, wind_m_s: float, n_pulses: int, prf_hz: float = 20.0,
+          targets: list[dict] | None = None, name: str = "detection-benchmark"):
+    """The benchmark's scene (module docstring); ``targets`` replaces its five."""
     g = np.radians(5.0)
     pos = [-400.0 * np.cos(g), 0.0, 400.0 * np.sin(g)]
+    if targets is None:
+        targets = [{"name": f"{rcs:g} m2", "position_m": [x, 0.0, 0.5], "rcs_m2": rcs}
+                   for x, rcs in zip(X_M, RCS_M2, strict=True)]
     return seaecho.parse_scene({
-        "name": f"detection-benchmark-u{wind_m_s:g}-s{seed}",
+        "name": f"{name}-u{wind_m_s:g}-s{seed}",
         "sea": {"spectrum": "elfouhaily", "spreading": "elfouhaily",
                 "wind_speed_m_s": wind_m_s, "size_x_m": 64.0, "nx": 128},
         "run": {"seed": seed},
         "scattering": {"model": "blend", "sea_motion": "evolving"},
-        "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 180e6, "prf_hz": 20.0,
+        "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 180e6, "prf_hz": prf_hz,
                   "n_pulses": n_pulses, "sea_update_pulses": 1, "channels": ["HH"],
                   "thermal_noise": True, "noise_figure_db": 3.0, "transmit_power_w": 10.0,
                   "waveform": {"kind": "lfm", "bandwidth_hz": 150e6, "duration_s": 1e-6}},
         "transmitter": {"position_m": pos, "antenna": {
             "pattern": "rectangular", "width_m": 0.6, "height_m": 0.14,
             "look_at_m": [0, 0, 0]}},
-        "targets": [{"name": f"{rcs:g} m2", "position_m": [x, 0.0, 0.5], "rcs_m2": rcs}
-                    for x, rcs in zip(X_M, RCS_M2, strict=True)],
+        "targets": targets,
     })
 
 

@@ -36,23 +36,13 @@ BOATS = (("boat A", -14.0, 4.0), ("boat B", 16.0, -3.0))  # name, x [m], v_x [m/
 
 
 def scene(n_pulses: int, prf_hz: float):
-    g = np.radians(5.0)
-    return seaecho.parse_scene({
-        "name": "stonesoup-tracking",
-        "sea": {"spectrum": "elfouhaily", "spreading": "elfouhaily", "wind_speed_m_s": 6.0,
-                "size_x_m": 64.0, "nx": 128},
-        "run": {"seed": 4},
-        "scattering": {"model": "blend", "sea_motion": "evolving"},
-        "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 180e6, "prf_hz": prf_hz,
-                  "n_pulses": n_pulses, "sea_update_pulses": 1, "channels": ["HH"],
-                  "thermal_noise": True, "noise_figure_db": 3.0, "transmit_power_w": 10.0,
-                  "waveform": {"kind": "lfm", "bandwidth_hz": 150e6, "duration_s": 1e-6}},
-        "transmitter": {"position_m": [-400.0 * np.cos(g), 0.0, 400.0 * np.sin(g)],
-                        "antenna": {"pattern": "rectangular", "width_m": 0.6,
-                                    "height_m": 0.14, "look_at_m": [0, 0, 0]}},
-        "targets": [{"name": n, "position_m": [x, 0.0, 0.5], "velocity_m_s": [v, 0.0, 0.0],
-                     "rcs_m2": 0.1} for n, x, v in BOATS],
-    })
+    """The benchmark's radar and sea (examples/detection_benchmark.py) with the boats."""
+    from detection_benchmark import scene as benchmark_scene
+
+    boats = [{"name": n, "position_m": [x, 0.0, 0.5], "velocity_m_s": [v, 0.0, 0.0],
+              "rcs_m2": 0.1} for n, x, v in BOATS]
+    return benchmark_scene(4, 6.0, n_pulses, prf_hz, targets=boats,
+                           name="stonesoup-tracking")
 
 
 def tracker(detector):

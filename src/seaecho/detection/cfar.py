@@ -38,11 +38,35 @@ from scipy import ndimage
 
 from . import theory
 
-__all__ = ["CFAR", "KINDS"]
+__all__ = ["CFAR", "KINDS", "RatioDetector"]
 
 #: CFAR kinds and their noise estimate.
 KINDS = {"ca": "mean of the training cells", "go": "greater of the two half means",
          "so": "smaller of the two half means", "os": "k-th smallest training cell"}
+
+
+class RatioDetector:
+    """What the CFARs and the clutter map share: a noise estimate per cell (``noise``),
+    a threshold multiplier from the design P_FA (``scale``); the statistic is the power
+    over the estimate."""
+
+    def noise(self, power: ArrayLike) -> NDArray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def scale(self, pfa: float) -> float:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def __call__(self, power: ArrayLike) -> NDArray:
+        """The test statistic: power over the noise estimate (NaN where not tested); a
+        cell is detected where it exceeds :meth:`scale` (pfa)."""
+        power = np.asarray(power, dtype=float)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return power / self.noise(power)
+
+    def detect(self, power: ArrayLike, pfa: float) -> NDArray:
+        """Boolean mask of the cells above the threshold of design ``pfa``."""
+        with np.errstate(invalid="ignore"):
+            return self(power) > self.scale(pfa)
 
 
 def _pair(value, name: str) -> tuple[int, ...]:
@@ -59,7 +83,7 @@ def _pair(value, name: str) -> tuple[int, ...]:
 
 
 @dataclass(frozen=True)
-class CFAR:
+class CFAR(RatioDetector):
     """A CFAR detector (a callable: power -> statistic, the power over the noise
     estimate).
 
@@ -218,14 +242,3 @@ class CFAR:
         out[tuple(sl)] = True
         return np.broadcast_to(out, shape)
 
-    def __call__(self, power: ArrayLike) -> NDArray:
-        """The test statistic: power over the noise estimate (NaN where not tested); a
-        cell is detected where it exceeds :meth:`scale` (pfa)."""
-        power = np.asarray(power, dtype=float)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return power / self.noise(power)
-
-    def detect(self, power: ArrayLike, pfa: float) -> NDArray:
-        """Boolean mask of the cells above the threshold of design ``pfa``."""
-        with np.errstate(invalid="ignore"):
-            return self(power) > self.scale(pfa)

@@ -26,13 +26,15 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import theory
+from .cfar import RatioDetector
 
 __all__ = ["ClutterMap", "m_of_n"]
 
 
 @dataclass(frozen=True)
-class ClutterMap:
-    """Exponentially weighted clutter-map CFAR (a callable: power -> statistic).
+class ClutterMap(RatioDetector):
+    """Exponentially weighted clutter-map CFAR (a callable: power -> statistic, the power
+    over the map; NaN during the warm-up).
 
     Parameters
     ----------
@@ -87,17 +89,6 @@ class ClutterMap:
                 out[n] = q
             q = (1.0 - w) * q + w * power[n]
         return out
-
-    def __call__(self, power: ArrayLike) -> NDArray:
-        """Power over the map (NaN during the warm-up)."""
-        power = np.asarray(power, dtype=float)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return power / self.noise(power)
-
-    def detect(self, power: ArrayLike, pfa: float) -> NDArray:
-        """Boolean mask of the cells above the threshold of design ``pfa``."""
-        with np.errstate(invalid="ignore"):
-            return self(power) > self.scale(pfa)
 
 
 def m_of_n(hits: ArrayLike, m: int, n: int, axis: int = 0) -> NDArray:
