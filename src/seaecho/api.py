@@ -1364,7 +1364,7 @@ def _detection_frames(dataset, channel, truth, radar_position_m, azimuth_gate_de
 
 
 def _detector(kind: str, frames, cfar: str, train, guard, rank, map_weight):
-    """(noise callable, alpha, description) of the chosen detector for these frames."""
+    """(noise callable, detector with ``scale(pfa)``, description) for these frames."""
     import numpy as np
 
     from .detection import CFAR, ClutterMap
