@@ -31,6 +31,7 @@ LAYERS = [
     {"tracing"},
     {"radar"},
     {"processing"},
+    {"detection"},
     {"io"},
     {"build"},
     {"imaging"},
@@ -42,7 +43,7 @@ LAYERS = [
 ]
 #: Stages: they take stage models, never the scene (``config``).
 STAGES = {"ocean", "wake", "sea", "scattering", "geometry", "targets", "tracing", "radar",
-          "processing", "io"}
+          "processing", "detection", "io"}
 RANK = {name: i for i, layer in enumerate(LAYERS) for name in layer}
 #: The top-level package re-exports the Python API lazily (PEP 562 ``__getattr__``), so
 #: that ``import seaecho`` loads nothing heavy (tests/api/test_api_scene.py checks it).

@@ -291,6 +291,34 @@ MUTATIONS = [
              "norm = np.sqrt(np.pi / a) * erf(np.pi * np.sqrt(a))", "norm = np.sqrt(np.pi / a)",
              ("tests/ocean/test_romeiser.py",),
              "RAW97's spreading normalised over the real line, not (-pi, pi]"),
+    # --- detection (docs/detection.md)
+    Mutation("ca-cfar-law-exponent", S + "detection/theory.py",
+             "return (1.0 + np.asarray(alpha, dtype=float) / n) ** (-float(n))",
+             "return (1.0 + np.asarray(alpha, dtype=float) / n) ** (-float(n - 1))",
+             ("tests/detection/test_cfar.py",), "CA-CFAR's P_FA law with N - 1 (eq D1)"),
+    Mutation("so-cfar-law-one-plus", S + "detection/theory.py",
+             "(n_half + j) * np.log(2.0 + t)", "(n_half + j) * np.log(1.0 + t)",
+             ("tests/detection/test_cfar.py",), "SO's law with (1 + T) for (2 + T) (eq D3)"),
+    Mutation("swerling1-without-one", S + "detection/theory.py",
+             "/ (1.0 + np.asarray(snr, dtype=float))", "/ np.asarray(snr, dtype=float)",
+             ("tests/detection/test_cfar.py",), "Swerling 1 P_D with alpha / S, not / (1 + S)"),
+    Mutation("os-cfar-rank-off-by-one", S + "detection/cfar.py",
+             "ndimage.rank_filter(x, self.rank - 1,", "ndimage.rank_filter(x, self.rank,",
+             ("tests/detection/test_cfar.py",), "OS-CFAR takes the (k+1)-th cell (eq D4)"),
+    Mutation("go-so-swapped", S + "detection/cfar.py",
+             "(np.maximum if self.kind == \"go\" else np.minimum)",
+             "(np.minimum if self.kind == \"go\" else np.maximum)",
+             ("tests/detection/test_cfar.py",), "greatest-of and smallest-of swapped"),
+    Mutation("clutter-map-includes-the-scan", S + "detection/clutter_map.py",
+             "            if n >= self.warmup:\n                out[n] = q\n"
+             "            q = (1.0 - w) * q + w * power[n]\n",
+             "            q = (1.0 - w) * q + w * power[n]\n"
+             "            if n >= self.warmup:\n                out[n] = q\n",
+             ("tests/detection/test_clutter_map.py",),
+             "the clutter map updated with the scan it tests (Nitzberg's q_{n-1})"),
+    Mutation("m-of-n-strict", S + "detection/clutter_map.py",
+             "c[n:] - c[:-n] >= m", "c[n:] - c[:-n] > m",
+             ("tests/detection/test_clutter_map.py",), "M-of-N needing more than M (eq D6)"),
 ]
 
 

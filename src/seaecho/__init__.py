@@ -8,13 +8,15 @@ From Python (:mod:`seaecho.api`, docs/python-api.md)::
 
 ``load_scene``, ``parse_scene``, ``with_overrides``, ``simulate``, ``surface``, ``trace``,
 ``compare``, ``sigma``, ``wave_spectrum``, ``permittivity``, ``image``,
-``image_measures``, ``figures``, ``save`` and ``open_dataset`` return scenes, xarray
-objects and files; they are imported on first use, so ``import seaecho`` stays
+``image_measures``, ``figures``, ``detect``, ``score``, ``roc``, ``stonesoup_readers``,
+``save`` and ``open_dataset`` return scenes, xarray objects and files; they are imported
+on first use, so ``import seaecho`` stays
 fast. The package is split by pipeline stage (see ``docs/design.md``): ``config`` (scene
 files), ``ocean`` (spectra, surfaces, sea water), ``wake`` (ship wakes), ``scattering``
 (polarimetric sea scattering), ``tracing`` (Sionna RT / Mitsuba facets), ``geometry``
 (analytic facets), ``radar`` (antennas, waveform, platforms, echoes), ``processing``
-(range compression, detection), ``imaging`` (SAR focusing), ``io`` (datasets and figures).
+(range compression, Doppler), ``detection`` (CFAR detectors, scores), ``imaging`` (SAR
+focusing), ``io`` (datasets and figures).
 """
 
 from importlib.metadata import PackageNotFoundError, version
@@ -29,6 +31,7 @@ __all__ = [
     "Scene",
     "__version__",
     "compare",
+    "detect",
     "figures",
     "image",
     "image_measures",
@@ -36,9 +39,12 @@ __all__ = [
     "open_dataset",
     "parse_scene",
     "permittivity",
+    "roc",
     "save",
+    "score",
     "sigma",
     "simulate",
+    "stonesoup_readers",
     "surface",
     "trace",
     "wave_spectrum",
@@ -51,6 +57,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from .api import (
         Scene,
         compare,
+        detect,
         figures,
         image,
         image_measures,
@@ -58,9 +65,12 @@ if TYPE_CHECKING:  # pragma: no cover
         open_dataset,
         parse_scene,
         permittivity,
+        roc,
         save,
+        score,
         sigma,
         simulate,
+        stonesoup_readers,
         surface,
         trace,
         wave_spectrum,

@@ -21,6 +21,10 @@ function                      gives                            command line
 :func:`image`                 focused SAR image                ``seaecho image``
 :func:`image_measures`        the paper's image measures       ``seaecho image``
 :func:`figures`               the command line's PNG figures   ``run``, ``image``
+:func:`detect`                CFAR detections, their truth     ``seaecho detect``
+:func:`score`                 P_D, false alarms, P_FA          ``seaecho score``
+:func:`roc`                   ROC curve of any detector
+:func:`stonesoup_readers`     Stone Soup readers of an export  ``detect --stonesoup``
 :func:`save`, :func:`open_dataset`  netCDF files (complex variables included)
 ============================  ===============================  =========================
 
@@ -45,6 +49,7 @@ doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import tomllib
@@ -72,6 +77,7 @@ __all__ = [
     "Scene",
     "SceneSummary",
     "compare",
+    "detect",
     "figures",
     "image",
     "image_config",
@@ -80,10 +86,13 @@ __all__ = [
     "open_dataset",
     "parse_scene",
     "permittivity",
+    "roc",
     "save",
     "scene_summary",
+    "score",
     "sigma",
     "simulate",
+    "stonesoup_readers",
     "surface",
     "trace",
     "wave_spectrum",
@@ -1312,3 +1321,521 @@ def scene_summary(scene: SceneModel) -> SceneSummary:
             run.append(("image", "focused after the run ([image])"))
         sections.append(("Run", run))
     return SceneSummary(title, sections)
+
+
+# ------------------------------------------------------------------ detection, scores
+#: CFAR kinds :func:`detect` takes: the sliding windows of seaecho.detection.cfar and the
+#: clutter map ('map', scan to scan).
+DETECTORS = ("ca", "go", "so", "os", "map")
+
+
+def _detection_frames(dataset, channel, truth, radar_position_m, azimuth_gate_deg):
+    """(frames, kind, source) of a run, an image or a CfRadial 2 file."""
+    from .io import detections as iod
+
+    source = ""
+    if isinstance(dataset, str | os.PathLike):
+        source = os.fspath(dataset)
+        if not Path(dataset).exists():
+            raise SceneError(f"dataset {source} does not exist")
+        try:
+            ds = open_dataset(dataset)
+        except (OSError, ValueError) as exc:
+            raise SceneError(f"{source}: not a seaecho run or image ({exc})") from None
+        with ds:
+            if "compressed" in ds or "image" in ds:  # the raw pulses stay on disk
+                ds = ds.drop_vars(["raw"], errors="ignore").load()
+                return _detection_frames(ds, channel, truth, radar_position_m,
+                                         azimuth_gate_deg)[:2] + (source,)
+        try:
+            frames = iod.cfradial_sweeps(dataset, channel, radar_position_m, truth,
+                                         azimuth_gate_deg)
+        except (OSError, KeyError) as exc:
+            raise SceneError(f"{source}: neither a run, an image nor a CfRadial 2 file "
+                             f"({exc})") from None
+        return frames, "ppi", source
+    if "compressed" in dataset and "sweep" in dataset:
+        return iod.run_sweeps(dataset, channel, truth, azimuth_gate_deg), "ppi", source
+    if "compressed" in dataset:
+        return iod.profile_frames(dataset, channel, truth), "profile", source
+    if "image" in dataset:
+        return iod.image_frames(dataset, channel, truth), "image", source
+    raise SceneError("dataset: neither a run (no 'compressed'), a scanning run, nor an image "
+                     "(no 'image')")
+
+
+def _detector(kind: str, frames, cfar: str, train, guard, rank, map_weight):
+    """(noise callable, detector with ``scale(pfa)``, description) for these frames."""
+    import numpy as np
+
+    from .detection import CFAR, ClutterMap
+
+    if cfar not in DETECTORS:
+        raise SceneError(f"cfar = {cfar!r}: allowed {', '.join(DETECTORS)}")
+    if cfar == "map":
+        cm = ClutterMap(weight=map_weight if map_weight is not None else 0.125)
+        shapes = {f.power.shape for f in frames}
+        if kind == "profile":  # pulses as scans of the range cells
+            return cm.noise, cm, f"clutter map w = {cm.weight:g}, warm-up {cm.warmup}"
+        if kind == "ppi" and len(shapes) == 1 and len(frames) > cm.warmup:
+            stack = np.stack([f.power for f in frames])
+            est = cm.noise(stack)
+            table = {id(f.power): est[i] for i, f in enumerate(frames)}
+            return (lambda p: table[id(p)]), cm, f"clutter map w = {cm.weight:g}, " \
+                f"warm-up {cm.warmup} sweeps"
+        raise SceneError(f"cfar = 'map': needs range profiles, or more than {cm.warmup} "
+                         "PPI sweeps of one shape (not implemented yet for images)")
+    train_t = tuple(np.atleast_1d(train).tolist())
+    guard_t = tuple(np.atleast_1d(guard).tolist())
+    if kind == "image" and len(train_t) == 1:
+        train_t, guard_t = train_t * 2, (guard_t * 2 if len(guard_t) == 1 else guard_t)
+    circular = kind == "ppi" and all(f.extra.get("circular") for f in frames)
+    det = CFAR(cfar, train_t if len(train_t) > 1 else train_t[0],
+               guard_t if len(guard_t) > 1 else guard_t[0], rank=rank,
+               circular=circular and len(train_t) == 2)
+    return det.noise, det, f"{cfar.upper()}-CFAR train {train_t} guard {guard_t}" + (
+        f" rank {det.rank}" if det.kind == "os" else "")
+
+
+def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-6,
+           train: int | tuple[int, int] = 16, guard: int | tuple[int, int] = 2,
+           rank: int | None = None, channel: str | None = None,
+           m_of_n: tuple[int, int] | None = None, map_weight: float | None = None,
+           truth: Any = None, radar_position_m: ArrayLike | None = None,
+           azimuth_gate_deg: float | None = None,
+           stonesoup: PathLike | None = None) -> tuple[xr.Dataset, xr.Dataset]:
+    """Detect targets in a run, a SAR image or PPI sweeps (``seaecho detect``;
+    docs/detection.md).
+
+    Range profiles (``|compressed|^2``, pulse x range, 1-D CFAR along range, a look per
+    pulse) for a run; PPI sweeps (azimuth x range, a look per sweep) for a scanning run
+    or a CfRadial 2 file; the image (y x x, 2-D CFAR, one look) for ``seaecho image``'s
+    output. Detected cells join into plots; each plot belongs to the nearest object of
+    the truth within its gate, or to none (a false alarm).
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset or path
+        A run, a scanning run, an image, or a CfRadial 2 file.
+    cfar : {'ca', 'go', 'so', 'os', 'map'}
+        Detector (:data:`DETECTORS`).
+    pfa : float
+        Design false-alarm probability per cell, in (0, 1).
+    train, guard : int or (int, int)
+        Training and guard cells each side: one number along range, two (azimuth or y,
+        range or x) for a 2-D window (an image with one number: a square window).
+    rank : int, optional
+        OS-CFAR's order statistic (default 3N/4).
+    channel : str, optional
+        Channel (default the first).
+    m_of_n : (int, int), optional
+        Range profiles: M-of-N over consecutive pulses before the plots.
+    map_weight : float, optional
+        Clutter map's weight of the newest scan (default 1/8).
+    truth : seaecho.detection.ObjectTruth, optional
+        The objects, in place of the dataset's own.
+    radar_position_m : array_like, optional
+        A CfRadial 2 file's radar in the scene frame [m].
+    azimuth_gate_deg : float, optional
+        PPI: the azimuth part of the objects' gates [deg].
+    stonesoup : path, optional
+        Directory for the Stone Soup export (:func:`stonesoup_readers`).
+
+    Returns
+    -------
+    detections : xarray.Dataset
+        Dimension ``detection``: ``time`` [s], ``look``, ``pulse`` (profiles) or
+        ``sweep``, ``azimuth_deg`` (PPI), ``range_m``, ``x_m``, ``y_m``, ``power``
+        (peak, [W] or [m^2] for an image), ``snr_db`` (estimate: peak over the noise
+        estimate, minus one), ``n_cells``, ``object`` (name, '' for a false alarm),
+        ``object_index`` (-1); attributes: the detector, ``alpha``, ``cells_tested``,
+        ``n_looks``, ``area_m2`` (per look; NaN when unknown), ``position_sigma_m`` (a
+        plot's position error, the Stone Soup measurement noise).
+    truth : xarray.Dataset
+        Dimension ``opportunity`` (one object in one look, inside the tested cells):
+        ``look``, ``time``, ``object``, ``object_index``, ``x_m``, ``y_m``, ``vx_m_s``,
+        ``vy_m_s``, ``snr_db`` (largest SNR estimate in the object's gate).
+    """
+    import numpy as np
+    import xarray as xr
+
+    from .detection import detect_frames
+    from .detection.theory import pfa_m_of_n
+
+    if not (isinstance(pfa, int | float) and 0.0 < pfa < 1.0):
+        raise SceneError(f"pfa = {pfa}: the design false-alarm probability must be in "
+                         "(0, 1)")
+    try:
+        frames, kind, source = _detection_frames(dataset, channel, truth,
+                                                 radar_position_m, azimuth_gate_deg)
+        noise, det, text = _detector(kind, frames, cfar, train, guard, rank, map_weight)
+        alpha = det.scale(pfa)
+        if m_of_n is not None:
+            if kind != "profile":
+                raise ValueError(f"m_of_n = {m_of_n}: M-of-N over pulses applies to range "
+                                 "profiles")
+            if len(m_of_n) != 2:
+                raise ValueError(f"m_of_n = {m_of_n}: give (M, N)")
+        dets, opps, totals = detect_frames(frames, noise, alpha,
+                                           integrate=tuple(m_of_n) if m_of_n else None)
+    except ValueError as exc:
+        if isinstance(exc, SceneError):
+            raise
+        raise SceneError(str(exc)) from None
+    names = _object_names(dataset, truth, kind)
+    obj = dets["object"]
+    name_of = np.array(list(names) + [""], dtype=object)
+    columns = {"time": ("detection", dets["time_s"], {"units": "s"}),
+               "look": ("detection", dets["look"])}
+    for k in ("pulse", "sweep", "azimuth_deg", "range_m", "x_m", "y_m"):
+        if k in dets:
+            columns[k] = ("detection", dets[k], {"units": "degree" if k.endswith("deg")
+                                                 else "m" if k.endswith("_m") else "1"})
+    power_units = "m2" if kind == "image" else "W"
+    columns.update(
+        power=("detection", dets["power"], {"units": power_units, "long_name": "peak"}),
+        snr_db=("detection", 10.0 * np.log10(dets["snr"]), {"units": "dB"}),
+        n_cells=("detection", dets["n_cells"]),
+        object=("detection", name_of[obj].astype(str)),
+        object_index=("detection", obj))
+    attrs = {"kind": kind, "detector": text, "cfar": cfar, "pfa": float(pfa),
+             "alpha": float(alpha),
+             "channel": str(frames[0].extra.get("channel", channel or "")) if frames else "",
+             "source": source,
+             "cells_tested": int(totals["cells_tested"]), "n_looks": int(totals["n_looks"]),
+             "area_m2": float(totals["area_m2"]),
+             "m_of_n": "" if m_of_n is None else f"{m_of_n[0]}/{m_of_n[1]}",
+             # P_FA of a cell after M of N independent pulses (Richards 2014, ch. 6)
+             "pfa_integrated": float(pfa) if m_of_n is None else float(
+                 pfa_m_of_n(pfa, int(m_of_n[0]), int(m_of_n[1]))),
+             "position_sigma_m": float(frames[0].extra.get("position_sigma_m", 1.0))
+             if frames else 1.0}
+    detections = xr.Dataset(columns, attrs=attrs)
+    vel = _truth_velocity(frames, opps)
+    t_cols = {"look": ("opportunity", opps["look"]),
+              "time": ("opportunity", opps["time_s"], {"units": "s"}),
+              "object": ("opportunity", name_of[opps["object"]].astype(str)),
+              "object_index": ("opportunity", opps["object"]),
+              "x_m": ("opportunity", opps["x_m"], {"units": "m"}),
+              "y_m": ("opportunity", opps["y_m"], {"units": "m"}),
+              "vx_m_s": ("opportunity", vel[:, 0], {"units": "m s-1"}),
+              "vy_m_s": ("opportunity", vel[:, 1], {"units": "m s-1"}),
+              "snr_db": ("opportunity", 10.0 * np.log10(opps["snr"]), {"units": "dB"})}
+    truth_ds = xr.Dataset(t_cols, attrs=dict(attrs))
+    if stonesoup is not None:
+        write_stonesoup_dir(detections, truth_ds, stonesoup)
+    return detections, truth_ds
+
+
+def _object_names(dataset, truth, kind) -> tuple[str, ...]:
+    if truth is not None:
+        return tuple(truth.names)
+    from .io.detections import image_truth, run_truth
+
+    if isinstance(dataset, str | os.PathLike):
+        with open_dataset(dataset) as ds:
+            return _object_names(ds, None, kind) if ("compressed" in ds or "image" in ds) \
+                else ()
+    return image_truth(dataset)[0].names if kind == "image" else run_truth(dataset).names
+
+
+def _truth_velocity(frames, opps):
+    """Horizontal velocity of each opportunity's object at its time [m/s] (finite
+    differences of the truth between the rows of each frame), (n, 2)."""
+    import numpy as np
+
+    out = np.zeros((opps["look"].size, 2))
+    if not frames or not opps["look"].size:
+        return out
+    fr = frames[0]
+    if fr.truth_coord.shape[1] == 0:
+        return out
+    # the frames share one ObjectTruth: its positions come back through truth_xyz at the
+    # rows' times; differences between the rows of a frame give the velocity
+    t, o = opps["time_s"], opps["object"]
+    for f in frames:
+        tt = f.time_s
+        if tt.size < 2 or np.ptp(tt) == 0:
+            continue
+        sel = (t >= tt[0]) & (t <= tt[-1])
+        for k in np.unique(o[sel]):
+            m = sel & (o == k)
+            vx = np.gradient(f.truth_xyz[:, k, 0], tt)
+            vy = np.gradient(f.truth_xyz[:, k, 1], tt)
+            out[m, 0] = np.interp(t[m], tt, vx)
+            out[m, 1] = np.interp(t[m], tt, vy)
+    return np.nan_to_num(out)
+
+
+def write_stonesoup_dir(detections: xr.Dataset, truth: xr.Dataset,
+                        directory: PathLike) -> dict:
+    """Write :func:`detect`'s tables in the forms Stone Soup's CSV readers take
+    (:func:`seaecho.io.detections.write_stonesoup`); returns the paths."""
+
+    from .io.detections import write_stonesoup
+
+    d = Path(directory)
+    if d.exists() and not d.is_dir():
+        raise SceneError(f"stonesoup = {os.fspath(d)!r}: exists and is not a directory")
+    if not d.parent.is_dir():
+        raise SceneError(f"stonesoup = {os.fspath(d)!r}: directory {d.parent} does not "
+                         "exist")
+    det = {k: detections[v].values for k, v in
+           (("time_s", "time"), ("x_m", "x_m"), ("y_m", "y_m"))}
+    for k in ("range_m", "snr_db", "power", "object", "look", "pulse", "sweep",
+              "azimuth_deg"):
+        if k in detections:
+            det[k] = detections[k].values
+    tr = {k: truth[v].values for k, v in (("time_s", "time"), ("object", "object"),
+                                          ("x_m", "x_m"), ("y_m", "y_m"),
+                                          ("vx_m_s", "vx_m_s"), ("vy_m_s", "vy_m_s"))}
+    # the plots' position error: the range resolution (range profiles; the arc of a ray
+    # spacing at mid range if larger, PPI), half the image's resolution (images)
+    sigma = float(detections.attrs.get("position_sigma_m", 1.0))
+    return write_stonesoup(d, det, tr, (sigma, sigma))
+
+
+def stonesoup_readers(directory: PathLike) -> tuple[Any, Any]:
+    """Stone Soup readers of a ``seaecho detect --stonesoup DIR`` export.
+
+    Returns
+    -------
+    (CSVDetectionReader, CSVGroundTruthReader)
+        Configured on ``DIR/detections.csv`` (state vector x, y [m]; every detection
+        carries a :class:`~stonesoup.models.measurement.linear.LinearGaussian` model on a
+        constant-velocity state (x, vx, y, vy) with the export's noise) and
+        ``DIR/truth.csv`` (paths by ``object``, state x, vx, y, vy); times are seconds
+        since the scene's t = 0 read as seconds since 1970-01-01 UTC.
+
+    Raises
+    ------
+    SceneError
+        No export in ``directory``; ImportError without Stone Soup
+        (``pip install seaecho[tracking]``).
+    """
+    import json
+
+    import numpy as np
+
+    from .io.detections import STONESOUP_FILES
+
+    d = Path(directory)
+    settings_path = d / STONESOUP_FILES["settings"]
+    if not settings_path.is_file():
+        raise SceneError(f"directory = {os.fspath(d)!r}: no {STONESOUP_FILES['settings']} "
+                         "(write one with `seaecho detect ... --stonesoup DIR`)")
+    try:
+        from stonesoup.models.measurement.linear import LinearGaussian
+        from stonesoup.reader.generic import CSVGroundTruthReader
+    except ImportError as exc:  # pragma: no cover - the tracking extra
+        raise ImportError("Stone Soup is needed: pip install 'seaecho[tracking]'") from exc
+    s = json.loads(settings_path.read_text(encoding="utf-8"))
+    sx, sy = s["measurement_noise_m"]
+    model = LinearGaussian(ndim_state=4, mapping=tuple(s["state_mapping"]),
+                           noise_covar=np.diag([sx * sx, sy * sy]))
+    det = _modelled_reader_class()(
+        path=d / s["detections"], state_vector_fields=s["detection_fields"],
+        time_field=s["time_field"], timestamp=s["timestamp"], measurement_model=model,
+        csv_options={"dialect": "excel"})
+    truth = CSVGroundTruthReader(
+        path=d / s["truth"], state_vector_fields=s["truth_fields"],
+        time_field=s["time_field"], timestamp=s["timestamp"],
+        path_id_field=s["path_id_field"])
+    return det, truth
+
+
+@functools.cache
+def _modelled_reader_class():
+    """A CSVDetectionReader whose detections carry a measurement model (built on first
+    use: Stone Soup is an optional dependency)."""
+    from stonesoup.base import Property
+    from stonesoup.buffered_generator import BufferedGenerator
+    from stonesoup.models.measurement.linear import LinearGaussian
+    from stonesoup.reader.generic import CSVDetectionReader
+
+    class SeaechoCSVDetectionReader(CSVDetectionReader):
+        """:class:`~stonesoup.reader.generic.CSVDetectionReader` that attaches
+        ``measurement_model`` to every detection (seaecho's x, y plots)."""
+
+        measurement_model: LinearGaussian = Property(
+            doc="Measurement model given to every detection")
+
+        @BufferedGenerator.generator_method
+        def detections_gen(self):
+            for time, dets in super().detections_gen():
+                for d in dets:
+                    d.measurement_model = self.measurement_model
+                yield time, dets
+
+    return SeaechoCSVDetectionReader
+
+
+def score(detections: xr.Dataset | PathLike, truth: xr.Dataset | PathLike | None = None,
+          *, snr_bins_db: ArrayLike = (-math.inf, 0.0, 5.0, 10.0, 15.0, 20.0, math.inf)
+          ) -> dict:
+    """Scores of :func:`detect`'s output (``seaecho score``; docs/detection.md).
+
+    Parameters
+    ----------
+    detections, truth : xarray.Dataset or path
+        :func:`detect`'s two tables, or the CSV files ``seaecho detect`` writes (truth
+        default: ``<detections>_truth.csv`` beside it).
+    snr_bins_db : array_like
+        SNR bin edges [dB] (an object is binned by its mean SNR over its looks).
+
+    Returns
+    -------
+    dict
+        :func:`seaecho.detection.score_tables`, with ``objects`` (index -> name).
+    """
+    import numpy as np
+
+    from .detection import score_tables
+
+    det, tru = _tables(detections, truth)
+    attrs = det["attrs"]
+    out = score_tables(det["look"], det["object_index"], det["n_cells"], tru["look"],
+                       tru["object_index"], 10.0 ** (np.asarray(tru["snr_db"], float) / 10),
+                       n_looks=int(attrs["n_looks"]), cells_tested=int(attrs["cells_tested"]),
+                       area_m2=float(attrs["area_m2"]) if str(attrs["area_m2"]) not in
+                       ("", "nan") else float("nan"), snr_bins_db=snr_bins_db)
+    names = {}
+    for i, n in zip(tru["object_index"], tru["object"], strict=True):
+        names[int(i)] = str(n)
+    out["objects"] = names
+    out["detector"] = str(attrs.get("detector", ""))
+    out["pfa_design"] = float(attrs.get("pfa", "nan"))
+    return out
+
+
+def _tables(detections, truth) -> tuple[dict, dict]:
+    """Columns and attributes of the two tables, from datasets or CSV files."""
+    import numpy as np
+
+    from .io.detections import read_table
+
+    def cols(x, what):
+        if isinstance(x, str | os.PathLike):
+            if not Path(x).is_file():
+                raise SceneError(f"{what} = {os.fspath(x)!r}: no such file")
+            try:
+                c, h = read_table(x)
+            except (OSError, ValueError) as exc:
+                raise SceneError(f"{what} = {os.fspath(x)!r}: {exc}") from None
+            out = dict(c)
+            out["attrs"] = h
+            return out
+        out = {k: x[k].values for k in x.data_vars}
+        out["attrs"] = dict(x.attrs)
+        return out
+
+    if truth is None:
+        if not isinstance(detections, str | os.PathLike):
+            raise SceneError("truth: give the truth table with a detections dataset")
+        p = Path(detections)
+        truth = p.with_name(p.stem + "_truth" + p.suffix)
+    det, tru = cols(detections, "detections"), cols(truth, "truth")
+    for need, table, what in ((("look", "object_index", "n_cells"), det, "detections"),
+                              (("look", "object_index", "object", "snr_db"), tru, "truth")):
+        missing = [k for k in need if k not in table]
+        if missing:
+            raise SceneError(f"{what}: missing column(s) {', '.join(missing)} (not a table "
+                             "of `seaecho detect`)")
+    for k in ("n_looks", "cells_tested", "area_m2"):
+        if k not in det["attrs"]:
+            raise SceneError(f"detections: no {k} (not a table of `seaecho detect`)")
+    for k in ("look", "object_index", "n_cells"):
+        det[k] = np.asarray(det[k]).astype(np.int64) if np.size(det[k]) else \
+            np.zeros(0, np.int64)
+    for k in ("look", "object_index"):
+        tru[k] = np.asarray(tru[k]).astype(np.int64) if np.size(tru[k]) else \
+            np.zeros(0, np.int64)
+    return det, tru
+
+
+def write_detections(detections: xr.Dataset, truth: xr.Dataset, path: PathLike
+                     ) -> list[Path]:
+    """Write :func:`detect`'s tables as CSV: ``path`` and ``<path>_truth.csv``, with the
+    attributes as ``# key = value`` lines (atomically)."""
+    from .io.detections import write_table
+
+    p = Path(path)
+    if str(p.parent) and not p.parent.is_dir():
+        raise SceneError(f"output = {os.fspath(p)!r}: directory {p.parent} does not exist")
+    header = dict(detections.attrs)
+    a = write_table(p, {k: detections[k].values for k in detections.data_vars}, header)
+    b = write_table(p.with_name(p.stem + "_truth" + p.suffix),
+                    {k: truth[k].values for k in truth.data_vars}, header)
+    return [a, b]
+
+
+def roc(datasets: Any, detector: Any, *, channel: str | None = None,
+        thresholds: ArrayLike | None = None, truth: Any = None,
+        exclusion: float = 4.0) -> dict:
+    """ROC curve of a detector on runs, images or PPI sweeps, by sweeping its threshold
+    (docs/detection.md).
+
+    Parameters
+    ----------
+    datasets : dataset, path, or a list of them
+        What :func:`detect` takes; a list pools its looks (scenes x seeds).
+    detector : callable
+        ``power (rows, cols) -> statistic`` of the same shape, larger for a target, NaN
+        where not tested: a :class:`seaecho.detection.CFAR` (1-D along the columns,
+        range; 2-D over both) or a user's function.
+    channel : str, optional
+        Channel (default the first).
+    thresholds : array_like, optional
+        Thresholds on the statistic (default: from the statistics' quantiles).
+    truth : seaecho.detection.ObjectTruth, optional
+        The objects, in place of each dataset's own.
+    exclusion : float
+        Cells within ``exclusion`` gates of an object but outside its gate (its range
+        sidelobes, its spread) are left out of the background.
+
+    Returns
+    -------
+    dict
+        ``threshold``, ``pfa`` (fraction of the background's tested cells above: cells
+        beyond every object's exclusion zone), ``pd`` (fraction of the opportunities,
+        an object in a look, whose largest statistic in its gate is above),
+        ``n_background``,
+        ``n_opportunities``, and per opportunity ``opportunity_object`` (name) and
+        ``opportunity_peak`` (largest statistic in the gate): P_D per object at any
+        threshold.
+    """
+    import numpy as np
+
+    from .detection import opportunity_groups, opportunity_peaks, roc_from_statistic
+
+    def f_names(frame, item):
+        return list(truth.names) if truth is not None else list(
+            _object_names(item, None, frame.kind))
+
+    if not callable(detector):
+        raise SceneError(f"detector = {detector!r}: a callable power -> statistic")
+    items = datasets if isinstance(datasets, list | tuple) else [datasets]
+    stats, groups, n, objects = [], [], 0, []
+    for item in items:
+        try:
+            frames = _detection_frames(item, channel, truth, None, None)[0]
+        except ValueError as exc:
+            raise SceneError(str(exc)) from None
+        for f in frames:
+            stat = np.asarray(detector(f.power), dtype=float)
+            if stat.shape != f.power.shape:
+                raise SceneError(f"detector returned shape {stat.shape} for power of shape "
+                                 f"{f.power.shape}: one statistic per cell")
+            g, table = opportunity_groups(f, np.isfinite(stat), n, exclusion)
+            n += table["look"].size
+            objects.append(np.asarray(f_names(f, item))[table["object"]]
+                           if table["object"].size else np.zeros(0, str))
+            stats.append(stat.ravel())
+            groups.append(g.ravel())
+    stat, g = np.concatenate(stats), np.concatenate(groups)
+    out = roc_from_statistic(stat, g, n, thresholds)
+    out["n_background"] = int(((g == -1) & np.isfinite(stat)).sum())
+    out["n_opportunities"] = int(n)
+    out["opportunity_object"] = np.concatenate(objects) if objects else np.zeros(0, str)
+    out["opportunity_peak"] = opportunity_peaks(stat, g, n)
+    return out

@@ -25,6 +25,8 @@ COMMANDS = (
     "sweep",
     "image",
     "doppler",
+    "detect",
+    "score",
     "trace",
     "compare",
     "sigma",

@@ -1,0 +1,85 @@
+"""``seaecho detect RUN.nc -o DETECTIONS.csv``: CFAR detections of a run, an image or PPI
+sweeps, each with the object it belongs to (docs/detection.md)."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser(
+        "detect", help="CFAR detections of a run, an image or PPI sweeps",
+        description="Run a CFAR detector on the range profiles of a run (`seaecho run`), "
+        "the sweeps of a scanning run or a CfRadial 2 file, or a SAR image (`seaecho "
+        "image`); join detected cells into plots and write one row per plot (time, pulse "
+        "or sweep and azimuth, range, x, y, power, SNR estimate, the object it belongs to "
+        "or none) to a CSV file, and the objects' opportunities (an object in a look) to "
+        "<output>_truth.csv, both atomically; `seaecho score` reads them.",
+    )
+    p.add_argument("dataset", help="run, scanning run, image (netCDF) or CfRadial 2 file")
+    p.add_argument("-o", "--output", help="detections CSV (default: <dataset>_detections.csv)")
+    p.add_argument("--cfar", choices=("ca", "go", "so", "os", "map"), default="ca",
+                   help="cell averaging, greatest-of, smallest-of, ordered statistic, or "
+                   "clutter map (default ca)")
+    p.add_argument("--pfa", type=float, default=1e-6,
+                   help="design false-alarm probability per cell (default 1e-6)")
+    p.add_argument("--train", type=int, nargs="+", default=[16], metavar="N",
+                   help="training cells each side: N (along range) or NA NR (2-D)")
+    p.add_argument("--guard", type=int, nargs="+", default=[2], metavar="G",
+                   help="guard cells each side: G or GA GR (2-D)")
+    p.add_argument("--rank", type=int, help="OS-CFAR's order statistic (default 3N/4)")
+    p.add_argument("--channel", help="channel, e.g. HH (default the first)")
+    p.add_argument("--m-of-n", type=int, nargs=2, metavar=("M", "N"),
+                   help="range profiles: M of N consecutive pulses")
+    p.add_argument("--map-weight", type=float,
+                   help="clutter map: weight of the newest scan (default 0.125)")
+    p.add_argument("--stonesoup", metavar="DIR",
+                   help="also write the detections and the truth as Stone Soup reads them")
+    p.set_defaults(func=run)
+
+
+def run(args: argparse.Namespace) -> int:
+    from ..api import detect, write_detections
+    from . import UsageError
+
+    src = Path(args.dataset)
+    if not src.exists():
+        raise UsageError(f"dataset {src} does not exist")
+    out = Path(args.output) if args.output else src.with_name(src.stem + "_detections.csv")
+    if str(out.parent) and not out.parent.is_dir():
+        raise UsageError(f"output directory {out.parent} does not exist")
+    if out.suffix.lower() != ".csv":
+        raise UsageError(f"output {out}: a detections table is a .csv file")
+    if not (0.0 < args.pfa < 1.0):
+        raise UsageError(f"--pfa {args.pfa}: the design false-alarm probability must be in "
+                         "(0, 1)")
+    for name in ("train", "guard"):
+        v = getattr(args, name)
+        if len(v) > 2 or min(v) < (1 if name == "train" else 0):
+            raise UsageError(f"--{name} {' '.join(map(str, v))}: one or two whole numbers "
+                             f"{'>= 1' if name == 'train' else '>= 0'}")
+    if args.stonesoup and Path(args.stonesoup).exists() and not Path(args.stonesoup).is_dir():
+        raise UsageError(f"--stonesoup {args.stonesoup}: exists and is not a directory")
+    try:
+        det, truth = detect(src, cfar=args.cfar, pfa=args.pfa,
+                            train=tuple(args.train) if len(args.train) > 1 else args.train[0],
+                            guard=tuple(args.guard) if len(args.guard) > 1 else args.guard[0],
+                            rank=args.rank, channel=args.channel,
+                            m_of_n=tuple(args.m_of_n) if args.m_of_n else None,
+                            map_weight=args.map_weight)
+    except ValueError as exc:
+        raise UsageError(str(exc)) from None
+    paths = write_detections(det, truth, out)
+    a = det.attrs
+    n_fa = int((det["object_index"].values < 0).sum())
+    print(f"wrote {paths[0]} ({det.sizes['detection']} detections, {n_fa} false alarms; "
+          f"{a['detector']}, P_FA {a['pfa']:g}, alpha {a['alpha']:.4g}; {a['n_looks']} "
+          f"looks, {a['cells_tested']} cells tested)")
+    print(f"wrote {paths[1]} ({truth.sizes['opportunity']} object opportunities)")
+    if args.stonesoup:
+        from ..api import write_stonesoup_dir
+
+        for p in write_stonesoup_dir(det, truth, args.stonesoup).values():
+            print(f"wrote {p}")
+    return 0

@@ -1,0 +1,233 @@
+"""Closed forms of detection in exponential (square-law, complex Gaussian) noise.
+
+Every threshold a detector of :mod:`seaecho.detection` applies is solved from these
+formulas, and the tests compare the detectors' measured rates with them. Notation (the
+symbols of docs/detection.md):
+
+==============  ================================================================  ======
+symbol          meaning                                                           name
+==============  ================================================================  ======
+N               training cells of a cell-averaging CFAR                          ``n``
+n               training cells of one half (leading or lagging) of a GO/SO CFAR   ``n_half``
+k               rank of the order statistic of an OS-CFAR (1 = smallest)          ``k``
+alpha           threshold multiplier on the detector's noise estimate             ``alpha``
+S               signal-to-noise ratio of the cell under test (linear)             ``snr``
+w               clutter-map weight of the newest scan                             ``w``
+==============  ================================================================  ======
+
+The noise in a cell is exponential of mean 1 (the power of circular complex Gaussian
+noise); the estimates are the *mean* of the training cells (CA), the larger or smaller of
+the two half means (GO, SO), the k-th smallest cell (OS), the exponentially weighted mean
+over past scans (clutter map). A Swerling 1 or 2 target makes the power of its cell
+exponential of mean 1 + S, so its probability of detection is the false-alarm formula with
+alpha / (1 + S) (Richards 2014, sec. 7.2): one law, used once.
+
+References
+----------
+Richards, M. A. (2014). *Fundamentals of Radar Signal Processing*, 2nd ed. McGraw-Hill:
+ch. 6 (Marcum Q, Swerling targets, binary integration), ch. 7 (CA, GO, SO and OS CFAR,
+clutter maps).
+Rohling, H. (1983). Radar CFAR thresholding in clutter and multiple target situations.
+*IEEE Trans. Aerosp. Electron. Syst.* AES-19(4), 608-621.
+Gandhi, P. P. and Kassam, S. A. (1988). Analysis of CFAR processors in nonhomogeneous
+background. *IEEE Trans. Aerosp. Electron. Syst.* 24(4), 427-445 (GO and SO in homogeneous
+noise, after Hansen and Weiss).
+Nitzberg, R. (1986). Clutter map CFAR analysis. *IEEE Trans. Aerosp. Electron. Syst.*
+AES-22(4), 419-421 (the exponentially weighted map; the clutter-map idea goes back to
+Nitzberg's and others' work of the late 1970s).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy import integrate, optimize, special, stats
+
+__all__ = ["pd_ca_swerling0", "pd_swerling1", "pfa_ca", "pfa_clutter_map", "pfa_go",
+           "pfa_m_of_n", "pfa_os", "pfa_so", "scale_for_pfa"]
+
+
+def pfa_ca(alpha: ArrayLike, n: int) -> NDArray:
+    """False-alarm probability of a cell-averaging CFAR (Richards 2014, ch. 7).
+
+    .. math:: P_{FA} = (1 + \\alpha / N)^{-N}
+
+    Parameters
+    ----------
+    alpha : array_like
+        Threshold multiplier on the mean of the N training cells [-].
+    n : int
+        Training cells N.
+    """
+    return (1.0 + np.asarray(alpha, dtype=float) / n) ** (-float(n))
+
+
+def _pfa_so_sum(t: NDArray, n_half: int) -> NDArray:
+    """E[exp(-t min(X, Y))] with X, Y independent Gamma(n, 1) (the SO sum statistic)."""
+    j = np.arange(n_half, dtype=float)
+    # C(n - 1 + j, j) in logs: exact for any n without overflow
+    log_c = special.gammaln(n_half + j) - special.gammaln(n_half) - special.gammaln(j + 1.0)
+    t = np.asarray(t, dtype=float)[..., None]
+    return 2.0 * np.exp(log_c - (n_half + j) * np.log(2.0 + t)).sum(axis=-1)
+
+
+def pfa_so(alpha: ArrayLike, n_half: int) -> NDArray:
+    """False-alarm probability of a smallest-of CFAR (Gandhi & Kassam 1988, sec. III).
+
+    .. math:: P_{FA} = 2 \\sum_{j=0}^{n-1} \\binom{n-1+j}{j} (2 + T)^{-(n+j)},
+              \\quad T = \\alpha / n
+
+    Parameters
+    ----------
+    alpha : array_like
+        Threshold multiplier on the smaller of the two half means [-].
+    n_half : int
+        Training cells n of each half.
+    """
+    return _pfa_so_sum(np.asarray(alpha, dtype=float) / n_half, n_half)
+
+
+def pfa_go(alpha: ArrayLike, n_half: int) -> NDArray:
+    """False-alarm probability of a greatest-of CFAR (Gandhi & Kassam 1988, sec. III).
+
+    Since max + min = X + Y, E[e^{-T max}] + E[e^{-T min}] = 2 (1 + T)^{-n}:
+
+    .. math:: P_{FA} = 2 (1 + T)^{-n} - P_{FA,SO}, \\quad T = \\alpha / n
+
+    Parameters
+    ----------
+    alpha : array_like
+        Threshold multiplier on the larger of the two half means [-].
+    n_half : int
+        Training cells n of each half.
+    """
+    t = np.asarray(alpha, dtype=float) / n_half
+    return 2.0 * (1.0 + t) ** (-float(n_half)) - _pfa_so_sum(t, n_half)
+
+
+def pfa_os(alpha: ArrayLike, n: int, k: int) -> NDArray:
+    """False-alarm probability of an ordered-statistic CFAR (Rohling 1983, sec. IV).
+
+    .. math:: P_{FA} = \\prod_{i=0}^{k-1} \\frac{N - i}{N - i + \\alpha}
+
+    Parameters
+    ----------
+    alpha : array_like
+        Threshold multiplier on the k-th smallest of the N training cells [-].
+    n, k : int
+        Training cells N and rank k (1 <= k <= N).
+    """
+    i = np.arange(k, dtype=float)
+    a = np.asarray(alpha, dtype=float)[..., None]
+    return np.exp(np.sum(np.log(n - i) - np.log(n - i + a), axis=-1))
+
+
+def pfa_clutter_map(alpha: ArrayLike, w: float) -> NDArray:
+    """False-alarm probability of an exponentially weighted clutter map in steady state
+    (Nitzberg 1986).
+
+    The map holds q = w sum_{m>=0} (1 - w)^m x_{-1-m} over the past scans, so
+
+    .. math:: P_{FA} = \\prod_{m=0}^{\\infty} \\left[1 + \\alpha w (1 - w)^m\\right]^{-1}
+
+    (terms below 1e-17 dropped).
+
+    Parameters
+    ----------
+    alpha : array_like
+        Threshold multiplier on the map [-].
+    w : float
+        Weight of the newest scan, 0 < w <= 1.
+    """
+    a = np.asarray(alpha, dtype=float)
+    top = max(float(np.max(a)) * w, 1e-300) if a.size else 1.0
+    m_max = 1 if w >= 1.0 else int(np.ceil(np.log(1e-17 / top) / np.log1p(-w))) + 1
+    m = np.arange(max(m_max, 1), dtype=float)
+    terms = a[..., None] * w * (1.0 - w) ** m
+    return np.exp(-np.log1p(terms).sum(axis=-1))
+
+
+def pd_swerling1(pfa_law, alpha: ArrayLike, snr: ArrayLike, *args) -> NDArray:
+    """Probability of detection of a Swerling 1 or 2 target by a CFAR whose false-alarm
+    law is ``pfa_law(alpha, *args)`` (Richards 2014, ch. 7, for CA).
+
+    The target's cell is exponential of mean 1 + S, so P_D(alpha, S) =
+    P_FA(alpha / (1 + S)); for CA, (1 + alpha / (N (1 + S)))^{-N}.
+
+    Parameters
+    ----------
+    pfa_law : callable
+        :func:`pfa_ca`, :func:`pfa_go`, :func:`pfa_so`, :func:`pfa_os`,
+        :func:`pfa_clutter_map`.
+    alpha : array_like
+        Threshold multiplier [-].
+    snr : array_like
+        Mean signal-to-noise ratio S of the target's cell (linear) [-].
+    """
+    return pfa_law(np.asarray(alpha, dtype=float) / (1.0 + np.asarray(snr, dtype=float)),
+                   *args)
+
+
+def pd_ca_swerling0(alpha: float, n: int, snr: float) -> float:
+    """Probability of detection of a non-fluctuating (Swerling 0) target by a CA-CFAR.
+
+    For a known noise level the square-law detector's P_D is Marcum's Q,
+    Q_1(sqrt(2 S), sqrt(2 tau)) (Richards 2014, ch. 6): 2|x|^2 is non-central
+    chi-square with 2 degrees of freedom and non-centrality 2 S. The CA threshold
+    tau = alpha Z / N with Z ~ Gamma(N, 1) (the sum of the training cells), so
+
+    .. math:: P_D = \\int_0^\\infty Q_1(\\sqrt{2S}, \\sqrt{2 \\alpha z / N})
+              \\frac{z^{N-1} e^{-z}}{(N-1)!} dz
+
+    Parameters
+    ----------
+    alpha : float
+        Threshold multiplier on the training mean [-].
+    n : int
+        Training cells N.
+    snr : float
+        Signal-to-noise ratio S (linear) [-].
+    """
+    def f(z):
+        return stats.ncx2.sf(2.0 * alpha * z / n, 2, 2.0 * snr) * stats.gamma.pdf(z, n)
+
+    lo, hi = stats.gamma.ppf([1e-15, 1.0 - 1e-15], n)
+    return float(integrate.quad(f, lo, hi, epsabs=1e-13, epsrel=1e-10, limit=200)[0])
+
+
+def pfa_m_of_n(p: ArrayLike, m: int, n: int) -> NDArray:
+    """Probability that at least M of N independent looks cross, each with probability p
+    (binary integration, Richards 2014, ch. 6).
+
+    .. math:: P = \\sum_{j=M}^{N} \\binom{N}{j} p^j (1 - p)^{N - j}
+    """
+    return stats.binom.sf(m - 1, n, np.asarray(p, dtype=float))
+
+
+def scale_for_pfa(pfa_law, pfa: float, *args) -> float:
+    """The threshold multiplier alpha with ``pfa_law(alpha, *args) == pfa``.
+
+    The laws decrease monotonically in alpha; alpha is found by Brent's method on
+    log P_FA (CA has the closed form alpha = N (P_FA^{-1/N} - 1), Richards 2014,
+    ch. 7, which this reproduces).
+
+    Raises
+    ------
+    ValueError
+        ``pfa`` outside (0, 1).
+    """
+    if not (0.0 < pfa < 1.0):
+        raise ValueError(f"pfa = {pfa}: the design false-alarm probability must be in "
+                         "(0, 1)")
+    target = np.log(pfa)
+
+    def g(a):
+        return float(np.log(pfa_law(a, *args))) - target
+
+    hi = 1.0
+    while g(hi) > 0.0:
+        hi *= 4.0
+        if hi > 1e300:
+            raise ValueError(f"pfa = {pfa}: no threshold reaches it with these training "
+                             "cells")
+    return float(optimize.brentq(g, 0.0, hi, xtol=1e-14 * hi, rtol=1e-14, maxiter=500))

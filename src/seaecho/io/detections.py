@@ -1,0 +1,468 @@
+"""Products as detection frames, and detection tables as files.
+
+Readers (a product in, :class:`seaecho.detection.frames.Frame` objects out):
+
+- :func:`run_truth`: the objects of a run (``seaecho run``): per-pulse truth
+  ``truth_position (pulse, object, xyz)`` where the run has it, else the point targets
+  (``target_position`` + ``target_velocity`` t, extent 0) and the ray-traced hulls
+  (``hull_position``, extent twice the farthest scattering centre from the hull's
+  origin). The ``[ship]`` of the wake alone is not an object (it has no echo of its own).
+- :func:`profile_frames`: the range-compressed pulses of a run, ``|compressed|^2``
+  (pulse x range) of one channel; objects gated in range (half the bistatic path) by
+  half their extent plus the range resolution c / (2 B) (or the sample spacing, if
+  coarser); a plot's x, y is the point of the sea, along the receive antenna's
+  boresight azimuth, with the plot's range (where two points have it, the one nearer
+  the boresight).
+- :func:`sweep_frames`: PPI sweeps (azimuth x range, azimuth in degrees clockwise from
+  north as CfRadial 2 has it), from plain arrays; :func:`run_sweeps` cuts a scanning run
+  (its ``sweep`` variable) into them and :func:`cfradial_sweeps` reads a CfRadial 2 file's
+  ``sweep_N`` groups. Objects gated in x, y by half their extent plus the range resolution
+  or the arc of ``azimuth_gate_deg`` at their range, whichever is larger.
+- :func:`image_frames`: a SAR image of ``seaecho image``, |image|^2 [m^2] of one channel
+  (pixels outside ``valid`` not tested); objects at the aperture's middle time, gated by
+  half their extent plus twice the pixel or c / B.
+
+Writers: :func:`write_table` (a CSV with ``# key = value`` header lines, atomically) and
+:func:`write_stonesoup` (the detections and the ground truth as the CSV files Stone Soup's
+``CSVDetectionReader`` and ``CSVGroundTruthReader`` read, sorted by time, with the
+measurement noise in ``stonesoup.json``).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+from collections.abc import Mapping
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..constants import C0
+from ..detection.association import ground_point, half_path
+from ..detection.frames import Frame, ObjectTruth
+
+__all__ = ["STONESOUP_FILES", "cfradial_sweeps", "image_frames", "image_truth",
+           "profile_frames", "read_table", "run_sweeps", "run_truth", "sweep_frames",
+           "write_stonesoup", "write_table"]
+
+#: Files of a Stone Soup export directory.
+STONESOUP_FILES = {"detections": "detections.csv", "truth": "truth.csv",
+                   "settings": "stonesoup.json"}
+
+
+def _channel(ds, channel: str | None) -> str:
+    names = [str(c) for c in ds["channel"].values]
+    if channel is None:
+        return names[0]
+    if channel not in names:
+        raise ValueError(f"channel = {channel!r}: not in the dataset (has "
+                         f"{', '.join(names)})")
+    return channel
+
+
+def run_truth(run) -> ObjectTruth:
+    """The objects of a run and their positions at every pulse (module docstring)."""
+    t = np.asarray(run["time"].values, dtype=float)
+    if "truth_position" in run:
+        pos = np.asarray(run["truth_position"].values, dtype=float)
+        dim = run["truth_position"].dims[1]
+        names = tuple(str(n) for n in run[dim].values) if dim in run.coords else \
+            tuple(f"object{i}" for i in range(pos.shape[1]))
+        extent = np.zeros(pos.shape[1])
+        for v in run.data_vars:  # an extent on the object dimension, if the run has one
+            if run[v].dims == (dim,) and ("length" in v or "extent" in v):
+                extent = np.nan_to_num(np.asarray(run[v].values, dtype=float))
+                break
+        return ObjectTruth(t, pos, names, extent)
+    names, parts, extents = [], [], []
+    if "target_position" in run:
+        p0 = np.asarray(run["target_position"].values, dtype=float)
+        v = np.asarray(run["target_velocity"].values, dtype=float)
+        parts.append(p0[None] + t[:, None, None] * v[None])
+        names += [str(n) for n in run["target"].values]
+        extents.append(np.zeros(p0.shape[0]))
+    if "hull_position" in run:
+        hp = np.moveaxis(np.asarray(run["hull_position"].values, dtype=float), 0, 1)
+        parts.append(hp)
+        names += [str(n) for n in run["hull"].values]
+        ext = np.zeros(hp.shape[1])
+        if "hull_centre_position" in run:
+            c = np.asarray(run["hull_centre_position"].values, dtype=float)
+            which = np.asarray(run["hull_centre_hull"].values, dtype=np.int64)
+            k = int(run.attrs.get("sigma_map_pulse", 0))
+            d = np.linalg.norm(c[:, :2] - hp[min(k, hp.shape[0] - 1), which, :2], axis=1)
+            np.maximum.at(ext, which, 2.0 * d)
+        extents.append(ext)
+    if not parts:
+        return ObjectTruth(t, np.zeros((t.size, 0, 3)), (), np.zeros(0))
+    return ObjectTruth(t, np.concatenate(parts, axis=1), tuple(names),
+                       np.concatenate(extents))
+
+
+def _range_resolution(ds) -> float:
+    """c / (2 B) of the run's waveform (the sample spacing if coarser) [m]."""
+    res = 0.0
+    if "waveform_bandwidth_hz" in ds.attrs and float(ds.attrs["waveform_bandwidth_hz"]) > 0:
+        res = C0 / (2.0 * float(ds.attrs["waveform_bandwidth_hz"]))
+    rng = np.asarray(ds["range"].values, dtype=float)
+    return max(res, float(np.median(np.diff(rng))) if rng.size > 1 else 0.0)
+
+
+def _boresight(axes: NDArray) -> NDArray:
+    """The antenna boresights in the world, (pulse, xyz, axis) -> (pulse, 3)."""
+    return np.asarray(axes, dtype=float)[:, :, 0]
+
+
+def profile_frames(run, channel: str | None = None,
+                   truth: ObjectTruth | None = None) -> list[Frame]:
+    """The run's range profiles (pulse x range) as one frame (module docstring)."""
+    ch = _channel(run, channel)
+    if "compressed" not in run:
+        raise ValueError("not a run of `seaecho run`: no 'compressed' pulses")
+    z = run["compressed"].sel(channel=ch).values
+    power = np.abs(z) ** 2
+    rng = np.asarray(run["range"].values, dtype=float)
+    t = np.asarray(run["time"].values, dtype=float)
+    pulses = np.asarray(run["pulse"].values, dtype=np.int64)
+    tx = np.asarray(run["tx_position"].values, dtype=float)
+    rx = np.asarray(run["rx_position"].values, dtype=float)
+    u = _boresight(run["rx_antenna_axes"].values)
+    truth = run_truth(run) if truth is None else truth
+    where = truth.at(t)  # (pulse, object, 3)
+    r_obj = half_path(where, tx[:, None], rx[:, None])[..., None]
+    gate = 0.5 * np.asarray(truth.extent_m, dtype=float) + _range_resolution(run)
+    cols = np.arange(rng.size, dtype=float)
+
+    def locate(row, col):
+        k = np.clip(np.rint(row).astype(np.int64), 0, pulses.size - 1)
+        r = np.interp(col, cols, rng)
+        p = ground_point(tx[k], rx[k], u[k], r)
+        return {"pulse": pulses[k], "range_m": r, "x_m": p[:, 0], "y_m": p[:, 1]}
+
+    return [Frame("profile", power, pulses.copy(), t, rng[None, :, None], r_obj, gate,
+                  locate, where, ndim=1,
+                  extra={"position_sigma_m": _range_resolution(run), "channel": ch})]
+
+
+def sweep_frames(power: list[NDArray], azimuth_deg: list[NDArray], time_s: list[NDArray],
+                 range_m: NDArray, tx_position_m: list[NDArray],
+                 rx_position_m: list[NDArray] | None = None,
+                 truth: ObjectTruth | None = None, azimuth_gate_deg: float | None = None,
+                 range_resolution_m: float | None = None) -> list[Frame]:
+    """PPI sweeps as frames, one per sweep (plain arrays; module docstring).
+
+    Parameters
+    ----------
+    power : list of ndarray
+        Per sweep, (azimuth, range) power [W].
+    azimuth_deg : list of ndarray
+        Per sweep, (azimuth,) ray azimuths clockwise from north (+y) [deg].
+    time_s : list of ndarray
+        Per sweep, (azimuth,) ray times [s].
+    range_m : ndarray
+        (range,) half bistatic path of the gates [m].
+    tx_position_m, rx_position_m : list of ndarray
+        Per sweep, (azimuth, 3) or (3,) transmitter / receiver positions [m]
+        (receiver default: the transmitter's, monostatic).
+    truth : ObjectTruth, optional
+        The objects (default none).
+    azimuth_gate_deg : float, optional
+        Azimuth part of the gates [deg] (default three ray spacings).
+    range_resolution_m : float, optional
+        Range part of the gates [m] (default the gate spacing).
+    """
+    truth = ObjectTruth.empty() if truth is None else truth
+    rng = np.asarray(range_m, dtype=float)
+    dr = float(np.median(np.diff(rng))) if rng.size > 1 else 1.0
+    res = dr if range_resolution_m is None else max(float(range_resolution_m), dr)
+    rx_position_m = tx_position_m if rx_position_m is None else rx_position_m
+    frames = []
+    for i, (p, az, t, tx, rx) in enumerate(zip(power, azimuth_deg, time_s, tx_position_m,
+                                               rx_position_m, strict=True)):
+        p = np.asarray(p, dtype=float)
+        az = np.asarray(az, dtype=float)
+        t = np.asarray(t, dtype=float)
+        n_az = az.size
+        if p.shape != (n_az, rng.size):
+            raise ValueError(f"sweep {i}: power of shape {p.shape}, expected (azimuth "
+                             f"{n_az}, range {rng.size})")
+        tx = np.broadcast_to(np.asarray(tx, dtype=float), (n_az, 3))
+        rx = np.broadcast_to(np.asarray(rx, dtype=float), (n_az, 3))
+        a = np.deg2rad(az)
+        u = np.stack([np.sin(a), np.cos(a)], axis=-1)  # clockwise from north
+        step = float(np.median(np.abs(np.diff(np.unwrap(a))))) if n_az > 1 else np.pi
+        span = float(np.ptp(np.unwrap(a))) + step
+        circular = span >= 2.0 * np.pi - 0.5 * step
+        gate_az = np.deg2rad(azimuth_gate_deg) if azimuth_gate_deg is not None else 3 * step
+        ground = ground_point(np.repeat(tx, rng.size, 0), np.repeat(rx, rng.size, 0),
+                              np.repeat(u, rng.size, 0), np.tile(rng, n_az))
+        cell = ground[:, :2].reshape(n_az, rng.size, 2)
+        where = truth.at(t)
+        r_obj = np.linalg.norm(where[..., :2] - rx[:, None, :2], axis=-1)
+        gate = 0.5 * np.asarray(truth.extent_m, dtype=float) + np.maximum(
+            res, np.nanmedian(r_obj, axis=0) * gate_az if where.shape[1] else res)
+        r_ground = np.linalg.norm(cell - rx[:, None, :2], axis=-1)
+        cell_area = np.nan_to_num(r_ground * min(step, 2 * np.pi) * dr)
+
+        def locate(row, col, az=az, tx=tx, rx=rx, u=u, i=i):
+            k = np.clip(np.rint(row).astype(np.int64), 0, az.size - 1)
+            r = np.interp(col, np.arange(rng.size, dtype=float), rng)
+            # the centroid's azimuth: interpolated along the (unwrapped) rays
+            a_un = np.unwrap(np.deg2rad(az))
+            a_c = np.interp(row, np.arange(az.size, dtype=float), a_un)
+            uc = np.stack([np.sin(a_c), np.cos(a_c)], axis=-1)
+            q = ground_point(tx[k], rx[k], uc, r)
+            return {"sweep": np.full(k.size, i), "azimuth_deg": np.rad2deg(a_c) % 360.0,
+                    "range_m": r, "x_m": q[:, 0], "y_m": q[:, 1]}
+
+        frames.append(Frame("ppi", p, np.full(n_az, i), t, np.nan_to_num(cell, nan=1e30),
+                            where[..., :2], np.atleast_1d(gate), locate, where, ndim=2,
+                            cell_area_m2=cell_area, extra={
+                                "circular": circular, "position_sigma_m": max(
+                                    res, float(np.median(rng)) * step)}))
+    return frames
+
+
+def run_sweeps(run, channel: str | None = None, truth: ObjectTruth | None = None,
+               azimuth_gate_deg: float | None = None) -> list[Frame]:
+    """A scanning run (with a ``sweep`` per pulse) cut into PPI frames."""
+    ch = _channel(run, channel)
+    sweep = np.asarray(run["sweep"].values)
+    axes = np.asarray(run["tx_antenna_axes"].values, dtype=float)
+    az = np.rad2deg(np.arctan2(axes[:, 0, 0], axes[:, 1, 0])) % 360.0
+    z = run["compressed"].sel(channel=ch).values
+    t = np.asarray(run["time"].values, dtype=float)
+    tx = np.asarray(run["tx_position"].values, dtype=float)
+    rx = np.asarray(run["rx_position"].values, dtype=float)
+    groups = [np.flatnonzero(sweep == k) for k in dict.fromkeys(sweep.tolist())]
+    frames = sweep_frames([np.abs(z[g]) ** 2 for g in groups], [az[g] for g in groups],
+                        [t[g] for g in groups], run["range"].values,
+                        [tx[g] for g in groups], [rx[g] for g in groups],
+                        truth=run_truth(run) if truth is None else truth,
+                        azimuth_gate_deg=azimuth_gate_deg,
+                        range_resolution_m=_range_resolution(run))
+    for f in frames:
+        f.extra["channel"] = ch
+    return frames
+
+
+def cfradial_sweeps(path: str | os.PathLike, channel: str | None = None,
+                    radar_position_m=None, truth: ObjectTruth | None = None,
+                    azimuth_gate_deg: float | None = None) -> list[Frame]:
+    """The ``sweep_N`` groups of a CfRadial 2 file as PPI frames (power from the
+    ``{channel}_re``/``_im`` samples, else from ``{channel}_power`` in dB re 1 W).
+
+    ``radar_position_m`` (3,) is the radar in the scene frame (default (0, 0,
+    altitude)): CfRadial's x, y are relative to the radar.
+    """
+    import xarray as xr
+
+    tree = xr.open_datatree(path, engine="h5netcdf")
+    try:
+        names = [n for n in tree.children if n.startswith("sweep_")]
+        if not names:
+            raise ValueError(f"{os.fspath(path)}: no sweep_N group (not a CfRadial 2 file)")
+        names.sort(key=lambda n: int(n.split("_")[1]))
+        first = tree[names[0]].to_dataset()
+        chans = sorted({v.rsplit("_", 1)[0] for v in first.data_vars
+                        if v.endswith(("_power", "_re"))})
+        ch = channel or (chans[0] if chans else None)
+        if ch not in chans:
+            raise ValueError(f"channel = {channel!r}: the sweeps have {', '.join(chans)}")
+        alt = float(tree.to_dataset().get("altitude", first.get("altitude", 0.0)))
+        pos = np.asarray(radar_position_m if radar_position_m is not None
+                         else (0.0, 0.0, alt), dtype=float)
+        power, az, t = [], [], []
+        for n in names:
+            s = tree[n].to_dataset()
+            if f"{ch}_re" in s:
+                power.append(s[f"{ch}_re"].values.astype(float) ** 2
+                             + s[f"{ch}_im"].values.astype(float) ** 2)
+            else:
+                power.append(10.0 ** (s[f"{ch}_power"].values.astype(float) / 10.0))
+            az.append(s["azimuth"].values.astype(float))
+            tt = s["time"].values
+            t.append(tt.astype("datetime64[ns]").astype(np.int64) * 1e-9
+                     if np.issubdtype(tt.dtype, np.datetime64) else tt.astype(float))
+        rng = first["range"].values.astype(float)
+    finally:
+        tree.close()
+    frames = sweep_frames(power, az, t, rng, [pos] * len(names), truth=truth,
+                          azimuth_gate_deg=azimuth_gate_deg)
+    for f in frames:
+        f.extra["channel"] = ch
+    return frames
+
+
+def image_truth(img) -> tuple[ObjectTruth, float]:
+    """The image's point targets at the aperture's middle time, and that time [s]."""
+    n = int(img.attrs.get("n_pulses", 1))
+    prf = float(img.attrs.get("prf_hz", 1.0))
+    radar = json.loads(img.attrs.get("scene_json", "{}") or "{}").get("radar") or {}
+    t_mid = float(radar.get("start_time_s", 0.0) or 0.0) + 0.5 * (n - 1) / prf
+    if "target_position" not in img:
+        return ObjectTruth(np.array([t_mid]), np.zeros((1, 0, 3)), (), np.zeros(0)), t_mid
+    p = (np.asarray(img["target_position"].values, dtype=float)
+         + t_mid * np.asarray(img["target_velocity"].values, dtype=float))
+    names = tuple(str(x) for x in img["target"].values)
+    listed = [t.get("name") for t in json.loads(img.attrs.get("scene_json", "{}") or "{}")
+              .get("targets") or []]
+    if "target" not in img.coords and len(listed) == len(names) and all(listed):
+        names = tuple(str(x) for x in listed)  # an image keeps the targets' order
+    return ObjectTruth(np.array([t_mid]), p[None], names, np.zeros(len(names))), t_mid
+
+
+def image_frames(img, channel: str | None = None,
+                 truth: ObjectTruth | None = None) -> list[Frame]:
+    """A SAR image (y x x) as one frame (module docstring)."""
+    ch = _channel(img, channel)
+    power = np.abs(img["image"].sel(channel=ch).values.astype(np.complex128)) ** 2
+    if "valid" in img:
+        power = np.where(np.asarray(img["valid"].values) > 0, power, np.nan)
+    x = np.asarray(img["x"].values, dtype=float)
+    y = np.asarray(img["y"].values, dtype=float)
+    own, t_mid = image_truth(img)
+    truth = own if truth is None else truth
+    pixel = float(img.attrs.get("pixel_m", abs(x[1] - x[0]) if x.size > 1 else 1.0))
+    bw = float(json.loads(img.attrs.get("scene_json", "{}")).get("radar", {})
+               .get("waveform", {}).get("bandwidth_hz", 0.0) or 0.0)
+    res = max(2.0 * pixel, C0 / bw if bw > 0 else 0.0)
+    where = truth.at(np.full(y.size, t_mid))
+    gate = 0.5 * np.asarray(truth.extent_m, dtype=float) + res
+    cell = np.stack(np.broadcast_arrays(x[None, :], y[:, None]), axis=-1)
+    tx = np.asarray(img["tx_position_used"].values, dtype=float) \
+        if "tx_position_used" in img else None
+    rx = np.asarray(img["rx_position_used"].values, dtype=float) \
+        if "rx_position_used" in img else None
+
+    def locate(row, col):
+        xs = np.interp(col, np.arange(x.size, dtype=float), x)
+        ys = np.interp(row, np.arange(y.size, dtype=float), y)
+        out = {"x_m": xs, "y_m": ys}
+        if tx is not None and rx is not None:
+            m = tx.shape[0] // 2
+            p = np.stack([xs, ys, np.zeros_like(xs)], axis=-1)
+            out["range_m"] = half_path(p, tx[m], rx[m])
+        return out
+
+    return [Frame("image", power, np.zeros(y.size, np.int64), np.full(y.size, t_mid), cell,
+                  where[..., :2], gate, locate, where, ndim=2, cell_area_m2=pixel * pixel,
+                  extra={"position_sigma_m": res / 2.0, "channel": ch})]
+
+
+def _format(v) -> str:
+    if isinstance(v, float | np.floating):
+        return repr(float(v)) if np.isfinite(v) else ""
+    return str(v)
+
+
+def write_table(path: str | os.PathLike, columns: Mapping[str, NDArray],
+                header: Mapping[str, object] | None = None) -> Path:
+    """Write a table as CSV atomically: ``# key = value`` lines, then a header row and
+    one row per entry. NaN is written as an empty field (no data)."""
+    import csv
+    import io
+
+    from .dataset import atomic_path
+
+    names = list(columns)
+    cols = [np.asarray(columns[k]) for k in names]
+    n = cols[0].size if cols else 0
+    buf = io.StringIO()
+    for k, v in (header or {}).items():
+        buf.write(f"# {k} = {' '.join(_format(v).split())}\n")
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(names)
+
+    def cell(v):
+        if isinstance(v, float | np.floating):
+            return "" if not np.isfinite(v) else repr(float(v))
+        return str(v)
+
+    for i in range(n):  # rows of a table of plots, not cells
+        w.writerow([cell(c[i]) for c in cols])
+    path = Path(path)
+    with atomic_path(path) as tmp:
+        tmp.write_text(buf.getvalue(), encoding="utf-8")
+    return path
+
+
+def read_table(path: str | os.PathLike) -> tuple[dict[str, NDArray], dict[str, str]]:
+    """Read :func:`write_table`'s CSV: (columns, header). Numbers as float or int,
+    other fields as str; an empty field is NaN in a number column."""
+    import csv
+
+    header: dict[str, str] = {}
+    body = []
+    try:
+        with open(path, encoding="utf-8", newline="") as f:
+            for line in f:
+                if line.startswith("#"):
+                    k, _, v = line[1:].partition("=")
+                    header[k.strip()] = v.strip()
+                else:
+                    body.append(line)
+    except UnicodeDecodeError:
+        raise ValueError("not a CSV table (not UTF-8 text)") from None
+    rows = list(csv.reader(body))
+    if not rows:
+        raise ValueError(f"{os.fspath(path)}: no header row")
+    names, data = rows[0], rows[1:]
+    out = {}
+    for j, name in enumerate(names):
+        raw = [r[j] for r in data]
+        try:
+            vals = np.array([float(v) if v != "" else np.nan for v in raw])
+            if vals.size and np.all(np.isfinite(vals)) and np.all(vals == np.round(vals)) \
+                    and all("." not in v and "e" not in v.lower() for v in raw):
+                vals = vals.astype(np.int64)
+            out[name] = vals
+        except ValueError:
+            out[name] = np.array(raw, dtype=object)
+    return out, header
+
+
+def write_stonesoup(directory: str | os.PathLike, detections: Mapping[str, NDArray],
+                    truth: Mapping[str, NDArray], noise_m: tuple[float, float]) -> dict:
+    """The detections and the ground truth as Stone Soup reads them.
+
+    ``detections.csv``: ``time`` (seconds since the scene's t = 0, read with
+    ``timestamp=True`` as seconds since 1970-01-01 UTC), ``x``, ``y`` [m] (the state
+    vector fields), then metadata (``range_m``, ``snr_db``, ``power``, ``object``...).
+    ``truth.csv``: ``time``, ``object`` (the path id), ``x``, ``vx``, ``y``, ``vy`` [m,
+    m/s] (a constant-velocity state). Both sorted by time. ``stonesoup.json``: the field
+    names and the measurement noise standard deviations [m] for a linear Gaussian model.
+
+    Returns
+    -------
+    dict
+        The paths written.
+    """
+    from .dataset import atomic_path
+
+    d = Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    det = {k: np.asarray(v) for k, v in detections.items()}
+    ok = np.isfinite(det["x_m"]) & np.isfinite(det["y_m"])
+    order = np.argsort(det["time_s"][ok], kind="stable")
+    sel = {k: v[ok][order] for k, v in det.items()}
+    cols = {"time": sel["time_s"], "x": sel["x_m"], "y": sel["y_m"]}
+    cols.update({k: v for k, v in sel.items() if k not in ("time_s", "x_m", "y_m")})
+    p_det = write_table(d / STONESOUP_FILES["detections"], cols)
+    tr = {k: np.asarray(v) for k, v in truth.items()}
+    order = np.lexsort((tr["object"].astype(str), tr["time_s"]))
+    tcols = {"time": tr["time_s"][order], "object": tr["object"][order],
+             "x": tr["x_m"][order], "vx": tr["vx_m_s"][order], "y": tr["y_m"][order],
+             "vy": tr["vy_m_s"][order]}
+    p_truth = write_table(d / STONESOUP_FILES["truth"], tcols)
+    settings = {"detections": STONESOUP_FILES["detections"],
+                "truth": STONESOUP_FILES["truth"], "time_field": "time", "timestamp": True,
+                "detection_fields": ["x", "y"], "truth_fields": ["x", "vx", "y", "vy"],
+                "path_id_field": "object",
+                "measurement_noise_m": [float(noise_m[0]), float(noise_m[1])],
+                "state_mapping": [0, 2]}
+    p_set = d / STONESOUP_FILES["settings"]
+    with atomic_path(p_set) as tmp:
+        tmp.write_text(json.dumps(settings, indent=1) + "\n", encoding="utf-8")
+    return {"detections": p_det, "truth": p_truth, "settings": p_set}
