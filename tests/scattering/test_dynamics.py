@@ -6,13 +6,13 @@ import numpy as np
 import pytest
 
 from seaecho.constants import C0, SURFACE_TENSION_OVER_DENSITY, G
+from seaecho.ocean.dispersion import phase_speed
 from seaecho.ocean.spectra import DirectionalSpectrum
 from seaecho.ocean.surface import SeaSurface
 from seaecho.ocean.twoscale import orbital_velocity_covariance
 from seaecho.scattering import frames
 from seaecho.scattering.breaking import (
     dissipation_exponent,
-    phase_speed,
     wind_growth_rate,
 )
 from seaecho.scattering.dynamics import (
