@@ -79,6 +79,7 @@ def bench_kernel(n: int, repeat: int) -> None:
     from seaecho.scattering import frames
     from seaecho.scattering.dynamics import EvolvingSpeckle, SeaDynamics
     from seaecho.scattering.facet import (
+        FacetModel,
         TiltQuadrature,
         circular_gaussians,
         speckled_facet_amplitudes,
@@ -94,7 +95,7 @@ def bench_kernel(n: int, repeat: int) -> None:
     normal /= np.linalg.norm(normal, axis=1, keepdims=True)
     spec = DirectionalSpectrum(spectrum="elfouhaily", u19_5=8.0)
     table = BraggSpectrumTable(spec.height_spectrum, k_min=10.0, k_max=20 * k)
-    args = (n_i, n_s, normal, np.ones(n), k, 55.9 - 37.0j, table, 0.01, 0.007, 0.0)
+    sea = FacetModel(k, 55.9 - 37.0j, table, 0.01, 0.007, 0.0)
     tq = TiltQuadrature.unscented(0.01, 0.007)
     names = ["specular", "bragg", "bragg1", "bragg2", "bragg3", "bragg4", "breaking"]
     draws = dict(zip(names, circular_gaussians(n, len(names), rng), strict=True))
@@ -104,18 +105,19 @@ def bench_kernel(n: int, repeat: int) -> None:
                       velocity_covariance=np.diag([1e-3, 1e-3, 2e-3]),
                       breaker_velocity=np.array([1.1, 0.0, 0.0]), travel=None)
     evo = EvolvingSpeckle(dyn, 1, n, tilt_nodes=4, breaking=True)
-    cases = [("blend (the paper's facet model)", {}, draws),
-             ("+ unresolved-tilt average (P6)", {"tilt": tq}, draws),
-             ("+ breaking zones (P7)", {"tilt": tq, "breaking_fraction": q}, draws),
-             ("+ evolving speckle (D2-D5)", {"tilt": tq, "breaking_fraction": q}, None)]
+    tilted = sea.with_(tilt=tq)
+    cases = [("blend (the paper's facet model)", sea, {}, draws),
+             ("+ unresolved-tilt average (P6)", tilted, {}, draws),
+             ("+ breaking zones (P7)", tilted, {"breaking_fraction": q}, draws),
+             ("+ evolving speckle (D2-D5)", tilted, {"breaking_fraction": q}, None)]
     print(f"[0] fused facet kernel alone (speckled amplitudes, Dr.Jit LLVM), {n} facets, "
           f"best of {repeat}")
-    for label, kw, d in cases:
+    for label, model, kw, d in cases:
         times, cpus = [], []
         for r in range(repeat + 1):
             dd = evo.draws(0.01 * r) if d is None else d
             t0, c0 = time.perf_counter(), time.process_time()
-            speckled_facet_amplitudes(*args, draws=dd, **kw)
+            speckled_facet_amplitudes(n_i, n_s, normal, np.ones(n), model, draws=dd, **kw)
             if r:  # the first call compiles the kernel
                 times.append(time.perf_counter() - t0)
                 cpus.append(time.process_time() - c0)

@@ -82,7 +82,7 @@ def bench_pulse(repeat: int, mode: str, grid: int | None = None) -> None:
         clock.append(time.perf_counter())
         idx = np.flatnonzero(f.visibility > 0)
         damping = to_facets(st.wake_mask).reshape(-1)
-        t = facet_terms(f.n_i, f.n_s, f.normal, *model, wake_damping=damping, local=f)
+        t = facet_terms(f.n_i, f.n_s, f.normal, model, wake_damping=damping, local=f)
         amp = speckle_amplitudes(t, f.area * f.visibility, np.random.default_rng(p))
         clock.append(time.perf_counter())
         echo = radar.scatterer_echo(geo, f.centroid[idx], f.velocity[idx],
@@ -178,8 +178,9 @@ def bench_sar(repeat: int, refresh: float, update: int, label: str) -> None:
             held = sim._block_quantities(p, st, f.visibility.size)
             clock.append(time.perf_counter())
             amp = speckled_facet_amplitudes(
-                f.n_i, f.n_s, f.normal, f.area * f.visibility, *model,
-                draws=held["draws"], wake_damping=held["damping"], local=f)
+                f.n_i, f.n_s, f.normal, f.area * f.visibility, model,
+                draws=held["draws"], wake_damping=held["damping"],
+                breaking_fraction=held["breaking"], local=f)
             clock.append(time.perf_counter())
             vis = f.visibility > 0
             echo = radar.scatterer_echo(geo, f.centroid[vis], f.velocity[vis],

@@ -17,7 +17,12 @@ import numpy as np
 from seaecho.constants import C0
 from seaecho.ocean.seawater import sea_water_permittivity
 from seaecho.ocean.spectra import DirectionalSpectrum
-from seaecho.scattering.facet import _drjit_available, facet_amplitudes, facet_sigma
+from seaecho.scattering.facet import (
+    FacetModel,
+    _drjit_available,
+    facet_amplitudes,
+    facet_sigma,
+)
 from seaecho.scattering.spectrum_table import BraggSpectrumTable
 
 SIZES = {"64x64": 64 * 64, "256x256": 256 * 256, "512x512": 512 * 512}
@@ -67,15 +72,14 @@ def main() -> None:
         n_i, n_s, normal = geometry(n)
         area = np.full(n, 4.0)
         for backend in backends:
-            args = (n_i, n_s, normal, k, eps, table, 0.005, 0.004)
+            args = (n_i, n_s, normal, FacetModel(k, eps, table, 0.005, 0.004, model="blend"))
 
             def sig(args=args, backend=backend):
-                return facet_sigma(*args, model="blend", backend=backend)
+                return facet_sigma(*args, backend=backend)
 
             def amp(args=args, area=area, backend=backend):
-                n_i_, n_s_, normal_ = args[:3]
-                return facet_amplitudes(n_i_, n_s_, normal_, area, k, eps, table, 0.005, 0.004,
-                                        rng, model="blend", backend=backend)
+                n_i_, n_s_, normal_, sea = args
+                return facet_amplitudes(n_i_, n_s_, normal_, area, sea, rng, backend=backend)
 
             ts = best_time(sig, REPEATS if n <= 65536 or backend == "drjit" else 3)
             ta = best_time(amp, REPEATS if n <= 65536 or backend == "drjit" else 3)

@@ -77,8 +77,8 @@ def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
             f = analytic_facets(st.x, st.y, st.elevation, st.slope_x, st.slope_y, None, tx,
                                 shadowing="smith")
             q = breaking_placement(-acc, f.area, model.breaking.q)
-            s = facet_sigma(f.n_i, f.n_s, f.normal, *model.facet_model, local=f,
-                            breaking_fraction=q, **model.facet_options)
+            s = facet_sigma(f.n_i, f.n_s, f.normal, model.facet_model, local=f,
+                            breaking_fraction=q)
             out[i] += (f.area * f.visibility) @ s / area_h / len(LOOKS_DEG)
     return out
 

@@ -149,7 +149,11 @@ def test_each_kernel_is_one_fused_launch_compiled_once():
     # formulas: a read-back would split it), and a new pulse (new platform positions, new
     # numpy buffers of any alignment) reuses the compiled kernel: same hash.
     from seaecho.ocean.spectra import DirectionalSpectrum
-    from seaecho.scattering.facet import speckle_draws, speckled_facet_amplitudes
+    from seaecho.scattering.facet import (
+        FacetModel,
+        speckle_draws,
+        speckled_facet_amplitudes,
+    )
     from seaecho.scattering.spectrum_table import BraggSpectrumTable
     from seaecho.tracing.kernels import facet_frames_drjit
 
@@ -166,8 +170,9 @@ def test_each_kernel_is_one_fused_launch_compiled_once():
             facet_frames_drjit(c, nn, tx, rx)))
         draws = speckle_draws(n, np.random.default_rng(pulse))
         kernels += _jit_kernels(lambda f=frames, nn=nn, n=n, draws=draws: (
-            speckled_facet_amplitudes(f["n_i"], f["n_s"], nn, np.ones(n), k, 50 - 30j, table,
-                                      0.01, 0.006, 0.3, draws=draws, backend="drjit")))
+            speckled_facet_amplitudes(f["n_i"], f["n_s"], nn, np.ones(n),
+                                      FacetModel(k, 50 - 30j, table, 0.01, 0.006, 0.3),
+                                      draws=draws, backend="drjit")))
         runs.append(kernels)
     assert [len(r) for r in runs] == [2, 2]  # frames, then scattering P1-P4
     assert runs[0] == runs[1]  # same compiled kernels at the second pulse
@@ -177,7 +182,11 @@ def _cuda_parity() -> None:
     """The per-pulse kernels on drjit.cuda against numpy (run in its own process)."""
     from seaecho.geometry.facets import facet_frames
     from seaecho.ocean.spectra import DirectionalSpectrum
-    from seaecho.scattering.facet import speckle_draws, speckled_facet_amplitudes
+    from seaecho.scattering.facet import (
+        FacetModel,
+        speckle_draws,
+        speckled_facet_amplitudes,
+    )
     from seaecho.scattering.spectrum_table import BraggSpectrumTable
     from seaecho.tracing.kernels import facet_frames_drjit
 
@@ -191,7 +200,8 @@ def _cuda_parity() -> None:
     k = 200.0
     table = BraggSpectrumTable(DirectionalSpectrum(u19_5=6.0).height_spectrum, k / 3, 20 * k)
     draws = speckle_draws(c.shape[0], np.random.default_rng(0))
-    args = (b["n_i"], b["n_s"], nn, np.ones(c.shape[0]), k, 50 - 30j, table, 0.01, 0.006)
+    args = (b["n_i"], b["n_s"], nn, np.ones(c.shape[0]),
+            FacetModel(k, 50 - 30j, table, 0.01, 0.006))
     x = speckled_facet_amplitudes(*args, draws=draws, backend="drjit", variant=variant)
     y = speckled_facet_amplitudes(*args, draws=draws, backend="numpy")
     scale = np.abs(y).max(axis=1, keepdims=True) + 1e-300

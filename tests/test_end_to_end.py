@@ -185,10 +185,9 @@ def _expected_clutter_energy(sim, pulse):
     geo = sim.radar.geometry(pulse)
     st = sim.surface_state(pulse)
     f = sim.engine.facets(geo.time, state=st)
-    sig = facet_sigma(f.n_i, f.n_s, f.normal, *sim.sea_model.facet_model,
+    sig = facet_sigma(f.n_i, f.n_s, f.normal, sim.sea_model.facet_model,
                       wake_damping=to_facets(st.wake_mask).reshape(-1), backend="numpy",
-                      breaking_fraction=sim.breaking_fraction(st),
-                      **sim.sea_model.facet_options)
+                      breaking_fraction=sim.breaking_fraction(st))
     r_t = np.linalg.norm(f.centroid - geo.tx.position, axis=-1)
     r_r = np.linalg.norm(f.centroid - geo.rx.position, axis=-1)
     lam = C0 / 1e10

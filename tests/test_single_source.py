@@ -4,7 +4,9 @@ The numpy reference path and the Dr.Jit kernels evaluate the same functions
 (``seaecho.backend``); a formula written a second time (in a kernel module, say) would
 let the two paths drift apart while parity tests on their shared inputs still pass. The
 test reads the code (docstrings and comments left out) for constants and expressions
-that only one formula uses, and checks the import graph:
+that only one formula uses, for the literals of the physical laws and constants (the
+dispersion relation, viscosity, von Karman, friction-velocity laws, windows, the Kelvin
+wavenumber), and checks the import graph:
 
 - geometry never imports scattering, radar or tracing (frames are geometry);
 - only ``seaecho.backend`` and the tracing stage import Dr.Jit (a formula reaching for
@@ -63,6 +65,64 @@ MARKERS = {
 def test_formula_constants_live_in_one_module(pattern, home):
     found = sorted(name for name in _modules() if re.search(pattern, _code(name)))
     assert found == [home], f"{pattern!r} found in {found}, expected only in {home}"
+
+
+#: laws and physical constants: expression -> the modules allowed to contain it (an empty
+#: set: nowhere, the law is reached through its function). The code is read as
+#: ``ast.unparse`` writes it (``1.05e-6`` reads ``1.05e-06``).
+LAWS = {
+    # the dispersion relation (eq 15' of ocean/dispersion.py): written once, in ocean/dispersion.py
+    r"\bSURFACE_TENSION_OVER_DENSITY\b": {"constants.py", "ocean/dispersion.py",
+                                           "ocean/surface.py"},  # (a default argument)
+    r"\btanh\(\s*\w+\s*\*\s*(depth|d|h)\b": {"ocean/dispersion.py"},
+    r"sqrt\(\s*(G|g)\s*[*/]\s*\w*k": set(),
+    r"\(\s*(G|g)\s*\+\s*\w+\s*\*\s*\w+\s*\*\s*\w+\s*\)": {"ocean/dispersion.py"},
+    r"\b370(\.0)?\b": set(),  # k_m: CAPILLARY_WAVENUMBER, from the relation
+    # the kinematic viscosity of sea water, the vacuum permittivity, the von Karman
+    # constant, air's density and viscosity: seaecho/constants.py
+    r"\b1\.05e-0?6\b": {"constants.py"},
+    r"8\.854|1\.2566370": {"constants.py"},
+    r"(?m)^\w*(KARMAN|KAPPA)\w*\s*=\s*[0-9]": {"constants.py"},
+    r"\b1\.225\b|\b1\.47e-0?5\b": {"constants.py"},
+    # friction-velocity and roughness laws (Stewart, Wu 1982, Donelan 1993, Charnock):
+    # ocean/wind.py, picked by name by their users
+    r"\b0\.065\s*\*": {"ocean/wind.py"},
+    r"\b3\.7e-0?5\b": {"ocean/wind.py"},
+    r"\b0\.018\b": {"ocean/wind.py"},
+    # weighting windows: processing/windows.py (no numpy or scipy window elsewhere)
+    r"np\.(hamming|hanning|bartlett|blackman|kaiser)\(|windows\.(taylor|hamming|hann)\b":
+        set(),
+    r"\b0\.54\b": {"processing/windows.py"},
+    # the Kelvin wavenumber g / V^2 (and 2 pi V^2 / g): wake/michell.py
+    # (Kriebel & Seelig's height scale V^2 / g in wake/empirical.py is not a wavelength)
+    r"\b(g|G)\s*/\s*[\w.]*speed\s*\*\*\s*2|pi\s*\*\s*\w*\s*\*?\s*speed\s*\*\*\s*2":
+        {"wake/michell.py"},
+}
+
+
+@pytest.mark.parametrize("pattern,homes", list(LAWS.items()))
+def test_each_law_and_constant_is_written_once(pattern, homes):
+    found = {name for name in _modules() if re.search(pattern, _code(name))}
+    assert found <= homes, (f"{pattern!r} found in {sorted(found - homes)}: import it from "
+                            f"{sorted(homes) or 'its function'} instead")
+
+
+def test_resources_imports_the_sizes_it_models():
+    """resources.py takes the block, cache and batch sizes from their modules, not copies."""
+    code = _code("resources.py")
+    copies = re.findall(r"(?m)^(CHUNK|SBR_BATCH|SIGNATURE_CACHE|IMAGE_BLOCK)\s*=", code)
+    assert not copies, f"resources.py redefines {copies}"
+    import inspect
+
+    import seaecho.resources as res
+    from seaecho.imaging.focus import focus
+    from seaecho.io.run import DEFAULT_BLOCK_PULSES
+    from seaecho.tracing.hull_echo import SIGNATURE_CACHE
+    from seaecho.tracing.sbr import SBROptions
+    assert res.CHUNK == 2 * DEFAULT_BLOCK_PULSES
+    assert res.SIGNATURE_CACHE == SIGNATURE_CACHE
+    assert res.SBR_BATCH == SBROptions().batch
+    assert res.IMAGE_BLOCK == inspect.signature(focus).parameters["block_pulses"].default
 
 
 def _imports(tree: ast.Module, name: str) -> set[str]:

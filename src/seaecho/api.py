@@ -605,7 +605,11 @@ def compare(scene: SceneModel, time: float = 0.0, *, tx_position: ArrayLike | No
         On ``mode`` = (raytraced, analytic): cell-mean ``visibility`` (y_cell, x_cell),
         the area-weighted ``lit_fraction_tx``, ``seen_fraction_rx``,
         ``visible_fraction``, and ``sigma_sum`` (polarisation): the sum over facets of
-        area x visibility x sigma_mn [m^2] with the simulation's sea model. Per facet
+        area x visibility x sigma_mn [m^2] with the simulation's whole per-facet model
+        (:func:`seaecho.simulation.facet_sigma0`: the blend, the unresolved-tilt
+        average, the breaking zones and the wake's damping), so that its ray-traced
+        value divided by the tile's area is the mean ``sigma0`` that ``seaecho run``
+        writes for the same sea and geometry. Per facet
         (y_cell, x_cell, triangle), NaN where a mode does not see the facet: the
         differences analytic - ray traced of ``theta_i``, ``theta_s``, ``phi`` [deg]
         and the angle between the two ``normal`` s [deg]. Attribute ``shadowing``: the
@@ -617,7 +621,7 @@ def compare(scene: SceneModel, time: float = 0.0, *, tx_position: ArrayLike | No
     from .build import build_engine, build_sea_model, scene_attrs
     from .conventions import CHANNELS
     from .io.facets import visibility_summary
-    from .scattering.facet import facet_sigma
+    from .simulation import breaking_fraction, facet_sigma0, wake_damping
 
     g = _engine(scene, time, mode="raytraced", tx_position=tx_position,
                 rx_position=rx_position, variant=variant, frequency_hz=frequency_hz,
@@ -659,9 +663,14 @@ def compare(scene: SceneModel, time: float = 0.0, *, tx_position: ArrayLike | No
                           np.stack([ft.cell_mean("visibility"), fa.cell_mean("visibility")]),
                           {"units": "1", "long_name": "lit and seen, cell mean"})
 
+    damping = wake_damping(st)  # the per-facet quantities of the run's held sea
+    breaking = (None if sea_model.breaking is None
+                else breaking_fraction(sea_model, g.sea, st, ft.area))
+
     def summed(f):
-        sig = facet_sigma(f.n_i, f.n_s, f.normal, *sea_model.facet_model, local=f)
-        return (f.area * f.visibility) @ sig
+        sig = facet_sigma0(sea_model, f, damping, breaking,
+                           variant=variant or g.scene.tracing.variant)
+        return f.area @ sig  # facet_sigma0 includes the visibility
 
     data["sigma_sum"] = (("mode", "polarisation"), np.stack([summed(ft), summed(fa)]),
                          {"units": "m2", "long_name": "sum over facets of area x "

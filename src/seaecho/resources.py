@@ -35,8 +35,8 @@ The coefficients are upper envelopes of the peak RSS measured by
 ``benchmarks/bench_resources.py`` (``ru_maxrss`` of the child process) on scenes that
 vary one term at a time, from 4 096 to 1 048 576 sea grid points and up to 1.6 million
 samples per pulse; the total is multiplied by :data:`SAFETY`. The accuracy on those
-scenes is in docs/resources.md; ``tests/test_resources.py`` runs a small scene and checks
-that its measured peak is below the estimate.
+scenes is in docs/checks.md ("Resource estimate"); ``tests/test_resources.py`` runs a
+small scene and checks that its measured peak is below the estimate.
 
 Time (order of magnitude only, measured on one loaded 2-core machine): a start-up of a
 few seconds plus a set-up per sea grid point (surface, wake, sigma maps), then per pulse
@@ -51,6 +51,7 @@ The memory a run may use is the smallest of the memory the system reports availa
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 from dataclasses import dataclass, field
@@ -81,7 +82,6 @@ M_TARGET = 400.0  #: per point target
 M_ANTENNA = 40.0  #: per n_theta^2 of a rectangular aperture's normalisation
 M_ANTENNA_GRID = 200 * MiB  #: its integration grid (chunks of 2e6 directions)
 M_SBR_RAY = 1200.0  #: per ray of a hull trace's batch (about 1 kB per ray)
-SBR_BATCH = 1 << 18  #: rays per batch (``seaecho.tracing.sbr.SBROptions.batch``)
 M_SBR_CELL = 44.0  #: per cell of a hull trace's launch grid (coverage mask, indices, the
 #: edge test's hits and the launch rays it keeps for the plain cells: the trace of
 #: Simulation 1's boat peaked 43 MB higher with them, 2.1e6 cells)
@@ -112,13 +112,47 @@ T_BACKPROJECTION = 2.0e-8  #: per pixel, pulse and channel of the focusing
 
 #: Environment variable that sets the memory limit [GB].
 ENV_LIMIT = "SEAECHO_MAX_MEMORY_GB"
-#: Most pulses per block of work (``seaecho.io.run.block_size``: at most twice its
-#: target of 16) when ``--block-pulses`` is not given.
-CHUNK = 32
-#: Hull signatures a run keeps (``seaecho.tracing.hull_echo``).
-SIGNATURE_CACHE = 256
-#: Pulses per block of the focusing (``seaecho.imaging.focus``).
-IMAGE_BLOCK = 32
+#: Sizes the estimate takes from the modules that own them (imported when first used:
+#: the tracing and imaging modules cost a second of imports that ``seaecho check`` of a
+#: scene without hulls or image does not need):
+#: ``CHUNK`` most pulses per block of work when ``--block-pulses`` is not given
+#: (``seaecho.io.run.block_size``: twice its target ``DEFAULT_BLOCK_PULSES``);
+#: ``SIGNATURE_CACHE`` hull signatures a run keeps (``seaecho.tracing.hull_echo``);
+#: ``SBR_BATCH`` rays per batch of a hull trace (``seaecho.tracing.sbr.SBROptions``);
+#: ``IMAGE_BLOCK`` pulses per block of the focusing (``seaecho.imaging.focus.focus``'s
+#: ``block_pulses``).
+_OWNED = ("CHUNK", "SIGNATURE_CACHE", "SBR_BATCH", "IMAGE_BLOCK")
+
+
+@functools.cache
+def _owned(name: str) -> int:
+    """The size ``name`` of :data:`_OWNED`, read from its module."""
+    if name == "CHUNK":
+        from .io.run import DEFAULT_BLOCK_PULSES
+
+        return 2 * DEFAULT_BLOCK_PULSES
+    if name == "SIGNATURE_CACHE":
+        from .tracing.hull_echo import SIGNATURE_CACHE
+
+        return SIGNATURE_CACHE
+    if name == "SBR_BATCH":
+        from .tracing.sbr import SBROptions
+
+        return SBROptions.batch
+    if name == "IMAGE_BLOCK":
+        import inspect
+
+        from .imaging.focus import focus
+
+        return inspect.signature(focus).parameters["block_pulses"].default
+    raise AttributeError(name)
+
+
+def __getattr__(name: str) -> int:
+    """``resources.CHUNK`` and the other sizes of :data:`_OWNED` (PEP 562)."""
+    if name in _OWNED:
+        return _owned(name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 @dataclass(frozen=True)
@@ -430,7 +464,7 @@ def image_term(pixels: int, channels: int, n_pulses: int, n_samples: int, upsamp
     block of upsampled pulses (at most :data:`IMAGE_BLOCK`, or the ``n_pulses``, of
     ``next_fast_len(n_samples)`` samples; capped by ``n_fft`` where given) and the
     figure panels."""
-    up = IMAGE_BLOCK * channels * upsample * next_fast_len(max(n_samples, 1))
+    up = _owned("IMAGE_BLOCK") * channels * upsample * next_fast_len(max(n_samples, 1))
     up = min(up, n_pulses * channels * upsample * (n_fft or next_fast_len(max(n_samples, 1))))
     return (M_PIXEL * pixels + M_PIXEL_CHANNEL * channels * pixels + M_UPSAMPLED * up
             + M_IMAGE_FIGURE * panels * pixels)
@@ -468,7 +502,7 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     n_s, n_fft, _ = window_size(scene)
     c = len(r.channels)
     n_p = r.n_pulses
-    chunk = min(block or CHUNK, n_p)
+    chunk = min(block or _owned("CHUNK"), n_p)
     k = len(scene.targets)
     gm = gauss_markov_steps(scene)
     hulls = hull_sizes(scene, base_dir)
@@ -483,9 +517,9 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
         "figures": M_FIGURE * n_p * c * n_s if figures else 0.0,
         "perturbation": M_GM * gm,
         "targets": M_TARGET * k,
-        "hull traces": (max((M_SBR_RAY * min(SBR_BATCH, h.grid) + M_SBR_CELL * h.grid
+        "hull traces": (max((M_SBR_RAY * min(_owned("SBR_BATCH"), h.grid) + M_SBR_CELL * h.grid
                              for h in hulls), default=0.0)
-                        + sum(M_CENTRE * h.centres * min(h.traces, SIGNATURE_CACHE)
+                        + sum(M_CENTRE * h.centres * min(h.traces, _owned("SIGNATURE_CACHE"))
                               for h in hulls)),
     }
     worker = sum(terms.values()) - terms["figures"]

@@ -58,6 +58,57 @@ from .scattering.breaking import breaking_placement
 POLARISATIONS = CHANNELS
 
 
+def wake_damping(state) -> NDArray[np.float64]:
+    """Turbulent-wake damping of the Bragg waves per facet, in [0, 1], shape (N,): the
+    sea state's wake mask averaged over each facet's vertices."""
+    from .geometry.mesh import to_facets
+
+    return to_facets(state.wake_mask).reshape(-1)
+
+
+def breaking_fraction(sea_model, sea, state, area: NDArray) -> NDArray[np.float64]:
+    """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
+
+    Downward acceleration of the wind sea at the state's time (linear kinematics,
+    :meth:`seaecho.sea.Sea.vertical_acceleration`) averaged over each facet's vertices; the
+    facets of largest value, of areas ``area`` [m^2], cover the fraction q of KHCC03
+    (:func:`seaecho.scattering.breaking.breaking_placement`).
+    """
+    from .geometry.mesh import to_facets
+
+    acc = to_facets(sea.vertical_acceleration(state.t)).reshape(-1)
+    return breaking_placement(-acc, area, sea_model.breaking.q)
+
+
+def facet_sigma0(sea_model, facets, damping: NDArray | None, breaking: NDArray | None,
+                 variant: str | None = None) -> NDArray[np.float64]:
+    """The per-facet ``sigma_mn`` x visibility that a run writes as ``sigma0``, (N, 4).
+
+    Eqs P1-P7 of :mod:`seaecho.scattering.facet` with the scene's whole facet model
+    (``SeaModel.facet_model``: the blend, the unresolved-tilt average of eq P6, the
+    breaking zones of eq P7 where ``breaking`` puts them) and the wake's Bragg damping,
+    in the simulation's working precision: the one scene NRCS of seaecho, which
+    ``seaecho run`` maps and ``seaecho compare`` sums.
+
+    Parameters
+    ----------
+    sea_model : seaecho.scattering.SeaModel
+    facets : seaecho.geometry.facets.Facets
+    damping : ndarray (N,) or None
+        :func:`wake_damping` of the surface state.
+    breaking : ndarray (N,) or None
+        :func:`breaking_fraction` (None without breaking zones).
+    variant : str, optional
+        The scene's Mitsuba variant (Dr.Jit back end).
+    """
+    from .scattering.facet import PRECISION, facet_terms
+
+    terms = facet_terms(facets.n_i, facets.n_s, facets.normal, sea_model.facet_model,
+                        wake_damping=damping, breaking_fraction=breaking, local=facets,
+                        variant=variant, precision=PRECISION)
+    return terms.sigma() * facets.visibility[:, None]
+
+
 @dataclass(frozen=True)
 class SeaEcho:
     """The sea's contribution to one pulse.
@@ -214,7 +265,6 @@ class Simulation:
         on the facets of largest downward acceleration of the block's surface, covering
         the fraction q of KHCC03 (:func:`seaecho.scattering.breaking.breaking_placement`).
         """
-        from .geometry.mesh import to_facets
 
         block = pulse // self.block
         if self._block_cache is None or self._block_cache[0] != block:
@@ -229,7 +279,7 @@ class Simulation:
                 nodes = facet_gaussians(n_facets, len(model.tilt.slopes), seed,
                                         "speckle-tilt", block, xp=xp)
                 draws.update({f"bragg{j + 1}": g for j, g in enumerate(nodes)})
-            q = {"damping": to_facets(state.wake_mask).reshape(-1), "draws": draws,
+            q = {"damping": wake_damping(state), "draws": draws,
                  "breaking": None}
             if model.breaking is not None:
                 (g_w,) = facet_gaussians(n_facets, 1, seed, "breaking", block, xp=xp)
@@ -281,7 +331,7 @@ class Simulation:
                        axis=-1)
         centre = centroid.copy()
         centre[:, :2] += disp
-        q = {"damping": to_facets(state.wake_mask).reshape(-1), "draws": None,
+        q = {"damping": wake_damping(state), "draws": None,
              "breaking": None, "t": float(state.t), "centre": centre, "velocity": velocity,
              "acceleration": acc}
         if self.sea_model.breaking is not None:
@@ -327,13 +377,8 @@ class Simulation:
         facets of largest value cover the fraction q of KHCC03
         (:func:`seaecho.scattering.breaking.breaking_placement`).
         """
-        from .geometry.mesh import to_facets
-        from .scattering.breaking import breaking_placement
-
-        stats = self.sea_model.breaking
-        acc = to_facets(self.sea.vertical_acceleration(state.t)).reshape(-1)
-        area = self.engine.geometry(state)[1]
-        return breaking_placement(-acc, area, stats.q)
+        return breaking_fraction(self.sea_model, self.sea, state,
+                                 self.engine.geometry(state)[1])
 
     def sea_echo(self, pulse: int, geometry=None, sigma: bool = False) -> SeaEcho:
         """Echo of the sea facets for one pulse.
@@ -349,7 +394,7 @@ class Simulation:
         """
         if self.sea is None:
             raise ValueError("sea clutter is off in this scene ([radar] sea_clutter)")
-        from .scattering.facet import PRECISION, facet_terms, speckled_facet_amplitudes
+        from .scattering.facet import PRECISION, speckled_facet_amplitudes
 
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
@@ -368,15 +413,13 @@ class Simulation:
         # scattering.facet: |a|^2 is the facet's RCS [m^2]; visibility weights it. The
         # draws are the block's (drawn once per held surface); eqs P1-P4 run in one kernel
         args = (facets.n_i, facets.n_s, facets.normal)
-        model = self.sea_model.facet_model
-        options = dict(self.sea_model.facet_options, breaking_fraction=held["breaking"])
         draws = None if self.evolving else self._host_draws(held)
         if self.evolving:  # eqs D2-D4 evaluated inside the facet kernel
             draws = self._speckle_process(vis.size).draws(float(geo.time))
-        amp = speckled_facet_amplitudes(*args, facets.area * vis, *model,
+        amp = speckled_facet_amplitudes(*args, facets.area * vis, self.sea_model.facet_model,
                                         draws=draws, wake_damping=damping,
-                                        local=facets, variant=self.variant,
-                                        precision=PRECISION, **options)
+                                        breaking_fraction=held["breaking"], local=facets,
+                                        variant=self.variant, precision=PRECISION)
         centres = self.phase_centres(pulse, st)
         visible = vis > 0
         if visible.all():  # the usual case: no copies
@@ -387,9 +430,8 @@ class Simulation:
                                          variant=self.variant, precision=PRECISION)
         sig = None
         if sigma:
-            sig = facet_terms(*args, *model, wake_damping=damping, local=facets,
-                              variant=self.variant, precision=PRECISION,
-                              **options).sigma() * vis[:, None]
+            sig = facet_sigma0(self.sea_model, facets, damping, held["breaking"],
+                               variant=self.variant)
         return SeaEcho(echo, sig, facets)
 
     # ------------------------------------------------------------------- one pulse

@@ -184,3 +184,26 @@ def test_elfouhaily_light_wind_warns_instead_of_negative():
     with pytest.warns(ValidityWarning, match="alpha_m"):
         p = elfouhaily_parameters(0.8)
     assert p.alpha_m == 0.0
+
+
+def test_elfouhaily_short_waves_at_the_minimum_phase_speed():
+    """Elfouhaily et al. (1997): c_m = 0.23 m/s at k_m = 370 rad/m, the minimum of the
+    gravity-capillary phase speed; there the short-wave curvature is
+    B_h = (alpha_m / 2) (c_m / c) F_m = (alpha_m / 2) L_PM J_p (F_m's exponential is 1),
+    alpha_m = 1e-2 (1 + 3 ln(u* / c_m)) for u* > c_m: with u* = 0.396 m/s at U10 = 10 m/s
+    (fully developed), alpha_m = 0.0263, B_h = 0.0131 (the long-wave part is negligible
+    there: F_p's exp(-Omega_c / sqrt(10) (sqrt(k / k_p) - 1)) is 1e-14).
+    """
+    from seaecho.ocean.dispersion import CAPILLARY_WAVENUMBER, phase_speed
+
+    assert CAPILLARY_WAVENUMBER == pytest.approx(370.0, rel=1e-3)
+    c = phase_speed(np.array([0.9, 1.0, 1.1]) * CAPILLARY_WAVENUMBER)
+    assert c[1] == pytest.approx(0.23, rel=2e-3) and c[1] < c[0] and c[1] < c[2]
+    p = elfouhaily_parameters(float(u19_5_from_u10(10.0)))
+    assert p.alpha_m == pytest.approx(1e-2 * (1 + 3 * np.log(p.u_star / 0.23)), rel=1e-12)
+    assert p.alpha_m == pytest.approx(0.0263, abs=2e-4)
+    km = CAPILLARY_WAVENUMBER
+    u19_5 = float(u19_5_from_u10(10.0))
+    curvature = km**3 * float(OMNI_SPECTRA["elfouhaily"](np.array([km]), u19_5, None)[0])
+    assert curvature == pytest.approx(0.5 * p.alpha_m * 0.23 / c[1], rel=1e-3)
+    assert curvature == pytest.approx(0.0131, abs=1e-4)

@@ -429,9 +429,7 @@ def test_float32_scattering_against_the_float64_kernel():
     single, double = _pair(scene)
     r = single._resident
     for sim, precision in ((single, "single"), (double, "double")):
-        sim._resident = ResidentSea(r.radar, sim.sea_model.facet_model, model=r.model,
-                                    cox_munk=r.cox_munk, tilt=r.tilt,
-                                    breaking_tilt=r.breaking_tilt, precision=precision)
+        sim._resident = ResidentSea(r.radar, r.facet_model, precision=precision)
         assert sim._resident.xs.precision == precision
     for p in (0, 4):
         a, b = single.sea_echo(p).echo, double.sea_echo(p).echo

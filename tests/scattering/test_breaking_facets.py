@@ -23,6 +23,7 @@ from seaecho.scattering.breaking import (
     breaking_statistics,
 )
 from seaecho.scattering.facet import (
+    FacetModel,
     TiltQuadrature,
     facet_sigma,
     facet_terms,
@@ -108,11 +109,11 @@ def test_facet_breaking_is_eq_br1_with_its_own_weight(backend):
     # BR5-BR6 on the facet's plane.
     n_i, n_s, normal = _geometry(400)
     q = np.random.default_rng(2).uniform(0, 1, 400)
-    args = (n_i, n_s, normal, K, EPS, _table(), 0.01, 0.007, 0.4)
-    reg = facet_sigma(*args, backend=backend)
+    sea = FacetModel(K, EPS, _table(), 0.01, 0.007, 0.4)
+    reg = facet_sigma(n_i, n_s, normal, sea, backend=backend)
     wb = breaking_sigma(n_i, n_s, normal, 0.4, 0.6, THETA_WB)
-    got = facet_sigma(*args, breaking_fraction=q, breaking_tilt=THETA_WB * 0.6,
-                      backend=backend)
+    got = facet_sigma(n_i, n_s, normal, sea.with_(breaking_tilt=THETA_WB * 0.6),
+                      breaking_fraction=q, backend=backend)
     np.testing.assert_allclose(got, add_breaking(reg, wb, q), rtol=1e-9, atol=1e-300)
 
 
@@ -120,9 +121,9 @@ def test_breaking_and_tilt_nodes_same_on_both_backends_and_fused():
     n_i, n_s, normal = _geometry(300, seed=5)
     q = np.random.default_rng(3).uniform(0, 0.3, 300)
     tq = TiltQuadrature.unscented(0.01, 0.007)
-    args = (n_i, n_s, normal, K, EPS, _table(), 0.01, 0.007, 0.4)
-    kw = dict(tilt=tq, breaking_fraction=q, breaking_tilt=0.03)
-    a, b = (facet_terms(*args, **kw, backend=be) for be in ("numpy", "drjit"))
+    sea = FacetModel(K, EPS, _table(), 0.01, 0.007, 0.4, tilt=tq, breaking_tilt=0.03)
+    kw = dict(breaking_fraction=q)
+    a, b = (facet_terms(n_i, n_s, normal, sea, **kw, backend=be) for be in ("numpy", "drjit"))
     for x, y in zip(a.mechanisms().values(), b.mechanisms().values(), strict=True):
         np.testing.assert_allclose(x[0], y[0], rtol=1e-8, atol=1e-12)
         np.testing.assert_allclose(x[1], y[1], rtol=1e-12, atol=1e-250)
@@ -133,11 +134,11 @@ def test_breaking_and_tilt_nodes_same_on_both_backends_and_fused():
              for m in a.mechanisms()}
     ref = speckle_amplitudes(a, area, draws=draws)
     for be in ("numpy", "drjit"):
-        got = speckled_facet_amplitudes(n_i, n_s, normal, area, *args[3:], draws=draws,
+        got = speckled_facet_amplitudes(n_i, n_s, normal, area, sea, draws=draws,
                                         backend=be, **kw)
         np.testing.assert_allclose(got, ref, rtol=1e-8, atol=1e-12)
     with pytest.raises(ValueError, match="none given"):
-        speckled_facet_amplitudes(n_i, n_s, normal, area, *args[3:],
+        speckled_facet_amplitudes(n_i, n_s, normal, area, sea,
                                   draws=(draws["specular"], draws["bragg"]), **kw)
 
 
@@ -146,7 +147,7 @@ def test_speckle_covariance_includes_the_breaking_mechanism():
     # identical terms equals sum_j w_j M_j M_j^H (its own independent draw per
     # mechanism), within 3 % of the largest entry.
     n_i, n_s, normal = _geometry(1)
-    t = facet_terms(n_i, n_s, normal, K, EPS, _table(), 0.01, 0.007, 0.4,
+    t = facet_terms(n_i, n_s, normal, FacetModel(K, EPS, _table(), 0.01, 0.007, 0.4),
                     breaking_fraction=0.3, backend="numpy")
     n = 200_000
     rep = type(t)(specular=np.repeat(t.specular, n, 0), bragg=np.repeat(t.bragg, n, 0),
@@ -165,11 +166,11 @@ def test_facet_breaking_is_khcc03_eq1_combination_of_the_facet_terms():
     # (q = 0). Keeping the regular mechanisms at full weight on the breaking zones'
     # area (a dropped 1 - q), or a wrong weight of the breaking term, fails.
     n_i, n_s, normal = _geometry(200, seed=8)
-    args = (n_i, n_s, normal, K, EPS, _table(), 0.01, 0.007, 0.4)
+    sea = FacetModel(K, EPS, _table(), 0.01, 0.007, 0.4,
+                     tilt=TiltQuadrature.unscented(0.01, 0.007), breaking_tilt=0.03)
     q = np.random.default_rng(9).uniform(0.0, 0.4, 200)
-    kw = dict(tilt=TiltQuadrature.unscented(0.01, 0.007), breaking_tilt=0.03)
-    regular, wb, mixed = (facet_terms(*args, breaking_fraction=f, backend="numpy",
-                                      **kw).sigma() for f in (0.0, 1.0, q))
+    regular, wb, mixed = (facet_terms(n_i, n_s, normal, sea, breaking_fraction=f,
+                                      backend="numpy").sigma() for f in (0.0, 1.0, q))
     np.testing.assert_allclose(mixed, (1 - q)[:, None] * regular + q[:, None] * wb,
                                rtol=1e-12, atol=1e-300)
     assert np.any(wb[:, 0] > 0) and np.any(regular[:, 3] > 0)  # not a vacuous 0 = 0
@@ -181,9 +182,9 @@ def test_tilt_average_without_unresolved_slopes_is_the_papers_facet_term():
     # the paper's eqs 8-9): the weights of the five-point rule sum to 1 (Julier &
     # Uhlmann 2004). A centre weight of 1 (or any weights not summing to 1) fails.
     n_i, n_s, normal = _geometry(200, seed=10)
-    args = (n_i, n_s, normal, K, EPS, _table(), 0.01, 0.007, 0.4)
-    plain = facet_terms(*args, backend="numpy").sigma()
-    flat = facet_terms(*args, tilt=TiltQuadrature.unscented(0.0, 0.0),
+    sea = FacetModel(K, EPS, _table(), 0.01, 0.007, 0.4)
+    plain = facet_terms(n_i, n_s, normal, sea, backend="numpy").sigma()
+    flat = facet_terms(n_i, n_s, normal, sea.with_(tilt=TiltQuadrature.unscented(0.0, 0.0)),
                        backend="numpy").sigma()
     np.testing.assert_allclose(flat, plain, rtol=1e-12, atol=1e-300)
     assert sum(TiltQuadrature.unscented(0.0, 0.0).weights) == pytest.approx(1.0, abs=1e-15)

@@ -16,7 +16,7 @@ from seaecho.backend import NUMPY, Boundary
 from seaecho.geometry import frames
 from seaecho.ocean.spectra import DirectionalSpectrum
 from seaecho.scattering import blend, fresnel, kirchhoff, spm
-from seaecho.scattering.facet import _drjit_available, facet_terms
+from seaecho.scattering.facet import FacetModel, _drjit_available, facet_terms
 from seaecho.scattering.slopes import cox_munk_parameters
 from seaecho.scattering.spectrum_table import BraggSpectrumTable
 
@@ -62,10 +62,10 @@ def test_table_matches_spectrum(table):
 def test_drjit_equals_numpy(table, model, cm):
     n_i, n_s, normal = _facets()
     damp = np.linspace(0, 1, len(n_i))
-    kw = dict(model=model, cox_munk=cox_munk_parameters(6.0) if cm else None,
-              wake_damping=damp)
-    a = facet_terms(n_i, n_s, normal, K, EPS, table, 0.01, 0.006, 0.5, backend="numpy", **kw)
-    b = facet_terms(n_i, n_s, normal, K, EPS, table, 0.01, 0.006, 0.5, backend="drjit", **kw)
+    sea = FacetModel(K, EPS, table, 0.01, 0.006, 0.5, model=model,
+                     cox_munk=cox_munk_parameters(6.0) if cm else None)
+    a = facet_terms(n_i, n_s, normal, sea, backend="numpy", wake_damping=damp)
+    b = facet_terms(n_i, n_s, normal, sea, backend="drjit", wake_damping=damp)
     for x, y in ((a.specular, b.specular), (a.bragg, b.bragg), (a.weight, b.weight)):
         scale = np.abs(x).max(axis=1, keepdims=True) + 1e-300
         assert np.all(np.abs(x - y) / scale < 1e-8)
@@ -86,7 +86,7 @@ def test_table_is_periodic_across_the_azimuth_seam(table):
 def test_drjit_needs_a_table():
     n_i, n_s, normal = _facets(10)
     with pytest.raises(ValueError, match="BraggSpectrumTable"):
-        facet_terms(n_i, n_s, normal, K, EPS, lambda kx, ky: 0 * kx, 0.01, 0.01,
+        facet_terms(n_i, n_s, normal, FacetModel(K, EPS, lambda kx, ky: 0 * kx, 0.01, 0.01),
                     backend="drjit")
 
 
@@ -103,11 +103,9 @@ def test_fused_speckled_amplitudes_equal_terms_then_speckle(table, model):
     damp = np.linspace(0, 1, n)
     area = np.random.default_rng(5).uniform(0.0, 2.0, n)
     draws = speckle_draws(n, np.random.default_rng(9))
-    args = (n_i, n_s, normal, area, K, EPS, table, 0.01, 0.006, 0.5)
-    a = speckled_facet_amplitudes(*args, draws=draws, model=model, wake_damping=damp,
-                                  backend="numpy")
-    b = speckled_facet_amplitudes(*args, draws=draws, model=model, wake_damping=damp,
-                                  backend="drjit")
+    args = (n_i, n_s, normal, area, FacetModel(K, EPS, table, 0.01, 0.006, 0.5, model=model))
+    a = speckled_facet_amplitudes(*args, draws=draws, wake_damping=damp, backend="numpy")
+    b = speckled_facet_amplitudes(*args, draws=draws, wake_damping=damp, backend="drjit")
     scale = np.abs(a).max(axis=1, keepdims=True) + 1e-300
     assert np.all(np.abs(a - b) / scale < 1e-8)
     assert np.abs(a).max() > 0
@@ -236,10 +234,12 @@ def test_single_precision_kernel_against_the_float64_numpy_path(table, model, cm
     rng = np.random.default_rng(11)
     draws = {m: (rng.normal(size=n) + 1j * rng.normal(size=n)) * np.sqrt(0.5)
              for m in MECHANISMS}
-    kw = dict(model=model, cox_munk=cox_munk_parameters(6.0) if cm else None,
-              wake_damping=np.linspace(0, 1, n), tilt=TiltQuadrature.unscented(0.01, 0.006),
-              breaking_fraction=np.linspace(0.0, 0.1, n), breaking_tilt=0.05, draws=draws)
-    args = (n_i, n_s, normal, rng.uniform(0.0, 2.0, n), K, EPS, table, 0.01, 0.006, 0.5)
+    kw = dict(wake_damping=np.linspace(0, 1, n), breaking_fraction=np.linspace(0.0, 0.1, n),
+              draws=draws)
+    sea = FacetModel(K, EPS, table, 0.01, 0.006, 0.5, model=model,
+                     cox_munk=cox_munk_parameters(6.0) if cm else None,
+                     tilt=TiltQuadrature.unscented(0.01, 0.006), breaking_tilt=0.05)
+    args = (n_i, n_s, normal, rng.uniform(0.0, 2.0, n), sea)
     a = speckled_facet_amplitudes(*args, backend="numpy", **kw)
     b = speckled_facet_amplitudes(*args, backend="drjit", precision="single", **kw)
     assert b.dtype == np.complex128 and np.all(np.isfinite(b))
@@ -267,10 +267,10 @@ def test_single_precision_stays_finite_at_the_extremes(table):
     normal = np.array([[-0.6, 0.0, 0.8], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0]])
     draws = (np.ones(3, complex), np.ones(3, complex))
     for cm in (None, cox_munk_parameters(6.0)):
-        args = (n_i, n_s, normal, np.ones(3), K, EPS, table, 0.0, 0.0, 0.5)
-        a = speckled_facet_amplitudes(*args, draws=draws, cox_munk=cm, backend="numpy")
-        b = speckled_facet_amplitudes(*args, draws=draws, cox_munk=cm, backend="drjit",
-                                      precision="single")
+        args = (n_i, n_s, normal, np.ones(3),
+                FacetModel(K, EPS, table, 0.0, 0.0, 0.5, cox_munk=cm))
+        a = speckled_facet_amplitudes(*args, draws=draws, backend="numpy")
+        b = speckled_facet_amplitudes(*args, draws=draws, backend="drjit", precision="single")
         assert np.all(np.isfinite(b))
         np.testing.assert_allclose(b, a, rtol=1e-2, atol=1e-2 * np.abs(a).max())
         assert np.abs(a).max() > (1e5 if cm is None else 1.0)

@@ -6,13 +6,13 @@ import numpy as np
 import pytest
 
 from seaecho.constants import C0, SURFACE_TENSION_OVER_DENSITY, G
+from seaecho.ocean.dispersion import phase_speed
 from seaecho.ocean.spectra import DirectionalSpectrum
 from seaecho.ocean.surface import SeaSurface
 from seaecho.ocean.twoscale import orbital_velocity_covariance
 from seaecho.scattering import frames
 from seaecho.scattering.breaking import (
     dissipation_exponent,
-    phase_speed,
     wind_growth_rate,
 )
 from seaecho.scattering.dynamics import (
@@ -25,7 +25,7 @@ from seaecho.scattering.dynamics import (
     travel_fraction,
     window_autocorrelation,
 )
-from seaecho.scattering.facet import speckled_facet_amplitudes
+from seaecho.scattering.facet import FacetModel, speckled_facet_amplitudes
 from seaecho.scattering.spectrum_table import BraggSpectrumTable
 
 K = 2 * np.pi * 10e9 / C0
@@ -103,9 +103,9 @@ def _bragg_series(p_plus, theta_deg=45.0, prf=200.0, n=256):
     table = _constant_table(1e-8)
     out = []
     for p in range(n):
-        a = speckled_facet_amplitudes(n_i, n_s, normal, np.ones(m), K, EPS, table, 0.01,
-                                      0.01, 0.0, draws=sp.draws(p / prf), model="spm",
-                                      backend="numpy")
+        a = speckled_facet_amplitudes(n_i, n_s, normal, np.ones(m),
+                                      FacetModel(K, EPS, table, 0.01, 0.01, 0.0, model="spm"),
+                                      draws=sp.draws(p / prf), backend="numpy")
         out.append(a[:, 3].sum())
     spec = np.abs(np.fft.fftshift(np.fft.fft(np.array(out) * np.hanning(n)))) ** 2
     f = np.fft.fftshift(np.fft.fftfreq(n, 1 / prf))

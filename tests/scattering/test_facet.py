@@ -15,6 +15,7 @@ from scattering_helpers import gaussian_spectrum
 from seaecho.geometry import frames
 from seaecho.scattering.blend import blend
 from seaecho.scattering.facet import (
+    FacetModel,
     FacetTerms,
     _drjit_available,
     bragg_vectors,
@@ -50,7 +51,8 @@ def test_flat_facets_equal_mean_plane_models(model):
     ti, ts, ps = _geometry()
     n_i, n_s = frames.directions_from_angles(ti, 0.3, ts, ps + 0.3)
     normal = np.broadcast_to(frames.Z_HAT, n_i.shape)
-    s = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01, 0.5, model=model)
+    s = facet_sigma(n_i, n_s, normal,
+                    FacetModel(K, EPS, gaussian_spectrum, 0.02, 0.01, 0.5, model=model))
     s_spm = spm_sigma(ti, 0.3, ts, ps + 0.3, K, EPS, gaussian_spectrum)
     s_k = kirchhoff_sigma(ti, 0.3, ts, ps + 0.3, EPS, 0.02, 0.01, 0.5, warn=False)
     beta = np.degrees(frames.beta_angle(n_i, n_s))
@@ -68,8 +70,9 @@ def test_precomputed_local_frames_give_same_result():
     th = frames.local_angles(n_i, n_s, normal)
     rot = frames.tilt_rotation(n_i, n_s, normal)
     local = dict(theta_i=th[0], theta_s=th[1], phi=th[2], rot_i=rot[0], rot_s=rot[1])
-    a = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.01, 0.01)
-    b = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.01, 0.01, local=local)
+    sea = FacetModel(K, EPS, gaussian_spectrum, 0.01, 0.01)
+    a = facet_sigma(n_i, n_s, normal, sea)
+    b = facet_sigma(n_i, n_s, normal, sea, local=local)
     np.testing.assert_allclose(a, b, rtol=1e-12)
 
 
@@ -79,8 +82,9 @@ def test_spectrum_values_at_bragg_vectors_equal_callable():
     normal = np.tile([0.1, 0.0, 1.0], (len(ti), 1)) / np.hypot(0.1, 1.0)
     kb = bragg_vectors(n_i, n_s, normal, K)
     values = gaussian_spectrum(kb[:, 0], kb[:, 1])
-    a = facet_sigma(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01, model="spm")
-    b = facet_sigma(n_i, n_s, normal, K, EPS, values, 0.02, 0.01, model="spm")
+    a = facet_sigma(n_i, n_s, normal,
+                    FacetModel(K, EPS, gaussian_spectrum, 0.02, 0.01, model="spm"))
+    b = facet_sigma(n_i, n_s, normal, FacetModel(K, EPS, values, 0.02, 0.01, model="spm"))
     np.testing.assert_allclose(a, b, rtol=1e-12)
 
 
@@ -88,10 +92,10 @@ def test_wake_damping_removes_bragg_part():
     ti, ts, ps = _geometry()
     n_i, n_s = frames.directions_from_angles(ti, 0.0, ts, ps)
     normal = np.broadcast_to(frames.Z_HAT, n_i.shape)
-    t0 = facet_terms(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01)
-    t1 = facet_terms(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01,
+    t0 = facet_terms(n_i, n_s, normal, FacetModel(K, EPS, gaussian_spectrum, 0.02, 0.01))
+    t1 = facet_terms(n_i, n_s, normal, FacetModel(K, EPS, gaussian_spectrum, 0.02, 0.01),
                      wake_damping=np.ones(len(ti)))
-    t_half = facet_terms(n_i, n_s, normal, K, EPS, gaussian_spectrum, 0.02, 0.01,
+    t_half = facet_terms(n_i, n_s, normal, FacetModel(K, EPS, gaussian_spectrum, 0.02, 0.01),
                          wake_damping=np.full(len(ti), 0.5))
     np.testing.assert_allclose(t1.sigma(), t0.weight * np.abs(t0.specular) ** 2)
     np.testing.assert_allclose(np.abs(t_half.bragg) ** 2, 0.5 * np.abs(t0.bragg) ** 2)
@@ -104,8 +108,8 @@ def test_speckle_statistics_and_hhvv_coherence():
                                              np.radians(150))
     normal = np.array([0.05, 0.08, 1.0]) / np.linalg.norm([0.05, 0.08, 1.0])
     nn = np.broadcast_to(normal, (n, 3))
-    terms = facet_terms(np.broadcast_to(n_i, (n, 3)), np.broadcast_to(n_s, (n, 3)), nn, K,
-                        EPS, gaussian_spectrum, 0.004, 0.003)
+    terms = facet_terms(np.broadcast_to(n_i, (n, 3)), np.broadcast_to(n_s, (n, 3)), nn,
+                        FacetModel(K, EPS, gaussian_spectrum, 0.004, 0.003))
     area = np.full(n, 2.0)
     a = speckle_amplitudes(terms, area, np.random.default_rng(20261122))
     sigma = terms.sigma()[0]
@@ -122,9 +126,9 @@ def test_speckle_statistics_and_hhvv_coherence():
     est = np.mean(a[:, 0] * a[:, 3].conj()) / np.sqrt(mean[0] * mean[3])
     assert abs(est - gamma) < 0.01
     # A single mechanism is fully coherent.
-    assert np.allclose(np.abs(hhvv_coherence(facet_terms(
-        n_i[None], n_s[None], normal[None], K, EPS, gaussian_spectrum, 0.004, 0.003,
-        model="spm"))), 1.0)
+    spm = FacetModel(K, EPS, gaussian_spectrum, 0.004, 0.003, model="spm")
+    assert np.allclose(np.abs(hhvv_coherence(facet_terms(n_i[None], n_s[None], normal[None],
+                                                         spm))), 1.0)
 
 
 def test_speckle_covariance_matches_eq_p5_for_mixed_mechanisms():
@@ -150,7 +154,8 @@ def test_amplitudes_reproducible_and_calibrated_by_area():
     ti, ts, ps = _geometry()
     n_i, n_s = frames.directions_from_angles(ti, 0.0, ts, ps)
     normal = np.broadcast_to(frames.Z_HAT, n_i.shape)
-    args = (n_i, n_s, normal, np.full(len(ti), 3.0), K, EPS, gaussian_spectrum, 0.02, 0.01)
+    args = (n_i, n_s, normal, np.full(len(ti), 3.0),
+            FacetModel(K, EPS, gaussian_spectrum, 0.02, 0.01))
     a1 = facet_amplitudes(*args, np.random.default_rng(5))
     a2 = facet_amplitudes(*args, np.random.default_rng(5))
     np.testing.assert_array_equal(a1, a2)
@@ -160,8 +165,9 @@ def test_amplitudes_reproducible_and_calibrated_by_area():
 def test_spm_validity_warning():
     n_i, n_s = frames.directions_from_angles(0.5, 0.0, 0.5, np.pi)
     with pytest.warns(SPMValidityWarning):
-        facet_sigma(n_i[None], n_s[None], frames.Z_HAT[None], K, EPS, gaussian_spectrum,
-                    0.01, 0.01, small_scale_height_variance=1e-2)
+        facet_sigma(n_i[None], n_s[None], frames.Z_HAT[None],
+                    FacetModel(K, EPS, gaussian_spectrum, 0.01, 0.01),
+                    small_scale_height_variance=1e-2)
 
 
 unit = arrays(np.float64, (3,), elements=st.floats(-1, 1)).filter(
@@ -183,8 +189,8 @@ def test_no_nan_or_inf_for_any_geometry(a, b, c, model):
     cases_s = np.array([n_s, -n_i, n_i, zen, -zen, graz, nn, np.array([-1.0, 0, 0])])
     normals = np.array([nn, nn, nn, zen, zen, zen, nn, zen])
     with np.errstate(invalid="raise", divide="raise", over="raise"):
-        s = facet_sigma(cases_i, cases_s, normals, K, EPS, gaussian_spectrum, 0.01, 0.005,
-                        0.3, model=model)
+        s = facet_sigma(cases_i, cases_s, normals,
+                        FacetModel(K, EPS, gaussian_spectrum, 0.01, 0.005, 0.3, model=model))
     assert np.all(np.isfinite(s)) and np.all(s >= 0)
 
 
@@ -201,12 +207,14 @@ def test_accepts_the_geometry_stage_facets():
     zy = 0.03 * np.cos(0.3 * xx + 0.1 * yy)
     fac = analytic_facets(x, y, z, zx, zy, None, np.array([-500.0, 100.0, 200.0]),
                           np.array([300.0, -400.0, 100.0]), shadowing="none")
-    a = facet_sigma(fac.n_i, fac.n_s, fac.normal, K, EPS, gaussian_spectrum, 0.01, 0.005)
-    b = facet_sigma(fac.n_i, fac.n_s, fac.normal, K, EPS, gaussian_spectrum, 0.01, 0.005,
-                    local=fac)
+    a = facet_sigma(fac.n_i, fac.n_s, fac.normal,
+                    FacetModel(K, EPS, gaussian_spectrum, 0.01, 0.005))
+    b = facet_sigma(fac.n_i, fac.n_s, fac.normal,
+                    FacetModel(K, EPS, gaussian_spectrum, 0.01, 0.005), local=fac)
     np.testing.assert_allclose(a, b, rtol=1e-10, atol=1e-14 * a.max())
-    amp = facet_amplitudes(fac.n_i, fac.n_s, fac.normal, fac.area, K, EPS, gaussian_spectrum,
-                           0.01, 0.005, np.random.default_rng(1), local=fac)
+    amp = facet_amplitudes(fac.n_i, fac.n_s, fac.normal, fac.area,
+                           FacetModel(K, EPS, gaussian_spectrum, 0.01, 0.005),
+                           np.random.default_rng(1), local=fac)
     assert amp.shape == (fac.n_facets, 4)
 
 
@@ -260,8 +268,9 @@ def test_nadir_specular_is_barrick_closed_form(backend, cm, gaussian_table):
     n_i, n_s, nn = _backscatter(0.0)
     p = cox_munk_parameters(7.0) if cm else None
     mu, mc = (p.mss_upwind, p.mss_crosswind) if cm else (0.02, 0.012)
-    t = facet_terms(n_i, n_s, nn, K, EPS, gaussian_table, mu, mc, 0.4, model="kirchhoff",
-                    cox_munk=p, backend=backend)
+    t = facet_terms(n_i, n_s, nn,
+                    FacetModel(K, EPS, gaussian_table, mu, mc, 0.4, model="kirchhoff", cox_munk=p),
+                    backend=backend)
     r0 = abs((1 - np.sqrt(EPS)) / (1 + np.sqrt(EPS))) ** 2
     peak = 1.0 + p.c40 / 8 + p.c22 / 4 + p.c04 / 8 if cm else 1.0
     expected = r0 / (2.0 * np.sqrt(mu * mc)) * peak
@@ -280,7 +289,8 @@ def test_upwind_backscatter_is_the_geometric_optics_closed_form(backend, theta_d
     th = np.radians(theta_deg)
     n_i, n_s, nn = _backscatter(th)
     mu, mc = 0.02, 0.012
-    t = facet_terms(n_i, n_s, nn, K, EPS, gaussian_table, mu, mc, 0.0, model="kirchhoff",
+    t = facet_terms(n_i, n_s, nn,
+                    FacetModel(K, EPS, gaussian_table, mu, mc, 0.0, model="kirchhoff"),
                     backend=backend)
     r0 = abs((1 - np.sqrt(EPS)) / (1 + np.sqrt(EPS))) ** 2
     expected = r0 / (2 * np.sqrt(mu * mc) * np.cos(th) ** 4) * np.exp(-np.tan(th) ** 2
@@ -300,7 +310,7 @@ def test_bragg_backscatter_is_the_classic_small_perturbation_formula(backend, th
     # accuracy is tested in test_drjit_kernel.py).
     th = np.radians(theta_deg)
     n_i, n_s, nn = _backscatter(th)
-    t = facet_terms(n_i, n_s, nn, K, EPS, gaussian_table, 0.01, 0.01, model="spm",
+    t = facet_terms(n_i, n_s, nn, FacetModel(K, EPS, gaussian_table, 0.01, 0.01, model="spm"),
                     backend=backend)
     c, s2 = np.cos(th), np.sin(th) ** 2
     r = np.sqrt(EPS - s2)
@@ -321,10 +331,12 @@ def test_blend_weights_at_the_papers_angles(backend, gaussian_table):
     # on HV, VH; and the speckled amplitudes are eq P4 with those weights.
     for beta, channels in ((6 * np.pi, [0, 3]), (20 * np.pi, [1, 2])):
         n_i, n_s, nn = _backscatter(np.radians(beta))
-        t = facet_terms(n_i, n_s, nn, K, EPS, gaussian_table, 0.01, 0.01, backend=backend)
+        t = facet_terms(n_i, n_s, nn, FacetModel(K, EPS, gaussian_table, 0.01, 0.01),
+                        backend=backend)
         np.testing.assert_allclose(t.weight[:, channels], 0.1, rtol=1e-12)
         draws = speckle_draws(3, np.random.default_rng(4))
-        a = speckled_facet_amplitudes(n_i, n_s, nn, np.full(3, 2.0), K, EPS, gaussian_table,
-                                      0.01, 0.01, draws=draws, backend=backend)
+        a = speckled_facet_amplitudes(n_i, n_s, nn, np.full(3, 2.0),
+                                      FacetModel(K, EPS, gaussian_table, 0.01, 0.01), draws=draws,
+                                      backend=backend)
         np.testing.assert_allclose(a, speckle_amplitudes(t, np.full(3, 2.0), draws=draws),
                                    rtol=1e-12, atol=1e-14 * np.abs(a).max())

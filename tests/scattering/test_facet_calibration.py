@@ -10,7 +10,7 @@ import pytest
 from scattering_helpers import gaussian_spectrum
 
 from seaecho.scattering import frames
-from seaecho.scattering.facet import facet_amplitudes
+from seaecho.scattering.facet import FacetModel, facet_amplitudes
 from seaecho.scattering.spm import spm_sigma
 
 EPS = 55.9 - 37.0j
@@ -30,9 +30,9 @@ def test_amplitudes_calibrated_by_area_against_flat_spm(area):
     n_i, n_s = frames.directions_from_angles(ti, 0.0, ts, ps)
     normal = np.broadcast_to(frames.Z_HAT, (n, 3))
     args = (np.broadcast_to(n_i, (n, 3)), np.broadcast_to(n_s, (n, 3)), normal,
-            np.full(n, area), K, EPS, gaussian_spectrum, 0.02, 0.01)
-    a = facet_amplitudes(*args, np.random.default_rng(5), model="spm")
-    np.testing.assert_array_equal(a, facet_amplitudes(*args, np.random.default_rng(5),
-                                                      model="spm"))  # reproducible
+            np.full(n, area), FacetModel(K, EPS, gaussian_spectrum, 0.02, 0.01, model="spm"))
+    a = facet_amplitudes(*args, np.random.default_rng(5))
+    np.testing.assert_array_equal(a, facet_amplitudes(*args, np.random.default_rng(5))
+                                  )  # reproducible
     expected = area * spm_sigma(ti, 0.0, ts, ps, K, EPS, gaussian_spectrum)
     np.testing.assert_allclose(np.mean(np.abs(a) ** 2, axis=0), expected, rtol=0.02)

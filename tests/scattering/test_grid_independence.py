@@ -73,8 +73,8 @@ def _sigma0(z_fine, n, tilt):
     n_i = np.array([-np.cos(GRAZING), 0.0, -np.sin(GRAZING)])
     vis = (normal @ n_i < 0) & (normal @ -n_i > 0)
     ni = np.broadcast_to(n_i, normal.shape)
-    opts = m.facet_options if tilt else {}
-    sig = facet_sigma(ni, -ni, normal, *m.facet_model, **opts)
+    sea = m.facet_model if tilt else m.facet_model.with_(tilt=None)
+    sig = facet_sigma(ni, -ni, normal, sea)
     # per unit horizontal area of the mesh, which covers (n - 1)^2 cells of the tile
     return 10 * np.log10((area * vis) @ sig / ((n - 1) * L / n) ** 2)
 

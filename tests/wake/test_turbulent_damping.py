@@ -113,10 +113,9 @@ def test_simulated_slick_contrast_against_huehnerfuss_1978():
         c_f = film_contrast_db(_bragg(13.9e9, theta), 1.0e4)
         ti = np.full(1, np.radians(theta))
         n_i, n_s = frames.directions_from_angles(ti, 0.0, ti, np.pi)
-        args = (n_i, n_s, np.broadcast_to(frames.Z_HAT, n_i.shape), *sea.facet_model)
-        clean = facet_sigma(*args, backend="numpy", **sea.facet_options)
-        film = facet_sigma(*args, backend="numpy", wake_damping=np.array([1 - 10 ** (c_f / 10)]),
-                           **sea.facet_options)
+        args = (n_i, n_s, np.broadcast_to(frames.Z_HAT, n_i.shape), sea.facet_model)
+        clean = facet_sigma(*args, backend="numpy")
+        film = facet_sigma(*args, backend="numpy", wake_damping=np.array([1 - 10 ** (c_f / 10)]))
         reduction = -10.0 * np.log10(film / clean)[0, [0, 3]]  # HH, VV
         assert np.all(np.abs(reduction - 7.3) <= 3.5), (theta, reduction)
         np.testing.assert_allclose(reduction, -c_f, atol=0.05)
@@ -226,9 +225,9 @@ def test_simulated_wake_to_sea_contrast_through_the_facet_model():
         ti = np.full(xi.size, np.radians(theta_deg))
         n_i, n_s = frames.directions_from_angles(ti, 0.0, ti, np.pi)
         normal = np.broadcast_to(frames.Z_HAT, n_i.shape)
-        args = (n_i, n_s, normal, *sea.facet_model)
-        sea_only = facet_sigma(*args, backend="numpy", **sea.facet_options)
-        wake = facet_sigma(*args, backend="numpy", wake_damping=d, **sea.facet_options)
+        args = (n_i, n_s, normal, sea.facet_model)
+        sea_only = facet_sigma(*args, backend="numpy")
+        wake = facet_sigma(*args, backend="numpy", wake_damping=d)
         return 10.0 * np.log10(wake / sea_only)[:, [0, 3]], _contrast_db(d)  # HH, VV
 
     for theta in (20.0, 30.0, 45.0):

@@ -97,6 +97,7 @@ from scipy.fft import next_fast_len
 
 from ..backend import NUMPY, Boundary, Vec3, aligned, drjit_namespace
 from ..constants import C0
+from ..processing.windows import cosine_series
 from ..radar.equation import flight
 from .windows import AzimuthWindow
 
@@ -211,22 +212,6 @@ def doppler_frequency(xp, x: Any, tx: Any, rx: Any, tx_velocity: Any, rx_velocit
     return xp.dot(a, tx_velocity) / xp.norm(a) + xp.dot(b, rx_velocity) / xp.norm(b)
 
 
-def azimuth_window(xp, xi: Any, coef: list) -> Any:
-    """W(xi) of eq (W1) (``imaging.windows``) for |xi| <= 1/2, the caller masks outside:
-    ``sum_m c_m cos(2 pi m xi)`` with cos(m t) by the Chebyshev recurrence [-].
-
-    ``coef``: the normalised coefficients as namespace constants (float32).
-    """
-    c1 = xp.cos(xi * (2.0 * np.pi))
-    w = coef[0]
-    prev, cur = 1.0, c1
-    for m in range(1, len(coef)):
-        if m > 1:  # cos(m t) = 2 cos(t) cos((m-1) t) - cos((m-2) t)
-            prev, cur = cur, 2.0 * c1 * cur - prev
-        w = w + coef[m] * cur
-    return w
-
-
 def pulse_terms(xp, x: Any, pulse: dict[str, Any], par: dict[str, Any]) -> dict[str, Any]:
     """Eqs (B1)-(B4) for pixels ``x`` and one pulse (or broadcast pulses), namespace ``xp``.
 
@@ -256,7 +241,7 @@ def pulse_terms(xp, x: Any, pulse: dict[str, Any], par: dict[str, Any]) -> dict[
                           pulse["rx_velocity"])
     xi = xp.single(f * par["inv_lb"] - pulse["doppler_centroid"] * par["inv_b"])
     band = xp.abs(xi) <= 0.5
-    w_band = xp.select(band, azimuth_window(xp, xi, par["coef"])
+    w_band = xp.select(band, cosine_series(xp, xi, par["coef"])
                        * xp.single(pulse["weight"]), 0.0)
     # Eq (B3): the left upsampled sample and the fraction
     u = (tau - par["t0"]) * par["rate"]

@@ -9,11 +9,14 @@ grid (nearest cell; NaN / 0 outside the sea tile):
 - ``turbulent_wake``: the dataset's turbulent-wake mask (Bragg damping, dark in images);
 - ``kelvin_wake``: where the Kelvin wake's local amplitude exceeds the sea's rms height.
   The local amplitude is sqrt(2 <z_w^2>), <.> a Gaussian average of standard deviation
-  a quarter of the transverse wavelength 2 pi V^2 / g (so that it follows the envelope of
+  a quarter of the transverse wavelength 2 pi V^2 / g (:func:`seaecho.wake.michell.
+  transverse_wavelength`, V from the ship's track; so that it follows the envelope of
   the divergent waves, not their crests); the sea's rms height is that of elevation minus
-  wake elevation. Inside it and outside the turbulent wake are the wake arms;
+  wake elevation. Inside it and outside the turbulent wake are the wake arms. A run of
+  one pulse does not give the speed: no arms are marked;
 - ``open_sea``: inside the tile, where the Kelvin amplitude is below a tenth of the sea's
-  rms height and outside the turbulent wake: the reference for sea levels;
+  rms height (with an unknown speed: the wake elevation itself) and outside the turbulent
+  wake: the reference for sea levels;
 - ``tile``: inside the simulated sea tile.
 
 The ship's position is that at the time of the sea surface the echoes were computed on
@@ -26,7 +29,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from ..constants import G
+from ..wake.michell import transverse_wavelength
 
 __all__ = ["surface_time_index", "truth_on_grid"]
 
@@ -106,16 +109,20 @@ def truth_on_grid(raw, x: NDArray, y: NDArray, channels: list[str]) -> tuple[dic
                                                    False).astype(np.uint8),
                               {"units": "1", "long_name": "turbulent wake (Bragg damped)"})
     kelvin = np.zeros(tile.shape, dtype=bool)
-    if np.any(wake != 0) and "ship_position" in raw:
+    speed = _ship_speed(raw) if "ship_position" in raw else 0.0
+    if np.any(wake != 0) and speed > 0:
         from scipy.ndimage import gaussian_filter
 
-        scene_ship = _ship_speed(raw)
-        lam_t = 2.0 * np.pi * scene_ship**2 / G if scene_ship > 0 else 8.0
+        lam_t = transverse_wavelength(speed)
         dx = float(xn[1] - xn[0])
         amp = np.sqrt(2.0 * gaussian_filter(wake * wake, 0.25 * lam_t / dx, mode="nearest"))
         kelvin = np.where(tile, amp[np.ix_(jy, jx)] > sea_rms, False)
         quiet = amp[np.ix_(jy, jx)] < 0.1 * sea_rms
         attrs["kelvin_transverse_wavelength_m"] = lam_t
+    elif np.any(wake != 0):
+        # the track does not give the speed (one pulse): the arms are not located, and
+        # the open sea is where the wake's own elevation is below a tenth of the sea's
+        quiet = np.abs(wake[np.ix_(jy, jx)]) < 0.1 * sea_rms
     else:
         quiet = np.ones(tile.shape, dtype=bool)
     turb = data["turbulent_wake"][1].astype(bool)

@@ -15,14 +15,45 @@ NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 References
 ----------
 .. [1] H. Lamb, *Hydrodynamics*, 6th ed., Cambridge University Press, 1932, arts. 228, 267.
+.. [2] T. Elfouhaily, B. Chapron, K. Katsaros and D. Vandemark, "A unified directional
+   spectrum for long and short wind-driven waves", J. Geophys. Res. 102(C7),
+   15781-15796, 1997.
 """
 
 from __future__ import annotations
+
+import math
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..constants import SURFACE_TENSION_OVER_DENSITY, G
+
+#: Wavenumber of the minimum phase speed k_m = sqrt(g rho / tau) [rad/m]: 369.8 rad/m, the
+#: k_m = 370 rad/m of Elfouhaily et al. (1997) and the k_gamma of Kudryavtsev et al.
+#: (2003), where gravity and surface tension restore the surface equally (eq 15').
+CAPILLARY_WAVENUMBER = math.sqrt(G / SURFACE_TENSION_OVER_DENSITY)
+
+
+def omega_squared_deep(k: Any, surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
+                       g: float = G) -> Any:
+    """omega^2 = g K + (tau/rho) K^3 of deep water [rad^2/s^2] (eq 15', tanh -> 1).
+
+    The one place the restoring forces are written: plain arithmetic, so that it runs on
+    numpy arrays and on the Dr.Jit arrays of a fused kernel alike (the Bragg lines of
+    :mod:`seaecho.scattering.dynamics`).
+
+    Parameters
+    ----------
+    k : array_like or Dr.Jit array
+        Wavenumber modulus K >= 0 [rad/m].
+    surface_tension : float
+        Kinematic surface tension tau/rho [m^3/s^2].
+    g : float
+        Acceleration of gravity [m/s^2].
+    """
+    return k * (g + surface_tension * k * k)  # Eq. 15' restoring forces
 
 
 def angular_frequency(
@@ -50,7 +81,7 @@ def angular_frequency(
         omega >= 0 [rad/s], same shape as ``k``.
     """
     k = np.abs(np.asarray(k, dtype=np.float64))
-    omega2 = k * (g + surface_tension * k * k)  # Eq. 15' restoring forces
+    omega2 = omega_squared_deep(k, surface_tension, g)
     if depth is not None:
         if not depth > 0:
             raise ValueError(f"depth = {depth} m: must be > 0 (or None for deep water)")
@@ -64,7 +95,11 @@ def phase_speed(
     surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
     g: float = G,
 ) -> NDArray[np.float64]:
-    """Phase speed c = omega / K [m/s] (infinite at K = 0 is replaced by sqrt(g d) or inf)."""
+    """Phase speed c = omega / K [m/s] (infinite at K = 0 is replaced by sqrt(g d) or inf).
+
+    In deep water c = sqrt(g / K (1 + (K / k_m)^2)), the form of Elfouhaily et al.
+    (1997) with k_m = :data:`CAPILLARY_WAVENUMBER`.
+    """
     k = np.abs(np.asarray(k, dtype=np.float64))
     with np.errstate(divide="ignore", invalid="ignore"):
         c = angular_frequency(k, depth, surface_tension, g) / k
@@ -72,4 +107,20 @@ def phase_speed(
     return np.where(k > 0, c, limit)
 
 
-__all__ = ["angular_frequency", "phase_speed"]
+def horizontal_to_vertical_ratio(k: ArrayLike, depth: float | None = None
+                                 ) -> NDArray[np.float64] | float:
+    """coth(K d) [-]: the horizontal over the vertical orbital amplitude at the surface.
+
+    Airy waves (Lamb 1932, art. 228): the surface particles of a wave of height amplitude
+    a move horizontally by a coth(K d) and vertically by a; 1 in deep water (``depth``
+    None), where the orbits are circles. ``inf`` at K = 0 in finite depth.
+    """
+    if depth is None:
+        return 1.0
+    k = np.abs(np.asarray(k, dtype=np.float64))
+    with np.errstate(divide="ignore"):
+        return 1.0 / np.tanh(k * depth)  # Lamb art. 228
+
+
+__all__ = ["CAPILLARY_WAVENUMBER", "angular_frequency", "horizontal_to_vertical_ratio",
+           "omega_squared_deep", "phase_speed"]

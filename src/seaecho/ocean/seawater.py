@@ -39,10 +39,8 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..constants import EPS0
 from ..warnings import ValidityWarning
-
-#: Vacuum permittivity [F/m] (CODATA 2018).
-EPS0 = 8.8541878128e-12
 
 
 def _check(frequency: NDArray, temperature_c: NDArray, salinity_psu: NDArray,

@@ -62,13 +62,15 @@ from scipy.special import gammaln
 
 from ..constants import G
 from ..warnings import ValidityWarning
-from .wind import KAPPA, u10_from_u19_5
+from .dispersion import CAPILLARY_WAVENUMBER, angular_frequency, phase_speed
+from .wind import OMEGA_C_DEVELOPED, friction_velocity, u10_from_u19_5
 
 #: Pierson-Moskowitz constants (paper eq 5; Pierson & Moskowitz 1964).
 PM_A0 = 8.1e-3
 PM_B0 = 0.74
-#: Wavenumber of the minimum phase speed [rad/m] and that speed [m/s] (Elfouhaily et al.).
-K_M = 370.0
+#: Wavenumber of the minimum phase speed [rad/m] (Elfouhaily et al.'s k_m = 370 rad/m: the
+#: dispersion relation's sqrt(g rho / tau) = 369.8 rad/m) and that speed [m/s] (their c_m).
+K_M = CAPILLARY_WAVENUMBER
 C_M = 0.23
 
 
@@ -233,7 +235,7 @@ def jonswap(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArray[n
     u10 = float(u10_from_u19_5(u19_5))
     alpha, omega_p = jonswap_parameters(u10, fetch)
     k, pos, ks = _positive(k)
-    omega = np.sqrt(G * ks)  # deep-water dispersion for the change of variable
+    omega = angular_frequency(ks, surface_tension=0.0)  # JONSWAP's gravity-wave relation
     sigma = np.where(omega <= omega_p, 0.07, 0.09)
     r = np.exp(-((omega - omega_p) ** 2) / (2.0 * sigma**2 * omega_p**2))
     s_omega = alpha * G**2 * omega**-5 * np.exp(-1.25 * (omega_p / omega) ** 4) * 3.3**r
@@ -268,8 +270,8 @@ def elfouhaily_parameters(u19_5: float, fetch: float | None = None) -> Elfouhail
     X0 = 2.2e4, 0.84 for a fully developed sea (fetch None). Peak wavenumber
     k_p = g Omega_c^2 / U10^2; gamma = 1.7 (Omega_c < 1) or 1.7 + 6 ln Omega_c, and
     delta = 0.08 (1 + 4 Omega_c^-3) (eq 3); alpha_p = 6e-3 Omega_c^0.55; friction velocity
-    from the roughness length z0 = 3.7e-5 (U10^2 / g) Omega_c^0.9 (Donelan et al. 1993) and
-    u* = kappa U10 / ln(10 / z0) (other implementations take u* = sqrt(1.44e-3) U10, 4 %
+    by the wave-age dependent law ``"donelan-1993"`` of :mod:`seaecho.ocean.wind`, the one
+    Elfouhaily et al. use (other implementations take u* = sqrt(1.44e-3) U10, 4 %
     lower at 10 m/s); alpha_m = 1e-2 (1 + ln(u*/c_m)) for u* < c_m, else
     1e-2 (1 + 3 ln(u*/c_m)), floored at 0 with a :class:`~seaecho.warnings.ValidityWarning`
     for very light winds where it goes negative. Equation numbers other than 2-3 are not
@@ -277,17 +279,16 @@ def elfouhaily_parameters(u19_5: float, fetch: float | None = None) -> Elfouhail
     """
     u10 = float(u10_from_u19_5(u19_5))
     if fetch is None:
-        omega_c = 0.84  # fully developed (fetch law for X -> infinity)
+        omega_c = OMEGA_C_DEVELOPED  # fully developed (fetch law for X -> infinity)
     else:
         x = G * fetch / u10**2
         omega_c = 0.84 * np.tanh((x / 2.2e4) ** 0.4) ** -0.75  # fetch law
     k_p = G * omega_c**2 / u10**2  # k_0 Omega_c^2, k_0 = g / U10^2
-    c_p = float(np.sqrt(G / k_p))  # deep-water phase speed at the peak (c_p = U10/Omega_c)
+    c_p = u10 / omega_c  # phase speed at the peak (definition of Omega_c = U10 / c_p)
     gamma = 1.7 if omega_c < 1.0 else 1.7 + 6.0 * np.log(omega_c)  # Eq. 3
     delta = 0.08 * (1.0 + 4.0 * omega_c**-3)  # Eq. 3
     alpha_p = 6e-3 * omega_c**0.55  # long-wave Phillips-Kitaigorodskii parameter
-    z0 = 3.7e-5 * u10**2 / G * omega_c**0.9  # roughness length (Donelan et al. 1993)
-    u_star = KAPPA * u10 / np.log(10.0 / z0)  # neutral log profile
+    u_star = float(friction_velocity("donelan-1993", u10, omega_c))  # wave-age roughness
     if u_star < C_M:
         alpha_m = 1e-2 * (1.0 + np.log(u_star / C_M))  # short-wave parameter
     else:
@@ -306,11 +307,6 @@ def elfouhaily_parameters(u19_5: float, fetch: float | None = None) -> Elfouhail
         alpha_p=float(alpha_p), alpha_m=float(alpha_m), gamma=float(gamma),
         delta=float(delta),
     )
-
-
-def _elfouhaily_phase_speed(k: NDArray[np.float64]) -> NDArray[np.float64]:
-    """c(k) = sqrt(g / k (1 + (k / k_m)^2)) [m/s] (Elfouhaily et al. 1997, deep water)."""
-    return np.sqrt(G / k * (1.0 + (k / K_M) ** 2))
 
 
 @register_spectrum("elfouhaily")
@@ -350,7 +346,7 @@ def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArra
     """
     p = elfouhaily_parameters(u19_5, fetch)
     k, pos, ks = _positive(k)
-    c = _elfouhaily_phase_speed(ks)  # phase speed with capillarity
+    c = phase_speed(ks)  # phase speed with capillarity
     l_pm = np.exp(-1.25 * (p.k_p / ks) ** 2)  # Eq. 2
     big_gamma = np.exp(-((np.sqrt(ks / p.k_p) - 1.0) ** 2) / (2.0 * p.delta**2))  # Eq. 3
     j_p = p.gamma**big_gamma  # Eq. 3
@@ -434,7 +430,7 @@ def elfouhaily_spreading(
     p = elfouhaily_parameters(u19_5, fetch)
     k = np.asarray(k, dtype=np.float64)
     ks = np.maximum(k, K_FLOOR)
-    c = _elfouhaily_phase_speed(ks)
+    c = phase_speed(ks)
     a0 = np.log(2.0) / 4.0
     a_m = 0.13 * p.u_star / C_M
     delta = np.tanh(a0 + 4.0 * (c / p.c_p) ** 2.5 + a_m * (C_M / c) ** 2.5)  # Delta(k)

@@ -56,7 +56,7 @@ import scipy.fft
 from numpy.typing import NDArray
 
 from ..constants import SURFACE_TENSION_OVER_DENSITY
-from .dispersion import angular_frequency
+from .dispersion import angular_frequency, horizontal_to_vertical_ratio
 from .spectra import K_FLOOR, DirectionalSpectrum
 
 #: Grid cells whose centre lies within this many peak wavenumbers are integrated on a
@@ -226,7 +226,7 @@ class SeaSurface:
         k = np.hypot(self._kx, self._ky)
         self._omega = angular_frequency(k, depth, surface_tension)
         with np.errstate(divide="ignore", invalid="ignore"):
-            coth = 1.0 if depth is None else 1.0 / np.tanh(k * depth)
+            coth = horizontal_to_vertical_ratio(k, depth)
             speed = np.where(k > 0, self._omega * coth / k, 0.0)
         self._ux = self._kx * speed
         self._uy = self._ky * speed

@@ -185,13 +185,13 @@ def orbital_velocity_covariance(spectrum: DirectionalSpectrum, k_min: float, k_m
     ndarray (3, 3)
         Velocity covariance in the world frame (x east, y north, z up) [m^2/s^2].
     """
-    from .dispersion import angular_frequency
+    from .dispersion import angular_frequency, horizontal_to_vertical_ratio
 
     k = _band_grid(k_min, k_max)[:, None]
     psi = np.linspace(-np.pi, np.pi, _N_PSI, endpoint=False)[None, :]
     dpsi = 2 * np.pi / _N_PSI
     w2 = angular_frequency(k, depth) ** 2
-    coth2 = 1.0 if depth is None else 1.0 / np.tanh(k * depth) ** 2
+    coth2 = horizontal_to_vertical_ratio(k, depth) ** 2
     density = spectrum.omni(k) * spectrum.spread(k, psi) * w2  # omega^2 S_1d D
     az = psi + spectrum.wind_direction
     c = np.empty((3, 3))

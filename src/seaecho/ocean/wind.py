@@ -15,12 +15,30 @@ u* = sqrt(C_D) U10, and the profile reads
     U(z) = U_{10}\\left(1 + \\frac{\\sqrt{C_D}}{\\kappa}\\,
         \\ln\\frac{z}{10\\ \\mathrm{m}}\\right)                                  (L1)
 
-with kappa = 0.41 and C_D = 1.3e-3, the value Stewart (2008) states for his conversion
-between U19.5 and U10. Eq L1 gives U19.5 = 1.0587 U10 and U12.5 = 1.0196 U10
-(equivalently a roughness length z0 = 10 m x exp(-kappa / sqrt(C_D)) = 0.115 mm).
+with kappa = 0.41 (:data:`seaecho.constants.VON_KARMAN`) and C_D = 1.3e-3, the value
+Stewart (2008) states for his conversion between U19.5 and U10. Eq L1 gives
+U19.5 = 1.0587 U10 and U12.5 = 1.0196 U10 (equivalently a roughness length
+z0 = 10 m x exp(-kappa / sqrt(C_D)) = 0.115 mm).
 Stewart's printed ratio U19.5 = 1.026 U10 (his eq 16.29) does not follow from the drag
 coefficient he states with it; seaecho uses the profile, so that the three heights agree
 with each other.
+
+**Friction velocity and roughness.** The models of seaecho that need the friction
+velocity u* each follow their own source's law; the laws are here, once, by name
+(:data:`FRICTION_VELOCITY_LAWS`), and each user names the one it takes:
+
+- ``"constant-drag"``: u* = sqrt(C_D) U10, C_D = 1.3e-3 (Stewart 2008; the law of eq L1);
+- ``"wu-1982"``: u* = U10 sqrt(C_D), C_D = (0.8 + 0.065 U10) 1e-3 (Wu 1982), the drag law
+  of the breaking-wave model of Kudryavtsev et al. (2003) (:mod:`seaecho.scattering.
+  breaking`);
+- ``"donelan-1993"``: u* = kappa U10 / ln(10 m / z0), z0 = 3.7e-5 (U10^2 / g)
+  Omega_c^0.9 (Donelan, Dobson, Smith & Anderson 1993, in the form of Elfouhaily et al.
+  1997), which depends on the inverse wave age Omega_c: the Elfouhaily spectrum's.
+
+At U10 = 10 m/s and Omega_c = 0.84 they give 0.361, 0.381 and 0.396 m/s. The roughness
+length of the KHCC03 wind growth rate, z0 = 0.018 u*^2 / g + 0.1 nu_a / u* (Charnock
+1955 with a smooth-flow term; Kudryavtsev et al. 2003, eq 21), is
+:func:`charnock_roughness_length`.
 
 "The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
 polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona,
@@ -32,15 +50,31 @@ References
    2008, sections 4.3 (the logarithmic profile, friction velocity and drag coefficient)
    and 16.3 (eq 16.29, U19.5 and U10 for C_D = 1.3e-3).
 .. [2] H. Tennekes, "The logarithmic wind profile", J. Atmos. Sci. 30(2), 234-238, 1973.
+.. [3] J. Wu, "Wind-stress coefficients over sea surface from breeze to hurricane",
+   J. Geophys. Res. 87(C12), 9704-9706, 1982.
+.. [4] M. A. Donelan, F. W. Dobson, S. D. Smith and R. J. Anderson, "On the dependence
+   of sea surface roughness on wave development", J. Phys. Oceanogr. 23, 2143-2149, 1993.
+.. [5] T. Elfouhaily, B. Chapron, K. Katsaros and D. Vandemark, "A unified directional
+   spectrum for long and short wind-driven waves", J. Geophys. Res. 102(C7),
+   15781-15796, 1997.
+.. [6] V. Kudryavtsev, D. Hauser, G. Caudal and B. Chapron, "A semiempirical model of
+   the normalized radar cross-section of the sea surface, 1. Background model",
+   J. Geophys. Res. 108(C3), 8054, 2003, eq 21.
+.. [7] H. Charnock, "Wind stress on a water surface", Q. J. R. Meteorol. Soc. 81,
+   639-640, 1955.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-#: von Karman constant [-].
-KAPPA = 0.41
+from ..constants import NU_AIR, VON_KARMAN, G
+
+#: von Karman constant [-] (the one of :mod:`seaecho.constants`).
+KAPPA = VON_KARMAN
 #: Neutral drag coefficient at 10 m [-] (Stewart 2008, with his eq 16.29).
 DRAG_COEFFICIENT_10M = 1.3e-3
 
@@ -83,5 +117,96 @@ def u12_5_from_u19_5(u19_5: ArrayLike) -> NDArray[np.float64]:
     return wind_speed_at(u19_5, 19.5, 12.5)
 
 
-__all__ = ["DRAG_COEFFICIENT_10M", "KAPPA", "u10_from_u19_5", "u12_5_from_u19_5",
+#: Charnock's constant and the smooth-flow constant of the KHCC03 roughness length [-]
+#: (Kudryavtsev et al. 2003, eq 21).
+A_CHARNOCK = 0.018
+A_SMOOTH = 0.1
+#: Inverse wave age of a fully developed sea [-] (Elfouhaily et al. 1997).
+OMEGA_C_DEVELOPED = 0.84
+
+
+def friction_velocity_constant_drag(u10: ArrayLike, inverse_wave_age: float = 0.84
+                                    ) -> NDArray[np.float64]:
+    """u* = sqrt(C_D) U10 with C_D = 1.3e-3 [m/s] (Stewart 2008 sec. 4.3; eq L1's law).
+
+    ``inverse_wave_age`` is not used (the common signature of the laws).
+    """
+    return np.sqrt(DRAG_COEFFICIENT_10M) * np.asarray(u10, dtype=np.float64)
+
+
+def friction_velocity_wu1982(u10: ArrayLike, inverse_wave_age: float = 0.84
+                             ) -> NDArray[np.float64]:
+    """u* = U10 sqrt(C_D), C_D = (0.8 + 0.065 U10) 1e-3 [m/s] (Wu 1982).
+
+    The drag law of Kudryavtsev et al. (2003) and (2005). ``inverse_wave_age`` is not used.
+    """
+    u = np.asarray(u10, dtype=np.float64)
+    return u * np.sqrt((0.8 + 0.065 * u) * 1e-3)
+
+
+def friction_velocity_donelan1993(u10: ArrayLike, inverse_wave_age: float = 0.84
+                                  ) -> NDArray[np.float64]:
+    """u* = kappa U10 / ln(10 m / z0), z0 = 3.7e-5 (U10^2 / g) Omega_c^0.9 [m/s].
+
+    The wave-age dependent roughness of Donelan et al. (1993) in the neutral log profile,
+    as Elfouhaily et al. (1997) use it for their spectrum's short-wave part.
+
+    Parameters
+    ----------
+    u10 : array_like
+        Wind speed at 10 m [m/s].
+    inverse_wave_age : float
+        Omega_c = U10 / c_p [-] (0.84: fully developed).
+    """
+    u = np.asarray(u10, dtype=np.float64)
+    z0 = 3.7e-5 * u**2 / G * inverse_wave_age**0.9  # roughness length (Donelan et al. 1993)
+    return KAPPA * u / np.log(10.0 / z0)  # neutral log profile at 10 m
+
+
+#: Friction-velocity laws by name: ``law(u10 [m/s], inverse_wave_age [-]) -> u* [m/s]``.
+FRICTION_VELOCITY_LAWS: dict[str, Callable[..., NDArray[np.float64]]] = {
+    "constant-drag": friction_velocity_constant_drag,
+    "wu-1982": friction_velocity_wu1982,
+    "donelan-1993": friction_velocity_donelan1993,
+}
+
+
+def friction_velocity(law: str, u10: ArrayLike, inverse_wave_age: float = OMEGA_C_DEVELOPED
+                      ) -> NDArray[np.float64]:
+    """Friction velocity u* [m/s] of the law named ``law`` (:data:`FRICTION_VELOCITY_LAWS`).
+
+    Parameters
+    ----------
+    law : str
+        ``"constant-drag"``, ``"wu-1982"`` or ``"donelan-1993"``.
+    u10 : array_like
+        Wind speed at 10 m [m/s].
+    inverse_wave_age : float
+        Omega_c [-] (only ``"donelan-1993"`` depends on it).
+    """
+    if law not in FRICTION_VELOCITY_LAWS:
+        raise ValueError(f"friction-velocity law = {law!r}: unknown; allowed: "
+                         f"{sorted(FRICTION_VELOCITY_LAWS)}")
+    return FRICTION_VELOCITY_LAWS[law](u10, inverse_wave_age)
+
+
+def charnock_roughness_length(u_star: ArrayLike) -> NDArray[np.float64]:
+    """Aerodynamic roughness z0 = 0.018 u*^2 / g + 0.1 nu_a / u* [m] (KHCC03 eq 21).
+
+    Charnock's (1955) law for the rough flow plus the smooth-flow term, as in
+    Kudryavtsev et al. (2003).
+
+    Parameters
+    ----------
+    u_star : array_like
+        Friction velocity [m/s].
+    """
+    us = np.asarray(u_star, dtype=np.float64)
+    return A_CHARNOCK * us**2 / G + A_SMOOTH * NU_AIR / np.maximum(us, 1e-12)
+
+
+__all__ = ["A_CHARNOCK", "A_SMOOTH", "DRAG_COEFFICIENT_10M", "FRICTION_VELOCITY_LAWS", "KAPPA",
+           "OMEGA_C_DEVELOPED", "charnock_roughness_length", "friction_velocity",
+           "friction_velocity_constant_drag", "friction_velocity_donelan1993",
+           "friction_velocity_wu1982", "u10_from_u19_5", "u12_5_from_u19_5",
            "u19_5_from_u10", "wind_speed_at"]

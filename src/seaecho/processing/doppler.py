@@ -35,17 +35,17 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .windows import sampled_window
+
 WINDOWS = ("hann", "hamming", "none")
 
 
 def _taper(n: int, window: str) -> NDArray:
-    if window == "hann":
-        return np.hanning(n + 2)[1:-1]  # no zero end points
-    if window == "hamming":
-        return np.hamming(n)
-    if window == "none":
-        return np.ones(n)
-    raise ValueError(f"window = {window!r}: allowed {', '.join(map(repr, WINDOWS))}")
+    """The taper over the pulses of a CPI: every sample inside the window (no zero end
+    point), :func:`seaecho.processing.windows.sampled_window`."""
+    if window not in WINDOWS:
+        raise ValueError(f"window = {window!r}: allowed {', '.join(map(repr, WINDOWS))}")
+    return sampled_window(window, n, open_ends=True)
 
 
 def range_doppler(compressed: ArrayLike, prf: float, cpi: int | None = None,

@@ -38,6 +38,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.fft import next_fast_len
 
+from .windows import sampled_window
+
 
 def weighting_window(kind: str, n: int, nbar: int = 5, sidelobe_db: float = 35.0
                      ) -> NDArray[np.float64]:
@@ -56,21 +58,13 @@ def weighting_window(kind: str, n: int, nbar: int = 5, sidelobe_db: float = 35.0
     Returns
     -------
     ndarray (n,)
-        w[n] >= 0 [-].
-
-    References
-    ----------
-    Harris (1978); Taylor (1955) via ``scipy.signal.windows.taylor``.
+        w[n] >= 0 [-]: the symmetric window of :func:`seaecho.processing.windows.
+        sampled_window` (end samples on the window's edges; its scale cancels in eq C1).
     """
-    if kind == "none":
-        return np.ones(n)
-    from scipy.signal import windows  # 0.6-1.4 s of imports: only for a weighting
-
-    if kind == "hamming":
-        return windows.hamming(n, sym=True)
-    if kind == "taylor":
-        return windows.taylor(n, nbar=nbar, sll=sidelobe_db, norm=False, sym=True)
-    raise ValueError(f"weighting = {kind!r}: unknown; allowed: 'none', 'hamming', 'taylor'")
+    if kind not in ("none", "hamming", "taylor"):
+        raise ValueError(f"weighting = {kind!r}: unknown; allowed: 'none', 'hamming', "
+                         "'taylor'")
+    return sampled_window(kind, n, nbar, sidelobe_db)
 
 
 def range_compress(raw: ArrayLike, pulse: ArrayLike, weighting: str = "none", *,

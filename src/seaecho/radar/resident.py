@@ -53,7 +53,14 @@ from numpy.typing import NDArray
 
 from ..backend import Boundary, drjit_namespace
 from ..geometry.mesh import facet_count, facet_geometry_in
-from ..scattering.facet import MODELS, PRECISION, mechanism_sigma, mechanisms
+from ..scattering.facet import (
+    PRECISION,
+    FacetModel,
+    facet_arrays,
+    kernel_sea,
+    mechanism_sigma,
+    mechanisms,
+)
 from ..scattering.spectrum_table import BraggSpectrumTable
 from .kernels import facet_visibility, sea_echo_terms
 from .system import DeviceEcho, PulseGeometry, RadarSystem, ScattererEcho
@@ -110,23 +117,14 @@ class ResidentSea:
     ----------
     radar : RadarSystem
         Antennas, channels, carrier, receive window.
-    facet_model : tuple
-        ``SeaModel.facet_model``: (k [rad/m], eps_r [-], Bragg spectrum table, mss_upwind,
-        mss_crosswind [-], wind_direction [rad]).
+    facet_model : seaecho.scattering.facet.FacetModel
+        ``SeaModel.facet_model``: the sea's scattering inputs, whole (wavenumber,
+        permittivity, the Bragg spectrum table, the tilting band's slope variances as
+        numbers, wind, model, tilt nodes of eq P6, breaking tilt of BR5).
     variant : str, optional
         Mitsuba variant: ``drjit.llvm`` for ``llvm_*`` (default), ``drjit.cuda`` for
         ``cuda_*`` (:func:`seaecho.backend.drjit_namespace`, which refuses a variant that
         differs from the one Mitsuba runs).
-    model : {"blend", "kirchhoff", "spm"}
-        Scattering model (as ``speckled_facet_amplitudes``).
-    cox_munk : CoxMunkParameters, optional
-        Cox-Munk slopes for the specular part.
-    tilt : TiltQuadrature, optional
-        Nodes of the Bragg term's average over the unresolved tilts (eq P6,
-        ``SeaModel.tilt``).
-    breaking_tilt : float
-        Forward tilt of the breaking zones ``theta_wb A_wb`` [rad] (BR5,
-        ``SeaModel.facet_options``).
     freeze : bool, optional
         Record the pulse's kernel once with ``drjit.freeze`` and replay it at the next
         pulses instead of tracing it in Python at each (the same bytes; tests). None
@@ -144,27 +142,24 @@ class ResidentSea:
         the tabulated spectrum).
     """
 
-    def __init__(self, radar: RadarSystem, facet_model: tuple, *, variant: str | None = None,
-                 model: str = "blend", cox_munk=None, tilt=None,
-                 breaking_tilt: float = 0.0, freeze: bool | None = None,
+    def __init__(self, radar: RadarSystem, facet_model: FacetModel, *,
+                 variant: str | None = None, freeze: bool | None = None,
                  precision: str | None = None) -> None:
-        if model not in MODELS:
-            raise ValueError(f"model = {model!r}: choose from {MODELS}")
-        k, eps_r, spectrum, mss_u, mss_c, wind = facet_model
-        if not isinstance(spectrum, BraggSpectrumTable):
+        if not isinstance(facet_model, FacetModel):
+            raise ValueError("ResidentSea takes the sea as a scattering.facet.FacetModel "
+                             "(SeaModel.facet_model)")
+        if not isinstance(facet_model.spectrum, BraggSpectrumTable):
             raise ValueError("ResidentSea needs the Bragg spectrum as a BraggSpectrumTable")
-        if np.ndim(mss_u) or np.ndim(mss_c):
+        if np.ndim(facet_model.mss_upwind) or np.ndim(facet_model.mss_crosswind):
             raise ValueError("ResidentSea takes the sub-facet slope variances as numbers")
         self.xp = drjit_namespace(variant)
         #: the namespace of the scattering formulas (eqs P1-P7)
         self.xs = self.xp.with_precision(PRECISION if precision is None else precision)
         self.radar = radar
-        self.model = model
-        self.cox_munk = cox_munk
-        self.tilt = tilt
-        self.breaking_tilt = float(breaking_tilt)
-        self._values = (float(k), complex(eps_r), spectrum, float(mss_u), float(mss_c),
-                        float(wind))
+        #: the sea's scattering inputs (eqs P1-P7)
+        self.facet_model = facet_model
+        self.model = facet_model.model
+        self.tilt = facet_model.tilt
         self._lo, self._hi = radar.window.bounds(radar.waveform.n_samples)
         self._surface: tuple[weakref.ref, dict] | None = None
         #: replay the recorded pulse kernel (``drjit.freeze``) instead of tracing it
@@ -175,25 +170,16 @@ class ResidentSea:
         self.freeze_error: str | None = None
 
     def _mechanisms(self, io: Boundary, damping: Any, breaking: Any = None):
-        """``(n_i, n_s, N) -> mechanisms`` with the sea's values as kernel constants
-        (the inputs of ``scattering.facet._kernel_inputs`` cast by ``_cast_inputs``, so
-        the same kernel values), in the namespace :attr:`xs` of the scattering formulas."""
-        xp = xs = self.xs  # here xp is the scattering precision's namespace (float32)
-        k, eps_r, table, mss_u, mss_c, wind = self._values
-
-        def lookup(kx, ky):
-            return table.lookup(xs, kx, ky)
-
-        consts = dict(k=xp.const(k), eps_r=xp.cconst(eps_r), spectrum=lookup,
-                      mss_upwind=xp.const(mss_u), mss_crosswind=xp.const(mss_c),
-                      cos_wind=xp.const(np.cos(wind)), sin_wind=xp.const(np.sin(wind)),
-                      damping=None if damping is None else xs.cast(io.array(damping)),
-                      breaking=None if breaking is None else xs.cast(io.array(breaking)),
-                      breaking_tilt=xp.const(self.breaking_tilt))
+        """``(n_i, n_s, N) -> mechanisms`` with the sea's values as kernel constants, in
+        the namespace :attr:`xs` of the scattering formulas: the values of
+        :func:`seaecho.scattering.facet.kernel_sea` and ``facet_arrays``, the functions
+        the reference path calls, so the same kernel values."""
+        xs = self.xs  # the scattering precision's namespace (float32 by default)
+        sea = kernel_sea(io, self.facet_model, xs)
+        damping, breaking = facet_arrays(io, xs, damping, breaking)
 
         def of(n_i, n_s, normal):
-            return mechanisms(xp, n_i, n_s, normal, **consts, model=self.model,
-                              cox_munk=self.cox_munk, tilt=self.tilt)
+            return mechanisms(xs, n_i, n_s, normal, sea, damping=damping, breaking=breaking)
         return of
 
     @staticmethod
@@ -262,7 +248,7 @@ class ResidentSea:
             draws={m: io.complex(d) for m, d in self._draws(draws, n, breaking).items()},
             damping=None if damping is None else io.array(damping),
             breaking=None if breaking is None else io.array(breaking),
-            table=self._values[2]._values(self.xs))
+            table=self.facet_model.spectrum._values(self.xs))
         if self.freeze:
             tau, keep, packed = self._frozen_terms(inputs, geometry, nx, ny)
         else:
@@ -466,5 +452,4 @@ def resident_sea(radar: RadarSystem, tracing, sea_model) -> ResidentSea | None:
         return None
     if variant.startswith("llvm") and not drjit_available():
         return None
-    return ResidentSea(radar, sea_model.facet_model, variant=variant,
-                       **sea_model.facet_options)
+    return ResidentSea(radar, sea_model.facet_model, variant=variant)

@@ -48,7 +48,12 @@ growth rate (K05 eq 17; KHCC03 eqs 19-21)
 
 ``beta_nu = beta - 4 nu k^2 / omega`` (viscous loss), ``n = 5`` for gravity waves (a
 smooth step to 1 above ``k_gamma / 4``, KHCC03 sec. 3), ``u_* = U10 sqrt(C_D)`` with
-``C_D = (0.8 + 0.065 U10) 1e-3`` (Wu 1982). ``q`` therefore depends only on the wind
+``C_D = (0.8 + 0.065 U10) 1e-3`` (Wu 1982: the drag law KHCC03 use, law ``"wu-1982"`` of
+:mod:`seaecho.ocean.wind`, which also holds z0). The phase speed ``c`` and ``omega`` are
+the dispersion relation's (:mod:`seaecho.ocean.dispersion`, with capillarity),
+``kappa``, ``rho_a``, ``nu_a`` and the viscosity ``nu`` of sea water are those of
+:mod:`seaecho.constants` (KHCC03 round kappa to 0.4; seaecho's 0.41 lowers C_beta's log
+term by 2.4 %). ``q`` therefore depends only on the wind
 speed and the radar wavenumber: it is the KHCC03 model's own value, not a property of
 the wave spectrum used for the Bragg part.
 
@@ -131,8 +136,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..backend import NUMPY, Boundary, Mat2
-from ..constants import RHO_SEA_WATER, SURFACE_TENSION_OVER_DENSITY, G
+from ..constants import NU_SEA_WATER, RHO_AIR, RHO_SEA_WATER, VON_KARMAN
 from ..geometry import frames as frames_ns
+from ..ocean.dispersion import CAPILLARY_WAVENUMBER, angular_frequency, phase_speed
+from ..ocean.wind import charnock_roughness_length, friction_velocity
 from . import frames
 
 #: Mean square slope of the enhanced roughness of breaking zones s_wb^2 [-] (KHCC03).
@@ -149,47 +156,12 @@ N_GRAVITY = 5.0
 B_R = 0.1
 #: Shortest breakers counted [rad/m]: wavelength 0.3 m (K05, above eq 19).
 K_WB_MAX = 2.0 * np.pi / 0.3
-#: von Karman constant in C_beta [-] (KHCC03).
-KAPPA_VK = 0.4
-#: Charnock constant and smooth-flow constant of z0 [-] (KHCC03 eq 21).
-A_CHARNOCK = 0.018
-A_SMOOTH = 0.1
-#: Air density [kg/m^3] and kinematic viscosity of air [m^2/s] (15 degC).
-RHO_AIR = 1.225
-NU_AIR = 1.47e-5
-#: Kinematic viscosity of sea water [m^2/s] (20 degC).
-NU_WATER = 1.05e-6
+#: The friction-velocity law of KHCC03 and K05 (:data:`seaecho.ocean.wind.
+#: FRICTION_VELOCITY_LAWS`): Wu (1982).
+FRICTION_LAW = "wu-1982"
 
 
 # --- wind and waves (BR4) -----------------------------------------------------------
-
-def friction_velocity(u10: ArrayLike) -> NDArray:
-    """Friction velocity ``u_* = U10 sqrt(C_D)``, ``C_D = (0.8 + 0.065 U10) 1e-3`` [m/s].
-
-    Parameters
-    ----------
-    u10 : array_like
-        Wind speed at 10 m [m/s].
-
-    References
-    ----------
-    .. [1] Wu (1982), the drag law used by KHCC03 and K05.
-    """
-    u = np.asarray(u10, dtype=float)
-    return u * np.sqrt((0.8 + 0.065 * u) * 1e-3)
-
-
-def roughness_length(u_star: ArrayLike) -> NDArray:
-    """Aerodynamic roughness ``z0 = 0.018 u*^2 / g + 0.1 nu_a / u*`` [m] (KHCC03 eq 21)."""
-    us = np.asarray(u_star, dtype=float)
-    return A_CHARNOCK * us**2 / G + A_SMOOTH * NU_AIR / np.maximum(us, 1e-12)
-
-
-def phase_speed(k: ArrayLike) -> NDArray:
-    """Deep-water phase speed of gravity-capillary waves ``sqrt(g/k + tau k)`` [m/s]."""
-    k = np.asarray(k, dtype=float)
-    return np.sqrt(G / k + SURFACE_TENSION_OVER_DENSITY * k)
-
 
 def wind_growth_rate(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
     """Wind growth rate ``beta`` of waves of wavenumber ``k`` travelling at ``phi`` [-].
@@ -211,11 +183,11 @@ def wind_growth_rate(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
     .. [1] K05 eq 17; KHCC03 eqs 19-21.
     """
     k = np.asarray(k, dtype=float)
-    us = float(friction_velocity(u10))
-    z0 = float(roughness_length(us))
+    us = float(friction_velocity(FRICTION_LAW, u10))
+    z0 = float(charnock_roughness_length(us))
     c = phase_speed(k)
     # Eq BR4: C_beta and beta.
-    c_beta = 1.5 * (RHO_AIR / RHO_SEA_WATER) * (np.log(np.pi / (k * z0)) / KAPPA_VK - c / us)
+    c_beta = 1.5 * (RHO_AIR / RHO_SEA_WATER) * (np.log(np.pi / (k * z0)) / VON_KARMAN - c / us)
     cp = np.cos(np.asarray(phi, dtype=float))
     return np.maximum(c_beta, 0.0) * (us / c) ** 2 * cp * np.abs(cp)
 
@@ -228,9 +200,29 @@ def dissipation_exponent(k: ArrayLike) -> NDArray:
     capillary waves).
     """
     k = np.asarray(k, dtype=float)
-    k_b = 0.25 * np.sqrt(G / SURFACE_TENSION_OVER_DENSITY)
+    k_b = 0.25 * CAPILLARY_WAVENUMBER
     f = 0.5 * (1.0 + np.tanh(2.0 * np.log(k / k_b)))
     return 1.0 / ((1.0 - 1.0 / N_GRAVITY) * f + 1.0 / N_GRAVITY)
+
+
+def net_growth_rate(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
+    """``beta_nu = beta - 4 nu k^2 / omega`` [-]: wind growth less viscous loss (KHCC03).
+
+    The viscous damping rate of a free surface wave, ``4 nu k^2`` (Lamb 1932, art. 348),
+    over ``omega`` of the dispersion relation; ``nu`` the kinematic viscosity of sea water.
+
+    Parameters
+    ----------
+    k : array_like
+        Wavenumber [rad/m].
+    phi : array_like
+        Direction of travel relative to the wind [rad].
+    u10 : float
+        Wind speed at 10 m [m/s].
+    """
+    k = np.asarray(k, dtype=float)
+    omega = angular_frequency(k)
+    return wind_growth_rate(k, phi, u10) - 4.0 * NU_SEA_WATER * k**2 / omega
 
 
 def breaking_front_density(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
@@ -254,8 +246,7 @@ def breaking_front_density(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
     .. [1] Phillips (1985); KHCC03 sec. 5 (their Lambda and eq 56); K05 eq 27.
     """
     k = np.asarray(k, dtype=float)
-    omega = k * phase_speed(k)
-    beta_nu = wind_growth_rate(k, phi, u10) - 4.0 * NU_WATER * k**2 / omega
+    beta_nu = net_growth_rate(k, phi, u10)
     n = dissipation_exponent(k)
     # Eq BR3 (equilibrium form).
     return np.maximum(beta_nu, 0.0) ** ((n + 1.0) / n) / (2.0 * k)
@@ -686,11 +677,10 @@ def breaking_placement_sorted(b: NDArray, a: NDArray, q: float) -> NDArray:
 
 
 __all__ = [
-    "B_R", "C_Q", "EPS_WB", "K_WB_MAX", "N_GRAVITY", "S_WB2", "THETA_WB",
+    "B_R", "C_Q", "EPS_WB", "FRICTION_LAW", "K_WB_MAX", "N_GRAVITY", "S_WB2", "THETA_WB",
     "BreakingStatistics", "FacetBreaking", "add_breaking", "breaking_amplitude",
     "breaking_placement",
     "breaking_front_density", "breaking_matrix", "breaking_nrcs_monostatic", "breaking_sigma",
     "breaking_sigma_mean_plane", "breaking_statistics", "breaking_wavenumber_limit",
-    "dissipation_exponent", "facet_breaking", "friction_velocity", "phase_speed",
-    "roughness_length", "wind_growth_rate",
+    "dissipation_exponent", "facet_breaking", "net_growth_rate", "wind_growth_rate",
 ]

@@ -110,9 +110,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..backend import aligned
-from ..constants import SURFACE_TENSION_OVER_DENSITY, G
+from ..ocean.dispersion import angular_frequency, omega_squared_deep
 from ..rng import generator
-from .breaking import dissipation_exponent, phase_speed, wind_growth_rate
+from .breaking import dissipation_exponent, net_growth_rate
 from .spectrum_table import BraggSpectrumTable
 
 #: Evolving speckle families and their ids in the ``"speckle-evolution"`` stream.
@@ -128,10 +128,10 @@ def bragg_frequency(k: ArrayLike) -> NDArray:
     """Frequency of the Bragg line of wavenumber ``k`` [rad/m]: ``omega / 2 pi`` [Hz].
 
     Deep-water gravity-capillary waves, ``omega^2 = g k + tau k^3`` (eq D2; Valenzuela
-    1978). Bragg waves are centimetric: the depth never matters.
+    1978; :mod:`seaecho.ocean.dispersion`). Bragg waves are centimetric: the depth never
+    matters.
     """
-    k = np.asarray(k, dtype=float)
-    return np.sqrt(G * k + SURFACE_TENSION_OVER_DENSITY * k**3) / (2.0 * math.pi)
+    return angular_frequency(k) / (2.0 * math.pi)
 
 
 def window_autocorrelation(tau: ArrayLike, lifetime: float) -> NDArray:
@@ -195,8 +195,8 @@ def bragg_lifetime(k_bragg: float, u10: float) -> float:
     k = float(k_bragg)
     if not (np.isfinite(k) and k > 0.0):
         return LIFETIME_MAX
-    omega = k * float(phase_speed(k))
-    beta_nu = float(wind_growth_rate(k, 0.0, u10)) - 4.0 * 1.05e-6 * k * k / omega
+    omega = float(angular_frequency(k))
+    beta_nu = float(net_growth_rate(k, 0.0, u10))
     n = float(dissipation_exponent(k))
     if beta_nu <= 0.0:
         return LIFETIME_MAX
@@ -229,10 +229,8 @@ def travel_fraction(spectrum, kx: ArrayLike, ky: ArrayLike, u10: float) -> NDArr
     k = np.maximum(np.hypot(kx, ky), 1e-9)
     phi = np.arctan2(ky, kx) - spectrum.wind_direction
     n = dissipation_exponent(k)
-    omega = k * phase_speed(k)
-    loss = 4.0 * 1.05e-6 * k * k / omega
-    bp = np.maximum(wind_growth_rate(k, phi, u10) - loss, 0.0) ** (1.0 / n)
-    bm = np.maximum(wind_growth_rate(k, phi + np.pi, u10) - loss, 0.0) ** (1.0 / n)
+    bp = np.maximum(net_growth_rate(k, phi, u10), 0.0) ** (1.0 / n)
+    bm = np.maximum(net_growth_rate(k, phi + np.pi, u10), 0.0) ** (1.0 / n)
     tot = bp + bm
     return np.where(tot > 0, bp / np.where(tot > 0, tot, 1.0), 0.5)
 
@@ -380,8 +378,7 @@ class EvolvingSpeckle:
             out = {"specular": self.process_values("specular", t, 0.0, sigma_f, xp)}
             kx, ky = ctx["bragg_vector"]
             kb = xp.sqrt(kx * kx + ky * ky)
-            f_b = xp.sqrt(kb * (G + SURFACE_TENSION_OVER_DENSITY * kb * kb)) * (
-                1.0 / (2.0 * math.pi))
+            f_b = xp.sqrt(omega_squared_deep(kb)) * (1.0 / (2.0 * math.pi))  # eq D2
             table = self.dynamics.travel
             p_plus = 0.5 if table is None else xp.clip(table.lookup(xp, kx, ky), 0.0, 1.0)
             g_p = self.process_values("bragg+", t, f_b, sigma_f, xp)

@@ -48,7 +48,12 @@ coherence to ``|E a_hh a_vv^*| / sqrt(E|a_hh|^2 E|a_vv|^2)`` from P5
 
 Implementation
 --------------
-Eqs P1-P5 are functions over an array namespace
+The sea's scattering inputs travel as one frozen :class:`FacetModel` (wavenumber,
+permittivity, roughness spectrum, unresolved slopes, wind, model, tilt nodes, breaking
+tilt; ``SeaModel.facet_model`` makes a scene's), which every entry point takes whole;
+:func:`kernel_sea` turns it into the namespace values :func:`mechanisms` reads
+(:class:`KernelSea`), for the numpy path and for the fused kernels of ``radar.resident``
+alike. Eqs P1-P5 are functions over an array namespace
 (:mod:`seaecho.backend`): :func:`mechanisms` gives each mechanism's matrix and channel
 weights, :func:`mechanism_sigma` eq P3 and :func:`speckle` eq P4. The numpy path
 (``backend="numpy"``) and the fused Dr.Jit kernel (``backend="drjit"``, CPU or CUDA by
@@ -70,6 +75,7 @@ References
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 from collections.abc import Callable, Mapping
@@ -87,7 +93,7 @@ from .breaking import breaking_matrix
 from .kirchhoff import specular_direction, specular_matrix, specular_weight, wind_axes
 from .slopes import CoxMunkParameters
 from .spectrum_table import BraggSpectrumTable
-from .spm import HeightSpectrum, azimuth_cos_sin, bragg_matrix, bragg_vector
+from .spm import azimuth_cos_sin, bragg_matrix, bragg_vector
 from .twoscale import check_spm_validity
 
 MODELS = ("blend", "kirchhoff", "spm")
@@ -179,6 +185,83 @@ MECHANISMS = ("specular", "bragg", "bragg1", "bragg2", "bragg3", "bragg4", "brea
 
 
 @dataclass(frozen=True)
+class FacetModel:
+    """The sea's scattering inputs of eqs P1-P7 (SI), one frozen object.
+
+    The numpy path and the fused Dr.Jit kernels take it whole (:func:`kernel_sea`);
+    ``SeaModel.facet_model`` makes a scene's. The per-facet quantities that change from
+    block to block (the wake's damping, the breaking zones' fractions) are the entry
+    points' keywords.
+
+    Attributes
+    ----------
+    k : float
+        Electromagnetic wavenumber [rad/m].
+    eps_r : complex
+        Sea-water permittivity ``eps' - j eps''`` [-].
+    spectrum : callable, BraggSpectrumTable or array_like
+        Height spectrum of the unresolved roughness ``W(kx, ky)`` [m^4], world-frame
+        wavenumbers [rad/m] (``DirectionalSpectrum.height_spectrum`` or a
+        :class:`BraggSpectrumTable`), or its values at the facets' Bragg vectors
+        (:func:`bragg_vectors`), shape (N,) or scalar [m^4].
+    mss_upwind, mss_crosswind : float or array_like (N,)
+        Unresolved (sub-facet) slope variances [-], along and across the wind.
+    wind_direction : float
+        Direction the wind blows towards, CCW from +x [rad].
+    model : {"blend", "kirchhoff", "spm"}
+        ``w`` from eqs B3-B4, or 1, or 0.
+    cox_munk : CoxMunkParameters, optional
+        Use the Cox-Munk Gram-Charlier slope density (its own variances) for ``K``.
+    tilt : TiltQuadrature, optional
+        Average the Bragg term over the unresolved tilts (eq P6).
+    breaking_tilt : float
+        Forward tilt of the breaking zones ``theta_wb A_wb`` [rad] (BR5).
+    """
+
+    k: float
+    eps_r: complex
+    spectrum: Any
+    mss_upwind: Any = 0.0
+    mss_crosswind: Any = 0.0
+    wind_direction: float = 0.0
+    model: str = "blend"
+    cox_munk: CoxMunkParameters | None = None
+    tilt: TiltQuadrature | None = None
+    breaking_tilt: float = 0.0
+
+    def __post_init__(self) -> None:
+        if self.model not in MODELS:
+            raise ValueError(f"model = {self.model!r}: choose from {MODELS}")
+
+    def with_(self, **changes: Any) -> FacetModel:
+        """A copy with some attributes changed (``dataclasses.replace``)."""
+        return dataclasses.replace(self, **changes)
+
+
+@dataclass(frozen=True)
+class KernelSea:
+    """A :class:`FacetModel`'s values in an array namespace: what :func:`mechanisms` reads.
+
+    ``k``, ``eps_r``, ``mss_upwind``, ``mss_crosswind``, ``cos_wind``, ``sin_wind``
+    (the wind's unit vector) and ``breaking_tilt`` are namespace constants or per-facet
+    arrays, ``spectrum`` the look-up ``W(kx, ky)`` on namespace arrays [m^4]; ``model``,
+    ``cox_munk`` and ``tilt`` as :class:`FacetModel`.
+    """
+
+    k: Any
+    eps_r: Any
+    spectrum: Callable[[Any, Any], Any]
+    mss_upwind: Any
+    mss_crosswind: Any
+    cos_wind: Any
+    sin_wind: Any
+    breaking_tilt: Any = 0.0
+    model: str = "blend"
+    cox_munk: CoxMunkParameters | None = None
+    tilt: TiltQuadrature | None = None
+
+
+@dataclass(frozen=True)
 class FacetTerms:
     """Mechanism matrices and weights of eqs P1-P3, P6-P7 (all shaped (N, 4), HH, HV, VH, VV).
 
@@ -256,21 +339,11 @@ def mechanisms(
     n_i: Any,
     n_s: Any,
     N: Any,
-    k: Any,
-    eps_r: Any,
-    spectrum: Callable[[Any, Any], Any],
-    mss_upwind: Any,
-    mss_crosswind: Any,
-    cos_wind: Any,
-    sin_wind: Any,
+    sea: KernelSea,
     *,
-    model: str = "blend",
-    cox_munk: CoxMunkParameters | None = None,
     damping: Any = None,
-    local: tuple | None = None,
-    tilt: TiltQuadrature | None = None,
     breaking: Any = None,
-    breaking_tilt: Any = 0.0,
+    local: tuple | None = None,
     context: dict | None = None,
 ) -> dict[str, tuple[Mat2, Mat2]]:
     """Eqs P1-P2, P6-P7 and B1-B4: each mechanism's matrix and channel weights, per facet.
@@ -280,32 +353,21 @@ def mechanisms(
     xp : array namespace (:mod:`seaecho.backend`)
     n_i, n_s, N : vectors
         Unit directions Tx -> facet, facet -> Rx and unit facet normals [-].
-    k : float
-        Electromagnetic wavenumber [rad/m].
-    eps_r : complex
-        Sea-water permittivity [-].
-    spectrum : callable
-        ``W(kx, ky)`` [m^4] of the unresolved roughness on namespace arrays [rad/m].
-    mss_upwind, mss_crosswind : arrays
-        Unresolved slope variances [-].
-    cos_wind, sin_wind : arrays
-        Direction the wind blows towards, as a unit vector's components [-].
-    model : {"blend", "kirchhoff", "spm"}
-    cox_munk : CoxMunkParameters, optional
-        Cox-Munk Gram-Charlier slopes for ``K``.
+    sea : KernelSea
+        The sea's scattering inputs in ``xp`` (:func:`kernel_sea`): wavenumber [rad/m],
+        permittivity [-], the roughness look-up ``W(kx, ky)`` [m^4], unresolved slope
+        variances [-], the wind's unit vector, the model (``"blend"``, ``"kirchhoff"``,
+        ``"spm"``), Cox-Munk slopes, the tilt nodes of eq P6 (entries ``"bragg1"`` ..
+        ``"bragg4"`` for the axis nodes, the centre weight on ``"bragg"``) and the
+        breaking zones' forward tilt [rad] (BR5).
     damping : array, optional
         Turbulent-wake damping ``d`` in [0, 1].
-    local : tuple, optional
-        ``(cos_i, cos_s, cos_phi, sin_phi, A_i, A_s)`` of the facets' local frames, if
-        already known (else from :mod:`seaecho.geometry.frames`).
-    tilt : TiltQuadrature, optional
-        Average the Bragg term over the unresolved tilts (eq P6): entries ``"bragg1"``
-        .. ``"bragg4"`` for the axis nodes, the centre weight on ``"bragg"``.
     breaking : array, optional
         Fraction ``q`` of each facet covered by breaking zones [-]: an entry
         ``"breaking"`` (eq P7) and the weights of the others times ``1 - q``.
-    breaking_tilt : float or array
-        Forward tilt of the breaking zones ``theta_wb A_wb`` [rad] (BR5).
+    local : tuple, optional
+        ``(cos_i, cos_s, cos_phi, sin_phi, A_i, A_s)`` of the facets' local frames, if
+        already known (else from :mod:`seaecho.geometry.frames`).
     context : dict, optional
         Filled with intermediate per-facet values that a caller may reuse in the same
         kernel: ``"bragg_vector"`` (kx, ky of the facet's plane) [rad/m].
@@ -321,6 +383,8 @@ def mechanisms(
     ----------
     .. [1] Paper eqs 7-11; module docstring (eqs P1, P2).
     """
+    k, eps_r, spectrum, model, tilt = sea.k, sea.eps_r, sea.spectrum, sea.model, sea.tilt
+    cos_wind, sin_wind = sea.cos_wind, sea.sin_wind
     z = xp.vec(0.0, 0.0, 1.0)
     basis_i = frames.fsa_basis(xp, n_i, z)
     basis_s = frames.fsa_basis(xp, n_s, z)
@@ -349,8 +413,8 @@ def mechanisms(
         n_sp = specular_direction(xp, n_i, n_s, N)
         f = specular_matrix(xp, n_i, n_s, n_sp, eps_r, basis_i, basis_s)
         e_u, e_c = wind_axes(xp, N, cos_wind, sin_wind)
-        log_w, gc = specular_weight(xp, n_sp, N, e_u, e_c, xp.maximum(mss_upwind, 1e-12),
-                                    xp.maximum(mss_crosswind, 1e-12), cox_munk)
+        log_w, gc = specular_weight(xp, n_sp, N, e_u, e_c, xp.maximum(sea.mss_upwind, 1e-12),
+                                    xp.maximum(sea.mss_crosswind, 1e-12), sea.cox_munk)
         out["specular"] = (f * xp.select(lit, xp.sqrt(gc) * xp.exp(0.5 * log_w), 0.0),
                            w if keep is None else w * keep)
     if model != "kirchhoff":
@@ -389,7 +453,7 @@ def mechanisms(
     if breaking is not None:
         # Eq P7: breaking zones (BR5-BR6) on the facet's plane, weight q
         wb = breaking_matrix(xp, n_i, n_s, N, basis_i, basis_s, cos_wind, sin_wind,
-                             breaking_tilt).map(lambda e: xp.complex(e, 0.0 * e))
+                             sea.breaking_tilt).map(lambda e: xp.complex(e, 0.0 * e))
         out["breaking"] = (wb, Mat2(breaking, breaking, breaking, breaking))
     return out
 
@@ -429,19 +493,30 @@ def speckle(xp, mech: Mapping[str, tuple[Any, Any]], draws: Mapping[str, Any],
 
 
 # ----------------------------------------------------------------- the numpy boundary
-def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind,
-                   mss_crosswind, wind_direction, wake_damping, n: int,
-                   breaking_fraction=None, breaking_tilt: float = 0.0, xs=None) -> dict:
-    """Namespace arrays and constants of :func:`mechanisms` from numpy inputs, in
-    ``io.xp`` (float64; :func:`_cast_inputs` casts them), the spectrum's look-up in ``xs``
-    (the namespace of the scattering formulas, ``io.xp`` by default)."""
+def kernel_sea(io: Boundary, sea: FacetModel, xs=None) -> KernelSea:
+    """A :class:`FacetModel` as the values of :func:`mechanisms` in ``xs`` [SI].
+
+    Made in ``io.xp`` (float64) and cast to ``xs``, the namespace of the scattering
+    formulas (``io.xp`` by default; its float32 twin in single precision), where the
+    spectrum is looked up: the reference path and the fused pulse kernel
+    (``radar.resident``) both call this function, so both start from the same values.
+
+    Parameters
+    ----------
+    io : Boundary
+        The kernel's boundary (namespace and facet count, for per-facet slopes).
+    sea : FacetModel
+    xs : array namespace, optional
+    """
     xp = io.xp
     xs = xp if xs is None else xs
+    n = io.n
 
     def per_facet(a):
         return io.array(np.broadcast_to(np.asarray(a, dtype=float), (n,))) if np.ndim(
             a) else xp.const(a)
 
+    spectrum = sea.spectrum
     if isinstance(spectrum, BraggSpectrumTable):
         def lookup(kx, ky, table=spectrum):
             return table.lookup(xs, kx, ky)
@@ -457,27 +532,34 @@ def _kernel_inputs(io: Boundary, n_i, n_s, normal, k, eps_r, spectrum, mss_upwin
         def lookup(kx, ky, values=values):
             return values
 
-    w = float(wind_direction)
-    args = dict(
-        n_i=io.vec3(n_i), n_s=io.vec3(n_s), N=io.vec3(normal), k=xp.const(k),
-        eps_r=xp.cconst(eps_r), spectrum=lookup, mss_upwind=per_facet(mss_upwind),
-        mss_crosswind=per_facet(mss_crosswind), cos_wind=xp.const(math.cos(w)),
-        sin_wind=xp.const(math.sin(w)),
-        damping=None if wake_damping is None else io.array(
-            np.asarray(wake_damping, dtype=float).reshape(n)),
-        breaking=None if breaking_fraction is None else per_facet(
-            _fraction(breaking_fraction)),
-        breaking_tilt=xp.const(breaking_tilt))
-    return args
+    w = float(sea.wind_direction)
+    return KernelSea(
+        k=xs.cast(xp.const(sea.k)), eps_r=xs.cast(xp.cconst(complex(sea.eps_r))),
+        spectrum=lookup, mss_upwind=xs.cast(per_facet(sea.mss_upwind)),
+        mss_crosswind=xs.cast(per_facet(sea.mss_crosswind)),
+        cos_wind=xs.cast(xp.const(math.cos(w))), sin_wind=xs.cast(xp.const(math.sin(w))),
+        breaking_tilt=xs.cast(xp.const(float(sea.breaking_tilt))), model=sea.model,
+        cox_munk=sea.cox_munk, tilt=sea.tilt)
 
 
-def _cast_inputs(xs, args: dict) -> dict:
-    """The inputs of :func:`mechanisms` cast to the namespace ``xs`` of the scattering
-    formulas: the kernels of the reference path and the fused pulse kernel
-    (``radar.resident``) cast the same float64 values, so both start from the same
-    float32 ones."""
-    return {name: v if name == "spectrum" or v is None else xs.cast(v)
-            for name, v in args.items()}
+def facet_arrays(io: Boundary, xs, wake_damping: Any = None,
+                 breaking_fraction: Any = None) -> tuple[Any, Any]:
+    """The per-facet ``damping`` and ``breaking`` of :func:`mechanisms` in ``xs`` [-].
+
+    Numpy arrays (or numbers) go through ``io`` (float64) and are cast, as
+    :func:`kernel_sea` does; device arrays of ``io.xp`` are cast; None stays None.
+    """
+    n = io.n
+
+    def one(a, check=None):
+        if a is None:
+            return None
+        if isinstance(a, np.ndarray | float | int):
+            a = np.asarray(a if check is None else check(a), dtype=float)
+            a = io.array(np.broadcast_to(a, (n,))) if a.ndim else io.xp.const(float(a))
+        return xs.cast(a)
+
+    return one(wake_damping), one(breaking_fraction, _fraction)
 
 
 def _fraction(q) -> Any:
@@ -508,50 +590,53 @@ def _namespace(backend: str, spectrum: Any, variant: str | None):
     return _backend.namespace(backend, variant)
 
 
-def _evaluate_mechanisms(backend, variant, n_i, n_s, normal, k, eps_r, spectrum,
-                         mss_upwind, mss_crosswind, wind_direction, wake_damping,
-                         breaking_fraction, breaking_tilt, local, model, cox_munk, tilt,
-                         precision="double"):
-    """The kernel set-up shared by the per-facet entry points: the namespace of the
-    scattering formulas (the back end's in ``precision``), its boundary, the kernel
-    inputs and the mechanisms' (lazy) matrices with their context."""
-    xp = _namespace(backend, spectrum, variant)
+@dataclass(frozen=True)
+class _Evaluation:
+    """The kernel set-up shared by the per-facet entry points: the namespace ``xs`` of the
+    scattering formulas, the boundary ``io`` of the back end, the facet count, the
+    float64 directions (``io.xp`` vectors) and the mechanisms' (lazy) matrices with the
+    context :func:`mechanisms` filled."""
+
+    xs: Any
+    io: Boundary
+    n: int
+    directions: tuple[Any, Any, Any]
+    mech: dict
+    context: dict
+
+
+def _evaluate_mechanisms(n_i: ArrayLike, n_s: ArrayLike, normal: ArrayLike, sea: FacetModel,
+                         *, wake_damping: Any = None, breaking_fraction: Any = None,
+                         local: Any = None, backend: str = "auto",
+                         variant: str | None = None, precision: str = "double") -> _Evaluation:
+    """:func:`mechanisms` of facets on the chosen back end (in ``precision``)."""
+    xp = _namespace(backend, sea.spectrum, variant)
     xs = xp.with_precision(precision)
     n_i = np.asarray(n_i, dtype=float).reshape(-1, 3)
     n = n_i.shape[0]
     io = Boundary(xp, n)
-    args = _kernel_inputs(io, n_i, np.asarray(n_s, dtype=float).reshape(-1, 3),
-                          np.asarray(normal, dtype=float).reshape(-1, 3), k, complex(eps_r),
-                          spectrum, mss_upwind, mss_crosswind, wind_direction, wake_damping, n,
-                          breaking_fraction, breaking_tilt, xs)
+    directions = (io.vec3(n_i), io.vec3(np.asarray(n_s, dtype=float).reshape(-1, 3)),
+                  io.vec3(np.asarray(normal, dtype=float).reshape(-1, 3)))
+    damping, breaking = facet_arrays(io, xs, wake_damping, breaking_fraction)
     frames_in = _local_frames(local, n) if (local is not None and xp.is_numpy) else None
     ctx: dict = {}
-    mech = mechanisms(xs, **_cast_inputs(xs, args), model=model, cox_munk=cox_munk,
-                      local=frames_in, tilt=tilt, context=ctx)
-    return xs, io, n, args, mech, ctx
+    mech = mechanisms(xs, *(xs.cast(v) for v in directions), kernel_sea(io, sea, xs),
+                      damping=damping, breaking=breaking, local=frames_in, context=ctx)
+    return _Evaluation(xs, io, n, directions, mech, ctx)
 
 
 def facet_terms(
     n_i: ArrayLike,
     n_s: ArrayLike,
     normal: ArrayLike,
-    k: float,
-    eps_r: complex,
-    spectrum: HeightSpectrum,
-    mss_upwind: ArrayLike,
-    mss_crosswind: ArrayLike,
-    wind_direction: float = 0.0,
+    sea: FacetModel,
     *,
-    model: str = "blend",
-    cox_munk: CoxMunkParameters | None = None,
     wake_damping: ArrayLike | None = None,
+    breaking_fraction: ArrayLike | None = None,
     local: Any = None,
     small_scale_height_variance: float | None = None,
     backend: str = "auto",
     variant: str | None = None,
-    tilt: TiltQuadrature | None = None,
-    breaking_fraction: ArrayLike | None = None,
-    breaking_tilt: float = 0.0,
     precision: str = "double",
 ) -> FacetTerms:
     """Mechanism matrices ``K``, ``B`` and weights ``w`` of facets (eqs P1-P2, B1-B4).
@@ -564,23 +649,9 @@ def facet_terms(
         Unit directions facet -> receiver [-].
     normal : array_like, shape (N, 3)
         Unit facet normals [-].
-    k : float
-        Electromagnetic wavenumber [rad/m].
-    eps_r : complex
-        Sea-water permittivity ``eps' - j eps''`` [-].
-    spectrum : callable or array_like
-        Height spectrum of the unresolved roughness ``W(kx, ky)`` [m^4], world-frame
-        wavenumbers [rad/m] (``DirectionalSpectrum.height_spectrum`` or a
-        :class:`BraggSpectrumTable`), or its values at the facets' Bragg vectors
-        (:func:`bragg_vectors`), shape (N,) or scalar [m^4].
-    mss_upwind, mss_crosswind : float or array_like (N,)
-        Unresolved (sub-facet) slope variances [-], along and across the wind.
-    wind_direction : float
-        Direction the wind blows towards, CCW from +x [rad].
-    model : {"blend", "kirchhoff", "spm"}
-        ``w`` from eqs B3-B4, or 1, or 0.
-    cox_munk : CoxMunkParameters, optional
-        Use the Cox-Munk Gram-Charlier slope density (its own variances) for ``K``.
+    sea : FacetModel
+        The sea's scattering inputs (wavenumber, permittivity, roughness spectrum,
+        unresolved slopes, wind, model, tilt nodes, breaking tilt).
     wake_damping : array_like (N,), optional
         Turbulent-wake mask in [0, 1] (1 = Bragg waves fully damped); multiplies the
         Bragg sigma by ``1 - d``.
@@ -599,12 +670,8 @@ def facet_terms(
     variant : str, optional
         Mitsuba variant choosing the Dr.Jit back end: ``"llvm_ad_mono_polarized"`` (CPU,
         default) or ``"cuda_ad_mono_polarized"`` (GPU) (:mod:`seaecho.backend`).
-    tilt : TiltQuadrature, optional
-        Average the Bragg term over the unresolved tilts (eq P6).
     breaking_fraction : array_like (N,) or float, optional
         Fraction ``q`` of each facet covered by breaking zones, in [0, 1] (eq P7).
-    breaking_tilt : float
-        Forward tilt of the breaking zones ``theta_wb A_wb`` [rad] (BR5).
     precision : {"double", "single"}
         Working precision of the formulas on the Dr.Jit back end (float64 or float32;
         the inputs are cast to it, the results returned as float64 / complex128); numpy
@@ -618,23 +685,21 @@ def facet_terms(
     ----------
     .. [1] Paper eqs 7-11; module docstring.
     """
-    if model not in MODELS:
-        raise ValueError(f"model = {model!r}: choose from {MODELS}")
-    if model != "kirchhoff":
-        check_spm_validity(k, small_scale_height_variance)
-    xp, io, n, args, mech, ctx = _evaluate_mechanisms(
-        backend, variant, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
-        wind_direction, wake_damping, breaking_fraction, breaking_tilt, local, model,
-        cox_munk, tilt, precision)
+    if sea.model != "kirchhoff":
+        check_spm_validity(sea.k, small_scale_height_variance)
+    ev = _evaluate_mechanisms(n_i, n_s, normal, sea, wake_damping=wake_damping,
+                              breaking_fraction=breaking_fraction, local=local,
+                              backend=backend, variant=variant, precision=precision)
+    io, n, mech, tilt = ev.io, ev.n, ev.mech, sea.tilt
     names = list(mech)
-    res = io.numpy(ctx["weight"], *[mech[m][0] for m in names])
+    res = io.numpy(ev.context["weight"], *[mech[m][0] for m in names])
     weight = res.pop(0).reshape(n, 4)
     mats = {m: r.reshape(n, 4) for m, r in zip(names, res, strict=True)}
     zero = np.zeros((n, 4), complex)
     return FacetTerms(
         specular=mats.get("specular", zero), bragg=mats.get("bragg", zero), weight=weight,
         tilted=tuple(mats[f"bragg{j}"] for j in range(1, len(mats) + 1) if f"bragg{j}" in mats),
-        tilt_weights=() if tilt is None or model == "kirchhoff" else tuple(tilt.weights),
+        tilt_weights=() if tilt is None or sea.model == "kirchhoff" else tuple(tilt.weights),
         breaking=mats.get("breaking"),
         breaking_fraction=None if breaking_fraction is None else np.broadcast_to(
             _fraction(breaking_fraction), (n,)).copy())
@@ -653,27 +718,16 @@ def bragg_vectors(n_i: ArrayLike, n_s: ArrayLike, normal: ArrayLike, k: float) -
     return np.stack([kx, ky], axis=-1)
 
 
-def facet_sigma(
-    n_i: ArrayLike,
-    n_s: ArrayLike,
-    normal: ArrayLike,
-    k: float,
-    eps_r: complex,
-    spectrum: HeightSpectrum,
-    mss_upwind: ArrayLike,
-    mss_crosswind: ArrayLike,
-    wind_direction: float = 0.0,
-    **kwargs: Any,
-) -> NDArray:
+def facet_sigma(n_i: ArrayLike, n_s: ArrayLike, normal: ArrayLike, sea: FacetModel,
+                **kwargs: Any) -> NDArray:
     """Per-facet scattering coefficients ``sigma_mn`` (eq P3), shape (N, 4) [m^2/m^2].
 
-    Same parameters as :func:`facet_terms` (keywords ``model``, ``cox_munk``,
-    ``wake_damping``, ``local``, ``small_scale_height_variance``). Multiply by the facet
-    area for its mean radar cross section [m^2]. Channels HH, HV, VH, VV in the global
-    FSA bases (m received, n transmitted).
+    Same parameters as :func:`facet_terms` (keywords ``wake_damping``,
+    ``breaking_fraction``, ``local``, ``small_scale_height_variance``, ``backend``...).
+    Multiply by the facet area for its mean radar cross section [m^2]. Channels HH, HV,
+    VH, VV in the global FSA bases (m received, n transmitted).
     """
-    return facet_terms(n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
-                       wind_direction, **kwargs).sigma()
+    return facet_terms(n_i, n_s, normal, sea, **kwargs).sigma()
 
 
 def speckle_draws(n: int, rng: np.random.Generator) -> tuple[NDArray, NDArray]:
@@ -762,23 +816,14 @@ def speckled_facet_amplitudes(
     n_s: ArrayLike,
     normal: ArrayLike,
     area: ArrayLike,
-    k: float,
-    eps_r: complex,
-    spectrum: HeightSpectrum,
-    mss_upwind: ArrayLike,
-    mss_crosswind: ArrayLike,
-    wind_direction: float = 0.0,
+    sea: FacetModel,
     *,
     draws: Any,
-    model: str = "blend",
-    cox_munk: CoxMunkParameters | None = None,
     wake_damping: ArrayLike | None = None,
+    breaking_fraction: ArrayLike | None = None,
     local: Any = None,
     backend: str = "auto",
     variant: str | None = None,
-    tilt: TiltQuadrature | None = None,
-    breaking_fraction: ArrayLike | None = None,
-    breaking_tilt: float = 0.0,
     precision: str = "double",
 ) -> NDArray:
     """Eqs P1-P7 in one pass: speckled amplitudes ``a_mn`` [m] of facets, shape (N, 4).
@@ -800,18 +845,17 @@ def speckled_facet_amplitudes(
     ----------
     .. [1] Paper eqs 7-11; module docstring (eqs P1-P7).
     """
-    if model not in MODELS:
-        raise ValueError(f"model = {model!r}: choose from {MODELS}")
-    xp, io, n, args, mech, ctx = _evaluate_mechanisms(
-        backend, variant, n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
-        wind_direction, wake_damping, breaking_fraction, breaking_tilt, local, model,
-        cox_munk, tilt, precision)
+    ev = _evaluate_mechanisms(n_i, n_s, normal, sea, wake_damping=wake_damping,
+                              breaking_fraction=breaking_fraction, local=local,
+                              backend=backend, variant=variant, precision=precision)
+    xp, io, n, mech, ctx = ev.xs, ev.io, ev.n, ev.mech, ev.context
     names = list(mech)
     if callable(draws):
         # the evolving speckle's phases in float64 (io.xp), from float64 directions
-        ctx.update(n_i=args["n_i"], n_s=args["n_s"], k=args["k"],
-                   bragg_vector=bragg_vector(io.xp, args["n_i"], args["n_s"], args["N"],
-                                             args["k"]))
+        d_i, d_s, d_n = ev.directions
+        k = io.xp.const(float(sea.k))
+        ctx.update(n_i=d_i, n_s=d_s, k=k,
+                   bragg_vector=bragg_vector(io.xp, d_i, d_s, d_n, k))
         g = draws(io.xp, io, ctx)
     else:
         d = _draw_map(draws, names, n)
@@ -827,13 +871,8 @@ def facet_amplitudes(
     n_s: ArrayLike,
     normal: ArrayLike,
     area: ArrayLike,
-    k: float,
-    eps_r: complex,
-    spectrum: HeightSpectrum,
-    mss_upwind: ArrayLike,
-    mss_crosswind: ArrayLike,
+    sea: FacetModel,
     rng: np.random.Generator,
-    wind_direction: float = 0.0,
     **kwargs: Any,
 ) -> NDArray:
     """Speckled complex scattering amplitudes of facets (eqs P1-P5), shape (N, 4) [m].
@@ -850,26 +889,16 @@ def facet_amplitudes(
         Unit directions Tx -> facet, facet -> Rx and facet normals [-].
     area : array_like (N,)
         Facet areas [m^2].
-    k : float
-        Electromagnetic wavenumber [rad/m].
-    eps_r : complex
-        Sea-water permittivity [-].
-    spectrum : callable
-        Height spectrum ``W(kx, ky)`` [m^4] of the unresolved roughness.
-    mss_upwind, mss_crosswind : float or array_like (N,)
-        Unresolved slope variances [-].
+    sea : FacetModel
+        The sea's scattering inputs.
     rng : numpy.random.Generator
         Source of the speckle draws (one per pulse / time step).
-    wind_direction : float
-        Direction the wind blows towards [rad].
 
     Returns
     -------
     ndarray of complex, shape (N, 4)
     """
-    terms = facet_terms(n_i, n_s, normal, k, eps_r, spectrum, mss_upwind, mss_crosswind,
-                        wind_direction, **kwargs)
-    return speckle_amplitudes(terms, area, rng)
+    return speckle_amplitudes(facet_terms(n_i, n_s, normal, sea, **kwargs), area, rng)
 
 
 def hhvv_coherence(terms: FacetTerms) -> NDArray:
@@ -882,7 +911,8 @@ def hhvv_coherence(terms: FacetTerms) -> NDArray:
     return np.where(den > 0, c[:, 0, 3] / np.where(den > 0, den, 1.0), 0.0)
 
 
-__all__ = ["BACKENDS", "MECHANISMS", "MODELS", "FacetTerms", "TiltQuadrature",
-           "bragg_vectors", "circular_gaussians", "facet_amplitudes", "facet_sigma",
-           "facet_terms", "hhvv_coherence", "mechanism_sigma", "mechanisms", "speckle",
-           "speckle_amplitudes", "speckle_draws", "speckled_facet_amplitudes"]
+__all__ = ["BACKENDS", "MECHANISMS", "MODELS", "FacetModel", "FacetTerms", "KernelSea",
+           "TiltQuadrature", "bragg_vectors", "circular_gaussians", "facet_amplitudes",
+           "facet_arrays", "facet_sigma", "facet_terms", "hhvv_coherence", "kernel_sea",
+           "mechanism_sigma", "mechanisms", "speckle", "speckle_amplitudes", "speckle_draws",
+           "speckled_facet_amplitudes"]

@@ -16,11 +16,10 @@ doi:10.1109/RADAR.2006.1631862.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
 
 from .breaking import THETA_WB, BreakingStatistics
 from .dynamics import SeaDynamics
-from .facet import TiltQuadrature
+from .facet import FacetModel, TiltQuadrature
 from .spectrum_table import BraggSpectrumTable
 
 
@@ -77,19 +76,17 @@ class SeaModel:
     dynamics: SeaDynamics | None = None
 
     @property
-    def facet_model(self) -> tuple:
-        """The positional arguments after the geometry of ``scattering.facet.facet_terms``,
-        ``facet_sigma`` and ``speckled_facet_amplitudes``: (k, eps_r, spectrum,
-        mss_upwind, mss_crosswind, wind_direction)."""
-        return (self.k, self.eps_r, self.bragg_spectrum, self.mss_upwind,
-                self.mss_crosswind, self.wind_direction)
-
-    @property
-    def facet_options(self) -> dict[str, Any]:
-        """The keywords of ``facet_terms`` / ``speckled_facet_amplitudes`` that follow from
-        the sea: ``tilt`` (eq P6) and ``breaking_tilt`` (``theta_wb A_wb``, BR5)."""
+    def facet_model(self) -> FacetModel:
+        """The sea's scattering inputs of ``scattering.facet`` (eqs P1-P7), whole: k,
+        eps_r, the Bragg spectrum table, the tilting band's slope variances, the wind
+        direction, the tilt nodes (eq P6) and the breaking zones' forward tilt
+        ``theta_wb A_wb`` (BR5). The simulation, its fused kernel and ``seaecho compare``
+        take this one object."""
         eps = 0.0 if self.breaking is None else THETA_WB * self.breaking.mean_direction
-        return {"tilt": self.tilt, "breaking_tilt": float(eps)}
+        return FacetModel(k=self.k, eps_r=self.eps_r, spectrum=self.bragg_spectrum,
+                          mss_upwind=self.mss_upwind, mss_crosswind=self.mss_crosswind,
+                          wind_direction=self.wind_direction, tilt=self.tilt,
+                          breaking_tilt=float(eps))
 
     @property
     def subfacet(self) -> tuple[float, float, float]:

@@ -52,7 +52,7 @@ __all__ = ["SIGNATURE_NAMESPACE", "Hull", "HullEchoes"]
 SIGNATURE_NAMESPACE = "hull-signatures"
 
 #: Traces kept in memory (a trace of the 10 m boat holds ~10^4 centres, < 1 MB).
-_CACHE = 256
+SIGNATURE_CACHE = 256
 #: The sea patch traced around a hull: its bounding radius times this, each side.
 _PATCH_MARGIN = 3.0
 
@@ -272,7 +272,7 @@ class HullEchoes:
             return self._cache[key]
         sig = self._trace(hull, ref)
         self._cache[key] = sig
-        if len(self._cache) > _CACHE:
+        if len(self._cache) > SIGNATURE_CACHE:
             self._cache.popitem(last=False)
         return sig
 

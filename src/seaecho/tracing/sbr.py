@@ -117,7 +117,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..backend import aligned
-from ..constants import C0
+from ..constants import C0, EPS0
 from ..geometry.frames import polarisation_basis
 from ..scattering.fresnel import fresnel_coefficients
 from ..targets.centres import CentreAccumulator, ScatteringCentres, equivalent_positions
@@ -140,8 +140,6 @@ _Z = np.array([0.0, 0.0, 1.0])
 _RECIPROCAL_SIGN = np.array([[1.0, -1.0], [-1.0, 1.0]])
 #: Path kind of a contribution of the trace from R, seen from T: sea-hull <-> hull-sea.
 _REVERSE_PATH = np.array([0, 2, 1, 3], dtype=np.int64)
-#: Vacuum permittivity [F/m] (eps0 = 1 / (mu0 c^2), CODATA 2018 mu0).
-_EPS0 = 1.0 / (1.25663706212e-6 * C0**2)
 #: Worker threads of a trace (batches of rays in parallel; the result does not depend
 #: on it). One by default: with several, a scene of the fuzzing suite aborted the process
 #: inside Mitsuba's ray intersection on a worker thread (Dr.Jit LLVM), so threads are
@@ -201,7 +199,7 @@ def material_permittivity(frequency_hz: float, *, itu_type: str | None = None,
         relative_permittivity = float(np.ravel(eps)[0])
         conductivity = float(np.ravel(sigma)[0])
     omega = 2.0 * np.pi * frequency_hz
-    return complex(relative_permittivity, -conductivity / (omega * _EPS0))
+    return complex(relative_permittivity, -conductivity / (omega * EPS0))
 
 
 @dataclass(frozen=True)

@@ -102,12 +102,9 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..constants import RHO_SEA_WATER
+from ..constants import NU_SEA_WATER, RHO_SEA_WATER
 from ..ocean.dispersion import angular_frequency
 
-#: Kinematic viscosity of sea water at 20 degC and 35 g/kg [m^2/s]: dynamic viscosity
-#: 1.08e-3 Pa s over 1024.8 kg/m^3 (Sharqawy, Lienhard & Zubair 2010).
-NU_SEA_WATER = 1.05e-6
 #: Dilational modulus of the ship wake's natural surfactant film [N/m]: "of the order of
 #: 0.01 N/m" (Alpers & Huehnerfuss 1988); about 8 mN/m measured for monolayers at the
 #: film pressures of natural films in ship-generated currents (Phys. Fluids 6, 2606, 1994).

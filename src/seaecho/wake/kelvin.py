@@ -108,7 +108,12 @@ from numpy.typing import ArrayLike, NDArray
 from ..constants import RHO_SEA_WATER, G
 from ..warnings import SamplingWarning
 from .empirical import BREAKING_SLOPE, kriebel_seelig_height
-from .michell import wigley_amplitude, wigley_wave_resistance
+from .michell import (
+    kelvin_wavenumber,
+    transverse_wavelength,
+    wigley_amplitude,
+    wigley_wave_resistance,
+)
 from .ship import WAKE_AMPLITUDE_MODELS, Ship
 
 #: Kelvin half-angle asin(1/3) [rad] (19.47 deg; the paper's 38.54 deg full cone is a typo
@@ -177,7 +182,7 @@ def kelvin_crest_lines(
     Paper eq 16; Newman (1977) section 6.17; H. Lamb, *Hydrodynamics* (1932) art. 256.
     """
     theta = np.asarray(theta, dtype=np.float64)
-    a = 4.0 * np.pi * n * speed**2 / g
+    a = 2.0 * n * transverse_wavelength(speed, g)  # 4 pi n V^2 / g
     c = np.cos(theta)
     # Eq 16 (with the cos^2 in y')
     return a * c * (1.0 - 0.5 * c**2), 0.5 * a * np.sin(theta) * c**2
@@ -293,7 +298,7 @@ class KelvinWake:
         self.eps = float(eps)
         self.nthreads = nthreads
         self.g = float(g)
-        self.k0 = g / ship.speed**2 if ship.speed > 0 else np.inf
+        self.k0 = kelvin_wavenumber(ship.speed, g)
         self.amplitude_model = ship.wake_amplitude if amplitude is None else amplitude
         if self.amplitude_model not in WAKE_AMPLITUDE_MODELS:
             raise ValueError(f"amplitude = {self.amplitude_model!r}: choose from "
@@ -307,7 +312,7 @@ class KelvinWake:
     @property
     def transverse_wavelength(self) -> float:
         """lambda_0 = 2 pi V^2 / g [m] (paper section IV-B)."""
-        return 2.0 * np.pi / self.k0
+        return transverse_wavelength(self.ship.speed, self.g)
 
     def divergent_wavelength(self, theta: ArrayLike) -> NDArray[np.float64]:
         """lambda(theta) = 2 pi V^2 cos^2(theta) / g [m] (paper section IV-B)."""
@@ -644,4 +649,5 @@ class KelvinWake:
         return out[0], out[1], out[2]
 
 
-__all__ = ["KELVIN_HALF_ANGLE", "KelvinWake", "WakeFields", "kelvin_crest_lines"]
+__all__ = ["KELVIN_HALF_ANGLE", "KelvinWake", "WakeFields", "kelvin_crest_lines",
+           "kelvin_wavenumber", "transverse_wavelength"]

@@ -76,12 +76,31 @@ References
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..constants import RHO_SEA_WATER, G
 
 _SERIES_TERMS = 24
+
+
+def kelvin_wavenumber(speed: float, g: float = G) -> float:
+    """k0 = g / V^2 [rad/m]: the transverse waves' wavenumber (Lamb 1932, art. 256;
+    Arnold-Bos et al. 2006, section IV-B).
+
+    A wave steady in the frame of a ship of speed V travels at V: the gravity branch of the
+    dispersion relation (capillarity is negligible at these wavelengths). ``inf`` for a
+    ship at rest (no Kelvin wake).
+    """
+    return g / speed**2 if speed > 0 else math.inf
+
+
+def transverse_wavelength(speed: float, g: float = G) -> float:
+    """lambda_0 = 2 pi V^2 / g [m] of a ship of speed ``speed`` [m/s] (its
+    transverse waves, Lamb 1932, art. 256)."""
+    return 2.0 * math.pi / kelvin_wavenumber(speed, g)
 
 
 def _depth_factor(beta: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -153,7 +172,7 @@ def wigley_amplitude(
     theta = np.asarray(theta, dtype=np.float64)
     if np.any(np.abs(theta) >= np.pi / 2):
         raise ValueError("theta must lie strictly inside (-pi/2, pi/2) [rad]")
-    k0 = g / speed**2
+    k0 = kelvin_wavenumber(speed, g)
     sec = 1.0 / np.cos(theta)
     a = k0 * sec  # longitudinal wavenumber k0 sec(theta) [rad/m]
     b = k0 * sec**2  # decay rate with depth k0 sec^2(theta) [1/m]
@@ -198,7 +217,7 @@ def submerged_source_amplitude(
     Wehausen & Laitone (1960) section 13.
     """
     theta = np.asarray(theta, dtype=np.float64)
-    k0 = g / speed**2
+    k0 = kelvin_wavenumber(speed, g)
     sec = 1.0 / np.cos(theta)
     # Eq W9
     return (k0 * strength / (np.pi * speed) * sec**3 * np.exp(-k0 * depth * sec**2)).astype(
@@ -313,7 +332,9 @@ def wigley_wetted_surface(length: float, beam: float, draft: float, n: int = 201
 
 __all__ = [
     "havelock_wave_resistance",
+    "kelvin_wavenumber",
     "submerged_source_amplitude",
+    "transverse_wavelength",
     "wigley_amplitude",
     "wigley_wave_resistance",
     "wigley_wetted_surface",
