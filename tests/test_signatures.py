@@ -19,6 +19,8 @@ MAX_PARAMETERS = 12
 EXCEPTIONS: dict[str, str] = {
     "api.py:sigma": "the Python twin of ``seaecho sigma``: one keyword per option of the "
                     "command (angles and the sea's overrides of a scene)",
+    "api.py:detect": "the Python twin of ``seaecho detect``: one keyword per option of the "
+                     "command (detector, training, integration, truth, export)",
     "geometry/facets.py:analytic_facets": "13: the grid, its slopes and velocities, both "
                                           "platforms and Smith's shadowing options",
     "scattering/twoscale.py:two_scale_sigma": "13: the mean-plane model takes the sea's "
