@@ -80,6 +80,7 @@ __all__ = [
     "open_dataset",
     "parse_scene",
     "permittivity",
+    "ppi",
     "save",
     "scene_summary",
     "sigma",
@@ -1095,7 +1096,12 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
     if "raw" in dataset:
         from .io.figures import run_figures
 
-        return run_figures(dataset, stem)
+        out = run_figures(dataset, stem)
+        if "sweep" in dataset:  # a scanning radar: a PPI per sweep
+            from .io.cfradial import ppi_figures
+
+            out += ppi_figures(dataset, stem)
+        return out
     if "image_json" in dataset.attrs:
         from .imaging.figures import image_figures
 
@@ -1103,6 +1109,32 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
         return image_figures(dataset, stem, cfg["dynamic_range_db"])
     raise SceneError("dataset: neither a run (no 'raw') nor an image (no 'image_json' "
                      "attribute)")
+
+
+def ppi(dataset: xr.Dataset, path: PathLike | None = None):
+    """The sweeps of a scanning run in the CfRadial 2 / FM 301 layout (xradar's).
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        A run (:func:`simulate`) whose antenna scans.
+    path : path, optional
+        Also write the tree to this netCDF-4 file (atomically).
+
+    Returns
+    -------
+    xarray.DataTree
+        Root metadata and one ``sweep_N`` group per revolution or sector pass, dims
+        ``azimuth`` x ``range`` (:mod:`seaecho.io.cfradial`, docs/scanning.md).
+    """
+    from .io.cfradial import ppi_tree, write_ppi
+
+    if "sweep" not in dataset:
+        raise SceneError("dataset: the run's antenna does not scan (no 'sweep'); a PPI "
+                         "product needs [transmitter.antenna.scan]")
+    if path is not None:
+        write_ppi(dataset, path)
+    return ppi_tree(dataset)
 
 
 # ----------------------------------------------------------------------------- summary

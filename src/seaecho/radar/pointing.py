@@ -104,7 +104,8 @@ class Scan:
         """Index of the sweep at times t [s] (a revolution, or one pass of a sector)."""
         s = self.rate * np.asarray(t, dtype=float)
         span = 2.0 * np.pi if self.mode == "rotating" else self.width
-        return np.floor(s / span).astype(np.int64)
+        # a pulse within 1e-9 of a turn of a sweep's start opens it (rounding of rate t)
+        return np.floor(s / span + 1.0e-9).astype(np.int64)
 
     def axes_body(self, t: ArrayLike) -> NDArray[np.float64]:
         """Antenna axes in the body frame at times t: (..., 3, 3), columns boresight,
