@@ -165,6 +165,7 @@ def test_scan_on_a_rolling_ship_follows_the_deck():
 def test_scan_period_on_the_model():
     m = build_radar(parse_scene(_coastal()))
     assert m.scan_period == pytest.approx(10.0)  # 6 rpm
+    assert RadarSystem(m).scan_period == m.scan_period
     assert m.scanning
     d = _coastal()
     d["transmitter"]["antenna"].pop("scan")

@@ -167,7 +167,7 @@ def ppi_tree(run):
                 "longitude": ((), 0.0, {"units": "degrees_east"}),
                 "altitude": ((), float(position[0, 2]), {"units": "meters"})},
         attrs={"Conventions": "Cf/Radial", "version": "2.0",
-               "title": run.attrs.get("title", "seaecho scanning radar"),
+               "title": _scene_name(run) or "seaecho scanning radar",
                "instrument_name": "seaecho",
                "source": f"seaecho {run.attrs.get('seaecho_version', '')}".strip(),
                "institution": "", "references": "doi:10.1109/RADAR.2006.1631862",
@@ -189,6 +189,16 @@ def write_ppi(run, path: str | os.PathLike) -> Path:
     with atomic_path(path) as tmp:
         tree.to_netcdf(tmp, engine="h5netcdf")
     return path
+
+
+def _scene_name(run) -> str:
+    """The scene's name from the run's ``scene_json`` attribute ('' without one)."""
+    import json
+
+    try:
+        return str(json.loads(run.attrs.get("scene_json", "{}")).get("name", ""))
+    except ValueError:
+        return ""
 
 
 def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
@@ -215,16 +225,26 @@ def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
     channel = str(run["channel"].values[0])
     for name in list(tree.children)[:max_sweeps]:
         sw = tree[name].to_dataset()
-        az = np.radians(sw["azimuth"].values)
+        # the rays in time order, unwrapped: a sweep turns one way (a sector crossing
+        # north, a revolution from its start back to it)
+        az = np.unwrap(np.radians(sw["azimuth"].values))
         r = sw["range"].values
         p = sw[f"{channel}_power"].values.astype(float)
-        order = np.argsort(az)
-        az, p = az[order], p[order]
-        x = r[None, :] * np.sin(az)[:, None]
-        y = r[None, :] * np.cos(az)[:, None]
+        if az.size > 1 and az[-1] < az[0]:
+            az, p = az[::-1], p[::-1]
+        # cell edges: half-way between rays (a ray's own width at the ends) and gates
+        if az.size > 1:
+            mid = 0.5 * (az[1:] + az[:-1])
+            a_edges = np.concatenate([[2 * az[0] - mid[0]], mid, [2 * az[-1] - mid[-1]]])
+        else:
+            a_edges = az[0] + np.array([-0.5, 0.5]) * np.radians(0.5)
+        dr = r[1] - r[0] if r.size > 1 else 1.0
+        r_edges = np.concatenate([r - 0.5 * dr, [r[-1] + 0.5 * dr]])
+        x = r_edges[None, :] * np.sin(a_edges)[:, None]
+        y = r_edges[None, :] * np.cos(a_edges)[:, None]
         top = float(p.max())
         fig, ax = plt.subplots(figsize=(6.6, 5.8), constrained_layout=True)
-        im = ax.pcolormesh(x / 1e3, y / 1e3, p, shading="nearest", cmap="viridis",
+        im = ax.pcolormesh(x / 1e3, y / 1e3, p, shading="flat", cmap="viridis",
                            vmin=top - dynamic_range_db, vmax=top, rasterized=True)
         fig.colorbar(im, ax=ax, label=f"{channel} range-compressed power [dB re 1 W]")
         rows = np.flatnonzero(run["sweep"].values == int(name.split("_")[1])
@@ -245,7 +265,7 @@ def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
         ax.set_aspect("equal")
         ax.set_xlabel("x east of the radar [km]")
         ax.set_ylabel("y north of the radar [km]")
-        ax.set_title(f"{run.attrs.get('scene_name', '')} PPI, {name} "
+        ax.set_title(f"{_scene_name(run)} PPI, {name} "
                      f"({str(sw['sweep_mode'].values)}), t = {t_mid:.2f} s", fontsize=9)
         out.append(atomic_savefig(fig, stem.with_name(f"{stem.name}_ppi_{name}.png"),
                                   dpi=110))

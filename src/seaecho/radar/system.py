@@ -175,6 +175,12 @@ class RadarSystem:
 
     # ------------------------------------------------------------------------ basics
     @property
+    def scan_period(self) -> float | None:
+        """Scan period [s] of a scanning antenna (a revolution, or a sector's
+        back-and-forth), None when no antenna scans (:attr:`RadarModel.scan_period`)."""
+        return self.model.scan_period
+
+    @property
     def channel_names(self) -> list[str]:
         """Channel names in axis order, e.g. ['HH', 'HV', 'VH', 'VV']."""
         return [c[0] for c in self.channels]
