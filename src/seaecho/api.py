@@ -1300,6 +1300,22 @@ def scene_summary(scene: SceneModel) -> SceneSummary:
                ("sea clutter", "on" if r.sea_clutter else "off")]
         if scene.targets:
             rad.append(("targets", f"{len(scene.targets)} point target(s)"))
+        if model.scan_period is not None:
+            scan = (scene.transmitter.antenna.scan if scene.transmitter.antenna.scan.scanning
+                    else scene.receiver.antenna.scan)
+            per = model.scan_period * r.prf_hz
+            step = 6.0 * scan.rate_rpm / r.prf_hz
+            rad.append(("scan", f"{scan.mode} at {scan.rate_rpm:g} rpm, clockwise: period "
+                        f"{model.scan_period:.4g} s = {per:.4g} pulses, {step:.3g} deg per "
+                        f"pulse; {r.n_pulses / per:.3g} period(s) simulated"))
+        if model.earth is not None:
+            from .geometry.earth import horizon_range
+
+            h = float(scene.transmitter.position_m[2]) if scene.transmitter.position_m \
+                else float(tx[2])
+            rad.append(("Earth", f"spherical, k = {scene.propagation.earth_radius_factor:.4g}"
+                        f": the transmitter's horizon at sea level "
+                        f"{horizon_range(max(h, 0.0), 0.0, model.earth.radius) / 1e3:.4g} km"))
         sections.append(("Radar", rad))
 
         grad = -(units[0] + (units[0] if mono else units[1]))  # grad of r_t + r_r
