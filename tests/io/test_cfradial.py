@@ -119,3 +119,17 @@ def test_fixed_antenna_has_no_product():
     assert "sweep" not in ds
     with pytest.raises(SceneError, match="does not scan"):
         seaecho.ppi(ds)
+
+
+def test_receiver_that_scans_gives_the_sweeps():
+    """A bistatic pair whose receiver scans (the transmitter floods): the product's
+    azimuths are the receiver's boresight, clockwise from north."""
+    d = _scene(n_pulses=4).model_dump(mode="json")
+    tx = d["transmitter"]
+    d["receiver"] = {"position_m": [300.0, -200.0, 20.0], "yaw_deg": 0.0, "antenna": dict(
+        tx["antenna"])}  # body x east: the scan starts looking east
+    tx["antenna"]["scan"] = {"mode": "fixed"}
+    tx["antenna"]["azimuth_deg"] = 0.0
+    ds = seaecho.simulate(parse_scene(d), progress=False)
+    az = seaecho.ppi(ds)["sweep_0"]["azimuth"].values
+    np.testing.assert_allclose(az, 90.0 + np.arange(4), atol=1e-9)

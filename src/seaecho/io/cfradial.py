@@ -1,9 +1,10 @@
 """The scans of a scanning radar as CfRadial 2 / WMO FM 301 sweeps (the xradar layout).
 
-A run whose antenna scans (``[transmitter.antenna.scan]``) has, per pulse, the boresight
-in the world (``tx_antenna_axes``) and the sweep index (``sweep``: a revolution or one
-pass of a sector). :func:`ppi_tree` regroups its range-compressed pulses into the
-CfRadial 2 tree that xradar reads and writes:
+A run whose antenna scans (``[transmitter.antenna.scan]``, or the receiver's) has, per
+pulse, the boresight in the world (``tx_antenna_axes``, ``rx_antenna_axes``: the
+scanning one's is used, the transmitter's if both scan) and the sweep index (``sweep``:
+a revolution or one pass of a sector). :func:`ppi_tree` regroups its range-compressed
+pulses into the CfRadial 2 tree that xradar reads and writes:
 
 - root: the global attributes (``Conventions = "Cf/Radial"``, ``version = "2.0"``,
   ``instrument_name``, ``time_coverage_start``/``_end``...), the variables
@@ -78,10 +79,12 @@ def ppi_tree(run):
                          "'sector'")
     sweep = np.asarray(run["sweep"].values)
     t = np.asarray(run["time"].values, dtype=float)
-    az, el = boresight_angles(run["tx_antenna_axes"].values)
+    # the scanning antenna's boresight (the transmitter's, else the receiver's)
+    scanner = run["sweep"].attrs.get("scan_antenna", "tx")
+    az, el = boresight_angles(run[f"{scanner}_antenna_axes"].values)
     rng = np.asarray(run["range"].values, dtype=float)
     channels = [str(c) for c in run["channel"].values]
-    position = np.asarray(run["tx_position"].values, dtype=float)
+    position = np.asarray(run[f"{scanner}_position"].values, dtype=float)
     mode = run["sweep"].attrs.get("scan_mode", "rotating")
     sweep_mode = "sector" if mode == "sector" else "azimuth_surveillance"
     time_attrs = {"units": f"seconds since {EPOCH}", "standard_name": "time",
@@ -250,7 +253,8 @@ def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
         rows = np.flatnonzero(run["sweep"].values == int(name.split("_")[1])
                               + int(run["sweep"].values[0]))
         mid = rows[len(rows) // 2] if rows.size else 0
-        radar = np.asarray(run["tx_position"].values[mid], dtype=float)
+        scanner = run["sweep"].attrs.get("scan_antenna", "tx")
+        radar = np.asarray(run[f"{scanner}_position"].values[mid], dtype=float)
         t_mid = t_run[mid]
         if "target_position" in run:
             tp = (run["target_position"].values + t_mid * run["target_velocity"].values)
