@@ -87,6 +87,7 @@ __all__ = [
     "parse_scene",
     "permittivity",
     "roc",
+    "ppi",
     "save",
     "scene_summary",
     "score",
@@ -1114,7 +1115,12 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
     if "raw" in dataset:
         from .io.figures import run_figures
 
-        return run_figures(dataset, stem)
+        out = run_figures(dataset, stem)
+        if "sweep" in dataset:  # a scanning radar: a PPI per sweep
+            from .io.cfradial import ppi_figures
+
+            out += ppi_figures(dataset, stem)
+        return out
     if "image_json" in dataset.attrs:
         from .imaging.figures import image_figures
 
@@ -1122,6 +1128,32 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
         return image_figures(dataset, stem, cfg["dynamic_range_db"])
     raise SceneError("dataset: neither a run (no 'raw') nor an image (no 'image_json' "
                      "attribute)")
+
+
+def ppi(dataset: xr.Dataset, path: PathLike | None = None):
+    """The sweeps of a scanning run in the CfRadial 2 / FM 301 layout (xradar's).
+
+    Parameters
+    ----------
+    dataset : xarray.Dataset
+        A run (:func:`simulate`) whose antenna scans.
+    path : path, optional
+        Also write the tree to this netCDF-4 file (atomically).
+
+    Returns
+    -------
+    xarray.DataTree
+        Root metadata and one ``sweep_N`` group per revolution or sector pass, dims
+        ``azimuth`` x ``range`` (:mod:`seaecho.io.cfradial`, docs/scanning.md).
+    """
+    from .io.cfradial import ppi_tree, write_ppi
+
+    if "sweep" not in dataset:
+        raise SceneError("dataset: the run's antenna does not scan (no 'sweep'); a PPI "
+                         "product needs [transmitter.antenna.scan]")
+    if path is not None:
+        write_ppi(dataset, path)
+    return ppi_tree(dataset)
 
 
 # ----------------------------------------------------------------------------- summary
@@ -1287,6 +1319,22 @@ def scene_summary(scene: SceneModel) -> SceneSummary:
                ("sea clutter", "on" if r.sea_clutter else "off")]
         if scene.targets:
             rad.append(("targets", f"{len(scene.targets)} point target(s)"))
+        if model.scan_period is not None:
+            scan = (scene.transmitter.antenna.scan if scene.transmitter.antenna.scan.scanning
+                    else scene.receiver.antenna.scan)
+            per = model.scan_period * r.prf_hz
+            step = 6.0 * scan.rate_rpm / r.prf_hz
+            rad.append(("scan", f"{scan.mode} at {scan.rate_rpm:g} rpm, clockwise: period "
+                        f"{model.scan_period:.4g} s = {per:.4g} pulses, {step:.3g} deg per "
+                        f"pulse; {r.n_pulses / per:.3g} period(s) simulated"))
+        if model.earth is not None:
+            from .geometry.earth import horizon_range
+
+            h = float(scene.transmitter.position_m[2]) if scene.transmitter.position_m \
+                else float(tx[2])
+            rad.append(("Earth", f"spherical, k = {scene.propagation.earth_radius_factor:.4g}"
+                        f": the transmitter's horizon at sea level "
+                        f"{horizon_range(max(h, 0.0), 0.0, model.earth.radius) / 1e3:.4g} km"))
         sections.append(("Radar", rad))
 
         grad = -(units[0] + (units[0] if mono else units[1]))  # grad of r_t + r_r

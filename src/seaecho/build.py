@@ -42,6 +42,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .constants import C0
+from .geometry.earth import SphericalEarth, effective_radius
 from .ocean.seawater import sea_water_permittivity
 from .ocean.spectra import DirectionalSpectrum
 from .ocean.surface import SeaSurface
@@ -56,7 +57,7 @@ from .ocean.wind import u10_from_u19_5
 from .radar.antennas import Antenna
 from .radar.model import RadarModel, TargetSet
 from .radar.platforms import Platform, draw_perturbation
-from .radar.pointing import Pointing
+from .radar.pointing import Pointing, Scan
 from .radar.waveform import Waveform
 from .rng import generator
 from .scattering.breaking import breaking_statistics
@@ -346,7 +347,8 @@ def check_scene(scene, frequency: float | None = None) -> None:
 
 
 # ---------------------------------------------------------------------------- the radar
-def _platform(cfg, seed: int, stream_index: int, t_span: tuple[float, float]) -> Platform:
+def _platform(cfg, seed: int, stream_index: int, t_span: tuple[float, float],
+              earth: SphericalEarth | None = None) -> Platform:
     """Platform of a ``[transmitter]`` / ``[receiver]`` section (perturbation drawn from
     the ``"platform"`` stream, index 0 for the transmitter, 1 for the receiver)."""
     if cfg.motion == "fixed":
@@ -369,12 +371,22 @@ def _platform(cfg, seed: int, stream_index: int, t_span: tuple[float, float]) ->
                                  attitude_tau=g.attitude_tau_s)
     yaw = None if cfg.yaw_deg is None else float(np.deg2rad(cfg.yaw_deg))
     return Platform(times, positions, yaw=yaw, pitch=float(np.deg2rad(cfg.pitch_deg)),
-                    roll=float(np.deg2rad(cfg.roll_deg)), perturbation=pert)
+                    roll=float(np.deg2rad(cfg.roll_deg)), perturbation=pert, earth=earth)
 
 
 def _antenna(cfg, wavelength: float) -> Antenna:
     return Antenna(cfg.pattern, wavelength, cfg.width_m, cfg.height_m, cfg.basis,
-                   cfg.cross_polar_isolation_db)
+                   cfg.cross_polar_isolation_db, cfg.illumination, cfg.taylor_sidelobe_db,
+                   cfg.taylor_nbar)
+
+
+def build_earth(scene) -> SphericalEarth | None:
+    """The ``[propagation]`` Earth: a :class:`SphericalEarth` of radius k a, or None
+    (flat)."""
+    p = scene.propagation
+    if p.earth == "flat":
+        return None
+    return SphericalEarth(effective_radius(p.earth_radius_factor))
 
 
 def build_antennas(scene) -> tuple[Antenna, Antenna]:
@@ -386,6 +398,15 @@ def build_antennas(scene) -> tuple[Antenna, Antenna]:
 
 
 def _pointing(cfg, platform: Platform, t_ref: float) -> Pointing:
+    scan = cfg.scan
+    if scan.mode == "rotating":
+        return Pointing(scan=Scan("rotating", 2.0 * np.pi * scan.rate_rpm / 60.0,
+                                  float(np.deg2rad(cfg.depression_deg)),
+                                  start=float(np.deg2rad(scan.start_deg or 0.0))))
+    if scan.mode == "sector":
+        return Pointing(scan=Scan.sector(2.0 * np.pi * scan.rate_rpm / 60.0,
+                                         float(np.deg2rad(cfg.depression_deg)),
+                                         *np.deg2rad(scan.sector_deg)))
     if cfg.look_at_m is not None:
         return Pointing.aimed_at(cfg.look_at_m, platform, t_ref, track=cfg.track_look_at)
     return Pointing.by_angles(float(np.deg2rad(cfg.azimuth_deg)),
@@ -402,10 +423,11 @@ def _platforms(scene) -> tuple[Platform, Platform]:
         r = scene.radar
         t_span = (r.start_time_s, r.start_time_s + (r.n_pulses - 1) / r.prf_hz + 1.0e-3)
     seed = scene.run.seed
-    tx = _platform(scene.transmitter, seed, 0, t_span)
+    earth = build_earth(scene)
+    tx = _platform(scene.transmitter, seed, 0, t_span, earth)
     if scene.receiver is None:
         return tx, tx
-    return tx, _platform(scene.receiver, seed, 1, t_span)
+    return tx, _platform(scene.receiver, seed, 1, t_span, earth)
 
 
 def _targets(scene) -> TargetSet | None:
@@ -454,7 +476,8 @@ def build_radar(scene) -> RadarModel:
         targets=_targets(scene), seed=scene.run.seed, range_weighting=r.range_weighting,
         taylor_nbar=r.taylor_nbar, taylor_sidelobe_db=r.taylor_sidelobe_db,
         sea_update_pulses=r.sea_update_pulses, sigma_map_pulse=r.sigma_map_pulse,
-        accumulation_precision=r.accumulation_precision)
+        accumulation_precision=r.accumulation_precision, earth=build_earth(scene),
+        transmit_phase=r.transmit_phase)
 
 
 # -------------------------------------------------------------------------- the facets

@@ -43,6 +43,10 @@ everything ``run`` would):
 
 - **Something to receive**: sea clutter on, a target, or an explicit receive window.
 
+- **The radar horizon** on a spherical Earth (``[propagation] earth = "spherical"``):
+  with sea clutter, the whole tile above each antenna's horizon at the first and the
+  last pulse (point targets beyond it are simply not seen, at every pulse).
+
 "The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
 polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona, NY,
 USA, 2006, doi:10.1109/RADAR.2006.1631862.
@@ -497,10 +501,47 @@ def receive_problems(scene) -> list[str]:
             "turn sea_clutter on, add a target, or give window_start_m / window_end_m"]
 
 
+def horizon_problems(scene) -> list[str]:
+    """A spherical Earth with sea clutter: the tile must be above each antenna's radar
+    horizon (eq E2 of ``seaecho.geometry.earth``) at the first and the last pulse; a
+    tile partly beyond it is refused too (the sea model has no partial occlusion by the
+    Earth's bulge)."""
+    from .build import build_earth
+    from .geometry.earth import horizon_range
+    from .geometry.frames import tile_outline
+
+    earth = build_earth(scene)
+    if earth is None or not scene.radar.sea_clutter:
+        return []
+    try:
+        platforms = _platforms(scene)
+    except ValueError:  # reported by geometry_problems
+        return []
+    pulses = pulses_of(scene)
+    outline = tile_outline(*scene.sea.size_m, n_edge=2)
+    problems = []
+    for name, _, platform in platforms:
+        for p in sorted({0, scene.radar.n_pulses - 1}):
+            state = platform.nominal_state(float(pulses.time(p)))
+            seen = earth.visible(state.position, earth.position(outline))
+            if not seen.all():
+                h = float(state.position[2])
+                problems.append(
+                    f"[{name}].position_m: at pulse {p} the sea tile ([sea] size_x_m/"
+                    f"size_y_m around the origin) is {'partly ' if seen.any() else ''}"
+                    f"beyond the antenna's radar horizon ([propagation] earth = "
+                    f"'spherical': {horizon_range(max(h, 0.0), 0.0, earth.radius):.4g} m "
+                    "from its height); move the radar closer, raise it, or use earth = "
+                    "'flat'")
+                break
+    return problems
+
+
 def run_problems(scene, base_dir=".") -> list[str]:
     """Every problem of this module for a scene that has [radar] and [transmitter]."""
     return (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
-            + object_problems(scene, base_dir) + geometry_problems(scene))
+            + object_problems(scene, base_dir) + geometry_problems(scene)
+            + horizon_problems(scene))
 
 
 def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = None,
@@ -542,7 +583,7 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
                                block=block, base_dir=base_dir)
     except SceneError as exc:
         raise SceneError("\n".join([str(exc), *problems])) from None
-    problems += geometry_problems(scene)
+    problems += geometry_problems(scene) + horizon_problems(scene)
     if problems:
         raise SceneError(f"{source}: cannot be simulated\n" + "\n".join(problems))
     return line
@@ -558,6 +599,7 @@ __all__ = [
     "check_run",
     "crest_bound",
     "exhaustive_min_distance",
+    "horizon_problems",
     "geometry_problems",
     "image_noise_rcs",
     "image_problems",

@@ -45,6 +45,8 @@ STREAMS: dict[str, int] = {
     "breaking": 6,
     # anchor draws of the evolving speckle: (family, anchor index)
     "speckle-evolution": 7,
+    # the transmitted phase of a random-phase (magnetron) radar: pulse index
+    "transmit-phase": 8,
 }
 
 #: Philox4x32 constants (Salmon et al. 2011, table 2 and section 5.1): round multipliers

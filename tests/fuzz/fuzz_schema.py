@@ -282,6 +282,25 @@ def _antenna(draw: Draw, d: dict, get: Get) -> dict:
     if d.get("pattern", "rectangular") == "rectangular":
         d.setdefault("width_m", draw(get("width_m")))
         d.setdefault("height_m", draw(get("height_m")))
+    else:
+        d.pop("illumination", None)  # a taper needs the rectangular aperture
+    if d.get("scan", {}).get("mode", "fixed") != "fixed":  # pointed by its scan
+        d = _only(d, drop=("look_at_m", "track_look_at", "azimuth_deg"))
+        d.setdefault("depression_deg", draw(get("depression_deg")))
+    return d
+
+
+def _scan(draw: Draw, d: dict, get: Get) -> dict:
+    mode = d.get("mode", "fixed")
+    d = _only(d, drop=("rate_rpm", "start_deg", "sector_deg"))
+    if mode == "fixed":
+        return d
+    d["rate_rpm"] = draw(get("rate_rpm"))
+    if mode == "sector":
+        d["sector_deg"] = draw(st.tuples(st.floats(-360.0, 360.0), st.floats(-360.0, 360.0))
+                               .filter(lambda a: (a[0] - a[1]) % 360.0 != 0.0))
+    elif draw(st.booleans()):
+        d["start_deg"] = draw(get("start_deg"))
     return d
 
 
@@ -439,7 +458,7 @@ COUPLINGS: dict[str, Callable[[Draw, dict, Get], dict]] = {
     "SeaConfig": _sea, "RunConfig": _run, "ShipConfig": _ship, "WaveformConfig": _waveform,
     "AntennaConfig": _antenna, "PlatformConfig": _platform, "RadarConfig": _radar,
     "GaussMarkovConfig": _perturbation, "TargetConfig": _target, "ObjectConfig": _object,
-    "TracingConfig": _tracing, "ImageConfig": _image,
+    "TracingConfig": _tracing, "ImageConfig": _image, "ScanConfig": _scan,
     "Scene": _scene,
 }
 

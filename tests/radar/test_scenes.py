@@ -86,3 +86,50 @@ def test_antenna_errors_name_the_field():
     data["transmitter"]["antenna"] = {"pattern": "isotropic"}
     with pytest.raises(SceneError, match="exactly one"):
         parse_scene(data)
+
+
+@pytest.mark.parametrize("name", ["coastal_vts_xband", "shipborne_navigation_xband"])
+def test_scanning_scenes(name):
+    # docs/scanning.md: X band, 24 rpm (2.5 s, 2500 pulses at 1 kHz: one revolution),
+    # 4/3 Earth, the sea tile above the horizon; `seaecho check` accepts them
+    from seaecho.geometry.earth import effective_radius, grazing_angle
+    from seaecho.preflight import check_run
+
+    sc = load_scene(SCENES / f"{name}.toml")
+    model = build_radar(sc)
+    assert model.scan_period == pytest.approx(2.5)
+    assert model.n_pulses / model.prf == pytest.approx(model.scan_period)
+    assert model.earth.radius == pytest.approx(effective_radius(4.0 / 3.0))
+    assert model.carrier == 9.41e9
+    check_run(sc, name, base_dir=SCENES)
+    if name == "coastal_vts_xband":
+        assert model.transmit_phase == "random"
+        # grazing angle at the tile's centre, 2 km from a 35 m antenna: 1.0 deg
+        radar = RadarSystem(model, backend="numpy")
+        p = radar.tx.state(0.0).position
+        r = float(np.linalg.norm(p))
+        assert np.degrees(grazing_angle(35.0, r, model.earth.radius)) == pytest.approx(
+            1.0, abs=0.01)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["coastal_vts_xband", "shipborne_navigation_xband"])
+def test_scanning_scenes_run(name, tmp_path):
+    # `seaecho run SCENE -o OUT.nc` on a few pulses: the run, its CfRadial product and PPI
+    import warnings
+
+    import xarray as xr
+
+    from seaecho.cli import main
+    from seaecho.scattering.validity import SPMValidityWarning
+    from seaecho.warnings import SamplingWarning
+
+    out = tmp_path / "out.nc"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", SamplingWarning)
+        warnings.simplefilter("ignore", SPMValidityWarning)
+        assert main(["run", str(SCENES / f"{name}.toml"), "-o", str(out), "--pulses", "6",
+                     "-q"]) == 0
+    tree = xr.open_datatree(tmp_path / "out_ppi.nc")
+    assert tree["sweep_0"].sizes["azimuth"] == 6
+    assert (tmp_path / "out_ppi_sweep_0.png").exists()

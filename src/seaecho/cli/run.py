@@ -124,6 +124,11 @@ def run(args: argparse.Namespace) -> int:
     with ds:
         print(f"wrote {out} ({ds.sizes['pulse']} pulses x {ds.sizes['channel']} channels x "
               f"{ds.sizes['fast_time']} samples)")
+        if "sweep" in ds:  # a scanning radar: its sweeps as CfRadial 2 (docs/scanning.md)
+            from ..io.cfradial import write_ppi
+
+            wrote.append(write_ppi(ds, out.with_name(out.stem + "_ppi.nc")))
+            print(f"wrote {wrote[-1]}")
         if not args.no_figures:
             for png in figures(ds, out.with_suffix("")):
                 wrote.append(png)

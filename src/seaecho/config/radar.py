@@ -87,8 +87,69 @@ class GaussMarkovConfig(Section):
         return self
 
 
+class ScanConfig(Section):
+    """How an antenna scans about its platform's vertical (body z) axis.
+
+    Azimuths are in the scene's convention: counter-clockwise from the platform's body x
+    axis (forward), as ``azimuth_deg``; a coastal site with ``yaw_deg = 90`` has body x
+    pointing north. The antenna turns clockwise seen from above, as marine radars do
+    (its azimuth decreases; its bearing clockwise from north increases); the platform's
+    attitude (roll, pitch, yaw) turns the pedestal with it. ``depression_deg`` of the
+    antenna tilts the beam.
+    """
+
+    mode: Literal["fixed", "rotating", "sector"] = Field(
+        "fixed",
+        description="'fixed' (no scan), 'rotating' (continuous clockwise rotation) or "
+        "'sector' (clockwise from sector_deg[0] to sector_deg[1], then back)",
+    )
+    rate_rpm: float | None = Field(
+        None, gt=0.0, le=600.0,
+        description="rotation rate, revolutions per minute [rpm] (rotating, sector)",
+    )
+    start_deg: float | None = Field(
+        None, ge=-360.0, le=360.0,
+        description="boresight azimuth at t = 0, counter-clockwise from body x [deg] "
+        "(rotating; default 0)",
+    )
+    sector_deg: tuple[float, float] | None = Field(
+        None,
+        description="sector (from, to), counter-clockwise from body x, each within +-360 "
+        "[deg]: swept clockwise from 'from' to 'to' and back, starting at 'from' at t = 0 "
+        "(sector)",
+    )
+
+    @model_validator(mode="after")
+    def _check(self) -> ScanConfig:
+        if self.mode == "fixed":
+            if any(v is not None for v in (self.rate_rpm, self.start_deg, self.sector_deg)):
+                raise ValueError("mode 'fixed' takes no rate_rpm, start_deg or sector_deg")
+            return self
+        if self.rate_rpm is None:
+            raise ValueError(f"mode '{self.mode}' needs rate_rpm")
+        if self.mode == "rotating" and self.sector_deg is not None:
+            raise ValueError("sector_deg is only used with mode 'sector'")
+        if self.mode == "sector":
+            if self.sector_deg is None:
+                raise ValueError("mode 'sector' needs sector_deg = [from, to]")
+            if self.start_deg is not None:
+                raise ValueError("mode 'sector' starts at sector_deg[0]; omit start_deg")
+            if any(not abs(v) <= 360.0 for v in self.sector_deg):
+                raise ValueError(f"sector_deg = {list(self.sector_deg)}: each must be "
+                                 "within +-360 deg")
+            if (self.sector_deg[0] - self.sector_deg[1]) % 360.0 == 0.0:
+                raise ValueError(f"sector_deg = {list(self.sector_deg)}: an empty sector; "
+                                 "use mode 'rotating' for a full turn")
+        return self
+
+    @property
+    def scanning(self) -> bool:
+        """Whether the antenna scans."""
+        return self.mode != "fixed"
+
+
 class AntennaConfig(Section):
-    """An antenna: pattern, size, polarisation ports, pointing."""
+    """An antenna: pattern, size, polarisation ports, pointing, scan."""
 
     pattern: PatternName = Field(
         "rectangular",
@@ -131,11 +192,40 @@ class AntennaConfig(Section):
         None, ge=-90.0, le=90.0,
         description="boresight depression below the body horizontal plane [deg]",
     )
+    illumination: Literal["uniform", "cosine", "taylor"] = Field(
+        "uniform",
+        description="aperture illumination along the width (rectangular): 'uniform' "
+        "(first sidelobe -13.3 dB), 'cosine' (-23 dB) or 'taylor' (taylor_sidelobe_db); "
+        "the height stays uniform",
+    )
+    taylor_sidelobe_db: float = Field(
+        30.0, ge=13.3, le=60.0,
+        description="Taylor illumination's design peak sidelobe level below the peak [dB]",
+    )
+    taylor_nbar: int = Field(
+        4, ge=2, le=20, description="Taylor illumination's nbar (near sidelobes held) [-]"
+    )
+    scan: ScanConfig = Field(
+        default_factory=ScanConfig,
+        description="scanning [<platform>.antenna.scan]; default fixed",
+    )
 
     @model_validator(mode="after")
     def _check(self) -> AntennaConfig:
         if self.pattern == "rectangular" and (self.width_m is None or self.height_m is None):
             raise ValueError("pattern 'rectangular' needs width_m and height_m")
+        if self.illumination != "uniform" and self.pattern != "rectangular":
+            raise ValueError(f"illumination '{self.illumination}' needs pattern "
+                             "'rectangular'")
+        if self.scan.scanning:
+            if self.depression_deg is None:
+                raise ValueError("a scanning antenna needs depression_deg")
+            if (self.azimuth_deg is not None or self.look_at_m is not None
+                    or self.track_look_at):
+                raise ValueError("a scanning antenna is pointed by its scan and "
+                                 "depression_deg: omit azimuth_deg, look_at_m and "
+                                 "track_look_at")
+            return self
         by_angles = self.azimuth_deg is not None or self.depression_deg is not None
         if by_angles and (self.azimuth_deg is None or self.depression_deg is None):
             raise ValueError("give both azimuth_deg and depression_deg")
@@ -308,6 +398,12 @@ class RadarConfig(Section):
     )
     sigma_map_pulse: int = Field(
         0, ge=0, le=10_000_000, description="pulse whose per-facet sigma maps are saved [-]"
+    )
+    transmit_phase: Literal["coherent", "random"] = Field(
+        "coherent",
+        description="'coherent' (every pulse transmitted with phase 0) or 'random' (a "
+        "magnetron: a new uniform phase per pulse, seeded; echoes do not add coherently "
+        "from pulse to pulse)",
     )
 
     @model_validator(mode="after")

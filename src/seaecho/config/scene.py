@@ -16,6 +16,7 @@ from pydantic import Field, model_validator
 
 from .base import Name, Section, Text
 from .image import ImageConfig
+from .propagation import PropagationConfig
 from .radar import PlatformConfig, RadarConfig, TargetConfig
 from .run import RunConfig
 from .scattering import ScatteringConfig
@@ -56,6 +57,10 @@ class Scene(Section):
     )
     image: ImageConfig | None = Field(
         None, description="SAR focusing after the raw data [image]; omit for raw data only"
+    )
+    propagation: PropagationConfig = Field(
+        default_factory=PropagationConfig,
+        description="the Earth's curvature and refraction [propagation]",
     )
 
     @model_validator(mode="after")

@@ -81,9 +81,19 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
             # Antenna axes in the world (image calibration: gains towards each pixel)
             pointing = radar.tx_pointing if name == "tx" else radar.rx_pointing
             data[f"{name}_antenna_axes{kind}"] = (
-                ("pulse", "xyz", "antenna_axis"), pointing.axes(st),
+                ("pulse", "xyz", "antenna_axis"), pointing.axes(st, t),
                 {"units": "1", "long_name": "antenna axes (columns boresight, width, "
                  "height) in the world; d_local = axes^T d_world"})
+    scan, scanner = radar.tx_pointing.scan, "tx"
+    if scan is None:
+        scan, scanner = radar.rx_pointing.scan, "rx"
+    if scan is not None:  # a scanning antenna: its angle and sweep at every pulse
+        data["scan_azimuth"] = (("pulse",), scan.azimuth(t), {
+            "units": "rad", "long_name": "scanning antenna's boresight azimuth in the "
+            "body frame, counter-clockwise from body x"})
+        data["sweep"] = (("pulse",), scan.sweep(t), {
+            "units": "1", "long_name": "sweep index (revolution or sector pass) since t = 0",
+            "scan_mode": scan.mode, "scan_period_s": scan.period, "scan_antenna": scanner})
     coords["angle"] = ("angle", np.array(["yaw", "pitch", "roll"]))
     coords["antenna_axis"] = ("antenna_axis", np.array(["boresight", "width", "height"]))
     targets = radar.model.targets

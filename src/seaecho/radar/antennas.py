@@ -19,6 +19,8 @@ Patterns (power gain G, normalised so that the directivity integrates to 4 pi):
 
   with u = d_a . y, v = d_a . z, cos(theta) = d_a . x and sinc(x) = sin(pi x)/(pi x);
   the peak tends to 4 pi a b / lambda^2 for a, b >> lambda (Balanis 2016, eq 12-38).
+  A tapered width (cosine, eq A5, or Taylor, eq A4: :func:`line_pattern`) replaces the
+  width's sinc: marine fan beams have -25 to -30 dB azimuth sidelobes.
 - ``isotropic`` (G = 1), and Sionna RT's built-ins by name: ``dipole``
   (G = 1.5 sin^2 theta, Balanis eq 4-26a), ``hw_dipole``
   (G = 1.643 cos^2(pi/2 cos theta)/sin^2 theta, Balanis eq 4-84), ``tr38901``
@@ -51,6 +53,10 @@ References
 .. [2] 3GPP TR 38.901 v17.0.0, Table 7.3-1 (antenna element pattern).
 .. [3] IEEE Std 145-2013, Definitions of Terms for Antennas (handedness of circular
    polarisation).
+.. [4] T. T. Taylor, "Design of line-source antennas for narrow beamwidth and low side
+   lobes", *IRE Trans. Antennas Propag.* 3(1), 16-28, 1955.
+.. [5] M. I. Skolnik, *Introduction to Radar Systems*, 3rd ed., McGraw-Hill, 2001,
+   section 9.4 and table 9.1 (tapered apertures).
 """
 
 from __future__ import annotations
@@ -87,9 +93,100 @@ def _sinc(xp, t):
     return xp.select(small, 1.0, xp.sin(arg) / xp.select(small, 1.0, arg))
 
 
+#: Illuminations of an aperture along its width (:func:`line_pattern`).
+ILLUMINATIONS = ("uniform", "cosine", "taylor")
+
+
+def taylor_zeros(sidelobe_db: float, nbar: int) -> NDArray[np.float64]:
+    """Pattern zeros u_n, n = 1 .. nbar - 1, of Taylor's line source, eq (A4) [-].
+
+    A = arccosh(eta) / pi with eta = 10^(SLL / 20), sigma = nbar / sqrt(A^2 + (nbar - 1/2)^2),
+    u_n = sigma sqrt(A^2 + (n - 1/2)^2) (Taylor 1955, eqs 19-21; Skolnik 2001, section
+    9.4; Balanis 2016, section 7.6.3).
+
+    Parameters
+    ----------
+    sidelobe_db : float
+        Design peak sidelobe level below the peak, SLL > 0 [dB].
+    nbar : int
+        Number of nearly equal sidelobes next to the main lobe [-], >= 1.
+    """
+    if not sidelobe_db > 0 or int(nbar) < 1:
+        raise ValueError(f"sidelobe_db = {sidelobe_db}, nbar = {nbar}: need SLL > 0 dB "
+                         "and nbar >= 1")
+    a = np.arccosh(10.0 ** (sidelobe_db / 20.0)) / np.pi
+    n = np.arange(1, int(nbar))
+    sigma = nbar / np.sqrt(a * a + (nbar - 0.5) ** 2)
+    return sigma * np.sqrt(a * a + (n - 0.5) ** 2)
+
+
+def line_pattern(t, illumination: str = "uniform", sidelobe_db: float = 30.0,
+                 nbar: int = 4, *, xp=NUMPY):
+    """Far-field amplitude of a line source of length L at t = L u / lambda, 1 at t = 0.
+
+    - ``uniform``: sinc(t) = sin(pi t) / (pi t) (Balanis 2016, section 12.5);
+    - ``cosine``: illumination cos(pi x / L), |x| <= L/2:
+
+      .. math:: F(t) = \\frac{\\cos\\pi t}{1 - 4 t^2}                                  (A5)
+
+      first sidelobe -23.0 dB, half-power width 1.19 lambda / L, aperture efficiency
+      8 / pi^2 = 0.81 (Skolnik 2001, table 9.1; Balanis 2016, table 12.2);
+    - ``taylor``: Taylor's n-bar line source,
+
+      .. math:: F(t) = \\mathrm{sinc}(t)\\prod_{n=1}^{\\bar n - 1}
+                \\frac{1 - t^2 / u_n^2}{1 - t^2 / n^2}                                 (A4)
+
+      with the zeros u_n of :func:`taylor_zeros`: the first nbar - 1 sidelobes near the
+      design level, the farther ones decaying as sinc's (Taylor 1955, eq 19; Skolnik
+      2001, section 9.4). The removable 0/0 at t = n is its limit (-1)^(n+1)/2 times the
+      other factors.
+
+    Parameters
+    ----------
+    t : array (namespace ``xp``)
+        L u / lambda [-] (u the direction cosine along the line).
+    illumination : {'uniform', 'cosine', 'taylor'}
+    sidelobe_db, nbar : float, int
+        Taylor design peak sidelobe level [dB] and nbar [-] (``taylor`` only).
+    xp : array namespace (:mod:`seaecho.backend`), numpy by default.
+
+    References
+    ----------
+    Taylor, T. T. (1955). Design of line-source antennas for narrow beamwidth and low
+    side lobes. *IRE Trans. Antennas Propag.* 3(1), 16-28; Skolnik (2001) section 9.4;
+    Balanis (2016) sections 7.6.3 and 12.5.
+    """
+    if illumination == "uniform":
+        return _sinc(xp, t)
+    if illumination == "cosine":
+        d = 1.0 - 4.0 * t * t
+        near = xp.abs(d) < 1e-9
+        # Eq (A5); pi / 4 at t = +-1/2
+        return xp.select(near, 0.25 * np.pi, xp.cos(np.pi * t) / xp.select(near, 1.0, d))
+    if illumination == "taylor":
+        zeros = taylor_zeros(sidelobe_db, nbar)
+        f = _sinc(xp, t)
+        a = xp.abs(t)
+        nears = [xp.abs(a - n) < 1e-6 for n in range(1, int(nbar))]
+        for n, near in enumerate(nears, start=1):  # the 0/0 limit at t = n
+            f = xp.select(near, 0.5 * (-1.0) ** (n + 1), f)
+        for n, (near, u_n) in enumerate(zip(nears, zeros, strict=True), start=1):
+            # Eq (A4): the sinc's zero at n moved to u_n
+            f = f * (1.0 - t * t / (u_n * u_n)) / xp.select(near, 1.0, 1.0 - t * t / n ** 2)
+        return f
+    raise ValueError(f"illumination = {illumination!r}: unknown; allowed: "
+                     f"{', '.join(ILLUMINATIONS)}")
+
+
 def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: float, *,
-                   xp=None) -> NDArray[np.float64]:
-    """Un-normalised far-field amplitude F of a uniform rectangular aperture, eq (A1).
+                   xp=None, illumination: str = "uniform", sidelobe_db: float = 30.0,
+                   nbar: int = 4) -> NDArray[np.float64]:
+    """Un-normalised far-field amplitude F of a rectangular aperture, eq (A1).
+
+    Uniform along its height; along its width uniform (eq A1) or tapered (``illumination``,
+    ``sidelobe_db``, ``nbar`` of :func:`line_pattern`): the width's sinc of eq (A1)
+    becomes the line pattern of that illumination (separable aperture, Balanis 2016,
+    section 12.5).
 
     Parameters
     ----------
@@ -114,8 +211,9 @@ def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: 
     (..., 3) arrays by default; the radar kernel calls this same formula on Dr.Jit arrays.
     """
     xp, d = _local(d_local, xp)
-    # Eq (A1): sinc in the two direction cosines, Huygens obliquity factor
-    return (0.5 * (1.0 + d.x) * _sinc(xp, width * d.y / wavelength)
+    # Eq (A1): line patterns in the two direction cosines, Huygens obliquity factor
+    return (0.5 * (1.0 + d.x)
+            * line_pattern(width * d.y / wavelength, illumination, sidelobe_db, nbar, xp=xp)
             * _sinc(xp, height * d.z / wavelength))
 
 
@@ -137,7 +235,9 @@ def aperture_quadrature(width: float, height: float, wavelength: float) -> tuple
 
 
 @lru_cache(maxsize=64)
-def aperture_radiated_power(width: float, height: float, wavelength: float) -> float:
+def aperture_radiated_power(width: float, height: float, wavelength: float,
+                            illumination: str = "uniform", sidelobe_db: float = 30.0,
+                            nbar: int = 4) -> float:
     """Integral of |F|^2 over the sphere [sr] for eq (A1)'s normalisation.
 
     With the polar axis along the longer side of the aperture (say the width, direction
@@ -162,10 +262,17 @@ def aperture_radiated_power(width: float, height: float, wavelength: float) -> f
     nodes changes the result by less than that; tests: the Huygens element's 4 pi / 3
     and the closed form of the line source).
 
+    A tapered width (``illumination``, :func:`line_pattern`) replaces sinc(A u) or
+    sinc(B r sin phi), whichever belongs to the width, by its line pattern: the
+    Fourier transform of an illumination of the same extent, entire and of the same band,
+    so the same nodes hold.
+
     Parameters
     ----------
     width, height, wavelength : float
         Aperture width, height and wavelength [m].
+    illumination, sidelobe_db, nbar
+        The width's illumination (:func:`line_pattern`).
 
     Returns
     -------
@@ -182,6 +289,13 @@ def aperture_radiated_power(width: float, height: float, wavelength: float) -> f
     from scipy.special import roots_legendre
 
     a, b = sorted((width / wavelength, height / wavelength), reverse=True)
+    width_first = width >= height  # the width is the polar axis (direction cosine u)
+
+    def taper(t):
+        return line_pattern(t, illumination, sidelobe_db, nbar)
+
+    f_a = taper if width_first else np.sinc
+    f_b = np.sinc if width_first else taper
     n_u, n_phi = aperture_quadrature(width, height, wavelength)
     x, w = roots_legendre(2 * n_u)
     u, w = x[n_u:], w[n_u:]  # u > 0 (the integrand is even in u)
@@ -191,10 +305,10 @@ def aperture_radiated_power(width: float, height: float, wavelength: float) -> f
     rows = max(1, 2_000_000 // n_phi)
     for i in range(0, n_u, rows):  # chunks bound the memory of very large apertures
         r2 = (1.0 - u[i:i + rows] ** 2)[:, None]
-        s = np.sinc(b * np.sqrt(r2) * sin_phi)  # numpy's sinc: sin(pi x) / (pi x)
+        s = f_b(b * np.sqrt(r2) * sin_phi)  # numpy's sinc: sin(pi x) / (pi x)
         inner[i:i + rows] = np.sum(s * s * (1.0 + r2 * cos2_phi), axis=1)
     inner *= 0.5 * np.pi / n_phi  # the trapezoid over 2 pi, 1/4 of eq (A3) folded in
-    return 2.0 * float(np.sum(w * np.sinc(a * u) ** 2 * inner))
+    return 2.0 * float(np.sum(w * f_a(a * u) ** 2 * inner))
 
 
 def builtin_gain(name: str, d_local: ArrayLike, *, xp=None) -> NDArray[np.float64]:
@@ -357,6 +471,11 @@ class Antenna:
         'hv', 'slant' or 'circular'.
     cross_polar_isolation_db : float or None
         Port isolation [dB].
+    illumination : str
+        Illumination along the width (rectangular): 'uniform', 'cosine' or 'taylor'
+        (:func:`line_pattern`).
+    taylor_sidelobe_db, taylor_nbar : float, int
+        Taylor design sidelobe level [dB] and nbar [-].
     """
 
     pattern: str
@@ -365,6 +484,9 @@ class Antenna:
     height: float | None = None
     basis: str = "hv"
     cross_polar_isolation_db: float | None = None
+    illumination: str = "uniform"
+    taylor_sidelobe_db: float = 30.0
+    taylor_nbar: int = 4
 
     @property
     def ports(self) -> tuple[str, str]:
@@ -382,9 +504,11 @@ class Antenna:
         ``xp``: array namespace of ``d_local`` (:mod:`seaecho.backend`), numpy by default.
         """
         if self.pattern == "rectangular":
-            f = aperture_field(d_local, self.width, self.height, self.wavelength, xp=xp)
+            taper = (self.illumination, self.taylor_sidelobe_db, self.taylor_nbar)
+            f = aperture_field(d_local, self.width, self.height, self.wavelength, xp=xp,
+                               illumination=taper[0], sidelobe_db=taper[1], nbar=taper[2])
             norm = 4.0 * np.pi / aperture_radiated_power(self.width, self.height,
-                                                         self.wavelength)
+                                                         self.wavelength, *taper)
             return norm * f * f
         return builtin_gain(self.pattern, d_local, xp=xp)
 
@@ -442,14 +566,17 @@ def project_ports(ports: NDArray[np.complex128], h: NDArray, v: NDArray
 
 
 __all__ = [
+    "ILLUMINATIONS",
     "Antenna",
     "antenna_axes",
     "aperture_field",
     "aperture_quadrature",
     "aperture_radiated_power",
     "builtin_gain",
+    "line_pattern",
     "port_coefficients",
     "port_states",
     "project_ports",
+    "taylor_zeros",
     "wave_basis",
 ]

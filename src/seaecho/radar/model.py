@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
+from ..geometry.earth import SphericalEarth
 from .antennas import Antenna
 from .platforms import Platform
 from .pointing import Pointing
@@ -102,6 +103,13 @@ class RadarModel:
     accumulation_precision : str
         Floating point of the echo accumulation's NUFFT ('double' or 'single',
         :func:`seaecho.radar.echo.accumulate`).
+    earth : SphericalEarth or None
+        A spherical (effective-radius) Earth: platforms and targets are given in
+        Earth-following coordinates and mapped to the tangent frame, targets beyond the
+        horizon do not echo (:mod:`seaecho.geometry.earth`); None: flat Earth.
+    transmit_phase : str
+        'coherent' (every pulse leaves with phase 0) or 'random' (a magnetron: each
+        pulse's phase uniform in [0, 2 pi) from the ``"transmit-phase"`` stream).
     """
 
     carrier: float
@@ -132,11 +140,32 @@ class RadarModel:
     sea_update_pulses: int = 1
     sigma_map_pulse: int = 0
     accumulation_precision: str = "double"
+    earth: SphericalEarth | None = None
+    transmit_phase: str = "coherent"
 
     @property
     def monostatic(self) -> bool:
         """True when the receiver is the transmitter's platform and antenna."""
         return self.rx is self.tx
+
+    @property
+    def scan_period(self) -> float | None:
+        """Scan period [s] of the scanning antenna, None when neither antenna scans.
+
+        The transmitter's (one revolution, or a sector's back-and-forth,
+        :attr:`seaecho.radar.pointing.Scan.period`), else the receiver's: the time over
+        which a scanning radar revisits a target (scan-to-scan decorrelation of
+        fluctuating targets).
+        """
+        for pointing in (self.tx_pointing, self.rx_pointing):
+            if pointing.scan_period is not None:
+                return pointing.scan_period
+        return None
+
+    @property
+    def scanning(self) -> bool:
+        """Whether an antenna scans."""
+        return self.scan_period is not None
 
 
 __all__ = ["RadarModel", "TargetSet"]

@@ -36,6 +36,8 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..geometry.earth import SphericalEarth
+
 
 @dataclass(frozen=True)
 class PlatformState:
@@ -145,6 +147,7 @@ class Platform:
         roll: float = 0.0,
         perturbation: tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
         | None = None,
+        earth: SphericalEarth | None = None,
     ) -> None:
         """Piecewise-linear nominal path through ``positions`` at ``times``.
 
@@ -161,6 +164,13 @@ class Platform:
             Nominal pitch and roll [rad].
         perturbation : (t_grid (n,), dpos (n, 3) [m], datt (n, 3) [rad]) or None
             Path and attitude errors on a regular grid, linearly interpolated.
+        earth : SphericalEarth or None
+            A spherical Earth: the path above is in the scene's Earth-following
+            coordinates (x, y along the surface, z height above it) and the states are
+            returned in the Cartesian frame tangent at the origin
+            (:class:`seaecho.geometry.earth.SphericalEarth`, eq E4): positions mapped,
+            velocities and the body-to-world rotation turned by the local tilt; the
+            attitude angles stay those relative to the local level. None: flat Earth.
         """
         times = np.asarray(times, dtype=float).reshape(-1)
         positions = np.asarray(positions, dtype=float).reshape(-1, 3)
@@ -178,6 +188,16 @@ class Platform:
         self._pitch = float(pitch)
         self._roll = float(roll)
         self._pert = perturbation
+        self._earth = earth
+
+    def _on_earth(self, st: PlatformState) -> PlatformState:
+        """The state in the tangent frame of a spherical Earth (eq E4), or as it is."""
+        if self._earth is None:
+            return st
+        tilt = self._earth.tilt(st.position)
+        return PlatformState(self._earth.position(st.position),
+                             np.einsum("...ij,...j->...i", tilt, st.velocity),
+                             st.attitude, tilt @ st.rotation)
 
     # ------------------------------------------------------------------ nominal track
     def _segment(self, t: NDArray[np.float64]) -> NDArray[np.intp]:
@@ -187,6 +207,9 @@ class Platform:
 
     def nominal_state(self, t: ArrayLike) -> PlatformState:
         """Nominal (planned) state at times ``t`` [s], any shape."""
+        return self._on_earth(self._nominal(t))
+
+    def _nominal(self, t: ArrayLike) -> PlatformState:
         t = np.asarray(t, dtype=float)
         k = self._segment(t)
         velocity = self._v[k]
@@ -206,9 +229,9 @@ class Platform:
     # --------------------------------------------------------------------- true track
     def state(self, t: ArrayLike) -> PlatformState:
         """True state at times ``t`` [s]: nominal plus the Gauss-Markov perturbation."""
-        nominal = self.nominal_state(t)
+        nominal = self._nominal(t)
         if self._pert is None:
-            return nominal
+            return self._on_earth(nominal)
         t = np.asarray(t, dtype=float)
         grid, dpos, datt = self._pert
         step = grid[1] - grid[0]
@@ -221,7 +244,7 @@ class Platform:
         velocity = nominal.velocity + np.where(inside, (dpos[i + 1] - dpos[i]) / step, 0.0)
         attitude = nominal.attitude + (1 - f) * datt[i] + f * datt[i + 1]
         rotation = rotation_matrix(attitude[..., 0], attitude[..., 1], attitude[..., 2])
-        return PlatformState(position, velocity, attitude, rotation)
+        return self._on_earth(PlatformState(position, velocity, attitude, rotation))
 
     @property
     def is_perturbed(self) -> bool:

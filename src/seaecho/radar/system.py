@@ -175,6 +175,12 @@ class RadarSystem:
 
     # ------------------------------------------------------------------------ basics
     @property
+    def scan_period(self) -> float | None:
+        """Scan period [s] of a scanning antenna (a revolution, or a sector's
+        back-and-forth), None when no antenna scans (:attr:`RadarModel.scan_period`)."""
+        return self.model.scan_period
+
+    @property
     def channel_names(self) -> list[str]:
         """Channel names in axis order, e.g. ['HH', 'HV', 'VH', 'VV']."""
         return [c[0] for c in self.channels]
@@ -187,7 +193,22 @@ class RadarSystem:
         """Platform states and antenna axes at the emission of ``pulse``."""
         t = float(self.emission_time(pulse))
         tx, rx = self.tx.state(t), self.rx.state(t)
-        return PulseGeometry(t, tx, rx, self.tx_pointing.axes(tx), self.rx_pointing.axes(rx))
+        return PulseGeometry(t, tx, rx, self.tx_pointing.axes(tx, t),
+                             self.rx_pointing.axes(rx, t))
+
+    def target_positions(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
+        """Positions [m] of the model's targets at time t [s] in the simulation frame
+        (mapped to the tangent frame on a spherical Earth, eq E4) and whether each is
+        above both platforms' horizon (all True on a flat Earth)."""
+        targets = self.model.targets
+        p = targets.positions + t * targets.velocities
+        earth = self.model.earth
+        if earth is None:
+            return p, np.ones(len(p), dtype=bool)
+        p = earth.position(p)
+        seen = (earth.visible(self.tx.state(t).position, p)
+                & earth.visible(self.rx.state(t).position, p))
+        return p, seen
 
     def auto_window(self, margin_m: float | None = None) -> ReceiveWindow:
         """Receive window covering the sea tile (and its waves) and the targets.
@@ -207,7 +228,7 @@ class RadarSystem:
             pr = self.rx.state(t).position
             pts = [points] if clutter else []
             if m.targets is not None and len(m.targets):
-                pts.append(m.targets.positions + t * m.targets.velocities)
+                pts.append(self.target_positions(t)[0])
             if not pts:
                 continue
             p = np.vstack(pts)
@@ -332,21 +353,41 @@ class RadarSystem:
             if tau.size:
                 out += accumulate(tau, amp, self._spectrum, self.window,
                                   precision=self.model.accumulation_precision)
+        if self.model.transmit_phase == "random":  # a magnetron: a new phase per pulse
+            out *= np.exp(1j * self.transmit_phase(pulse))
         if self.model.thermal_noise if noise is None else noise:
             out += thermal_noise(out.shape, self.noise_power,
                                  generator(self.seed, "noise", pulse))
         return out
 
+    def transmit_phase(self, pulse: int) -> float:
+        """Transmitted phase of ``pulse`` [rad]: 0 for a coherent radar; for a random
+        one (a magnetron, whose oscillation starts from noise at every pulse) uniform in
+        [0, 2 pi) from the ``"transmit-phase"`` stream, pulse index (Skolnik 2001,
+        section 3.5: a magnetron's phase is random from pulse to pulse)."""
+        if self.model.transmit_phase != "random":
+            return 0.0
+        return float(generator(self.seed, "transmit-phase", pulse).uniform(0.0, 2.0 * np.pi))
+
     def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None
                     ) -> ScattererEcho | None:
-        """Echo of the model's point targets at one pulse (None if there are none);
-        ``variant`` as :meth:`scatterer_echo`."""
+        """Echo of the model's point targets at one pulse (None if there are none, or
+        all are beyond the horizon of a spherical Earth); ``variant`` as
+        :meth:`scatterer_echo`."""
         targets = self.model.targets
         if targets is None or not len(targets):
             return None
-        return self.scatterer_echo(geometry, targets.positions + geometry.time
-                                   * targets.velocities, targets.velocities,
-                                   targets.scattering, variant=variant)
+        p, seen = self.target_positions(geometry.time)
+        if not seen.any():
+            return None
+        v = targets.velocities
+        if self.model.earth is not None:  # velocities turned by the local tilt
+            v = np.einsum("...ij,...j->...i", self.model.earth.tilt(
+                targets.positions + geometry.time * v), v)
+        if seen.all():
+            return self.scatterer_echo(geometry, p, v, targets.scattering, variant=variant)
+        return self.scatterer_echo(geometry, p[seen], v[seen], targets.scattering[seen],
+                                   variant=variant)
 
 
 __all__ = [

@@ -1,0 +1,36 @@
+"""``[propagation]`` section: the Earth under the radar.
+
+``earth = "flat"`` (default) keeps the scene's plane z = 0 as the sea's mean surface
+everywhere. ``earth = "spherical"`` draws the rays straight over a sphere of effective
+radius k a (standard refraction: k = 4/3; Skolnik, *Introduction to Radar Systems*, 3rd
+ed., 2001, section 8.2; Blake, *Radar Range-Performance Analysis*, 1986, chapter 3):
+the scene's (x, y) of platforms and targets are distances along the surface from the
+origin, z the height above it; targets beyond the radar horizon do not echo
+(``seaecho.geometry.earth``, docs/scanning.md).
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import Field
+
+from .base import Section
+
+
+class PropagationConfig(Section):
+    """The Earth's curvature and the atmosphere's refraction."""
+
+    earth: Literal["flat", "spherical"] = Field(
+        "flat",
+        description="'flat' (the plane z = 0) or 'spherical' (an Earth of effective radius "
+        "earth_radius_factor x 6371 km; platforms and targets beyond the horizon hidden)",
+    )
+    earth_radius_factor: float = Field(
+        4.0 / 3.0, ge=0.5, le=100.0,
+        description="effective Earth radius factor k [-] (4/3: standard refraction; "
+        "spherical only)",
+    )
+
+
+__all__ = ["PropagationConfig"]
