@@ -256,13 +256,18 @@ def _scene(scene) -> SceneModel:
 # -------------------------------------------------------------------------- simulation
 def first_pulses(scene: SceneModel, n: int) -> SceneModel:
     """The scene limited to its first ``n`` pulses, the sigma-map pulse kept inside
-    (``simulate(pulses=n)``, ``--pulses N``)."""
+    (``simulate(pulses=n)``, ``--pulses N``); ``[scattering] sea_motion = "auto"`` is
+    resolved on the whole run (:func:`seaecho.build.sea_motion`), so that these are the
+    run's first pulses."""
+    from .build import sea_motion
+
     if isinstance(n, bool) or not isinstance(n, int) or n < 1:
         raise SceneError(f"pulses = {n!r}: must be an integer >= 1")
     n = min(n, scene.radar.n_pulses)
     radar = scene.radar.model_copy(update={
         "n_pulses": n, "sigma_map_pulse": min(scene.radar.sigma_map_pulse, n - 1)})
-    return scene.model_copy(update={"radar": radar})
+    scattering = scene.scattering.model_copy(update={"sea_motion": sea_motion(scene)})
+    return scene.model_copy(update={"radar": radar, "scattering": scattering})
 
 
 def _available_memory() -> float | None:
