@@ -128,8 +128,10 @@ def test_sea_run_has_surface_sigma_maps_and_truth(tmp_path):
 def test_speckle_and_surface_held_within_a_block():
     # With the surface held for the block and fixed platforms, two pulses of one block are
     # identical (same surface, same speckle draw); the next block draws new speckle.
+    # (Held explicitly: a sea renewed within the run evolves by default, "auto".)
     sc = _scene(sea=True, n_pulses=4, sea_update_pulses=2)
-    sim = Simulation(sc.model_copy(update={"targets": ()}))
+    sim = Simulation(sc.model_copy(update={"targets": (), "scattering": sc.scattering.model_copy(
+        update={"sea_motion": "held"})}))
     r0, r1, r2 = sim.pulse(0), sim.pulse(1), sim.pulse(2)
     np.testing.assert_array_equal(r0, r1)
     assert not np.allclose(r0, r2)
