@@ -218,6 +218,15 @@ MUTATIONS = [
              ("tests/scattering/test_dynamics.py",),
              "the Bragg lines of the evolving speckle without the capillary term of the "
              "dispersion relation (11.0 Hz -> 8.6 Hz at X band, 45 deg)"),
+    Mutation("auto-motion-held-when-renewed", S + "build.py",
+             "r.sea_update_pulses >= r.n_pulses", "r.sea_update_pulses > 1",
+             ("tests/test_build.py",),
+             "sea_motion = 'auto' holds a sea renewed every few pulses (block-white clutter)"),
+    Mutation("auto-motion-evolves-the-aperture", S + "build.py",
+             "r.sea_update_pulses >= r.n_pulses", "r.sea_update_pulses > r.n_pulses",
+             ("tests/test_build.py",),
+             "sea_motion = 'auto' evolves a sea held for the whole run (the paper's SAR "
+             "scenes would change)"),
     Mutation("breaking-without-1-q", S + "scattering/facet.py",
              "keep = None if breaking is None else 1.0 - breaking",
              "keep = None",

@@ -1188,7 +1188,7 @@ def scene_summary(scene: SceneModel) -> SceneSummary:
     """
     import numpy as np
 
-    from .build import build_radar, sea_spectrum
+    from .build import build_radar, sea_motion, sea_spectrum
     from .constants import C0
     from .ocean.twoscale import height_variance
 
@@ -1269,7 +1269,8 @@ def scene_summary(scene: SceneModel) -> SceneSummary:
         rad = [("carrier", f"{_si(r.carrier_frequency_hz, 'Hz')} (lambda {lam * 100:.3g} cm)"),
                ("waveform", f"{wave}, sampled at {_si(r.sampling_rate_hz, 'Hz')}"),
                ("pulses", f"{r.n_pulses} at PRF {_si(r.prf_hz, 'Hz')} "
-                f"({_si(duration, 's')}); sea held {r.sea_update_pulses} pulse(s)"),
+                f"({_si(duration, 's')}); sea surface every {r.sea_update_pulses} "
+                f"pulse(s), {sea_motion(scene)} between"),
                ("channels", " ".join(r.channels)),
                ("sea clutter", "on" if r.sea_clutter else "off")]
         if scene.targets:
