@@ -244,3 +244,16 @@ def test_bundled_scenes_resolve_auto_as_documented():
         sc = load_scene(scenes / f"{name}.toml")
         assert sc.scattering.sea_motion == "auto", name
         assert sea_motion(sc) == motion, name
+
+
+def test_first_pulses_keep_the_runs_sea_motion():
+    # --pulses N is a quick look at the run's first pulses: one pulse of a sea renewed
+    # every pulse would resolve "auto" to held on its own; it keeps the run's "evolving"
+    from seaecho.api import first_pulses
+    from seaecho.build import sea_motion
+
+    sc = _motion_scene(None, n_pulses=8, update=1)
+    one = first_pulses(sc, 1)
+    assert one.radar.n_pulses == 1 and sea_motion(one) == "evolving"
+    held = first_pulses(_motion_scene(None, n_pulses=8, update=8), 2)
+    assert sea_motion(held) == "held"
