@@ -133,14 +133,22 @@ def main() -> None:
                     help="geometry update interval of the evolving sea [pulses]")
     ap.add_argument("--kernel-facets", type=int, default=522_242,
                     help="facets of the kernel-alone benchmark [0] (0: skip it)")
+    ap.add_argument("--motion-only", action="store_true",
+                    help="[2] only, against the held blend+breaking baseline (no [0], [1])")
     a = ap.parse_args()
-    if a.kernel_facets:
+    if a.kernel_facets and not a.motion_only:
         bench_kernel(a.kernel_facets, 5)
     g = a.grid or 648
     print(f"Simulation 1 (bistatic quad-pol, ray traced, {g} x {g} grid, "
           f"{2 * (g - 1) ** 2} facets), per pulse best / mean of {a.pulses}; "
           f"{os.cpu_count()} CPUs, load {os.getloadavg()[0]:.1f}")
     big = a.pulses + 100
+    if a.motion_only:
+        print("[2] motion of the sea (blend+breaking, tilt average)")
+        held = bench("held for all pulses (baseline)", a.grid, a.pulses, "blend+breaking",
+                     True, "held", big)
+        motion(a, held)
+        return
     print("[1] per-facet models, sea held for all pulses")
     base = bench("blend, no unresolved-tilt average (paper)", a.grid, a.pulses, "blend",
                  False, "held", big)
@@ -153,7 +161,11 @@ def main() -> None:
           f"{100 * (tilt[0] / base[0] - 1):+.0f} % wall, {100 * (tilt[1] / base[1] - 1):+.0f} % "
           "CPU")
     print("[2] motion of the sea (blend+breaking, tilt average)")
-    held = brk
+    motion(a, brk)
+
+
+def motion(a, held: tuple[float, float]) -> None:
+    """[2]: the evolving sea and the held sea renewed every pulse against ``held``."""
     evo = bench(f"evolving, geometry every {a.update} pulses", a.grid, a.pulses,
                 "blend+breaking", True, "evolving", a.update)
     evo1 = bench("evolving, new surface every pulse", a.grid, a.pulses, "blend+breaking",
@@ -164,6 +176,8 @@ def main() -> None:
           f"evolving every pulse / held: {evo1[0] / held[0]:.2f} wall, "
           f"{evo1[1] / held[1]:.2f} CPU (held with a new surface per pulse: "
           f"{held1[0] / held[0]:.2f})")
+    print(f"    new surface every pulse, evolving (the default, 'auto') / held (the former "
+          f"default): {evo1[0] / held1[0]:.2f} wall, {evo1[1] / held1[1]:.2f} CPU")
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
     print(f"peak RSS {rss:.0f} MiB")
 

@@ -58,9 +58,10 @@ N_PULSES = 128
 
 
 def scene(u, look_deg, inc_deg, model, size=128.0, n=128, seed=1, update=8,
-          n_pulses=N_PULSES, prf=PRF):
+          n_pulses=N_PULSES, prf=PRF, motion="evolving"):
     """Monostatic X-band radar 1 km from the tile centre; wind towards +x; look 0: the
-    radar east of the tile looking west (upwind)."""
+    radar east of the tile looking west (upwind); ``motion`` None: the default
+    ``[scattering] sea_motion``."""
     th, az = np.radians(inc_deg), np.radians(look_deg)
     r = 1000.0
     pos = (r * np.sin(th) * np.cos(az), r * np.sin(th) * np.sin(az), r * np.cos(th))
@@ -68,7 +69,7 @@ def scene(u, look_deg, inc_deg, model, size=128.0, n=128, seed=1, update=8,
         "sea": {"spectrum": "elfouhaily", "spreading": "elfouhaily", "wind_speed_m_s": u,
                 "size_x_m": size, "nx": n},
         "run": {"seed": seed},
-        "scattering": {"model": model, "sea_motion": "evolving"},
+        "scattering": {"model": model, **({"sea_motion": motion} if motion else {})},
         "tracing": {"mode": "analytic", "shadowing": "smith"},
         "radar": {"carrier_frequency_hz": F, "sampling_rate_hz": 240e6, "prf_hz": prf,
                   "n_pulses": n_pulses, "sea_update_pulses": update,

@@ -178,3 +178,82 @@ def test_facets_with_more_crosswind_slope_than_the_surface_get_no_subfacet_slope
     assert band.mss_crosswind + dc < 0 < band.mss_upwind + du
     assert m.mss_crosswind == 0.0
     assert m.mss_upwind == pytest.approx(band.mss_upwind + du, rel=1e-12)
+
+
+# ------------------------------------------------------------- the sea's motion, "auto"
+def _motion_scene(motion=None, n_pulses=8, update=1, sea_clutter=True):
+    radar = {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 2e8, "prf_hz": 1e3,
+             "n_pulses": n_pulses, "sea_update_pulses": update, "sea_clutter": sea_clutter,
+             "waveform": {"kind": "lfm", "bandwidth_hz": 1e8, "duration_s": 1e-6}}
+    d = {"sea": {"wind_speed_m_s": 8.0, "size_x_m": 16.0, "nx": 64},
+         "tracing": {"mode": "analytic"}, "radar": radar,
+         "transmitter": {"position_m": (-500.0, 0.0, 300.0), "antenna": ISO}}
+    if motion is not None:
+        d["scattering"] = {"sea_motion": motion}
+    return parse_scene(d)
+
+
+@pytest.mark.parametrize(("motion", "n_pulses", "update", "clutter", "expected"), [
+    # auto: a sea renewed within the run evolves (held, it would be white clutter)...
+    (None, 8, 1, True, "evolving"),
+    (None, 128, 16, True, "evolving"),
+    # ... one surface for every pulse (the paper's SAR scenes) stays held
+    (None, 8, 8, True, "held"),
+    (None, 8, 100, True, "held"),
+    (None, 1, 1, True, "held"),
+    (None, 8, 1, False, "held"),
+    # explicit values are kept
+    ("held", 8, 1, True, "held"),
+    ("evolving", 8, 8, True, "evolving"),
+])
+def test_auto_sea_motion_resolves_in_one_place(motion, n_pulses, update, clutter, expected):
+    from seaecho.build import sea_motion
+
+    sc = _motion_scene(motion, n_pulses, update, clutter)
+    assert sc.scattering.sea_motion == (motion or "auto")
+    assert sea_motion(sc) == expected
+    if clutter:  # the sea model carries the evolving speckle's parameters, or not
+        assert (build_sea_model(sc).dynamics is not None) == (expected == "evolving")
+
+
+def test_auto_sea_motion_without_radar_is_held():
+    from seaecho.build import sea_motion
+
+    sc = _scene(radar=False)
+    assert sc.scattering.sea_motion == "auto" and sea_motion(sc) == "held"
+    assert build_sea_model(sc, 10e9).dynamics is None
+
+
+def test_bundled_scenes_resolve_auto_as_documented():
+    # docs/dynamics.md: the paper's SAR scenes hold one sea for the whole aperture
+    # (sea_update_pulses = n_pulses) and stay held, so their bytes do not change;
+    # Simulation 1 renews its sea at every one of its 8 pulses and evolves.
+    from pathlib import Path
+
+    from seaecho.build import sea_motion
+    from seaecho.config import load_scene
+
+    scenes = Path(__file__).resolve().parents[1] / "scenes"
+    expected = {"paper_sim1_bistatic_64m": "evolving",
+                "paper_sim2_sar_128m_wind55": "held", "paper_sim3_sar_128m_wind0": "held",
+                "paper_sim4_sar_500m_u10": "held", "bistatic_sar_128m_wind55": "held",
+                "ship_low_grazing_80m": "held", "calibration_point_target": "held",
+                "calibration_sar_point_targets": "held", "calibration_trihedral": "held"}
+    assert {p.stem for p in scenes.glob("*.toml")} == set(expected)
+    for name, motion in expected.items():
+        sc = load_scene(scenes / f"{name}.toml")
+        assert sc.scattering.sea_motion == "auto", name
+        assert sea_motion(sc) == motion, name
+
+
+def test_first_pulses_keep_the_runs_sea_motion():
+    # --pulses N is a quick look at the run's first pulses: one pulse of a sea renewed
+    # every pulse would resolve "auto" to held on its own; it keeps the run's "evolving"
+    from seaecho.api import first_pulses
+    from seaecho.build import sea_motion
+
+    sc = _motion_scene(None, n_pulses=8, update=1)
+    one = first_pulses(sc, 1)
+    assert one.radar.n_pulses == 1 and sea_motion(one) == "evolving"
+    held = first_pulses(_motion_scene(None, n_pulses=8, update=8), 2)
+    assert sea_motion(held) == "held"

@@ -128,8 +128,10 @@ def test_sea_run_has_surface_sigma_maps_and_truth(tmp_path):
 def test_speckle_and_surface_held_within_a_block():
     # With the surface held for the block and fixed platforms, two pulses of one block are
     # identical (same surface, same speckle draw); the next block draws new speckle.
+    # (Held explicitly: a sea renewed within the run evolves by default, "auto".)
     sc = _scene(sea=True, n_pulses=4, sea_update_pulses=2)
-    sim = Simulation(sc.model_copy(update={"targets": ()}))
+    sim = Simulation(sc.model_copy(update={"targets": (), "scattering": sc.scattering.model_copy(
+        update={"sea_motion": "held"})}))
     r0, r1, r2 = sim.pulse(0), sim.pulse(1), sim.pulse(2)
     np.testing.assert_array_equal(r0, r1)
     assert not np.allclose(r0, r2)
@@ -290,9 +292,15 @@ def test_dataset_says_whether_the_sea_is_frozen(tmp_path):
         assert ds.attrs["phase_update_interval_s"] == pytest.approx(1e-3)
         assert ds.attrs["speckle_lifetime_bragg_plus_s"] > 0.0
         assert ds.attrs["scattering_model"] == "blend+breaking"
-    out = Simulation(_raytraced_scene(0.0, n_pulses=2)).run(tmp_path / "h.nc", progress=False)
-    with xr.open_dataset(out, engine="h5netcdf") as ds:
-        assert ds.attrs["sea_motion"] == "held" and ds.attrs["sea_frozen"] == 1
+    # "auto" (the default): one surface for both pulses is held; a sea renewed at every
+    # pulse evolves (held, it would give white clutter)
+    for update, motion in ((2, "held"), (1, "evolving")):
+        sc = _raytraced_scene(0.0, n_pulses=2, sea_update_pulses=update)
+        assert sc.scattering.sea_motion == "auto"
+        out = Simulation(sc).run(tmp_path / f"a{update}.nc", progress=False)
+        with xr.open_dataset(out, engine="h5netcdf") as ds:
+            assert ds.attrs["sea_motion"] == motion
+            assert ds.attrs["sea_frozen"] == int(motion == "held")
 
 
 @pytest.mark.parametrize("mode", ["analytic", "raytraced"])
@@ -390,3 +398,48 @@ def test_single_precision_accumulation_matches_double():
     np.testing.assert_array_equal(t["double"], t["single"])
     with pytest.raises(ValueError, match="accumulation_precision"):
         _scene(accumulation_precision="half")
+
+
+def test_default_sea_renewed_every_pulse_gives_coherent_clutter():
+    # A scene that says nothing of the sea's motion and renews the sea every pulse
+    # (sea_update_pulses = 1): held, each pulse has new speckle and the clutter is white
+    # (lag-one correlation ~ 0); the default ("auto" -> evolving) keeps the pulses
+    # coherent over the PRI (1 ms here, for a coherence time of tens of ms at X band:
+    # docs/dynamics.md), so its Doppler spectrum is that of the moving sea.
+    base = _scene(sea=True, n_pulses=12).model_copy(update={"targets": ()})
+    assert base.scattering.sea_motion == "auto" and base.radar.sea_update_pulses == 1
+    rho = {}
+    for motion in ("auto", "held"):
+        sc = base.model_copy(update={"scattering": base.scattering.model_copy(
+            update={"sea_motion": motion})})
+        sim = Simulation(sc)
+        x = np.array([sim.pulse(p) for p in range(sc.radar.n_pulses)])
+        rho[motion] = (np.abs(np.sum(x[1:] * np.conj(x[:-1])))
+                       / np.sum(np.abs(x[:-1]) ** 2))
+        assert sim.evolving == (motion == "auto")
+    assert rho["held"] < 0.3
+    assert rho["auto"] > 0.8
+
+
+@pytest.mark.parametrize("name", ["paper_sim2_sar_128m_wind55", "paper_sim4_sar_500m_u10"])
+def test_sar_scenes_hold_their_sea_by_default_to_the_byte(name):
+    # The paper's SAR scenes hold one sea for the whole aperture (sea_update_pulses =
+    # n_pulses): the default "auto" must give the bytes of an explicitly held sea (their
+    # pulses before the default changed). A coarse grid and no hull keep it cheap.
+    import warnings
+    from pathlib import Path
+
+    from seaecho.config import load_scene
+
+    path = Path(__file__).resolve().parents[1] / "scenes" / f"{name}.toml"
+    sc = load_scene(path)
+    sc = sc.model_copy(update={"objects": (), "sea": sc.sea.model_copy(update={"nx": 48})})
+    held = sc.model_copy(update={"scattering": sc.scattering.model_copy(
+        update={"sea_motion": "held"})})
+    assert sc.scattering.sea_motion == "auto"
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the coarse grid's sampling warnings
+        a, b = Simulation(sc, base_dir=path.parent), Simulation(held, base_dir=path.parent)
+        assert not a.evolving
+        for p in (0, 7):
+            assert a.pulse(p).tobytes() == b.pulse(p).tobytes()

@@ -219,6 +219,21 @@ MUTATIONS = [
              "the dispersion relation without its capillary term: the Bragg lines of the "
              "evolving speckle (11.0 Hz -> 8.6 Hz at X band, 45 deg), the Elfouhaily "
              "phase speed, KHCC03's growth rates (one formula, numpy and Dr.Jit)"),
+    Mutation("bragg-line-gravity-only", S + "scattering/dynamics.py",
+             "f_b = xp.sqrt(kb * (G + SURFACE_TENSION_OVER_DENSITY * kb * kb))",
+             "f_b = xp.sqrt(kb * G)",
+             ("tests/scattering/test_dynamics.py",),
+             "the Bragg lines of the evolving speckle without the capillary term of the "
+             "dispersion relation (11.0 Hz -> 8.6 Hz at X band, 45 deg)"),
+    Mutation("auto-motion-held-when-renewed", S + "build.py",
+             "r.sea_update_pulses >= r.n_pulses", "r.sea_update_pulses > 1",
+             ("tests/test_build.py",),
+             "sea_motion = 'auto' holds a sea renewed every few pulses (block-white clutter)"),
+    Mutation("auto-motion-evolves-the-aperture", S + "build.py",
+             "r.sea_update_pulses >= r.n_pulses", "r.sea_update_pulses > r.n_pulses",
+             ("tests/test_build.py",),
+             "sea_motion = 'auto' evolves a sea held for the whole run (the paper's SAR "
+             "scenes would change)"),
     Mutation("breaking-without-1-q", S + "scattering/facet.py",
              "keep = None if breaking is None else 1.0 - breaking",
              "keep = None",

@@ -266,13 +266,18 @@ def _scene(scene) -> SceneModel:
 # -------------------------------------------------------------------------- simulation
 def first_pulses(scene: SceneModel, n: int) -> SceneModel:
     """The scene limited to its first ``n`` pulses, the sigma-map pulse kept inside
-    (``simulate(pulses=n)``, ``--pulses N``)."""
+    (``simulate(pulses=n)``, ``--pulses N``); ``[scattering] sea_motion = "auto"`` is
+    resolved on the whole run (:func:`seaecho.build.sea_motion`), so that these are the
+    run's first pulses."""
+    from .build import sea_motion
+
     if isinstance(n, bool) or not isinstance(n, int) or n < 1:
         raise SceneError(f"pulses = {n!r}: must be an integer >= 1")
     n = min(n, scene.radar.n_pulses)
     radar = scene.radar.model_copy(update={
         "n_pulses": n, "sigma_map_pulse": min(scene.radar.sigma_map_pulse, n - 1)})
-    return scene.model_copy(update={"radar": radar})
+    scattering = scene.scattering.model_copy(update={"sea_motion": sea_motion(scene)})
+    return scene.model_copy(update={"radar": radar, "scattering": scattering})
 
 
 def _available_memory() -> float | None:
@@ -1233,7 +1238,7 @@ def scene_summary(scene: SceneModel) -> SceneSummary:
     """
     import numpy as np
 
-    from .build import build_radar, sea_spectrum
+    from .build import build_radar, sea_motion, sea_spectrum
     from .constants import C0
     from .ocean.twoscale import height_variance
 
@@ -1314,7 +1319,8 @@ def scene_summary(scene: SceneModel) -> SceneSummary:
         rad = [("carrier", f"{_si(r.carrier_frequency_hz, 'Hz')} (lambda {lam * 100:.3g} cm)"),
                ("waveform", f"{wave}, sampled at {_si(r.sampling_rate_hz, 'Hz')}"),
                ("pulses", f"{r.n_pulses} at PRF {_si(r.prf_hz, 'Hz')} "
-                f"({_si(duration, 's')}); sea held {r.sea_update_pulses} pulse(s)"),
+                f"({_si(duration, 's')}); sea surface every {r.sea_update_pulses} "
+                f"pulse(s), {sea_motion(scene)} between"),
                ("channels", " ".join(r.channels)),
                ("sea clutter", "on" if r.sea_clutter else "off")]
         if scene.targets:

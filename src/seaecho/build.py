@@ -11,6 +11,7 @@ function                   reads                                gives (stage mod
 :func:`build_sea`          ``[sea]``, ``[ship]``, ``[run]``     ``Sea`` (surface + wake)
 :func:`carrier_frequency`  ``[radar]`` or an explicit value     carrier [Hz] (no default)
 :func:`build_sea_model`    ``[sea]``, carrier                   ``scattering.SeaModel``
+:func:`sea_motion`         ``[scattering]``, ``[radar]``        "held" or "evolving"
 :func:`build_radar`        ``[radar]``, ``[transmitter]``,      ``radar.RadarModel``
                            ``[receiver]``, ``[[targets]]``
 :func:`build_tracing`      ``[tracing]``, ``[[objects]]``,      ``tracing.TracingModel``
@@ -87,6 +88,7 @@ __all__ = [
     "platform_positions",
     "scene_attrs",
     "sea_spectrum",
+    "sea_motion",
     "section_spectrum",
 ]
 
@@ -274,7 +276,7 @@ def build_sea_model(scene, frequency: float | None = None,
     if opts.model == "blend+breaking":
         breaking = breaking_statistics(u10, float(k))
     dynamics = None
-    if opts.sea_motion == "evolving":
+    if sea_motion(scene) == "evolving":
         dynamics = build_sea_dynamics(scene, spectrum, float(k), band.k_grid, float(k_cut),
                                       u10)
     return SeaModel(frequency=f, k=float(k), eps_r=eps_r,
@@ -284,6 +286,29 @@ def build_sea_model(scene, frequency: float | None = None,
                     roughness_height_variance=height_variance(spectrum, band.k_grid, k_max),
                     bragg_spectrum=table, tilt=quadrature, breaking=breaking,
                     dynamics=dynamics)
+
+
+def sea_motion(scene) -> str:
+    """The sea's motion between surface updates, ``"held"`` or ``"evolving"``: the one
+    place that resolves ``[scattering] sea_motion = "auto"`` (everything downstream sees
+    only the two concrete values).
+
+    ``"auto"`` is ``"evolving"`` when the sea is renewed within the run,
+    ``[radar] sea_update_pulses < n_pulses``: a held sea would then be frozen within
+    each block and independent from one block to the next, i.e. clutter whose Doppler
+    spectrum is white over the PRF (renewed every pulse) or a comb of the block rate,
+    where real sea clutter has a Bragg-shifted spectrum a few tens of hertz wide at X band
+    (docs/dynamics.md). It is ``"held"`` when one surface serves every pulse
+    (``sea_update_pulses >= n_pulses``: the paper's SAR scenes hold the sea for the
+    aperture, its section V-B), without ``[radar]`` and without sea clutter.
+    """
+    motion = scene.scattering.sea_motion
+    if motion != "auto":
+        return motion
+    r = scene.radar
+    if r is None or not r.sea_clutter or r.sea_update_pulses >= r.n_pulses:
+        return "held"
+    return "evolving"
 
 
 def _scene_bragg_wavenumber(scene, k: float) -> float:

@@ -10,16 +10,16 @@ Model. The peak resident memory of ``seaecho run`` is
 
 .. math::
 
-    M = M_0 + m_c N_{cells} + m_f C N_{fft} + m_w C n_{chunk} N_s + m_p N_p
+    M = M_0 + (m_c + m_e) N_{cells} + m_f C N_{fft} + m_w C n_{chunk} N_s + m_p N_p
         + m_F N_p C N_s + m_g N_{gm} + m_t K                                     (M1)
 
 with M_0 the process (Python, numpy, h5py, Dr.Jit; Mitsuba with sea clutter), N_cells the
-sea grid's points (sea clutter on), C the channels, N_s the samples of the receive window
-and N_fft its NUFFT period (``seaecho.radar.echo``), n_chunk = min(16, N_p) pulses per
-write, N_p the pulses, N_gm the Gauss-Markov steps of the perturbed platforms, K the point
-targets, and m_F the figures drawn from the whole raw and compressed arrays (0 with
-``--no-figures``: matplotlib's meshes cost 45 to 155 bytes per value), which adds to the
-rest (the run loop's memory is not all returned to the system).
+sea grid's points (sea clutter on; m_e for an evolving sea only), C the channels, N_s the
+samples of the receive window and N_fft its NUFFT period (``seaecho.radar.echo``), n_chunk
+= min(16, N_p) pulses per write, N_p the pulses, N_gm the Gauss-Markov steps of the
+perturbed platforms, K the point targets, and m_F the figures drawn from the whole raw and
+compressed arrays (0 with ``--no-figures``: matplotlib's meshes cost 45 to 155 bytes per
+value), which adds to the rest (the run loop's memory is not all returned to the system).
 
 Or, if larger, M_0 + M_A: the normalisation of a rectangular aperture's pattern (eq A1
 of ``seaecho.radar.antennas``, computed when the radar is built), bounded by
@@ -73,6 +73,11 @@ M0_TARGETS = 310 * MiB  #: process with the radar chain only (a clean install pe
 #: on the 4-pulse calibration scene with figures, 2026-11: the API, guards and Dask imports)
 M0_SEA = {"analytic": 310 * MiB, "raytraced": 310 * MiB}  #: with the sea stages
 M_CELL = {"analytic": 2100.0, "raytraced": 2300.0}  #: per sea grid point
+#: per sea grid point of an evolving sea (``[scattering] sea_motion``, "auto" resolved by
+#: ``seaecho.build.sea_motion``): the speckle anchors of four families, the tilt nodes'
+#: phases, the block's phase centres, velocities and accelerations; Simulation 1 (648^2
+#: grid) peaked 0.42 GB higher evolving than held (docs/dynamics.md, Cost)
+M_EVOLVING_CELL = 1000.0
 M_FFT = 20.0  #: per channel and NUFFT bin (phasors, spectrum product, inverse FFT)
 M_WRITE = 70.0  #: per channel, sample and buffered pulse (buffer, range compression)
 M_PULSE = 1000.0  #: per pulse (tracks, times, per-pulse dataset variables)
@@ -494,6 +499,8 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     base_dir : path
         Folder of the scene file (the hulls' meshes are read to size their traces).
     """
+    from .build import sea_motion
+
     r = scene.radar
     sea = r.sea_clutter
     mode = scene.tracing.mode
@@ -512,6 +519,8 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
         "process": (M0_SEA["raytraced" if raytracing else mode] if sea or hulls
                     else M0_TARGETS),
         "sea grid": M_CELL[mode] * cells,
+        "evolving sea": M_EVOLVING_CELL * cells if sea and sea_motion(scene) == "evolving"
+        else 0.0,
         "receive window": M_FFT * c * n_fft + M_WRITE * c * chunk * n_s,
         "pulses": M_PULSE * n_p,
         "figures": M_FIGURE * n_p * c * n_s if figures else 0.0,
@@ -535,6 +544,8 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     drivers = {
         "process": "(fixed)",
         "sea grid": "[sea].nx, [sea].ny ([radar].sea_clutter)",
+        "evolving sea": "[scattering].sea_motion ('auto': evolving when "
+                        "[radar].sea_update_pulses < n_pulses), [sea].nx, [sea].ny",
         "receive window": window_fields + " (and --block-pulses)",
         "pulses": "[radar].n_pulses",
         "figures": "[radar].n_pulses x the receive window (use --no-figures)",

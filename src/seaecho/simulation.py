@@ -13,7 +13,9 @@ Per-pulse work is a pure function of (scene, pulse index): :meth:`Simulation.pul
 Pulse p is emitted at t_p = t_start + p / PRF. The sea surface used by pulse p is that of
 the first pulse of its block, t_s = t_(N floor(p / N)) with N = ``sea_update_pulses``;
 platforms and the facets' frames are those of t_p. What happens within a block is
-``[scattering] sea_motion``:
+``[scattering] sea_motion``, as resolved by :func:`seaecho.build.sea_motion` (``"auto"``,
+the default, is ``"evolving"`` when the sea is renewed within the run and ``"held"`` when
+one surface serves every pulse):
 
 * ``"held"`` (the paper's section V-B keeps the map between pings): the facets stay at
   their positions of t_s and the speckle is drawn per block (``"speckle"``,

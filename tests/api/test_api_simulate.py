@@ -17,7 +17,8 @@ from seaecho.config import SceneError
 
 #: A gentle sea (U19.5 = 3 m/s: the 8.8 m tile holds the 8.2 m peak wavelength and its
 #: 0.08 m grid keeps k h = 0.24 < 0.3 at 10 GHz, so no sampling warning), ray traced,
-#: bistatic, thermal noise on, the sea held for two pulses, one point target.
+#: bistatic, thermal noise on, the surface renewed every two pulses (so it evolves between,
+#: the default "auto"), one point target.
 SCENE = """
 name = "api-parity"
 [sea]

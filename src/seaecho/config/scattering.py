@@ -8,7 +8,11 @@ resolve (docs/scattering.md, eq P6), which makes sigma0 independent of the grid 
 ``sea_motion`` says what happens between two updates of the surface geometry
 (``[radar] sea_update_pulses``): ``"held"`` freezes the sea and its speckle (the paper's
 section V-B), ``"evolving"`` moves the facets with the waves and evolves their speckle
-(Bragg dispersion, orbital motion, finite lifetimes: docs/dynamics.md).
+(Bragg dispersion, orbital motion, finite lifetimes: docs/dynamics.md). ``"auto"`` (the
+default) is ``"evolving"`` when the sea is renewed within the run (``sea_update_pulses <
+n_pulses``, where a held sea would give clutter that is white from block to block) and
+``"held"`` when one surface serves the whole run (the paper's SAR scenes hold it for the
+aperture) or there is no sea clutter; :func:`seaecho.build.sea_motion` resolves it.
 
 The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
 polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
@@ -24,7 +28,7 @@ from pydantic import Field
 from .base import Section
 
 ScatteringModelName = Literal["blend", "blend+breaking"]
-SeaMotionName = Literal["held", "evolving"]
+SeaMotionName = Literal["auto", "held", "evolving"]
 
 
 class ScatteringConfig(Section):
@@ -41,10 +45,13 @@ class ScatteringConfig(Section):
         "(five-point quadrature): sigma0 independent of the grid spacing",
     )
     sea_motion: SeaMotionName = Field(
-        "held",
+        "auto",
         description="between surface updates ([radar] sea_update_pulses): 'held' freezes "
         "the sea and its speckle (the paper), 'evolving' moves the facets with the waves "
-        "and evolves the speckle (Bragg lines, orbital motion, finite coherence time)",
+        "and evolves the speckle (Bragg lines, orbital motion, finite coherence time); "
+        "'auto': 'evolving' when the sea is renewed within the run (sea_update_pulses < "
+        "n_pulses, which held would make white clutter), 'held' when one surface serves "
+        "every pulse (the paper's SAR scenes)",
     )
 
 
