@@ -278,6 +278,20 @@ MUTATIONS = [
              "side * y * ky + (n // 2) * p))", "side * y * ky - (n // 2) * p))",
              ("tests/wake/test_wake_speed_parity.py",),
              "the line height's NUFFT with its mode shift the wrong way"),
+    # --- fluctuating targets (Swerling 1954)
+    Mutation("swerling-chi4-unscaled", S + "targets/swerling.py",
+             "np.where(m == 1, l1, 0.5 * (l1 + l2))", "np.where(m == 1, l1, l1 + l2)",
+             ("tests/targets/test_swerling.py",),
+             "the chi-square-4 RCS not scaled to unit mean (mean RCS doubled)"),
+    Mutation("swerling-dwell-pulse-swapped", S + "targets/swerling.py",
+             "by_pulse = np.isin(cases, (2, 4))", "by_pulse = np.isin(cases, (1, 3))",
+             ("tests/targets/test_swerling.py",),
+             "scan-to-scan and pulse-to-pulse cases exchanged"),
+    Mutation("swerling-amplitude-not-sqrt", S + "radar/model.py",
+             "self.scattering * np.sqrt(self.rcs_factor(int(pulse)))",
+             "self.scattering * self.rcs_factor(int(pulse))",
+             ("tests/targets/test_swerling.py",),
+             "the power factor applied to the amplitude (RCS F^2 instead of F)"),
 ]
 
 

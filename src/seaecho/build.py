@@ -408,14 +408,25 @@ def _platforms(scene) -> tuple[Platform, Platform]:
     return tx, _platform(scene.receiver, seed, 1, t_span)
 
 
+def dwell_pulses(scene) -> int:
+    """Pulses per dwell of the fluctuating targets (Swerling 1 and 3 draw once per
+    dwell): ``[radar] cpi_pulses``, default every pulse of the run. The one place that
+    decides what a dwell is (a scanning antenna would take its scan period here)."""
+    r = scene.radar
+    return int(r.cpi_pulses) if r.cpi_pulses is not None else int(r.n_pulses)
+
+
 def _targets(scene) -> TargetSet | None:
     if not scene.targets:
         return None
     t = scene.targets
+    f = scene.radar.carrier_frequency_hz
     return TargetSet(positions=np.array([g.position_m for g in t], dtype=float).reshape(-1, 3),
                      velocities=np.array([g.velocity_m_s for g in t], dtype=float).reshape(-1, 3),
-                     scattering=np.stack([g.scattering_matrix() for g in t]).astype(complex),
-                     names=tuple(g.name or f"target{i}" for i, g in enumerate(t)))
+                     scattering=np.stack([g.scattering_matrix(f) for g in t]).astype(complex),
+                     names=tuple(g.name or f"target{i}" for i, g in enumerate(t)),
+                     swerling=np.array([g.swerling_case for g in t], dtype=np.int64),
+                     dwell_pulses=dwell_pulses(scene), seed=int(scene.run.seed))
 
 
 def build_radar(scene) -> RadarModel:

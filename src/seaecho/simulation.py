@@ -401,7 +401,7 @@ class Simulation:
         echoes = []
         if self.sea is not None:
             echoes.append(self.sea_echo(pulse, geo).echo)
-        t = self.radar.target_echo(geo, variant=self.variant)
+        t = self.radar.target_echo(geo, variant=self.variant, pulse=pulse)
         if t is not None:
             echoes.append(t)
         if self.hulls is not None:

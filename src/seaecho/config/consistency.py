@@ -54,10 +54,28 @@ def check_objects(scene) -> None:
                              "[ship] section")
 
 
+def check_targets(scene) -> None:
+    """``[[targets]]``: a ``preset`` needs a ``[radar]`` carrier in a band it has."""
+    from .radar import preset_rcs_m2
+
+    for i, g in enumerate(scene.targets):
+        if g.preset is None:
+            continue
+        if scene.radar is None:
+            raise ValueError(f"[[targets]] #{i}: preset = '{g.preset}' needs a [radar] "
+                             "section (its RCS depends on the carrier band)")
+        try:
+            preset_rcs_m2(g.preset, scene.radar.carrier_frequency_hz)
+        except ValueError as exc:
+            raise ValueError(f"[[targets]] #{i}: {exc}") from None
+
+
 def check_scene(scene) -> None:
     """Every check of this module (called by :class:`~seaecho.config.scene.Scene`)."""
     check_channels(scene)
     check_objects(scene)
+    check_targets(scene)
 
 
-__all__ = ["allowed_channels", "check_channels", "check_objects", "check_scene"]
+__all__ = ["allowed_channels", "check_channels", "check_objects", "check_scene",
+           "check_targets"]

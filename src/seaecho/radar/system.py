@@ -337,16 +337,20 @@ class RadarSystem:
                                  generator(self.seed, "noise", pulse))
         return out
 
-    def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None
-                    ) -> ScattererEcho | None:
+    def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None,
+                    pulse: int | None = None) -> ScattererEcho | None:
         """Echo of the model's point targets at one pulse (None if there are none);
-        ``variant`` as :meth:`scatterer_echo`."""
+        ``variant`` as :meth:`scatterer_echo`; ``pulse`` (default: the pulse emitted at
+        ``geometry.time``) selects the fluctuating targets' draws
+        (:meth:`~seaecho.radar.model.TargetSet.scattering_at`)."""
         targets = self.model.targets
         if targets is None or not len(targets):
             return None
+        if pulse is None:
+            pulse = int(np.rint((geometry.time - self.start_time) * self.prf))
         return self.scatterer_echo(geometry, targets.positions + geometry.time
                                    * targets.velocities, targets.velocities,
-                                   targets.scattering, variant=variant)
+                                   targets.scattering_at(pulse), variant=variant)
 
 
 __all__ = [
