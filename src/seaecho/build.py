@@ -78,11 +78,13 @@ __all__ = [
     "build_sea",
     "build_sea_dynamics",
     "build_sea_model",
+    "build_ships",
     "build_simulation",
     "build_tracing",
     "carrier_frequency",
     "check_scene",
     "check_sea",
+    "dwell_pulses",
     "platform_positions",
     "scene_attrs",
     "sea_spectrum",
@@ -148,26 +150,41 @@ def section_spectrum(sea) -> DirectionalSpectrum:
                                fetch=sea.fetch_m, s=sea.spreading_s)
 
 
-def _ship(scene) -> Ship | None:
-    cfg = scene.ship
-    if cfg is None:
-        return None
-    return Ship(length=float(cfg.length_m), beam=float(cfg.beam_m), draft=float(cfg.draft_m),
-                speed=float(cfg.speed), heading=float(np.deg2rad(cfg.heading_deg)),
-                position0=(float(cfg.position_m[0]), float(cfg.position_m[1])),
-                turbulent_wake_length=(None if cfg.turbulent_wake_length_m is None
-                                       else float(cfg.turbulent_wake_length_m)),
-                wake_amplitude=cfg.wake_amplitude,
-                wake_breaking_limit=cfg.wake_breaking_limit,
-                turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db,
-                turbulent_wake_film_elasticity=1e-3 * cfg.turbulent_wake_film_elasticity_mn_m,
-                bragg_wavenumber=(None if scene.radar is None else _scene_bragg_wavenumber(
-                    scene, 2.0 * np.pi * carrier_frequency(scene) / C0)))
+def build_ships(scene) -> tuple[Ship, ...]:
+    """The ships of ``[ship]`` or ``[[ships]]`` (wake stage :class:`~seaecho.wake.Ship`,
+    with its :class:`~seaecho.wake.ship.Route` when on waypoints), in scene order."""
+    from .wake.ship import Route
+
+    cfgs = scene.all_ships
+    if not cfgs:
+        return ()
+    k_b = None
+    if scene.radar is not None:
+        k_b = _scene_bragg_wavenumber(scene, 2.0 * np.pi * carrier_frequency(scene) / C0)
+    out = []
+    for cfg, name in zip(cfgs, scene.ship_names(), strict=True):
+        route = None
+        if cfg.waypoints_m is not None:
+            r = cfg.turn_radius
+            # a straight route has no corner: any radius serves
+            route = Route(tuple(map(tuple, cfg.waypoints_m)), r if np.isfinite(r) else 1.0)
+        out.append(Ship(
+            length=float(cfg.length_m), beam=float(cfg.beam_m), draft=float(cfg.draft_m),
+            speed=float(cfg.speed), heading=float(np.deg2rad(cfg.heading_deg)),
+            position0=(float(cfg.position_m[0]), float(cfg.position_m[1])),
+            turbulent_wake_length=(None if cfg.turbulent_wake_length_m is None
+                                   else float(cfg.turbulent_wake_length_m)),
+            wake_amplitude=cfg.wake_amplitude,
+            wake_breaking_limit=cfg.wake_breaking_limit,
+            turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db,
+            turbulent_wake_film_elasticity=1e-3 * cfg.turbulent_wake_film_elasticity_mn_m,
+            bragg_wavenumber=k_b, route=route, name=name))
+    return tuple(out)
 
 
 def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:
     """The sea of a scene: the surface realisation of its seed (``"surface"`` stream) on
-    the ``[sea]`` grid, plus the ``[ship]``'s wake.
+    the ``[sea]`` grid, plus the wakes of ``[ship]`` or ``[[ships]]``.
 
     Parameters
     ----------
@@ -179,10 +196,9 @@ def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:
     spectrum = sea_spectrum(scene) if spectrum is None else spectrum
     surface = SeaSurface(spectrum, size=cfg.size_m, shape=cfg.shape,
                          rng=generator(scene.run.seed, "surface"), depth=cfg.depth_m)
-    ship = _ship(scene)
-    kelvin = bool(scene.ship.kelvin_wake) if ship is not None else False
-    length = scene.ship.turbulent_wake_length_m if ship is not None else None
-    return Sea(surface, ship, kelvin_wake=kelvin, turbulent_wake_length=length)
+    ships = build_ships(scene)
+    kelvin = [bool(c.kelvin_wake) for c in scene.all_ships]
+    return Sea(surface, list(ships) or None, kelvin_wake=kelvin)
 
 
 def carrier_frequency(scene, frequency: float | None = None) -> float:
@@ -625,6 +641,8 @@ class SimulationModels:
         Mitsuba variant of the Dr.Jit kernels and the tracer (``[tracing] variant``).
     hulls : seaecho.tracing.hull_echo.HullModel or None
         The objects that echo (``scatterer = true``), None when none does.
+    ships : tuple of seaecho.wake.Ship
+        The ships of ``[ship]`` / ``[[ships]]`` (ground truth; their wakes are the sea's).
     """
 
     radar: RadarModel
@@ -634,6 +652,7 @@ class SimulationModels:
     attrs: dict
     variant: str | None = None
     hulls: object = None
+    ships: tuple = ()
 
 
 def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationModels:
@@ -665,5 +684,7 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
         check_spm_validity(sea_model.k, sea_model.roughness_height_variance)
         tracing = build_tracing(scene, base_dir, sea_model=sea_model)
     hulls = build_hulls(scene, base_dir, variant=variant)
+    ships = sea.ships if sea is not None else build_ships(scene)
     return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
-                            attrs=scene_attrs(scene), variant=variant, hulls=hulls)
+                            attrs=scene_attrs(scene), variant=variant, hulls=hulls,
+                            ships=tuple(ships))

@@ -25,6 +25,7 @@ COMMANDS = (
     "sweep",
     "image",
     "doppler",
+    "truth",
     "trace",
     "compare",
     "sigma",
