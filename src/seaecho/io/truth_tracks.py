@@ -40,8 +40,9 @@ def truth_rows(ds) -> list[tuple]:
     n_p, n_o = pos.shape[:2]
     pulse = np.repeat(np.asarray(ds["pulse"].values), n_o)
     time = np.repeat(np.asarray(ds["time"].values), n_o)
-    names = np.tile(np.asarray(ds["object"].values).astype(str), n_p)
-    kinds = np.tile(np.asarray(ds["object_kind"].values).astype(str), n_p)
+    # plain str (a Zarr store reads strings back as numpy's StringDType)
+    names = [str(v) for v in ds["object"].values] * n_p
+    kinds = [str(v) for v in ds["object_kind"].values] * n_p
     vel = np.asarray(ds["truth_velocity"].values).reshape(-1, 3)
     rcs = np.asarray(ds["truth_rcs"].values).reshape(-1, 4)
     known = np.tile(np.asarray(ds["truth_rcs_known"].values), n_p)
