@@ -598,13 +598,39 @@ def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | 
     permittivity and rms height (waves up to twice the radar wavenumber) set the
     reflection of the multipath legs (docs/ship.md).
     """
-    if not any(o.scatterer for o in scene.objects):
+    ship_hulls = [(c, n) for c, n in zip(scene.all_ships, scene.ship_names(), strict=True)
+                  if c.hull_echo]
+    if not any(o.scatterer for o in scene.objects) and not ship_hulls:
         return None
+    from .config.tracing import ObjectConfig
     from .tracing.hull_echo import HullModel, HullOptions
-    from .tracing.scene import load_object
+    from .tracing.scene import ObjectGeometry, load_mesh_file, load_object, rotation_matrix
 
     f = carrier_frequency(scene, frequency)
     objects = []
+    defaults = ObjectConfig.model_fields
+    for cfg, name in ship_hulls:  # [[ships]] hull_echo: the ship's own (or generic) hull
+        if cfg.hull_mesh is not None:
+            path = cfg.hull_mesh if os.path.isabs(cfg.hull_mesh) else os.path.join(
+                str(base_dir), cfg.hull_mesh)
+            v, fc = load_mesh_file(path, f"[[ships]] {name}: hull_mesh")
+        else:
+            from .geometry.vessel import vessel_mesh
+
+            v, fc = vessel_mesh(cfg.length_m, cfg.beam_m, cfg.draft_m)
+        h = float(np.deg2rad(cfg.heading_deg))
+        shape = ObjectGeometry(
+            name, np.asarray(v, dtype=np.float64), np.asarray(fc, dtype=np.uint32),
+            np.array([cfg.position_m[0], cfg.position_m[1], 0.0]), rotation_matrix(h, 0.0, 0.0),
+            cfg.speed * np.array([np.cos(h), np.sin(h), 0.0]))
+        spec = HullOptions(name=name,
+                           rays_per_wavelength=defaults["rays_per_wavelength"].default,
+                           max_bounces=defaults["max_bounces"].default,
+                           cell_m=defaults["signature_cell_m"].default,
+                           sea_multipath=defaults["sea_multipath"].default,
+                           refresh_deg=defaults["signature_refresh_deg"].default,
+                           refresh_s=defaults["signature_refresh_s"].default)
+        objects.append((spec, [shape]))
     for cfg in scene.objects:
         shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship, variant=variant)
         spec = None

@@ -137,3 +137,36 @@ def test_ship_and_ships_are_exclusive():
                        "turn_radius_m": 50.0}])
     with pytest.raises(SceneError, match="waypoints_m sets the track"):
         _scene(ships=[{**one, "waypoints_m": [(0, 0), (10, 0)], "heading_deg": 10.0}])
+
+
+def test_generic_hull_scales_to_the_ships_dimensions():
+    # the reference 80 x 13 x 4.5 m body (bridge wings 15 m wide) scaled to 40 x 6.5 x 3
+    from seaecho.geometry.vessel import vessel_mesh
+
+    v0, f0 = vessel_mesh()
+    v, f = vessel_mesh(40.0, 6.5, 3.0)
+    ext0, ext = np.ptp(v0, axis=0), np.ptp(v, axis=0)
+    assert ext[0] == pytest.approx(0.5 * ext0[0]) and ext[1] == pytest.approx(0.5 * ext0[1])
+    assert v[:, 2].min() == pytest.approx(-3.0) and v0[:, 2].min() == pytest.approx(-4.5)
+    assert v[:, 2].max() == pytest.approx(0.5 * v0[:, 2].max())
+    assert f is f0 or np.array_equal(f, f0)
+    assert vessel_mesh(40.0, 6.5, 3.0)[0] is v  # identical hulls share one mesh
+
+
+def test_ships_with_hull_echo_give_their_rcs_to_the_truth():
+    # L band, 8 m hulls: a few thousand rays per trace
+    boat = {"length_m": 8.0, "beam_m": 2.5, "draft_m": 0.8, "speed_m_s": 3.0,
+            "heading_deg": 90.0, "hull_echo": True}
+    sc = _scene(ships=[{**boat, "name": "a", "position_m": (0.0, -10.0)},
+                       {**boat, "name": "b", "position_m": (0.0, 30.0)}],
+                targets=[], radar={**_scene().radar.model_dump(mode="json"),
+                                   "carrier_frequency_hz": 1.3e9, "n_pulses": 2})
+    ds = Simulation(sc).dataset(progress=False)
+    assert list(ds["hull"].values) == ["a", "b"]
+    np.testing.assert_array_equal(ds["truth_rcs_known"].values, [1, 1])
+    np.testing.assert_array_equal(ds["truth_rcs"].values.transpose(1, 0, 2),
+                                  ds["hull_rcs"].values)
+    assert np.all(ds["hull_rcs"].values[..., 0] > 0.0)
+    # the hull origin is the ship's truth position
+    np.testing.assert_allclose(ds["hull_position"].values[:, :, :2],
+                               ds["truth_position"].values.transpose(1, 0, 2)[:, :, :2])

@@ -104,9 +104,30 @@ class ShipConfig(Section):
         None, gt=0.0, le=1.0e5, description="radius of the turns at the waypoints [m]; or "
         "give turn_rate_deg_s",
     )
+    hull_echo: bool = Field(
+        False, description="add the hull's own echo (shooting and bouncing rays, sea "
+        "multipath; docs/ship.md) with the [[objects]] scatterer defaults; a straight "
+        "course only (not implemented yet on waypoints)",
+    )
+    hull_mesh: str | None = Field(
+        None, min_length=1, max_length=4096,
+        description="hull_echo: mesh file (.ply, .obj, .stl; x forward, y to port, z up, "
+        "waterline z = 0), relative to the scene file's folder; default the generic ship "
+        "of seaecho.geometry.vessel scaled to length_m, beam_m, draft_m",
+    )
 
     @model_validator(mode="after")
     def _route(self) -> ShipConfig:
+        if self.hull_mesh is not None:
+            if not self.hull_echo:
+                raise ValueError("hull_mesh is only used with hull_echo = true")
+            suffix = self.hull_mesh.rsplit(".", 1)[-1].lower() if "." in self.hull_mesh else ""
+            if suffix not in ("ply", "obj", "stl"):
+                raise ValueError(f"hull_mesh = {short_repr(self.hull_mesh)}: allowed "
+                                 "extensions .ply, .obj, .stl")
+        if self.hull_echo and self.waypoints_m is not None:
+            raise ValueError("hull_echo = true on waypoints_m: not implemented yet (a hull "
+                             "echo follows a straight course only)")
         turn = self.turn_rate_deg_s is not None or self.turn_radius_m is not None
         if self.waypoints_m is None:
             if turn:
