@@ -292,6 +292,27 @@ MUTATIONS = [
              "self.scattering * self.rcs_factor(int(pulse))",
              ("tests/targets/test_swerling.py",),
              "the power factor applied to the amplitude (RCS F^2 instead of F)"),
+    # --- ships on waypoints, several ships, ground truth
+    Mutation("route-corner-cut-half-angle", S + "wake/ship.py",
+             "cut = np.concatenate([[0.0], r * np.tan(0.5 * np.abs(turn)), [0.0]])",
+             "cut = np.concatenate([[0.0], r * np.tan(np.abs(turn)), [0.0]])",
+             ("tests/wake/test_ship_route.py",),
+             "the corner cut R tan(Delta) instead of R tan(Delta / 2): turns off the legs"),
+    Mutation("route-arc-sign", S + "wake/ship.py",
+             "kappa.append(np.sign(turn[i]) / r)", "kappa.append(-np.sign(turn[i]) / r)",
+             ("tests/wake/test_ship_route.py",), "turns the wrong way"),
+    Mutation("wake-masks-added", S + "sea.py",
+             "keep = 1.0 - m if keep is None else keep * (1.0 - m)",
+             "keep = 1.0 - m if keep is None else keep - m",
+             ("tests/wake/test_ship_route.py",),
+             "turbulent damping of several ships added instead of combined"),
+    Mutation("truth-range-cell-two-way", S + "radar/truth.py",
+             "cell = np.rint((2.0 * rng / C0 - w.t0) * w.sampling_rate)",
+             "cell = np.rint((rng / C0 - w.t0) * w.sampling_rate)",
+             ("tests/radar/test_truth.py",), "the range cell from a one-way delay"),
+    Mutation("horizon-true-earth", S + "radar/truth.py",
+             "K_EFFECTIVE = 4.0 / 3.0", "K_EFFECTIVE = 1.0",
+             ("tests/radar/test_truth.py",), "the radio horizon without refraction"),
 ]
 
 

@@ -170,3 +170,10 @@ def test_ships_with_hull_echo_give_their_rcs_to_the_truth():
     # the hull origin is the ship's truth position
     np.testing.assert_allclose(ds["hull_position"].values[:, :, :2],
                                ds["truth_position"].values.transpose(1, 0, 2)[:, :, :2])
+
+
+def test_scene_with_ships_and_presets_reads_back_from_its_json():
+    # a run's scene_json holds every field, defaults included: it must parse again
+    sc = _scene()
+    assert parse_scene(sc.model_dump(mode="json")) == sc
+    assert parse_scene(sc.model_dump(mode="json", exclude_none=True)) == sc

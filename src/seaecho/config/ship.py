@@ -134,7 +134,10 @@ class ShipConfig(Section):
                 raise ValueError("turn_rate_deg_s / turn_radius_m are for a ship on "
                                  "waypoints_m")
             return self
-        given = {"heading_deg", "position_m"} & self.model_fields_set
+        # given with other values than the defaults (a scene written back in full, as a
+        # run's scene_json, holds the defaults and reads back)
+        given = {f for f in {"heading_deg", "position_m"} & self.model_fields_set
+                 if getattr(self, f) != type(self).model_fields[f].default}
         if given:
             raise ValueError(f"waypoints_m sets the track: give no {' or '.join(sorted(given))}")
         if self.turn_rate_deg_s is not None and self.turn_radius_m is not None:
