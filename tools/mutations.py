@@ -313,6 +313,10 @@ MUTATIONS = [
     Mutation("horizon-true-earth", S + "radar/truth.py",
              "K_EFFECTIVE = 4.0 / 3.0", "K_EFFECTIVE = 1.0",
              ("tests/radar/test_truth.py",), "the radio horizon without refraction"),
+    Mutation("hull-roll-sign", S + "targets/motion.py",
+             "return float(coef[0]), float(np.arctan(coef[1])), float(np.arctan(coef[2]))",
+             "return float(coef[0]), float(np.arctan(coef[1])), float(-np.arctan(coef[2]))",
+             ("tests/targets/test_motion.py",), "the hull rolls against the sea's slope"),
 ]
 
 

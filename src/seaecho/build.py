@@ -629,7 +629,9 @@ def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | 
                            cell_m=defaults["signature_cell_m"].default,
                            sea_multipath=defaults["sea_multipath"].default,
                            refresh_deg=defaults["signature_refresh_deg"].default,
-                           refresh_s=defaults["signature_refresh_s"].default)
+                           refresh_s=defaults["signature_refresh_s"].default,
+                           waterplane=((float(cfg.length_m), float(cfg.beam_m))
+                                       if cfg.wave_motion else None))
         objects.append((spec, [shape]))
     for cfg in scene.objects:
         shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship, variant=variant)

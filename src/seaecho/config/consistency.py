@@ -81,6 +81,10 @@ def check_ships(scene) -> None:
         if n in names[:i]:
             raise ValueError(f"[[ships]] #{i}: name = {short_repr(n)} is used by an earlier "
                              "ship; names must be unique")
+    moving = [n for n, s in zip(names, scene.all_ships, strict=True) if s.wave_motion]
+    if moving and (scene.radar is None or not scene.radar.sea_clutter):
+        raise ValueError(f"[[ships]] {moving[0]}: wave_motion = true needs the sea: [radar] "
+                         "sea_clutter = true")
     if scene.ship is not None and scene.ship.waypoints_m is not None and any(
             o.follow_ship for o in scene.objects):
         raise ValueError("[[objects]] follow_ship = true with a [ship] on waypoints_m: not "

@@ -109,6 +109,11 @@ class ShipConfig(Section):
         "multipath; docs/ship.md) with the [[objects]] scatterer defaults; a straight "
         "course only (not implemented yet on waypoints)",
     )
+    wave_motion: bool = Field(
+        False, description="hull_echo: the hull heaves, pitches and rolls with the sea under "
+        "its waterplane (quasi-static wave following; docs/targets.md); needs the sea "
+        "([radar] sea_clutter = true)",
+    )
     hull_mesh: str | None = Field(
         None, min_length=1, max_length=4096,
         description="hull_echo: mesh file (.ply, .obj, .stl; x forward, y to port, z up, "
@@ -125,6 +130,8 @@ class ShipConfig(Section):
             if suffix not in ("ply", "obj", "stl"):
                 raise ValueError(f"hull_mesh = {short_repr(self.hull_mesh)}: allowed "
                                  "extensions .ply, .obj, .stl")
+        if self.wave_motion and not self.hull_echo:
+            raise ValueError("wave_motion moves the hull echo: it needs hull_echo = true")
         if self.hull_echo and self.waypoints_m is not None:
             raise ValueError("hull_echo = true on waypoints_m: not implemented yet (a hull "
                              "echo follows a straight course only)")
