@@ -177,3 +177,20 @@ def test_scene_with_ships_and_presets_reads_back_from_its_json():
     sc = _scene()
     assert parse_scene(sc.model_dump(mode="json")) == sc
     assert parse_scene(sc.model_dump(mode="json", exclude_none=True)) == sc
+
+
+@pytest.mark.slow
+def test_traffic_picture_example_runs(tmp_path):
+    # docs/targets.md quotes this script's numbers and shows its figures
+    import importlib
+    import sys
+    from pathlib import Path
+
+    examples = Path(__file__).resolve().parents[2] / "examples"
+    sys.path.insert(0, str(examples))
+    try:
+        paths = importlib.import_module("traffic_picture").main([str(tmp_path)])
+    finally:
+        sys.path.remove(str(examples))
+    assert [p.name for p in paths] == ["traffic_wakes.png", "traffic_swerling.png"]
+    assert all(p.stat().st_size > 10_000 for p in paths)
