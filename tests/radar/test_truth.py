@@ -122,6 +122,11 @@ def test_truth_csv_export(run_ds, tmp_path):
     assert r["object"] == "tug" and int(r["pulse"]) == 3
     assert float(r["x_m"]) == pytest.approx(4.0 * 3 / 100.0)
     assert float(r["heading_deg"]) == pytest.approx(0.0, abs=1e-9)
+    # a Zarr store holds the same truth
+    store = Simulation(_scene()).run(tmp_path / "run.zarr", progress=False)
+    out2 = tmp_path / "truth2.csv"
+    assert main(["truth", str(store), "-o", str(out2)]) == 0
+    assert out2.read_text() == out.read_text()
 
 
 def test_ship_and_ships_are_exclusive():
