@@ -132,3 +132,9 @@ def test_wakes_of_several_ships_superpose():
     np.testing.assert_allclose(both.wake_mask,
                                1 - (1 - only_a.wake_mask) * (1 - only_b.wake_mask),
                                atol=1e-15)
+    # two ships in the same place: twice the Kelvin wake, damping 1 - (1 - m)^2
+    twin = _sea([a, a]).state(10.0)
+    np.testing.assert_allclose(twin.elevation - none.elevation,
+                               2 * (only_a.elevation - none.elevation), atol=1e-12)
+    assert only_a.wake_mask.max() > 0.5
+    np.testing.assert_allclose(twin.wake_mask, 1 - (1 - only_a.wake_mask) ** 2, atol=1e-15)
