@@ -1239,7 +1239,7 @@ def scene_summary(scene: SceneModel) -> SceneSummary:
     import numpy as np
 
     from .build import build_radar, sea_motion, sea_spectrum
-    from .constants import C0
+    from .constants import C0, KNOT
     from .ocean.twoscale import height_variance
 
     scene = _scene(scene)
@@ -1269,13 +1269,16 @@ def scene_summary(scene: SceneModel) -> SceneSummary:
             ("tile", f"{lx:g} x {ly:g} m on {nx} x {ny} nodes ({dx:.4g} x {dy:.4g} m), "
              f"{(nx - 1) * (ny - 1) * 2:,} facets")]
     sections.append(("Sea", rows))
-    if scene.ship is not None:
-        s = scene.ship
+    for s, name in zip(scene.all_ships, scene.ship_names(), strict=True):
         wakes = ["Kelvin" if s.kelvin_wake else None, "turbulent"]
-        sections.append(("Ship", [
+        track = (f"through {len(s.waypoints_m)} waypoints, turns of radius "
+                 f"{s.turn_radius:.3g} m" if s.waypoints_m is not None
+                 else f"heading {s.heading_deg:g} deg")
+        sections.append(("Ship" if scene.ship is not None else f"Ship {name}", [
             ("hull", f"{s.length_m:g} x {s.beam_m:g} m, draft {s.draft_m:g} m at "
-             f"{_vec(s.position_m)} m"),
-            ("track", f"{s.speed:.3g} m/s ({s.speed_kn:g} kn) heading {s.heading_deg:g} deg; "
+             f"{_vec(s.position_m if s.waypoints_m is None else s.waypoints_m[0])} m"
+             + (", echoes" if s.hull_echo else "")),
+            ("track", f"{s.speed:.3g} m/s ({s.speed / KNOT:.3g} kn) {track}; "
              f"{' and '.join(w for w in wakes if w)} wake")]))
     if scene.objects:
         sections.append(("Objects", [(o.name or f"object {i}", f"{o.file}"

@@ -80,11 +80,13 @@ __all__ = [
     "build_sea",
     "build_sea_dynamics",
     "build_sea_model",
+    "build_ships",
     "build_simulation",
     "build_tracing",
     "carrier_frequency",
     "check_scene",
     "check_sea",
+    "dwell_pulses",
     "platform_positions",
     "scene_attrs",
     "sea_spectrum",
@@ -151,26 +153,41 @@ def section_spectrum(sea) -> DirectionalSpectrum:
                                fetch=sea.fetch_m, s=sea.spreading_s)
 
 
-def _ship(scene) -> Ship | None:
-    cfg = scene.ship
-    if cfg is None:
-        return None
-    return Ship(length=float(cfg.length_m), beam=float(cfg.beam_m), draft=float(cfg.draft_m),
-                speed=float(cfg.speed), heading=float(np.deg2rad(cfg.heading_deg)),
-                position0=(float(cfg.position_m[0]), float(cfg.position_m[1])),
-                turbulent_wake_length=(None if cfg.turbulent_wake_length_m is None
-                                       else float(cfg.turbulent_wake_length_m)),
-                wake_amplitude=cfg.wake_amplitude,
-                wake_breaking_limit=cfg.wake_breaking_limit,
-                turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db,
-                turbulent_wake_film_elasticity=1e-3 * cfg.turbulent_wake_film_elasticity_mn_m,
-                bragg_wavenumber=(None if scene.radar is None else _scene_bragg_wavenumber(
-                    scene, 2.0 * np.pi * carrier_frequency(scene) / C0)))
+def build_ships(scene) -> tuple[Ship, ...]:
+    """The ships of ``[ship]`` or ``[[ships]]`` (wake stage :class:`~seaecho.wake.Ship`,
+    with its :class:`~seaecho.wake.ship.Route` when on waypoints), in scene order."""
+    from .wake.ship import Route
+
+    cfgs = scene.all_ships
+    if not cfgs:
+        return ()
+    k_b = None
+    if scene.radar is not None:
+        k_b = _scene_bragg_wavenumber(scene, 2.0 * np.pi * carrier_frequency(scene) / C0)
+    out = []
+    for cfg, name in zip(cfgs, scene.ship_names(), strict=True):
+        route = None
+        if cfg.waypoints_m is not None:
+            r = cfg.turn_radius
+            # a straight route has no corner: any radius serves
+            route = Route(tuple(map(tuple, cfg.waypoints_m)), r if np.isfinite(r) else 1.0)
+        out.append(Ship(
+            length=float(cfg.length_m), beam=float(cfg.beam_m), draft=float(cfg.draft_m),
+            speed=float(cfg.speed), heading=float(np.deg2rad(cfg.heading_deg)),
+            position0=(float(cfg.position_m[0]), float(cfg.position_m[1])),
+            turbulent_wake_length=(None if cfg.turbulent_wake_length_m is None
+                                   else float(cfg.turbulent_wake_length_m)),
+            wake_amplitude=cfg.wake_amplitude,
+            wake_breaking_limit=cfg.wake_breaking_limit,
+            turbulent_wake_film_contrast_db=cfg.turbulent_wake_film_contrast_db,
+            turbulent_wake_film_elasticity=1e-3 * cfg.turbulent_wake_film_elasticity_mn_m,
+            bragg_wavenumber=k_b, route=route, name=name))
+    return tuple(out)
 
 
 def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:
     """The sea of a scene: the surface realisation of its seed (``"surface"`` stream) on
-    the ``[sea]`` grid, plus the ``[ship]``'s wake.
+    the ``[sea]`` grid, plus the wakes of ``[ship]`` or ``[[ships]]``.
 
     Parameters
     ----------
@@ -182,10 +199,9 @@ def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:
     spectrum = sea_spectrum(scene) if spectrum is None else spectrum
     surface = SeaSurface(spectrum, size=cfg.size_m, shape=cfg.shape,
                          rng=generator(scene.run.seed, "surface"), depth=cfg.depth_m)
-    ship = _ship(scene)
-    kelvin = bool(scene.ship.kelvin_wake) if ship is not None else False
-    length = scene.ship.turbulent_wake_length_m if ship is not None else None
-    return Sea(surface, ship, kelvin_wake=kelvin, turbulent_wake_length=length)
+    ships = build_ships(scene)
+    kelvin = [bool(c.kelvin_wake) for c in scene.all_ships]
+    return Sea(surface, list(ships) or None, kelvin_wake=kelvin)
 
 
 def carrier_frequency(scene, frequency: float | None = None) -> float:
@@ -455,14 +471,25 @@ def _platforms(scene) -> tuple[Platform, Platform]:
     return tx, _platform(scene.receiver, seed, 1, t_span, earth)
 
 
+def dwell_pulses(scene) -> int:
+    """Pulses per dwell of the fluctuating targets (Swerling 1 and 3 draw once per
+    dwell): ``[radar] cpi_pulses``, default every pulse of the run. The one place that
+    decides what a dwell is (a scanning antenna would take its scan period here)."""
+    r = scene.radar
+    return int(r.cpi_pulses) if r.cpi_pulses is not None else int(r.n_pulses)
+
+
 def _targets(scene) -> TargetSet | None:
     if not scene.targets:
         return None
     t = scene.targets
+    f = scene.radar.carrier_frequency_hz
     return TargetSet(positions=np.array([g.position_m for g in t], dtype=float).reshape(-1, 3),
                      velocities=np.array([g.velocity_m_s for g in t], dtype=float).reshape(-1, 3),
-                     scattering=np.stack([g.scattering_matrix() for g in t]).astype(complex),
-                     names=tuple(g.name or f"target{i}" for i, g in enumerate(t)))
+                     scattering=np.stack([g.scattering_matrix(f) for g in t]).astype(complex),
+                     names=tuple(g.name or f"target{i}" for i, g in enumerate(t)),
+                     swerling=np.array([g.swerling_case for g in t], dtype=np.int64),
+                     dwell_pulses=dwell_pulses(scene), seed=int(scene.run.seed))
 
 
 def build_radar(scene) -> RadarModel:
@@ -619,13 +646,41 @@ def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | 
     permittivity and rms height (waves up to twice the radar wavenumber) set the
     reflection of the multipath legs (docs/ship.md).
     """
-    if not any(o.scatterer for o in scene.objects):
+    ship_hulls = [(c, n) for c, n in zip(scene.all_ships, scene.ship_names(), strict=True)
+                  if c.hull_echo]
+    if not any(o.scatterer for o in scene.objects) and not ship_hulls:
         return None
+    from .config.tracing import ObjectConfig
     from .tracing.hull_echo import HullModel, HullOptions
-    from .tracing.scene import load_object
+    from .tracing.scene import ObjectGeometry, load_mesh_file, load_object, rotation_matrix
 
     f = carrier_frequency(scene, frequency)
     objects = []
+    defaults = ObjectConfig.model_fields
+    for cfg, name in ship_hulls:  # [[ships]] hull_echo: the ship's own (or generic) hull
+        if cfg.hull_mesh is not None:
+            path = cfg.hull_mesh if os.path.isabs(cfg.hull_mesh) else os.path.join(
+                str(base_dir), cfg.hull_mesh)
+            v, fc = load_mesh_file(path, f"[[ships]] {name}: hull_mesh")
+        else:
+            from .geometry.vessel import vessel_mesh
+
+            v, fc = vessel_mesh(cfg.length_m, cfg.beam_m, cfg.draft_m)
+        h = float(np.deg2rad(cfg.heading_deg))
+        shape = ObjectGeometry(
+            name, np.asarray(v, dtype=np.float64), np.asarray(fc, dtype=np.uint32),
+            np.array([cfg.position_m[0], cfg.position_m[1], 0.0]), rotation_matrix(h, 0.0, 0.0),
+            cfg.speed * np.array([np.cos(h), np.sin(h), 0.0]))
+        spec = HullOptions(name=name,
+                           rays_per_wavelength=defaults["rays_per_wavelength"].default,
+                           max_bounces=defaults["max_bounces"].default,
+                           cell_m=defaults["signature_cell_m"].default,
+                           sea_multipath=defaults["sea_multipath"].default,
+                           refresh_deg=defaults["signature_refresh_deg"].default,
+                           refresh_s=defaults["signature_refresh_s"].default,
+                           waterplane=((float(cfg.length_m), float(cfg.beam_m))
+                                       if cfg.wave_motion else None))
+        objects.append((spec, [shape]))
     for cfg in scene.objects:
         shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship, variant=variant)
         spec = None
@@ -662,6 +717,8 @@ class SimulationModels:
         Mitsuba variant of the Dr.Jit kernels and the tracer (``[tracing] variant``).
     hulls : seaecho.tracing.hull_echo.HullModel or None
         The objects that echo (``scatterer = true``), None when none does.
+    ships : tuple of seaecho.wake.Ship
+        The ships of ``[ship]`` / ``[[ships]]`` (ground truth; their wakes are the sea's).
     """
 
     radar: RadarModel
@@ -671,6 +728,7 @@ class SimulationModels:
     attrs: dict
     variant: str | None = None
     hulls: object = None
+    ships: tuple = ()
 
 
 def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationModels:
@@ -702,5 +760,7 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
         check_spm_validity(sea_model.k, sea_model.roughness_height_variance)
         tracing = build_tracing(scene, base_dir, sea_model=sea_model)
     hulls = build_hulls(scene, base_dir, variant=variant)
+    ships = sea.ships if sea is not None else build_ships(scene)
     return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
-                            attrs=scene_attrs(scene), variant=variant, hulls=hulls)
+                            attrs=scene_attrs(scene), variant=variant, hulls=hulls,
+                            ships=tuple(ships))

@@ -365,7 +365,13 @@ def object_problems(scene, base_dir) -> list[str]:
     except ValueError as exc:
         out.append(f"[tracing].variant = {short_repr(scene.tracing.variant)}: {exc}")
     raytraced = scene.radar.sea_clutter and scene.tracing.mode == "raytraced"
-    if not (raytraced or any(o.scatterer for o in scene.objects)):
+    hulls = any(o.scatterer for o in scene.objects) or any(
+        s.hull_echo for s in scene.all_ships)
+    for name, s in zip(scene.ship_names(), scene.all_ships, strict=True):
+        if s.hull_mesh is not None and not (Path(base_dir) / s.hull_mesh).is_file():
+            out.append(f"[[ships]] {name}: hull_mesh = {short_repr(s.hull_mesh)}: no such "
+                       f"file in {Path(base_dir).resolve()}")
+    if not (raytraced or hulls):
         return out
     for i, obj in enumerate(scene.objects):
         path = Path(base_dir) / obj.file

@@ -47,6 +47,8 @@ STREAMS: dict[str, int] = {
     "speckle-evolution": 7,
     # the transmitted phase of a random-phase (magnetron) radar: pulse index
     "transmit-phase": 8,
+    # fluctuating point targets (Swerling cases): counter (target, dwell or pulse index)
+    "target-fluctuation": 9,
 }
 
 #: Philox4x32 constants (Salmon et al. 2011, table 2 and section 5.1): round multipliers
@@ -125,6 +127,35 @@ def _normal_pair_numpy(words: tuple) -> tuple[NDArray, NDArray]:
     return np.cos(angle) * scale, np.sin(angle) * scale
 
 
+def uniform_pair(seed: int, stream: str, counter: tuple, *index: int
+                 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Two independent uniform deviates in (0, 1] per counter: Philox4x32-7 at key
+    :func:`philox_key` ``(seed, stream, *index)``, each deviate from 53 bits of two of
+    its four words (as :func:`facet_gaussians`). A pure function of (seed, stream,
+    index, counter): any subset of counters can be drawn in any order.
+
+    Parameters
+    ----------
+    seed : int
+        The scene's seed.
+    stream : str
+        One of :data:`STREAMS`.
+    counter : (c0, c1, c2, c3)
+        uint32 words (arrays broadcast against each other).
+    *index : int
+        Stream index.
+
+    Returns
+    -------
+    (u1, u2) : float64 arrays in (0, 1]
+    """
+    words = philox4x32(philox_key(seed, stream, *index), counter)
+    x0, x1, x2, x3 = (w.astype(np.uint64) for w in words)
+    scale = 2.0 ** -53
+    return tuple(1.0 - (((hi << np.uint64(32)) | lo) >> np.uint64(11)).astype(np.float64)
+                 * scale for lo, hi in ((x0, x1), (x2, x3)))
+
+
 def facet_gaussians(n: int, count: int, seed: int, stream: str, *index: int,
                     xp: Any = None) -> list[Any]:
     """``count`` circular complex Gaussians of unit variance per facet, each of shape (n,).
@@ -185,4 +216,4 @@ def facet_gaussians(n: int, count: int, seed: int, stream: str, *index: int,
 
 
 __all__ = ["PHILOX_ROUNDS", "STREAMS", "facet_gaussians", "generator", "philox4x32",
-           "philox_key"]
+           "philox_key", "uniform_pair"]

@@ -116,30 +116,49 @@ class ThreadJob:
 
 
 class Sea:
-    """The sea of a scene: surface realisation (seeded) and optional ship wake.
+    """The sea of a scene: surface realisation (seeded) and optional ship wakes.
+
+    Several ships: their Kelvin wakes add (linear waves superpose: elevations, slopes
+    and vertical velocities sum) and their turbulent wakes damp the Bragg waves in turn,
+    the combined damping fraction being ``1 - prod(1 - m_i)`` of the ships' masks m_i
+    (each removes its fraction of what the others left, as eq W15 combines the turbulent
+    and film parts; docs/wake.md).
 
     Parameters
     ----------
     surface : SeaSurface
         The wind sea.
-    ship : seaecho.wake.Ship or None
-        The ship whose wake is added.
-    kelvin_wake : bool
-        Add the Kelvin wake heights (else only the turbulent-wake mask).
+    ship : seaecho.wake.Ship, sequence of them, or None
+        The ship(s) whose wakes are added.
+    kelvin_wake : bool or sequence of bool
+        Add the Kelvin wake heights (else only the turbulent-wake mask), for all ships or
+        one flag per ship.
     turbulent_wake_length : float or None
-        Length of the turbulent wake [m] (None: the wake stage's default).
+        Length of the turbulent wake [m] (None: each ship's own, else the wake stage's
+        default).
     """
 
-    def __init__(self, surface: SeaSurface, ship=None, kelvin_wake: bool = True,
+    def __init__(self, surface: SeaSurface, ship=None, kelvin_wake=True,
                  turbulent_wake_length: float | None = None) -> None:
         self.surface = surface
-        self.ship = ship
+        if ship is None:
+            ships: tuple = ()
+        elif isinstance(ship, (list, tuple)):
+            ships = tuple(ship)
+        else:
+            ships = (ship,)
+        #: every ship whose wake is added
+        self.ships = ships
+        #: the first ship (None without ships)
+        self.ship = ships[0] if ships else None
         self.turbulent_wake_length = turbulent_wake_length
-        self._wake = None
-        if ship is not None and kelvin_wake:
-            from .wake import KelvinWake
+        flags = (kelvin_wake if isinstance(kelvin_wake, (list, tuple))
+                 else [kelvin_wake] * len(ships))
+        if len(flags) != len(ships):
+            raise ValueError(f"kelvin_wake: {len(flags)} flags for {len(ships)} ships")
+        from .wake import KelvinWake
 
-            self._wake = KelvinWake(ship)
+        self._wakes = [KelvinWake(s) for s, k in zip(ships, flags, strict=True) if k]
 
     @property
     def spectrum(self) -> DirectionalSpectrum:
@@ -164,14 +183,23 @@ class Sea:
         return vertical_acceleration(self.surface, t)
 
     def _ship_fields(self, t: float):
-        """The Kelvin wake's fields (or None) and the turbulent-wake mask (or None)."""
-        w = None if self._wake is None else self._wake.fields(self.x, self.y, t)
+        """The Kelvin wakes' summed fields (or None) and the combined turbulent-wake mask
+        (or None)."""
+        w = None
+        for wake in self._wakes:  # a few ships, each one vectorised over the grid
+            f = wake.fields(self.x, self.y, t)
+            w = f if w is None else type(f)(*(getattr(w, n) + getattr(f, n) for n in
+                                               ("elevation", "slope_x", "slope_y", "dzdt")))
         mask = None
-        if self.ship is not None:
+        if self.ships:
             from .wake import turbulent_wake_mask
 
-            mask = turbulent_wake_mask(self.ship, self.x, self.y, t,
-                                       length=self.turbulent_wake_length)
+            keep = None
+            for ship in self.ships:
+                m = turbulent_wake_mask(ship, self.x, self.y, t,
+                                        length=self.turbulent_wake_length)
+                keep = 1.0 - m if keep is None else keep * (1.0 - m)
+            mask = 1.0 - keep if len(self.ships) > 1 else m
         return w, mask
 
     def state(self, t: float = 0.0) -> SurfaceState:
@@ -181,7 +209,7 @@ class Sea:
         on a thread of its own while the wind sea is synthesised (finufft and numpy
         release the GIL): the same numbers, in less wall time on two cores.
         """
-        threaded = self.ship is not None and self.x.size * self.y.size >= THREAD_MIN_NODES
+        threaded = bool(self.ships) and self.x.size * self.y.size >= THREAD_MIN_NODES
         job = ThreadJob(self._ship_fields, t) if threaded else None
         f = self.surface.fields(t)
         w, mask = job.result() if threaded else self._ship_fields(t)

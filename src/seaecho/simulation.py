@@ -445,7 +445,7 @@ class Simulation:
         echoes = []
         if self.sea is not None:
             echoes.append(self.sea_echo(pulse, geo).echo)
-        t = self.radar.target_echo(geo, variant=self.variant)
+        t = self.radar.target_echo(geo, variant=self.variant)  # its pulse: geo.time
         if t is not None:
             echoes.append(t)
         if self.hulls is not None:
@@ -516,7 +516,7 @@ class Simulation:
         ship = None
         if self.sea.ship is not None:
             t = self.radar.emission_time(np.arange(self.radar.n_pulses))
-            ship = self.sea.ship.position(0.0)[None, :] + t[:, None] * self.sea.ship.velocity
+            ship = self.sea.ship.position(t)  # the first ship's (truth_position: all)
         return {"state": st, "sigma0": sigma0, "visibility": vis, "ship_position": ship}
 
     def static_dataset(self):
@@ -529,7 +529,17 @@ class Simulation:
         # The hulls' centres at the sigma-map pulse and their RCS against pulse
         hulls = (self.hulls.truth(self.models.radar.sigma_map_pulse)
                  if self.hulls is not None else None)
-        ds = run_dataset(self.radar, self.models.attrs, truth=truth, extra=hulls,
+        # Per-pulse truth of every ship and target (seaecho.radar.truth)
+        from .radar.truth import ground_truth
+
+        rcs = {}
+        if hulls is not None:
+            names = [str(n) for n in hulls[1]["hull"][1]]
+            rcs = {n: hulls[0]["hull_rcs"][1][i] for i, n in enumerate(names)}
+        objects = ground_truth(self.radar, self.models.ships, rcs)
+        if hulls is not None:
+            objects = ({**hulls[0], **objects[0]}, {**hulls[1], **objects[1]})
+        ds = run_dataset(self.radar, self.models.attrs, truth=truth, extra=objects,
                            x=None if self.sea is None else self.sea.x,
                            y=None if self.sea is None else self.sea.y,
                            extra_attrs={

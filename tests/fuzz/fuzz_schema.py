@@ -33,6 +33,7 @@ from pydantic import BaseModel, TypeAdapter, ValidationError
 from seaecho.config import Scene, parse_scene
 from seaecho.config.consistency import allowed_channels
 from seaecho.config.radar import PlatformConfig, RadarConfig, TargetConfig
+from seaecho.config.ship import ShipConfig
 from seaecho.config.tracing import ObjectConfig
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -250,6 +251,16 @@ def _ship(draw: Draw, d: dict, get: Get) -> dict:
         d[speed] = 0.0
     if not 0.01 * d["length_m"] <= d["beam_m"] < d["length_m"]:
         d["beam_m"] = min(d["length_m"] * draw(st.floats(0.02, 0.5)), 80.0)
+    # no hull echo (a ray trace per ship); a route of two legs that its turn fits, or none
+    d = _only(d, drop=("waypoints_m", "turn_rate_deg_s", "turn_radius_m", "hull_echo",
+                       "hull_mesh", "wave_motion"))
+    if d[speed] > 0.0 and draw(st.booleans()):
+        d = _only(d, drop=("heading_deg", "position_m"))
+        x0, y0, a, b = draw(st.tuples(_near, _near, st.floats(50.0, 500.0),
+                                      st.floats(50.0, 500.0)))
+        b = b if draw(st.booleans()) else -b
+        d["waypoints_m"] = ((x0, y0), (x0 + a, y0), (x0 + a, y0 + b))
+        d["turn_radius_m"] = draw(st.floats(0.1, 25.0))
     return d
 
 
@@ -357,6 +368,8 @@ def _perturbation(draw: Draw, d: dict, get: Get) -> dict:
 
 def _target(draw: Draw, d: dict, get: Get) -> dict:
     s = ("s_hh", "s_hv", "s_vh", "s_vv")
+    if "preset" in d:  # a preset sets the RCS (the scene checks its carrier band)
+        return _only(d, drop=s + ("rcs_m2",))
     if "rcs_m2" in d or not any(k in d for k in s):
         d = _only(d, drop=s)
         d["rcs_m2"] = d.get("rcs_m2", draw(get("rcs_m2")))
@@ -408,10 +421,20 @@ def _image(draw: Draw, d: dict, get: Get) -> dict:
 
 
 def _scene(draw: Draw, d: dict, get: Get) -> dict:
+    if "ship" in d:  # [ship] or [[ships]]
+        d.pop("ships", None)
+    if d.get("ships"):
+        d["ships"] = tuple({**sh, "name": f"ship{i}"} for i, sh in enumerate(d["ships"]))
+    from seaecho.config.radar import PRESET_BANDS
+
+    carrier = (d.get("radar") or {}).get("carrier_frequency_hz", 0.0)
+    if not any(lo <= carrier <= hi for lo, hi in PRESET_BANDS.values()):
+        d["targets"] = tuple({**_only(g, drop=("preset",)), "rcs_m2": g.get("rcs_m2", 1.0)}
+                             if "preset" in g else g for g in d.get("targets", ()))
     objects = []
     for i, obj in enumerate(d.get("objects", ())):
         obj = {**obj, "name": f"{obj['name']}{i}"}  # unique names
-        if "ship" not in d:
+        if "ship" not in d or "waypoints_m" in d["ship"]:  # a straight [ship] only
             obj.pop("follow_ship", None)
         objects.append(obj)
     if objects:
@@ -508,6 +531,7 @@ TINY: dict[tuple[str, str], st.SearchStrategy] = {
     ("ImageConfig", "looks"): st.tuples(st.integers(1, 2), st.integers(1, 2)),
     ("Scene", "targets"): st.lists(section(TargetConfig, ("targets",)), max_size=3).map(tuple),
     ("Scene", "objects"): st.lists(section(ObjectConfig, ("objects",)), max_size=1).map(tuple),
+    ("Scene", "ships"): st.lists(section(ShipConfig, ("ships",)), max_size=2).map(tuple),
 }
 CAPS = TINY
 #: Fields left out of generated scenes: an output path would write beside the tests.

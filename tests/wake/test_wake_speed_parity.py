@@ -136,7 +136,7 @@ def test_an_error_of_the_wake_thread_reaches_the_caller(monkeypatch):
     def boom(*args, **kwargs):
         raise RuntimeError("wake failed")
 
-    monkeypatch.setattr(sea._wake, "fields", boom)
+    monkeypatch.setattr(sea._wakes[0], "fields", boom)
     with pytest.raises(RuntimeError, match="wake failed"):
         sea.state(0.0)
 

@@ -27,6 +27,7 @@ COMMANDS = (
     "doppler",
     "detect",
     "score",
+    "truth",
     "trace",
     "compare",
     "sigma",

@@ -41,10 +41,11 @@ def run(args: argparse.Namespace) -> int:
     print(f"{args.scene}: valid scene '{scene.name}'")
     print(f"  sea: {scene.sea.spectrum} spectrum, U19.5 = {scene.sea.wind_speed_m_s} m/s "
           f"towards {scene.sea.wind_direction_deg} deg, tile {lx} x {ly} m on {nx} x {ny}")
-    if scene.ship is not None:
-        s = scene.ship
-        print(f"  ship: {s.length_m} x {s.beam_m} m, draft {s.draft_m} m, "
-              f"{s.speed:.3f} m/s heading {s.heading_deg} deg")
+    for s, name in zip(scene.all_ships, scene.ship_names(), strict=True):
+        track = (f"through {len(s.waypoints_m)} waypoints" if s.waypoints_m is not None
+                 else f"heading {s.heading_deg} deg")
+        print(f"  ship {name}: {s.length_m} x {s.beam_m} m, draft {s.draft_m} m, "
+              f"{s.speed:.3f} m/s {track}")
     if resources is not None:
         print(f"  run: {resources}")
     if not runnable:

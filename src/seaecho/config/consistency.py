@@ -54,10 +54,50 @@ def check_objects(scene) -> None:
                              "[ship] section")
 
 
+def check_targets(scene) -> None:
+    """``[[targets]]``: a ``preset`` needs a ``[radar]`` carrier in a band it has."""
+    from .radar import preset_rcs_m2
+
+    for i, g in enumerate(scene.targets):
+        if g.preset is None:
+            continue
+        if scene.radar is None:
+            raise ValueError(f"[[targets]] #{i}: preset = '{g.preset}' needs a [radar] "
+                             "section (its RCS depends on the carrier band)")
+        try:
+            preset_rcs_m2(g.preset, scene.radar.carrier_frequency_hz)
+        except ValueError as exc:
+            raise ValueError(f"[[targets]] #{i}: {exc}") from None
+
+
+def check_ships(scene) -> None:
+    """``[ship]`` or ``[[ships]]``, not both; unique names; an object that follows the
+    ship needs a straight course."""
+    if scene.ship is not None and scene.ships:
+        raise ValueError("[ship] and [[ships]]: give one ship as [ship], or all of them as "
+                         "[[ships]] (a [ship] is the same as one [[ships]] entry)")
+    names = scene.ship_names()
+    for i, n in enumerate(names):
+        if n in names[:i]:
+            raise ValueError(f"[[ships]] #{i}: name = {short_repr(n)} is used by an earlier "
+                             "ship; names must be unique")
+    moving = [n for n, s in zip(names, scene.all_ships, strict=True) if s.wave_motion]
+    if moving and (scene.radar is None or not scene.radar.sea_clutter):
+        raise ValueError(f"[[ships]] {moving[0]}: wave_motion = true needs the sea: [radar] "
+                         "sea_clutter = true")
+    if scene.ship is not None and scene.ship.waypoints_m is not None and any(
+            o.follow_ship for o in scene.objects):
+        raise ValueError("[[objects]] follow_ship = true with a [ship] on waypoints_m: not "
+                         "implemented yet (an object follows a straight course only)")
+
+
 def check_scene(scene) -> None:
     """Every check of this module (called by :class:`~seaecho.config.scene.Scene`)."""
     check_channels(scene)
     check_objects(scene)
+    check_targets(scene)
+    check_ships(scene)
 
 
-__all__ = ["allowed_channels", "check_channels", "check_objects", "check_scene"]
+__all__ = ["allowed_channels", "check_channels", "check_objects", "check_scene",
+           "check_ships", "check_targets"]

@@ -405,6 +405,11 @@ class RadarConfig(Section):
         "magnetron: a new uniform phase per pulse, seeded; echoes do not add coherently "
         "from pulse to pulse)",
     )
+    cpi_pulses: int | None = Field(
+        None, ge=1, le=10_000_000,
+        description="pulses per dwell (coherent processing interval): Swerling 1 and 3 "
+        "targets draw a new RCS every dwell [-]; default all the pulses of the run",
+    )
 
     @model_validator(mode="after")
     def _check(self) -> RadarConfig:
@@ -441,12 +446,53 @@ class RadarConfig(Section):
         return C0 / self.carrier_frequency_hz
 
 
+#: Mean RCS [m^2] of the named targets of the IMO radar performance standard, at X band
+#: (9.41 GHz, 8-12 GHz here) and S band (3.05 GHz, 2-4 GHz here), and the Swerling case
+#: a preset takes unless given. RCS: IMO resolution MSC.192(79) (2004), Annex, table 2
+#: and its notes 1-4 ("small vessel of length 10 m with no radar reflector" 2.5 / 1.4 m^2,
+#: "taken as a complex target"; "typical navigation buoy" 5.0 / 0.5 m^2; "navigation buoy
+#: with corner reflector" 10 / 1.0 m^2; "small vessel with radar reflector meeting IMO
+#: performance standards", MSC.164(78): 7.5 / 0.5 m^2). Swerling cases: a modelling
+#: choice (docs/targets.md): the many-scatterer boat case 1, a buoy (one dominant
+#: reflector plus small ones) case 3. There is no swimmer: no published RCS of a person
+#: in the water was found (a standing man: 0.5 to 1.2 m^2 at 9.4 GHz, Schultz, Burgener
+#: & King, Proc. IRE 46(2), 476-481, 1958, is not a swimmer's).
+TARGET_PRESETS: dict[str, dict] = {
+    "small-boat": {"x_band_m2": 2.5, "s_band_m2": 1.4, "swerling": 1},
+    "small-boat-reflector": {"x_band_m2": 7.5, "s_band_m2": 0.5, "swerling": 1},
+    "navigation-buoy": {"x_band_m2": 5.0, "s_band_m2": 0.5, "swerling": 3},
+    "navigation-buoy-reflector": {"x_band_m2": 10.0, "s_band_m2": 1.0, "swerling": 3},
+}
+#: Carrier bands of the presets [Hz] (IEEE Std 521-2002 letter bands).
+PRESET_BANDS: dict[str, tuple[float, float]] = {"x_band_m2": (8.0e9, 12.0e9),
+                                                "s_band_m2": (2.0e9, 4.0e9)}
+PresetName = Literal["small-boat", "small-boat-reflector", "navigation-buoy",
+                     "navigation-buoy-reflector"]
+
+
+def preset_rcs_m2(preset: str, carrier_hz: float) -> float:
+    """Mean RCS [m^2] of a :data:`TARGET_PRESETS` entry at a carrier [Hz] (X or S band).
+
+    Raises
+    ------
+    ValueError
+        The carrier is in neither band.
+    """
+    for key, (lo, hi) in PRESET_BANDS.items():
+        if lo <= carrier_hz <= hi:
+            return float(TARGET_PRESETS[preset][key])
+    raise ValueError(f"preset = '{preset}': its RCS is published for X band (8-12 GHz) "
+                     f"and S band (2-4 GHz) only; the carrier is {carrier_hz / 1e9:g} GHz: "
+                     "give rcs_m2 instead")
+
+
 class TargetConfig(Section):
     """A point target: position, velocity and its RCS or 2x2 scattering matrix.
 
     The scattering amplitudes s_mn are in metres, |s_mn|^2 = sigma_mn [m^2], in the
     forward-scattering-alignment bases of docs/conventions.md (m received, n transmitted),
-    given as (real, imaginary) pairs.
+    given as (real, imaginary) pairs. With ``swerling`` 1 to 4 they are the mean: the
+    target presents sqrt(F) s_mn, F drawn per dwell or per pulse (docs/targets.md).
     """
 
     name: Name = Field("", max_length=200, description="a label for the target")
@@ -461,13 +507,30 @@ class TargetConfig(Section):
     s_hv: tuple[float, float] | None = Field(None, description="s_hv (re, im) [m]")
     s_vh: tuple[float, float] | None = Field(None, description="s_vh (re, im) [m]")
     s_vv: tuple[float, float] | None = Field(None, description="s_vv (re, im) [m]")
+    swerling: Literal[0, 1, 2, 3, 4] | None = Field(
+        None,
+        description="fluctuation (Swerling 1954): 0 steady; 1, 3 a new RCS every dwell "
+        "([radar] cpi_pulses), 2, 4 every pulse; 1, 2 exponential power (chi-square 2 "
+        "degrees of freedom), 3, 4 chi-square 4; rcs_m2 (or |s_mn|^2) is the mean; "
+        "default 0, or the preset's",
+    )
+    preset: PresetName | None = Field(
+        None,
+        description="a published mean RCS at the radar's X or S band carrier instead of "
+        "rcs_m2 (IMO MSC.192(79) table 2): 'small-boat' (10 m, no reflector), "
+        "'small-boat-reflector', 'navigation-buoy', 'navigation-buoy-reflector' "
+        "(docs/targets.md)",
+    )
 
     @model_validator(mode="after")
     def _check(self) -> TargetConfig:
         given = [getattr(self, n) is not None for n in ("s_hh", "s_hv", "s_vh", "s_vv")]
-        if (self.rcs_m2 is None) == (not any(given)):
-            raise ValueError("give either rcs_m2 or the scattering matrix s_hh, s_hv, s_vh, "
-                             "s_vv (missing ones are 0)")
+        if self.preset is not None and (self.rcs_m2 is not None or any(given)):
+            raise ValueError(f"preset = '{self.preset}' sets the RCS: give no rcs_m2 or "
+                             "s_hh, s_hv, s_vh, s_vv with it")
+        if self.preset is None and (self.rcs_m2 is None) == (not any(given)):
+            raise ValueError("give either rcs_m2, a preset, or the scattering matrix s_hh, "
+                             "s_hv, s_vh, s_vv (missing ones are 0)")
         for name in ("position_m", "velocity_m_s"):
             v = getattr(self, name)
             bound = _POS if name == "position_m" else _VEL
@@ -480,14 +543,27 @@ class TargetConfig(Section):
                 raise ValueError(f"{name} = {list(v)}: each part must be within +-1e5 m")
         return self
 
-    def scattering_matrix(self):
+    @property
+    def swerling_case(self) -> int:
+        """The Swerling case: ``swerling``, else the preset's, else 0."""
+        if self.swerling is not None:
+            return int(self.swerling)
+        return int(TARGET_PRESETS[self.preset]["swerling"]) if self.preset else 0
+
+    def scattering_matrix(self, carrier_hz: float | None = None):
         """The 2x2 complex scattering amplitude [m] in (h, v) order: [[s_hh, s_hv], [s_vh, s_vv]].
 
         ``M[m, n]``: m received, n transmitted, both ordered (h, v) as in
-        ``seaecho.scattering.frames``, so ``M.reshape(4)`` lists HH, HV, VH, VV.
+        ``seaecho.scattering.frames``, so ``M.reshape(4)`` lists HH, HV, VH, VV. A preset
+        needs the carrier [Hz] (:func:`preset_rcs_m2`).
         """
         import numpy as np
 
+        if self.preset is not None:
+            if carrier_hz is None:
+                raise ValueError(f"preset = '{self.preset}': needs the radar's carrier")
+            a = np.sqrt(preset_rcs_m2(self.preset, carrier_hz))
+            return np.array([[a, 0.0], [0.0, a]], dtype=complex)
         if self.rcs_m2 is not None:
             a = np.sqrt(self.rcs_m2)
             return np.array([[a, 0.0], [0.0, a]], dtype=complex)
@@ -504,6 +580,9 @@ __all__ = [
     "GaussMarkovConfig",
     "PlatformConfig",
     "RadarConfig",
+    "PRESET_BANDS",
+    "TARGET_PRESETS",
     "TargetConfig",
     "WaveformConfig",
+    "preset_rcs_m2",
 ]

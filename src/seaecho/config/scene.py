@@ -4,6 +4,7 @@ Sections (a TOML table each):
 
 - ``[sea]``      sea state, spectrum, tile and grid (:class:`SeaConfig`), required
 - ``[ship]``     a ship and its wake (:class:`ShipConfig`), optional
+- ``[[ships]]``  several ships (the same keys each, with a ``name``), optional
 - ``[run]``      seed, output, times (:class:`RunConfig`)
 
 Sections that later stages add (radar, platforms, tracing, objects, targets) are
@@ -32,6 +33,10 @@ class Scene(Section):
     description: Text = Field("", max_length=5000, description="free text")
     sea: SeaConfig = Field(..., description="the sea [sea]")
     ship: ShipConfig | None = Field(None, description="the ship and its wake [ship]")
+    ships: tuple[ShipConfig, ...] = Field(
+        (), max_length=100, description="several ships and their wakes [[ships]] (instead "
+        "of [ship])"
+    )
     run: RunConfig = Field(default_factory=RunConfig, description="run options [run]")
     radar: RadarConfig | None = Field(
         None, description="the radar: waveform, pulses, noise [radar]"
@@ -69,6 +74,15 @@ class Scene(Section):
 
         check_scene(self)
         return self
+
+    @property
+    def all_ships(self) -> tuple[ShipConfig, ...]:
+        """Every ship: ``[ship]`` (one) or ``[[ships]]``."""
+        return (self.ship,) if self.ship is not None else tuple(self.ships)
+
+    def ship_names(self) -> tuple[str, ...]:
+        """The ships' names (``ship0``, ``ship1``, ... where none is given)."""
+        return tuple(s.name or f"ship{i}" for i, s in enumerate(self.all_ships))
 
 
 __all__ = ["Scene"]

@@ -1,4 +1,8 @@
-"""``[ship]`` section: the ship that makes the wake (and, later, the hull echo).
+"""``[ship]`` section, and ``[[ships]]``: the ships that make wakes (and hull echoes).
+
+``[ship]`` is one ship; ``[[ships]]`` an array of them, each with a ``name``, on a
+straight course (``heading_deg``, ``position_m``) or on waypoints (``waypoints_m``,
+legs at constant speed joined by turns at ``turn_rate_deg_s`` or ``turn_radius_m``).
 
 The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
 polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
@@ -7,12 +11,13 @@ doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
+import math
 from typing import Literal
 
 from pydantic import Field, model_validator
 
 from ..constants import KNOT
-from .base import Section
+from .base import Name, Section, short_repr
 
 #: Minimum phase speed of capillary-gravity waves on clean water, (4 g sigma / rho)^(1/4)
 #: = 0.23 m/s (H. Lamb, *Hydrodynamics*, 6th ed., 1932, art. 268): a hull slower than
@@ -26,8 +31,15 @@ MIN_LENGTH_M = 0.1
 MIN_BEAM_RATIO = 0.01
 
 
+#: Fastest turn [deg/s]: small fast craft turn at up to ~10 deg/s; 30 bounds any hull.
+MAX_TURN_RATE_DEG_S = 30.0
+
+
 class ShipConfig(Section):
-    """A ship sailing in a straight line at constant speed."""
+    """A ship sailing at constant speed: a straight course, or legs between waypoints."""
+
+    name: Name = Field("", max_length=200,
+                       description="a label for the ship (default ship0, ship1, ...)")
 
     length_m: float = Field(
         ..., ge=MIN_LENGTH_M, le=500.0,
@@ -77,6 +89,104 @@ class ShipConfig(Section):
         description="dilational modulus of the turbulent wake's surfactant film [mN/m]; "
         "order of 10 mN/m for natural films (Alpers & Huehnerfuss 1988)",
     )
+    waypoints_m: tuple[tuple[float, float], ...] | None = Field(
+        None, min_length=2, max_length=1000,
+        description="sail through these (x, y) points, each within +-1e7 [m], at the "
+        "first at time 0, instead of heading_deg and position_m; legs at constant speed, "
+        "corners rounded by turns of turn_rate_deg_s or turn_radius_m (docs/targets.md)",
+    )
+    turn_rate_deg_s: float | None = Field(
+        None, gt=0.0, le=MAX_TURN_RATE_DEG_S,
+        description="rate of turn at the waypoints [deg/s] (radius speed / rate); or give "
+        "turn_radius_m",
+    )
+    turn_radius_m: float | None = Field(
+        None, gt=0.0, le=1.0e5, description="radius of the turns at the waypoints [m]; or "
+        "give turn_rate_deg_s",
+    )
+    hull_echo: bool = Field(
+        False, description="add the hull's own echo (shooting and bouncing rays, sea "
+        "multipath; docs/ship.md) with the [[objects]] scatterer defaults; a straight "
+        "course only (not implemented yet on waypoints)",
+    )
+    wave_motion: bool = Field(
+        False, description="hull_echo: the hull heaves, pitches and rolls with the sea under "
+        "its waterplane (quasi-static wave following; docs/targets.md); needs the sea "
+        "([radar] sea_clutter = true)",
+    )
+    hull_mesh: str | None = Field(
+        None, min_length=1, max_length=4096,
+        description="hull_echo: mesh file (.ply, .obj, .stl; x forward, y to port, z up, "
+        "waterline z = 0), relative to the scene file's folder; default the generic ship "
+        "of seaecho.geometry.vessel scaled to length_m, beam_m, draft_m",
+    )
+
+    @model_validator(mode="after")
+    def _route(self) -> ShipConfig:
+        if self.hull_mesh is not None:
+            if not self.hull_echo:
+                raise ValueError("hull_mesh is only used with hull_echo = true")
+            suffix = self.hull_mesh.rsplit(".", 1)[-1].lower() if "." in self.hull_mesh else ""
+            if suffix not in ("ply", "obj", "stl"):
+                raise ValueError(f"hull_mesh = {short_repr(self.hull_mesh)}: allowed "
+                                 "extensions .ply, .obj, .stl")
+        if self.wave_motion and not self.hull_echo:
+            raise ValueError("wave_motion moves the hull echo: it needs hull_echo = true")
+        if self.hull_echo and self.waypoints_m is not None:
+            raise ValueError("hull_echo = true on waypoints_m: not implemented yet (a hull "
+                             "echo follows a straight course only)")
+        turn = self.turn_rate_deg_s is not None or self.turn_radius_m is not None
+        if self.waypoints_m is None:
+            if turn:
+                raise ValueError("turn_rate_deg_s / turn_radius_m are for a ship on "
+                                 "waypoints_m")
+            return self
+        # given with other values than the defaults (a scene written back in full, as a
+        # run's scene_json, holds the defaults and reads back)
+        given = {f for f in {"heading_deg", "position_m"} & self.model_fields_set
+                 if getattr(self, f) != type(self).model_fields[f].default}
+        if given:
+            raise ValueError(f"waypoints_m sets the track: give no {' or '.join(sorted(given))}")
+        if self.turn_rate_deg_s is not None and self.turn_radius_m is not None:
+            raise ValueError("give turn_rate_deg_s or turn_radius_m, not both")
+        w = self.waypoints_m
+        if any(abs(c) > 1.0e7 for p in w for c in p):
+            raise ValueError(f"waypoints_m = {short_repr(w)}: each coordinate must be within "
+                             "+-1e7 m")
+        if self.speed == 0.0:
+            raise ValueError("a ship on waypoints_m needs a speed > 0")
+        legs = [math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(w, w[1:], strict=False)]
+        if min(legs) == 0.0:
+            i = legs.index(0.0)
+            raise ValueError(f"waypoints_m: points {i} and {i + 1} coincide")
+        heads = [math.atan2(b[1] - a[1], b[0] - a[0]) for a, b in zip(w, w[1:], strict=False)]
+        turns = [abs(math.remainder(b - a, 2 * math.pi)) for a, b in
+                 zip(heads, heads[1:], strict=False)]
+        if any(t > 1e-12 for t in turns) and not turn:
+            raise ValueError("waypoints_m turns: give turn_rate_deg_s or turn_radius_m")
+        if any(t > math.pi - 1e-9 for t in turns):
+            raise ValueError("waypoints_m: the track turns back on itself (180 deg); add an "
+                             "intermediate waypoint")
+        # the turns must fit on the legs (the corner cut R tan(|Delta| / 2) of
+        # seaecho.wake.ship.Route, checked again there)
+        r = self.turn_radius
+        cut = [0.0] + [r * math.tan(0.5 * t) for t in turns] + [0.0]
+        for i, n in enumerate(legs):
+            if cut[i] + cut[i + 1] > n * (1.0 + 1e-12):
+                raise ValueError(
+                    f"waypoints_m: leg {i} is {n:.4g} m long but the turns at radius "
+                    f"{r:.4g} m need {cut[i] + cut[i + 1]:.4g} m; a faster turn rate, a "
+                    "smaller turn_radius_m or waypoints further apart")
+        return self
+
+    @property
+    def turn_radius(self) -> float:
+        """Radius of the turns [m]: turn_radius_m, or speed / turn rate (inf when none)."""
+        if self.turn_radius_m is not None:
+            return float(self.turn_radius_m)
+        if self.turn_rate_deg_s is not None:
+            return self.speed / math.radians(self.turn_rate_deg_s)
+        return math.inf
 
     @model_validator(mode="after")
     def _one_speed(self) -> ShipConfig:
@@ -106,4 +216,5 @@ class ShipConfig(Section):
         return self.speed_m_s if self.speed_m_s is not None else self.speed_kn * KNOT
 
 
-__all__ = ["MIN_BEAM_RATIO", "MIN_LENGTH_M", "MIN_WAVE_SPEED_M_S", "ShipConfig"]
+__all__ = ["MAX_TURN_RATE_DEG_S", "MIN_BEAM_RATIO", "MIN_LENGTH_M", "MIN_WAVE_SPEED_M_S",
+           "ShipConfig"]

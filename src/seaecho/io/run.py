@@ -104,6 +104,11 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
         data["target_scattering"] = (("target", "polarisation"),
                                      targets.scattering.reshape(-1, 4),
                                      {"units": "m", "long_name": "s_mn, |s|^2 = RCS"})
+        if targets.swerling is not None:
+            data["target_swerling"] = (("target",), targets.swerling, {
+                "long_name": "Swerling case (0 steady; target_scattering is the mean)"})
+            data["target_dwell_pulses"] = ((), int(targets.dwell_pulses), {
+                "long_name": "pulses per dwell (Swerling 1, 3: one RCS per dwell)"})
         coords["target"] = ("target", np.array(targets.names))
     if truth is not None:
         st = truth["state"]

@@ -35,15 +35,42 @@ class TargetSet:
         ``|s_mn|^2`` the RCS [m^2] (docs/conventions.md).
     names : tuple of str
         Labels.
+    swerling : ndarray (K,) int or None
+        Swerling case of each target, 0 to 4 (:mod:`seaecho.targets.swerling`); None:
+        all steady. ``scattering`` holds the mean: |s_mn|^2 the mean RCS.
+    dwell_pulses : int
+        Pulses per dwell: cases 1 and 3 draw one RCS per dwell.
+    seed : int
+        The scene's seed (the fluctuations' stream).
     """
 
     positions: NDArray[np.float64]
     velocities: NDArray[np.float64]
     scattering: NDArray[np.complex128]
     names: tuple[str, ...]
+    swerling: NDArray[np.int64] | None = None
+    dwell_pulses: int = 1
+    seed: int = 0
 
     def __len__(self) -> int:
         return int(self.positions.shape[0])
+
+    def rcs_factor(self, pulse) -> NDArray[np.float64]:
+        """RCS over mean RCS of every target at ``pulse`` [-], shape ``pulse``'s + (K,)
+        (eq T1 of :mod:`seaecho.targets.swerling`; 1 for steady targets)."""
+        p = np.asarray(pulse, dtype=np.int64)
+        if self.swerling is None or not np.any(self.swerling):
+            return np.ones(p.shape + (len(self),))
+        from ..targets.swerling import swerling_factor
+
+        return swerling_factor(self.seed, self.swerling, p[..., None], self.dwell_pulses)
+
+    def scattering_at(self, pulse: int) -> NDArray[np.complex128]:
+        """Scattering amplitudes presented at ``pulse`` [m], (K, 2, 2): ``scattering``
+        times sqrt of :meth:`rcs_factor` (the phases kept)."""
+        if self.swerling is None or not np.any(self.swerling):
+            return self.scattering
+        return self.scattering * np.sqrt(self.rcs_factor(int(pulse)))[:, None, None]
 
 
 @dataclass(frozen=True)

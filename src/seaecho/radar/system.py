@@ -369,24 +369,29 @@ class RadarSystem:
             return 0.0
         return float(generator(self.seed, "transmit-phase", pulse).uniform(0.0, 2.0 * np.pi))
 
-    def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None
-                    ) -> ScattererEcho | None:
+    def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None,
+                    pulse: int | None = None) -> ScattererEcho | None:
         """Echo of the model's point targets at one pulse (None if there are none, or
         all are beyond the horizon of a spherical Earth); ``variant`` as
-        :meth:`scatterer_echo`."""
+        :meth:`scatterer_echo`; ``pulse`` (default: the pulse emitted at
+        ``geometry.time``) selects the fluctuating targets' draws
+        (:meth:`~seaecho.radar.model.TargetSet.scattering_at`)."""
         targets = self.model.targets
         if targets is None or not len(targets):
             return None
         p, seen = self.target_positions(geometry.time)
         if not seen.any():
             return None
+        if pulse is None:
+            pulse = int(np.rint((geometry.time - self.start_time) * self.prf))
+        scattering = targets.scattering_at(pulse)
         v = targets.velocities
         if self.model.earth is not None:  # velocities turned by the local tilt
             v = np.einsum("...ij,...j->...i", self.model.earth.tilt(
                 targets.positions + geometry.time * v), v)
         if seen.all():
-            return self.scatterer_echo(geometry, p, v, targets.scattering, variant=variant)
-        return self.scatterer_echo(geometry, p[seen], v[seen], targets.scattering[seen],
+            return self.scatterer_echo(geometry, p, v, scattering, variant=variant)
+        return self.scatterer_echo(geometry, p[seen], v[seen], scattering[seen],
                                    variant=variant)
 
 

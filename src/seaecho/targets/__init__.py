@@ -11,7 +11,9 @@ does not need it:
 - :mod:`.centres`: scattering centres (delay-equivalent positions, clustering, coherent
   totals, refresh schedule);
 - :mod:`.canonical`: canonical meshes (plate, dihedral, trihedral, sphere) for
-  validation and calibration.
+  validation and calibration;
+- :mod:`.swerling`: fluctuating point targets (Swerling cases 0 to 4);
+- :mod:`.motion`: a hull's heave, pitch and roll following the sea under its waterplane.
 
-The theory page is ``docs/ship.md``.
+The theory pages are ``docs/ship.md`` and ``docs/targets.md``.
 """

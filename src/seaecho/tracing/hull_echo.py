@@ -77,6 +77,9 @@ class Hull:
         Refresh step [deg] and interval [s] (0: none).
     schedule : (R,) int array
         Pulses at which the signature is traced.
+    waterplane : (float, float) or None
+        (length, beam) [m] of the waterplane whose sea the hull follows (heave, pitch,
+        roll of :mod:`seaecho.targets.motion`); None: no motion in the waves.
     """
 
     name: str
@@ -87,6 +90,7 @@ class Hull:
     refresh_deg: float
     refresh_s: float
     schedule: NDArray[np.intp]
+    waterplane: tuple | None = None
 
     @property
     def velocity(self) -> NDArray[np.float64]:
@@ -141,6 +145,9 @@ class HullOptions:
         Add the paths that bounce on the sea plane.
     refresh_deg, refresh_s : float
         Re-trace when the aspect changes by this much [deg] or after this time [s].
+    waterplane : (float, float) or None
+        (length, beam) [m]: the hull heaves, pitches and rolls with the sea under this
+        waterplane (:attr:`Hull.waterplane`); None: it does not.
     """
 
     name: str
@@ -150,6 +157,7 @@ class HullOptions:
     sea_multipath: bool
     refresh_deg: float
     refresh_s: float
+    waterplane: tuple | None = None
 
 
 @dataclass(frozen=True)
@@ -245,7 +253,8 @@ class HullEchoes:
             options = SBROptions(rays_per_wavelength=spec.rays_per_wavelength,
                                  max_bounces=spec.max_bounces, cell=spec.cell_m)
             hull = Hull(spec.name, shapes, eps, options, spec.sea_multipath,
-                        spec.refresh_deg, spec.refresh_s, np.zeros(1, dtype=np.intp))
+                        spec.refresh_deg, spec.refresh_s, np.zeros(1, dtype=np.intp),
+                        spec.waterplane)
             # Aspect of the transmitter and the receiver from the hull at every pulse
             c = hull.origin(t)
             ut = (tx - c) / np.linalg.norm(tx - c, axis=-1, keepdims=True)
@@ -336,9 +345,43 @@ class HullEchoes:
             if len(c) == 0:
                 continue
             vel = np.broadcast_to(c.velocity, c.position.shape)
-            out.append(self.radar.scatterer_echo(geometry, c.positions_at(geometry.time),
-                                                 vel, c.s))
+            pos = c.positions_at(geometry.time)
+            if self.hulls[i].waterplane is not None:
+                pos = self.in_waves(i, pos, geometry.time)
+            out.append(self.radar.scatterer_echo(geometry, pos, vel, c.s))
         return out
+
+    def attitude(self, hull: int, t: float) -> tuple[float, float, float]:
+        """(heave [m], pitch [rad], roll [rad]) of hull number ``hull`` at time ``t``
+        [s] on the held sea (:func:`seaecho.targets.motion.waterplane_motion`); zeros
+        without a sea or a waterplane."""
+        from ..targets.motion import waterplane_motion
+
+        h = self.hulls[hull]
+        if h.waterplane is None or self.surface is None:
+            return 0.0, 0.0, 0.0
+        st = self.surface(t)
+        rot = h.shapes[0].rotation
+        heading = float(np.arctan2(rot[1, 0], rot[0, 0]))
+        return waterplane_motion(st.x, st.y, st.elevation, h.origin(t)[:2], heading,
+                                 *h.waterplane)
+
+    def in_waves(self, hull: int, positions: NDArray, t: float) -> NDArray[np.float64]:
+        """Scattering-centre positions (K, 3) [m] of hull number ``hull`` moved rigidly
+        by its heave, pitch and roll at ``t`` [s] (:meth:`attitude`) about its origin.
+
+        The signature is not traced again for the tilted hull: the centres (sea-bounce
+        images included) turn and rise with it, which moves their delays and Doppler;
+        their amplitudes are those of the upright hull (docs/targets.md)."""
+        from ..targets.motion import hull_rotation
+
+        heave, pitch, roll = self.attitude(hull, t)
+        if heave == 0.0 and pitch == 0.0 and roll == 0.0:
+            return positions
+        rot = self.hulls[hull].shapes[0].rotation
+        r = hull_rotation(float(np.arctan2(rot[1, 0], rot[0, 0])), pitch, roll)
+        o = self.hulls[hull].origin(t)
+        return o + (np.asarray(positions) - o) @ r.T + np.array([0.0, 0.0, heave])
 
     # ---------------------------------------------------------------- ground truth
     def truth(self, pulse: int) -> tuple[dict, dict]:

@@ -30,6 +30,7 @@ __all__ = [
     "ObjectGeometry",
     "ObjectScene",
     "SeaScene",
+    "load_mesh_file",
     "load_object",
     "rotation_matrix",
     "shadow_rays",
@@ -120,6 +121,14 @@ def _mesh_file(path: str) -> tuple[np.ndarray, np.ndarray]:
     if faces.size == 0:
         raise ValueError(f"{path}: mesh has no triangles")
     return vertices, faces.astype(np.uint32)
+
+
+def load_mesh_file(path: str, what: str = "mesh") -> tuple[np.ndarray, np.ndarray]:
+    """Vertices (V, 3) [m] and faces (F, 3) uint32 of a mesh file (.ply, .obj, .stl);
+    ``what`` names the scene field in the error of a missing file."""
+    if not os.path.isfile(path):
+        raise ValueError(f"{what}: file {path!r} not found")
+    return _mesh_file(path)
 
 
 def _xml_shapes(path: str, variant: str | None = None

@@ -1,6 +1,7 @@
 """seaecho.wake: the ship's Kelvin wake and turbulent wake strip (paper section IV-B).
 
-- :class:`Ship`: hull dimensions and a straight constant-speed track (eq W1).
+- :class:`Ship`: hull dimensions and a straight constant-speed track (eq W1), or a
+  :class:`~seaecho.wake.ship.Route` of legs and turns (eq W18).
 - :class:`KelvinWake`: deterministic Kelvin wake from Michell's thin-ship theory
   (Wigley hull fitted to L, B, T), elevation, slopes and dz/dt at any time (eqs W4-W12).
 - :func:`turbulent_wake_mask`: the damped strip behind the stern (eqs W13-W15), with the

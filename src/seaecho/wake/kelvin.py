@@ -571,13 +571,15 @@ class KelvinWake:
             )
             return WakeFields(zero, zero.copy(), zero.copy(), zero.copy())
 
-        # the window (eq W11) is zero ahead of the bow: nothing to synthesise there
-        h = self.ship.heading
-        xs, _ = self.ship.to_ship_frame(x[None, :], y[:, None], t)
+        # the window (eq W11) is zero ahead of the bow: nothing to synthesise there. A
+        # ship on a route: the steady pattern of its course at t (quasi-steady, docs/wake.md)
+        ship = self.ship.at(t)
+        h = ship.heading
+        xs, _ = ship.to_ship_frame(x[None, :], y[:, None], t)
         if np.all(xs <= -0.5 * self.ship.length):
             return WakeFields(zero, zero.copy(), zero.copy(), zero.copy())
 
-        p = self.ship.position(t)
+        p = ship.position(t)
         corners_x = np.array([x[0], x[-1], x[0], x[-1]]) - p[0]
         corners_y = np.array([y[0], y[0], y[-1], y[-1]]) - p[1]
         r_max = float(np.max(np.hypot(corners_x, corners_y))) + 0.5 * self.ship.length
@@ -602,7 +604,7 @@ class KelvinWake:
         elevation = w * z
         slope_x = wx * z + w * zx
         slope_y = wy * z + w * zy
-        vx, vy = self.ship.velocity
+        vx, vy = ship.velocity
         # Eq W12
         dzdt = -(vx * slope_x + vy * slope_y)
         return WakeFields(elevation, slope_x, slope_y, dzdt)

@@ -1,0 +1,156 @@
+"""Ground truth of a run, pulse by pulse: where every ship and point target is, how it
+moves, the RCS it presents, whether the radar can see it and in which range cell.
+
+For each pulse p (emission time t_p) and object o (the ships of ``[ship]`` /
+``[[ships]]``, then the ``[[targets]]``):
+
+- position (x, y, z) [m]: a ship's hull centre (midship, on the waterline z = 0) on its
+  course or route (eqs W1, W18 of :mod:`seaecho.wake.ship`); a target's p0 + v t_p;
+- velocity [m/s] and heading (course over ground, counter-clockwise from +x) [rad]; a
+  target at rest has heading 0;
+- RCS per polarisation HH, HV, VH, VV [m^2]: a target's |s_mn|^2 times its Swerling
+  factor of that pulse (:mod:`seaecho.targets.swerling`); a ship's hull RCS where its
+  hull echoes (the apparent RCS of the ray-traced hull, sea multipath included,
+  ``hull_rcs``), else 0 with ``rcs_known`` = 0;
+- range (r_t + r_r) / 2 [m] at emission (the delay the object's echo has, neglecting
+  its motion during the flight) and the range cell: the index along ``fast_time`` of
+  the compressed sample nearest that delay, -1 outside the receive window;
+- visibility: inside the receive window, and above the radio horizon of both antennas
+  over a smooth Earth of effective radius k R_e (k = 4/3, standard refraction):
+  ground distance below sqrt(2 k R_e h_a) + sqrt(2 k R_e h_o) (eq T2) with h_a the
+  antenna's height and h_o the object's (a ship: its waterline, h_o = 0, so a hull
+  "below the horizon" may still show its superstructure; a target: its z). Masking by
+  wave crests (the sea surface between the radar and the object) is *not* computed
+  here; the hull echo's own trace includes it where ``[[objects]]`` are traced on the
+  held sea.
+
+References
+----------
+.. [1] M. I. Skolnik, *Introduction to Radar Systems*, 3rd ed., McGraw-Hill (2001),
+   section 8.2 (the 4/3 Earth radius and the radar horizon, eq 8.6: d = sqrt(2 k R_e h)).
+.. [2] B. R. Bean and E. J. Dutton, *Radio Meteorology*, NBS Monograph 92 (1966),
+   section 1.3 (the effective Earth radius of a standard atmosphere).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..constants import C0
+from ..geometry.earth import EARTH_RADIUS_M, STANDARD_REFRACTION_K, effective_radius, horizon_range
+
+
+def radio_horizon_m(h_a: ArrayLike, h_o: ArrayLike, radius_m: float | None = None) -> NDArray:
+    """Largest ground distance at which heights h_a and h_o [m] see each other over a
+    smooth Earth of effective radius ``radius_m`` [m] (default k R_e, k = 4/3): the
+    radar horizon of :func:`seaecho.geometry.earth.horizon_range` (eq E2; Skolnik 2001,
+    eq 8.6, summed over both ends), with heights below 0 counted as 0."""
+    radius = effective_radius() if radius_m is None else radius_m
+    return horizon_range(np.maximum(np.asarray(h_a, dtype=np.float64), 0.0),
+                         np.maximum(np.asarray(h_o, dtype=np.float64), 0.0), radius)
+
+
+def ground_truth(radar, ships: tuple = (), hull_rcs: dict | None = None
+                 ) -> tuple[dict, dict]:
+    """The per-pulse ground truth of a run (module docstring) as xarray variables.
+
+    Parameters
+    ----------
+    radar : seaecho.radar.system.RadarSystem
+        Pulses, platforms, receive window, targets of its model.
+    ships : tuple of seaecho.wake.Ship
+        The scene's ships (their ``name`` labels them).
+    hull_rcs : dict, optional
+        ``{ship name: (P, 4) array}`` [m^2]: hull RCS of the ships whose hull echoes.
+
+    Returns
+    -------
+    data, coords : dict
+        ``truth_*`` variables (pulse, object, ...) and the ``object`` coordinates, as
+        xarray takes them; empty when there is no object.
+    """
+    hull_rcs = hull_rcs or {}
+    n = radar.n_pulses
+    pulses = np.arange(n)
+    t = radar.emission_time(pulses)
+    targets = radar.model.targets
+    n_t = 0 if targets is None else len(targets)
+    n_s = len(ships)
+    if n_s + n_t == 0:
+        return {}, {}
+    pos = np.zeros((n, n_s + n_t, 3))
+    vel = np.zeros((n, n_s + n_t, 3))
+    heading = np.zeros((n, n_s + n_t))
+    rcs = np.zeros((n, n_s + n_t, 4))
+    known = np.zeros(n_s + n_t, dtype=np.int8)
+    names, kinds = [], []
+    for i, s in enumerate(ships):
+        pos[:, i, :2] = s.position(t)
+        vel[:, i, :2] = s.velocity_at(t)
+        heading[:, i] = s.heading_at(t)
+        name = s.name or f"ship{i}"
+        if name in hull_rcs:
+            rcs[:, i] = hull_rcs[name]
+            known[i] = 1
+        names.append(name)
+        kinds.append("ship")
+    if n_t:
+        sl = slice(n_s, n_s + n_t)
+        pos[:, sl] = targets.positions[None] + t[:, None, None] * targets.velocities[None]
+        vel[:, sl] = targets.velocities[None]
+        heading[:, sl] = np.arctan2(targets.velocities[:, 1], targets.velocities[:, 0])[None]
+        power = np.abs(targets.scattering.reshape(-1, 4)) ** 2
+        rcs[:, sl] = power[None] * targets.rcs_factor(pulses)[..., None]
+        known[sl] = 1
+        names += list(targets.names)
+        kinds += ["target"] * n_t
+    p_tx = radar.tx.state(t).position[:, None, :]
+    p_rx = radar.rx.state(t).position[:, None, :]
+    r_t = np.linalg.norm(pos - p_tx, axis=-1)
+    r_r = np.linalg.norm(pos - p_rx, axis=-1)
+    rng = 0.5 * (r_t + r_r)
+    w = radar.window
+    cell = np.rint((2.0 * rng / C0 - w.t0) * w.sampling_rate).astype(np.int64)
+    inside = (cell >= 0) & (cell < w.n_samples)
+    cell = np.where(inside, cell, -1)
+    h_o = pos[..., 2]
+    above = np.ones_like(inside)
+    earth = getattr(radar.model, "earth", None)  # the scene's sphere, else k = 4/3
+    radius = None if earth is None else earth.radius
+    for p in (p_tx, p_rx):
+        ground = np.hypot(pos[..., 0] - p[..., 0], pos[..., 1] - p[..., 1])
+        above &= ground <= radio_horizon_m(p[..., 2], h_o, radius)
+    obj = ("pulse", "object")
+    data = {
+        "truth_position": (obj + ("xyz",), pos, {
+            "units": "m", "long_name": "object position at emission: a ship's hull centre "
+            "on the waterline, a target's point"}),
+        "truth_velocity": (obj + ("xyz",), vel, {"units": "m s-1"}),
+        "truth_heading": (obj, heading, {
+            "units": "rad", "long_name": "course over ground, counter-clockwise from +x "
+            "(east); 0 for a target at rest"}),
+        "truth_rcs": (obj + ("polarisation",), rcs, {
+            "units": "m2", "long_name": "RCS presented at this pulse: a target's "
+            "|s_mn|^2 times its Swerling factor; a ship's hull RCS where it echoes, else 0 "
+            "(truth_rcs_known = 0)"}),
+        "truth_rcs_known": (("object",), known, {
+            "units": "1", "long_name": "1 where truth_rcs is computed"}),
+        "truth_range": (obj, rng, {
+            "units": "m", "long_name": "(r_t + r_r) / 2 at emission"}),
+        "truth_range_cell": (obj, cell, {
+            "units": "1", "long_name": "fast_time index of the sample nearest the object's "
+            "delay; -1 outside the receive window"}),
+        "truth_in_window": (obj, inside.astype(np.int8), {"units": "1"}),
+        "truth_above_horizon": (obj, above.astype(np.int8), {
+            "units": "1", "long_name": "within the 4/3-Earth radio horizon of both antennas "
+            "(a ship by its waterline); wave-crest masking not computed"}),
+        "truth_visible": (obj, (inside & above).astype(np.int8), {
+            "units": "1", "long_name": "in the receive window and above the horizon"}),
+    }
+    coords = {"object": ("object", np.array(names)),
+              "object_kind": ("object", np.array(kinds))}
+    return data, coords
+
+
+__all__ = ["EARTH_RADIUS_M", "STANDARD_REFRACTION_K", "ground_truth", "radio_horizon_m"]
