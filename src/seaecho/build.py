@@ -34,6 +34,7 @@ NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
+import dataclasses
 import os
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -72,12 +73,15 @@ if TYPE_CHECKING:  # pragma: no cover
     from .tracing.engine import FacetEngine
 
 __all__ = [
+    "MultistaticModels",
     "SimulationModels",
+    "build_multistatic",
     "build_engine",
     "build_radar",
     "build_sea",
     "build_sea_dynamics",
     "build_sea_model",
+    "receiver_scene",
     "build_simulation",
     "build_tracing",
     "carrier_frequency",
@@ -392,11 +396,15 @@ def _pointing(cfg, platform: Platform, t_ref: float) -> Pointing:
                               float(np.deg2rad(cfg.depression_deg)))
 
 
-def _platforms(scene) -> tuple[Platform, Platform]:
+def _platforms(scene, receiver_stream: int = 1) -> tuple[Platform, Platform]:
     """(transmitter, receiver); the same object twice when monostatic. Perturbations
-    cover the pulses of ``[radar]`` (plus 1 ms), or t = 0 without a radar."""
+    cover the pulses of ``[radar]`` (plus 1 ms), or t = 0 without a radar; the
+    receiver's is drawn from ``"platform"`` stream index ``receiver_stream``."""
     if scene.transmitter is None:
         raise ValueError("the scene has no [transmitter] section")
+    if scene.receivers:
+        raise ValueError(f"the scene has {len(scene.receivers)} [[receivers]]: take one "
+                         "receiver's bistatic scene (receiver_scene(scene, i))")
     t_span = (0.0, 0.0)
     if scene.radar is not None:
         r = scene.radar
@@ -405,7 +413,7 @@ def _platforms(scene) -> tuple[Platform, Platform]:
     tx = _platform(scene.transmitter, seed, 0, t_span)
     if scene.receiver is None:
         return tx, tx
-    return tx, _platform(scene.receiver, seed, 1, t_span)
+    return tx, _platform(scene.receiver, seed, receiver_stream, t_span)
 
 
 def _targets(scene) -> TargetSet | None:
@@ -418,8 +426,11 @@ def _targets(scene) -> TargetSet | None:
                      names=tuple(g.name or f"target{i}" for i, g in enumerate(t)))
 
 
-def build_radar(scene) -> RadarModel:
+def build_radar(scene, *, receiver_stream: int = 1) -> RadarModel:
     """The radar of ``[radar]``, ``[transmitter]``, ``[receiver]`` and ``[[targets]]``.
+
+    ``receiver_stream`` is the ``"platform"`` stream index of the receiver's perturbation
+    (1; receiver i of ``[[receivers]]`` has 1 + i, :func:`build_multistatic`).
 
     Raises
     ------
@@ -429,7 +440,10 @@ def build_radar(scene) -> RadarModel:
     if scene.radar is None or scene.transmitter is None:
         raise ValueError("the scene needs [radar] and [transmitter] sections")
     r = scene.radar
-    tx, rx = _platforms(scene)
+    if scene.receivers:
+        raise ValueError("a scene with [[receivers]] has one radar per receiver: "
+                         "build_multistatic (or build_radar(receiver_scene(scene, i)))")
+    tx, rx = _platforms(scene, receiver_stream)
     mono = rx is tx
     wavelength = C0 / r.carrier_frequency_hz
     w = r.waveform
@@ -656,3 +670,65 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
     hulls = build_hulls(scene, base_dir, variant=variant)
     return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
                             attrs=scene_attrs(scene), variant=variant, hulls=hulls)
+
+
+# ------------------------------------------------------------------ several receivers
+def receiver_scene(scene, index: int):
+    """The bistatic scene of receiver ``index`` of ``[[receivers]]``: the same scene with
+    that receiver as its ``[receiver]`` (its ``channels``, if it has its own, as
+    ``[radar] channels``) and no ``[[receivers]]``.
+
+    Receiver ``index`` of a multistatic run equals the run of this scene
+    (docs/multistatic.md: same seed, its receive window, and a perturbed receiver's path
+    errors drawn from ``"platform"`` stream index 1 + ``index``).
+    """
+    n = len(scene.receivers)
+    if not 0 <= index < n:
+        raise ValueError(f"receiver index {index}: the scene has {n} [[receivers]]")
+    r = scene.receivers[index]
+    update: dict[str, Any] = {"receiver": r.platform(), "receivers": ()}
+    if r.channels is not None and scene.radar is not None:
+        update["radar"] = scene.radar.model_copy(update={"channels": tuple(r.channels)})
+    return scene.model_copy(update=update)
+
+
+@dataclass(frozen=True)
+class MultistaticModels:
+    """Stage models of a scene with ``[[receivers]]``: one transmitter, several receivers.
+
+    Attributes
+    ----------
+    receivers : tuple of SimulationModels
+        One per receiver, each the bistatic models of :func:`receiver_scene` (its radar
+        with the receiver's platform drawn from ``"platform"`` stream 1 + i); the sea, the
+        sea model, the tracing and the hull models are the same objects in all of them.
+    names : tuple of str
+        The receivers' names.
+    attrs : dict
+        Dataset attributes of the whole scene (scene JSON, version, seed).
+    """
+
+    receivers: tuple[SimulationModels, ...]
+    names: tuple[str, ...]
+    attrs: dict
+
+
+def build_multistatic(scene, base_dir: str | os.PathLike = ".") -> MultistaticModels:
+    """The stage models of a multistatic scene (``[[receivers]]``): the sea, sea model,
+    tracing and hulls built once and shared, one radar per receiver.
+
+    Raises
+    ------
+    ValueError
+        The scene has no ``[[receivers]]``; or as :func:`build_simulation`.
+    """
+    if not scene.receivers:
+        raise ValueError("the scene has no [[receivers]]: use build_simulation")
+    first = build_simulation(receiver_scene(scene, 0), base_dir)
+    attrs = scene_attrs(scene)
+    models = [dataclasses.replace(first, attrs=attrs)]
+    for i in range(1, len(scene.receivers)):
+        radar = build_radar(receiver_scene(scene, i), receiver_stream=1 + i)
+        models.append(dataclasses.replace(first, radar=radar))
+    return MultistaticModels(receivers=tuple(models),
+                             names=tuple(r.name for r in scene.receivers), attrs=attrs)

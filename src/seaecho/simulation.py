@@ -104,6 +104,14 @@ class Simulation:
         Folder of the scene file (``[[objects]]`` paths are relative to it).
     """
 
+    def __new__(cls, scene=None, base_dir: str | os.PathLike = "."):
+        # A scene with [[receivers]]: its multistatic simulation (seaecho.multistatic)
+        if cls is Simulation and scene is not None and getattr(scene, "receivers", ()):
+            from .multistatic import MultistaticSimulation
+
+            return MultistaticSimulation(scene, base_dir)
+        return super().__new__(cls)
+
     def __init__(self, scene, base_dir: str | os.PathLike = ".") -> None:
         self._setup(build_simulation(scene, base_dir))
 
@@ -154,6 +162,25 @@ class Simulation:
         self.hulls = HullEchoes.from_model(
             models.hulls, self.radar, variant=self.variant,
             surface=self.surface_state_at if self.sea is not None else None)
+
+    def share_sea(self, lead: Simulation) -> None:
+        """Take the sea's per-block work from ``lead``, a simulation of the same sea,
+        transmitter and seed with another receiver (``seaecho.multistatic``): its surface
+        states (and their prefetch), per-block quantities (wake damping, breaking
+        placement, speckle draws, which depend on the seed and the block only), evolving
+        speckle, facet geometry, tracer and transmitter occlusion
+        (:meth:`~seaecho.tracing.engine.FacetEngine.share_transmitter`). The pulses are
+        those of this simulation alone, bit for bit.
+        """
+        if lead.sea is not self.sea or lead.models.sea_model is not self.models.sea_model:
+            raise ValueError("share_sea needs a simulation of the same sea models")
+        if self.sea is None:
+            return
+        self.surface_state = lead.surface_state
+        self.prefetch_surface = lead.prefetch_surface
+        self._block_quantities = lead._block_quantities
+        self._speckle_process = lead._speckle_process
+        self.engine.share_transmitter(lead.engine)
 
     # --------------------------------------------------------------------- the sea
     def surface_time(self, pulse: int) -> float:

@@ -5,6 +5,8 @@ Sections (a TOML table each):
 - ``[sea]``      sea state, spectrum, tile and grid (:class:`SeaConfig`), required
 - ``[ship]``     a ship and its wake (:class:`ShipConfig`), optional
 - ``[run]``      seed, output, times (:class:`RunConfig`)
+- ``[[receivers]]`` several receivers of one transmitter (:class:`ReceiverConfig`),
+  instead of ``[receiver]``
 
 Sections that later stages add (radar, platforms, tracing, objects, targets) are
 registered here too, each in its own module of this package.
@@ -17,6 +19,7 @@ from pydantic import Field, model_validator
 from .base import Name, Section, Text
 from .image import ImageConfig
 from .radar import PlatformConfig, RadarConfig, TargetConfig
+from .receivers import MAX_RECEIVERS, ReceiverConfig
 from .run import RunConfig
 from .scattering import ScatteringConfig
 from .sea import SeaConfig
@@ -40,6 +43,11 @@ class Scene(Section):
     )
     receiver: PlatformConfig | None = Field(
         None, description="receiving platform and antenna [receiver]; omit for monostatic"
+    )
+    receivers: tuple[ReceiverConfig, ...] = Field(
+        (), max_length=MAX_RECEIVERS,
+        description="several receivers of the one transmitter [[receivers]] (multistatic; "
+        "instead of [receiver])",
     )
     targets: tuple[TargetConfig, ...] = Field(
         (), max_length=10_000, description="point targets [[targets]]"
