@@ -41,6 +41,7 @@ A scene with ``[receiver]`` is not multistatic and keeps the bistatic layout.
 from __future__ import annotations
 
 import dataclasses
+import json
 import os
 from collections.abc import Sequence
 from pathlib import Path
@@ -332,10 +333,133 @@ def receiver_dataset(ds, receiver: str | int):
                {"units": "m", "long_name": "c * delay / 2 (half bistatic path)"}))
     attrs = {k: v for k, v in ds.attrs.items()
              if k not in ("multistatic", "n_receivers", "receiver_note")}
-    attrs.update(window_t0_s=float(fast[0]), monostatic=0, receiver=names[index])
+    attrs.update(window_t0_s=float(fast[0]), monostatic=0, receiver=names[index],
+                 multistatic_scene_json=ds.attrs["scene_json"],
+                 scene_json=_receiver_scene_json(ds.attrs["scene_json"], index))
     one.attrs = attrs
     return one
 
 
+def image_multistatic(ds, config=None, *, backend: str = "drjit", progress: bool = False,
+                      timings: dict | None = None):
+    """Focus every receiver of a multistatic run and combine them incoherently.
+
+    Each receiver's data are focused as a bistatic run (:func:`receiver_dataset`,
+    :func:`seaecho.imaging.focus.focus`: backprojection along the transmitter-receiver
+    pair's delays (r_t + r_r) / c, calibrated with the pair's radar equation) on the
+    grid of ``config``, the same for every receiver (its extent is the sea tile or the
+    targets' box, not a receiver's). The multistatic image is their incoherent
+    combination on that grid: the mean over the receivers that record a channel of the
+    calibrated intensities, ``fused_sigma0 = <sigma0_i>`` [m^2/m^2] and
+    ``fused_rcs = <|image_i|^2>`` [m^2] (non-coherent multistatic combination: Willis
+    and Griffiths, *Advances in Bistatic Radar*, 2007, ch. 9; the pairs' speckle is
+    independent where their bistatic geometries differ, so it averages down).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        A multistatic run (:class:`MultistaticSimulation`).
+    config : seaecho.config.image.ImageConfig, optional
+        The processing (default all defaults).
+    backend, progress, timings
+        As :func:`seaecho.imaging.focus.focus` (``timings`` gets each receiver's under
+        its name).
+
+    Returns
+    -------
+    xarray.Dataset
+        The receivers' image datasets stacked along ``receiver`` (the channel axis the
+        union, NaN where a receiver does not record a channel), plus ``fused_sigma0`` and
+        ``fused_rcs`` (channel, y, x) and ``fused_receivers`` (channel,) the number of
+        receivers combined.
+    """
+    import xarray as xr
+
+    from .guards import check_image
+    from .imaging.focus import focus
+
+    names = [str(n) for n in ds["receiver"].values]
+    images = []
+    for name in names:
+        own: dict = {}
+        img = focus(receiver_dataset(ds, name), config, backend=backend, progress=progress,
+                    timings=own)
+        check_image(img, f"receiver {name}")  # Inf, or NaN at a defined pixel
+        if timings is not None:
+            timings[name] = own
+        images.append(img)
+    out = xr.concat(images, dim="receiver", join="outer", data_vars="all",
+                    coords="minimal", compat="override", combine_attrs="override")
+    out = out.assign_coords(receiver=("receiver", np.array(names),
+                                      {"long_name": "receiver name"}))
+    sigma0 = out["sigma0"].astype(np.float64)
+    rcs = np.abs(out["image"].astype(np.complex128)) ** 2
+    count = np.isfinite(sigma0).any(dim=("y", "x")).sum("receiver")
+    out["fused_sigma0"] = sigma0.mean("receiver", skipna=True).astype(np.float32).assign_attrs(
+        units="m2 m-2", long_name="incoherent multistatic combination: mean of the "
+        "receivers' calibrated sigma0")
+    out["fused_rcs"] = rcs.mean("receiver", skipna=True).astype(np.float32).assign_attrs(
+        units="m2", long_name="incoherent multistatic combination: mean of the receivers' "
+        "|image|^2")
+    out["fused_receivers"] = count.astype(np.int16).assign_attrs(
+        long_name="receivers combined per channel")
+    out.attrs.update(multistatic=1, n_receivers=len(names),
+                     scene_json=ds.attrs["scene_json"],
+                     fusion="incoherent: mean of the receivers' calibrated intensities")
+    return out
+
+
+def receiver_image(img, receiver: str | int):
+    """One receiver's image of :func:`image_multistatic`, in the layout of a bistatic
+    image (its recorded channels only)."""
+    names = [str(n) for n in img["receiver"].values]
+    index = names.index(receiver) if isinstance(receiver, str) else int(receiver)
+    one = img.isel(receiver=index).drop_vars(
+        ["receiver", "fused_sigma0", "fused_rcs", "fused_receivers"])
+    keep = np.flatnonzero(np.isfinite(one["sigma0"].values).any(axis=(1, 2)))
+    one = one.isel(channel=keep)
+    one.attrs = {k: v for k, v in img.attrs.items()
+                 if k not in ("multistatic", "n_receivers", "fusion")}
+    one.attrs["receiver"] = names[index]
+    return one
+
+
+def multistatic_figures(img, stem: str | os.PathLike, dynamic_range_db: float = 50.0
+                        ) -> list[Path]:
+    """Figures of :func:`image_multistatic`: every receiver's (``<stem>_<name>_*.png``,
+    :func:`seaecho.imaging.figures.image_figures`) and the incoherent combination's,
+    ``<stem>_fused_sigma0.png`` (or ``_fused_rcs.png`` without sea), on one dB scale per
+    figure."""
+    from .imaging.figures import image_figures, sigma0_figure
+
+    out: list[Path] = []
+    for name in img["receiver"].values:
+        out += image_figures(receiver_image(img, str(name)), f"{stem}_{name}",
+                             dynamic_range_db)
+    first = img.isel(receiver=0).drop_vars("receiver")
+    first = first.assign(sigma0=img["fused_sigma0"],
+                         image=np.sqrt(img["fused_rcs"]).astype(np.complex64))
+    first["valid"] = img["valid"].max("receiver") if "receiver" in img["valid"].dims else \
+        img["valid"]
+    if "tile" in img:
+        out.append(sigma0_figure(first, f"{stem}_fused_sigma0.png",
+                                 dynamic_range_db=dynamic_range_db))
+    else:
+        out.append(sigma0_figure(first, f"{stem}_fused_rcs.png", "rcs", dynamic_range_db))
+    return out
+
+
+def _receiver_scene_json(scene_json: str, index: int) -> str:
+    """The JSON of receiver ``index``'s bistatic scene (:func:`seaecho.build.receiver_scene`)
+    of a multistatic scene's JSON: what the readers of a bistatic run parse (antennas)."""
+    from .build import receiver_scene
+    from .config import parse_scene
+    from .io.dataset import scene_attrs
+
+    scene = parse_scene(json.loads(scene_json), source="the dataset's scene_json")
+    return scene_attrs(receiver_scene(scene, index))["scene_json"]
+
+
 __all__ = ["MULTISTATIC_DIMS", "PER_RECEIVER", "MultistaticSimulation", "bistatic_angle",
-           "common_windows", "receiver_dataset"]
+           "common_windows", "image_multistatic", "multistatic_figures", "receiver_dataset",
+           "receiver_image"]

@@ -535,6 +535,9 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
 
     from .resources import check_memory
 
+    if scene.receivers:  # [[receivers]]: each receiver's bistatic scene (docs/multistatic.md)
+        return _check_multistatic(scene, source, base_dir, max_memory_gb, figures,
+                                  workers, block)
     problems = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
                 + object_problems(scene, base_dir))
     try:
@@ -543,6 +546,34 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
     except SceneError as exc:
         raise SceneError("\n".join([str(exc), *problems])) from None
     problems += geometry_problems(scene)
+    if problems:
+        raise SceneError(f"{source}: cannot be simulated\n" + "\n".join(problems))
+    return line
+
+
+def _check_multistatic(scene, source: str, base_dir, max_memory_gb, figures, workers,
+                       block) -> str:
+    """:func:`check_run` of a scene with ``[[receivers]]``: the sea's and the objects'
+    problems once, each receiver's geometry and image problems named by its receiver,
+    the memory of every receiver together (``seaecho.resources.multistatic_estimate``)."""
+    from .build import receiver_scene
+    from .resources import check_memory
+
+    subs = [receiver_scene(scene, i) for i in range(len(scene.receivers))]
+    problems = (two_scale_problems(subs[0]) + receive_problems(subs[0])
+                + object_problems(subs[0], base_dir))
+    own = []
+    for i, (r, sub) in enumerate(zip(scene.receivers, subs, strict=True)):
+        own += [f"[[receivers]] #{i} ({r.name}): {p}" for p in image_problems(sub)]
+    try:
+        _, line = check_memory(scene, source, max_memory_gb, figures, workers=workers,
+                               block=block, base_dir=base_dir)
+    except SceneError as exc:
+        raise SceneError("\n".join([str(exc), *problems, *own])) from None
+    for i, (r, sub) in enumerate(zip(scene.receivers, subs, strict=True)):
+        own += [f"[[receivers]] #{i} ({r.name}): {p}" for p in geometry_problems(sub)
+                if not p.startswith("[transmitter]") or i == 0]
+    problems += own
     if problems:
         raise SceneError(f"{source}: cannot be simulated\n" + "\n".join(problems))
     return line

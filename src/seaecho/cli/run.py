@@ -122,8 +122,9 @@ def run(args: argparse.Namespace) -> int:
         return 130
     wrote = [out]
     with ds:
-        print(f"wrote {out} ({ds.sizes['pulse']} pulses x {ds.sizes['channel']} channels x "
-              f"{ds.sizes['fast_time']} samples)")
+        many = (f"{ds.sizes['receiver']} receivers x " if "receiver" in ds.dims else "")
+        print(f"wrote {out} ({ds.sizes['pulse']} pulses x {many}{ds.sizes['channel']} "
+              f"channels x {ds.sizes.get('fast_time', ds.sizes.get('sample'))} samples)")
         if not args.no_figures:
             for png in figures(ds, out.with_suffix("")):
                 wrote.append(png)
