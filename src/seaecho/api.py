@@ -1092,13 +1092,20 @@ def image_measures(img: xr.Dataset, variable: str = "sigma0") -> dict[str, dict[
     dict
         ``{channel: {"sea_db": ..., "wake_db": ..., "contrast_db": ...,
         "secondary_peak_db": ..., "modulation": ...}}``: the measures the image allows
-        (an empty dict for a channel without sea).
+        (an empty dict for a channel without sea). A multistatic image (several
+        receivers) is measured per receiver, keys ``"<receiver> <channel>"``.
     """
     from .imaging.quality import paper_metrics
 
     if variable not in img:
         raise SceneError(f"variable = {variable!r}: not in the image (has "
                          f"{', '.join(sorted(map(str, img.data_vars)))})")
+    if "receiver" in img.dims:  # [[receivers]]: each receiver's image (docs/multistatic.md)
+        from .multistatic import receiver_image
+
+        return {f"{name} {ch}": m for name in img["receiver"].values
+                for ch, m in paper_metrics(receiver_image(img, str(name)),
+                                           variable).items()}
     return paper_metrics(img, variable)
 
 

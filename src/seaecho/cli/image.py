@@ -109,7 +109,6 @@ def _multistatic_files(img, out: Path, cfg, timings: dict, t: float,
     from ..api import image_measures
     from ..io.dataset import write_dataset_atomic
     from ..io.run import quiet_invalid_netcdf
-    from ..multistatic import receiver_image
 
     with quiet_invalid_netcdf():
         write_dataset_atomic(img, out)
@@ -119,10 +118,9 @@ def _multistatic_files(img, out: Path, cfg, timings: dict, t: float,
           f"channels x {ny} x {nx} pixels of {img.attrs['pixel_m']:g} m and their "
           f"incoherent combination, track {cfg.track}; total "
           f"{time.perf_counter() - t:.2f} s)")
-    for name in img["receiver"].values:
-        for ch, m in image_measures(receiver_image(img, str(name))).items():
-            if m:
-                print(f"  {name} {ch}: " + ", ".join(f"{k} {v:.2f}" for k, v in m.items()))
+    for what, m in image_measures(img).items():
+        if m:
+            print(f"  {what}: " + ", ".join(f"{k} {v:.2f}" for k, v in m.items()))
     if figures and cfg.figures:
         for png in draw(img, out.with_suffix("")):
             wrote.append(png)
