@@ -63,23 +63,23 @@ def _per_pulse(sim, pulses: int) -> float:
 
 def bench_receivers(update: int, pulses: int, smoke: bool) -> dict:
     from seaecho.build import receiver_scene
-    from seaecho.simulation import Simulation
+    from seaecho.multistatic import simulation_of
 
     out = {}
     for n in (1, 2, 3):
-        out[n] = _per_pulse(Simulation(_scene(n, update, pulses, smoke), SCENE.parent), pulses)
+        out[n] = _per_pulse(simulation_of(_scene(n, update, pulses, smoke), SCENE.parent), pulses)
     sc = _scene(3, update, pulses, smoke)
-    out["separate"] = sum(_per_pulse(Simulation(receiver_scene(sc, i), SCENE.parent), pulses)
+    out["separate"] = sum(_per_pulse(simulation_of(receiver_scene(sc, i), SCENE.parent), pulses)
                           for i in range(3))
     return out
 
 
 def bench_shared(smoke: bool) -> dict:
     """CPU seconds of each piece of shared work, once."""
+    from seaecho.multistatic import simulation_of
     from seaecho.rng import facet_gaussians
-    from seaecho.simulation import Simulation
 
-    sim = Simulation(_scene(3, 1, 2, smoke), SCENE.parent)
+    sim = simulation_of(_scene(3, 1, 2, smoke), SCENE.parent)
     lead = sim.receivers[0]
     sim.pulses(0, 1)  # warm up (kernels compiled, tracer built)
     out = {}

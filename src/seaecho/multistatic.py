@@ -64,6 +64,14 @@ PER_RECEIVER = ("sigma0", "visibility", "hull_rcs", "hull_rcs_free_space",
                 "hull_trace_pulse")
 
 
+def simulation_of(scene, base_dir: str | os.PathLike = "."):
+    """The simulation of a scene: a :class:`MultistaticSimulation` with ``[[receivers]]``,
+    else a :class:`seaecho.simulation.Simulation`."""
+    if getattr(scene, "receivers", ()):
+        return MultistaticSimulation(scene, base_dir)
+    return Simulation(scene, base_dir)
+
+
 def common_windows(radars: Sequence[RadarModel]) -> list[RadarModel]:
     """The receivers' radars with receive windows of one length (module docstring).
 
@@ -122,8 +130,8 @@ def bistatic_angle(tx: NDArray[np.float64], rx: NDArray[np.float64],
 class MultistaticSimulation:
     """A scene's multistatic simulation (module docstring).
 
-    ``seaecho.simulation.Simulation(scene)`` returns one for a scene with
-    ``[[receivers]]``; it has the interface the runners use (:meth:`pulses`,
+    :func:`simulation_of` returns one for a scene with ``[[receivers]]``; it has the
+    interface the runners use (:meth:`pulses`,
     :meth:`block_edges`, :meth:`static_dataset`, :meth:`run`, :meth:`dataset`).
 
     Parameters
@@ -462,4 +470,4 @@ def _receiver_scene_json(scene_json: str, index: int) -> str:
 
 __all__ = ["MULTISTATIC_DIMS", "PER_RECEIVER", "MultistaticSimulation", "bistatic_angle",
            "common_windows", "image_multistatic", "multistatic_figures", "receiver_dataset",
-           "receiver_image"]
+           "receiver_image", "simulation_of"]

@@ -104,14 +104,6 @@ class Simulation:
         Folder of the scene file (``[[objects]]`` paths are relative to it).
     """
 
-    def __new__(cls, scene=None, base_dir: str | os.PathLike = "."):
-        # A scene with [[receivers]]: its multistatic simulation (seaecho.multistatic)
-        if cls is Simulation and scene is not None and getattr(scene, "receivers", ()):
-            from .multistatic import MultistaticSimulation
-
-            return MultistaticSimulation(scene, base_dir)
-        return super().__new__(cls)
-
     def __init__(self, scene, base_dir: str | os.PathLike = ".") -> None:
         self._setup(build_simulation(scene, base_dir))
 

@@ -14,9 +14,13 @@ import pytest
 from seaecho.build import receiver_scene
 from seaecho.config import SceneError, parse_scene
 from seaecho.constants import C0
-from seaecho.multistatic import MultistaticSimulation, bistatic_angle, receiver_dataset
+from seaecho.multistatic import (
+    MultistaticSimulation,
+    bistatic_angle,
+    receiver_dataset,
+    simulation_of,
+)
 from seaecho.processing.range_compression import range_compress
-from seaecho.simulation import Simulation
 
 ANT = {"pattern": "rectangular", "width_m": 0.18, "height_m": 0.14, "look_at_m": (0, 0, 0)}
 ISO = {"pattern": "isotropic", "look_at_m": (0, 0, 0)}
@@ -68,13 +72,13 @@ def test_each_receiver_is_its_bistatic_run_bit_for_bit(tracing):
     # One sea, one set of sub-facet draws, the transmitter's leg traced once: receiver
     # i's raw and compressed samples and NRCS map equal the run of receiver i alone.
     sc = _scene(tracing=tracing)
-    sim = Simulation(sc)
+    sim = simulation_of(sc)
     assert isinstance(sim, MultistaticSimulation)
     ds = sim.dataset(progress=False)
     assert ds.raw.dims == ("pulse", "receiver", "channel", "sample")
     assert list(ds.receiver.values) == ["near", "north", "south"]
     for i in range(3):
-        one = Simulation(_alone(sc, ds, i)).dataset(progress=False)
+        one = simulation_of(_alone(sc, ds, i)).dataset(progress=False)
         mine = ds.isel(receiver=i).sel(channel=one.channel.values)
         for name in ("raw", "compressed"):
             assert np.array_equal(mine[name].values, one[name].values), (i, name)
@@ -100,7 +104,7 @@ def test_speckle_and_sea_are_computed_once_per_block(monkeypatch):
 
     sc = _scene(tracing={"mode": "raytraced", "refresh_interval_s": 2e-3},
                 sea_update_pulses=2)
-    sim = Simulation(sc)
+    sim = simulation_of(sc)
     calls = {"state": [], "draws": 0}
     sea = sim.receivers[0].sea
     orig_state = sea.state
@@ -143,7 +147,7 @@ def test_point_target_at_each_bistatic_range_with_the_bistatic_radar_equation(po
     sc = _scene(receivers=rx, sea=False, n_pulses=1, targets=[
         {"position_m": tuple(target), "rcs_m2": 7.0}], transmit_power_w=50.0,
         tx={"position_m": (-93.41, 0.0, 256.65), "antenna": ISO})
-    ds = Simulation(sc).dataset(progress=False)
+    ds = simulation_of(sc).dataset(progress=False)
     lam = C0 / 1e10
     r_t = np.linalg.norm(target - np.array([-93.41, 0.0, 256.65]))
     pulse = ds.transmitted_pulse.values
@@ -184,12 +188,12 @@ def test_bistatic_angle_limits():
 def test_one_receiver_scene_keeps_the_bistatic_layout_and_bytes():
     # [receiver]: no receiver dimension, and the bytes of [[receivers]]'s receiver 0
     sc = _scene(receivers=[RECEIVERS[0]], n_pulses=2)
-    ds = Simulation(sc).dataset(progress=False)
+    ds = simulation_of(sc).dataset(progress=False)
     bi = _scene(receivers={k: v for k, v in RECEIVERS[0].items() if k != "name"},
                 n_pulses=2,
                 window_start_m=float(ds.window_start_m[0]),
                 window_end_m=float(ds.window_end_m[0]))
-    one = Simulation(bi).dataset(progress=False)
+    one = simulation_of(bi).dataset(progress=False)
     assert one.raw.dims == ("pulse", "channel", "fast_time")
     assert "receiver" not in one.dims and "multistatic" not in one.attrs
     assert np.array_equal(ds.raw.isel(receiver=0).values, one.raw.values)
@@ -201,8 +205,8 @@ def test_netcdf_zarr_and_resumed_zarr_have_the_same_bytes(tmp_path):
     from seaecho.io.zarr_run import open_run
 
     sc = _scene(n_pulses=4, sea_update_pulses=2)
-    nc = Simulation(sc).run(tmp_path / "m.nc", progress=False, chunk=2)
-    sim = Simulation(sc)
+    nc = simulation_of(sc).run(tmp_path / "m.nc", progress=False, chunk=2)
+    sim = simulation_of(sc)
     orig = sim.pulses
 
     def cut(a, b):
@@ -213,7 +217,7 @@ def test_netcdf_zarr_and_resumed_zarr_have_the_same_bytes(tmp_path):
     sim.pulses = cut
     with pytest.raises(KeyboardInterrupt):
         sim.run(tmp_path / "m.zarr", progress=False, chunk=2)
-    Simulation(sc).run(tmp_path / "m.zarr", progress=False, resume=True)
+    simulation_of(sc).run(tmp_path / "m.zarr", progress=False, resume=True)
     with open_run(nc) as a, open_run(tmp_path / "m.zarr") as b:
         assert a.raw.dims == b.raw.dims == ("pulse", "receiver", "channel", "sample")
         for name in ("raw", "compressed", "sigma0", "fast_time"):
@@ -250,7 +254,7 @@ def test_dask_run_has_the_serial_bytes(tmp_path):
     from seaecho.io.zarr_run import open_run
 
     sc = _scene(n_pulses=4)
-    serial = Simulation(sc).run(tmp_path / "s.nc", progress=False, chunk=1)
+    serial = simulation_of(sc).run(tmp_path / "s.nc", progress=False, chunk=1)
     with distributed.cluster(2, processes=False) as client:
         dask = distributed.run(sc, tmp_path / "d.zarr", client=client, block=1,
                                progress=False)
