@@ -8,6 +8,8 @@ bistatic run's; a scene with ``[receiver]`` keeps the bistatic layout.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -261,3 +263,72 @@ def test_dask_run_has_the_serial_bytes(tmp_path):
     with open_run(serial) as a, open_run(dask) as b:
         for name in ("raw", "compressed"):
             assert np.array_equal(a[name].values, b[name].values, equal_nan=True), name
+
+
+# ----------------------------------------------------------------------- command line
+ROOT = Path(__file__).resolve().parents[2]
+SCENE_3RX = (ROOT / "scenes" / "multistatic_ship_3rx.toml").read_text(encoding="utf-8")
+
+
+def _tiny_3rx(tmp_path: Path, text: str = SCENE_3RX) -> Path:
+    """The three-receiver scene at the gallery's --quick size, beside its meshes."""
+    for old, new in (("size_x_m = 64.0", "size_x_m = 16.0"), ("nx = 256", "nx = 64"),
+                     ("n_pulses = 128", "n_pulses = 8"),
+                     ("start_time_s = -0.288288", "start_time_s = -0.018"),
+                     ("sea_update_pulses = 128", "sea_update_pulses = 8"),
+                     ("sigma_map_pulse = 64", "sigma_map_pulse = 4"),
+                     ("position_m = [4.0, 2.8]", "position_m = [1.0, 0.7]"),
+                     ("position_m = [4.0, 2.8, 1.0]", "position_m = [1.0, 0.7, 1.0]"),
+                     ("pixel_m = 0.5", "pixel_m = 1.0"),
+                     ("extent_m = [-32.0, 32.0, -32.0, 32.0]",
+                      "extent_m = [-8.0, 8.0, -8.0, 8.0]")):
+        assert old in text
+        text = text.replace(old, new)
+    mesh = ROOT / "scenes" / "meshes" / "motor_boat_10m.ply"
+    text = text.replace('file = "meshes/motor_boat_10m.ply"', f"file = {str(mesh)!r}")
+    path = tmp_path / "multistatic.toml"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+@pytest.mark.parametrize("command", ["check", "run"])
+def test_cli_refuses_receiver_and_receivers_with_exit_2(tmp_path, capsys, command):
+    from seaecho.cli import main
+
+    text = SCENE_3RX.replace("[[receivers]]\nname = \"formation\"",
+                             "[receiver]\nmotion = \"fixed\"\nposition_m = [0.0, -50.0, 30.0]"
+                             "\n[receiver.antenna]\npattern = \"isotropic\"\n"
+                             "look_at_m = [0.0, 0.0, 0.0]\n\n[[receivers]]\n"
+                             "name = \"formation\"", 1)
+    path = _tiny_3rx(tmp_path, text)
+    out = tmp_path / "x.nc"
+    rc = main([command, str(path)] + (["-o", str(out)] if command == "run" else []))
+    err = capsys.readouterr().err
+    assert rc == 2 and "Traceback" not in err
+    assert "[[receivers]]" in err and "[receiver]" in err
+    assert not out.exists()
+
+
+@pytest.mark.slow
+@pytest.mark.filterwarnings("ignore::seaecho.warnings.SeaechoWarning")
+def test_cli_run_and_image_of_three_receivers(tmp_path, capsys):
+    # seaecho run writes the receiver dimension and every receiver's figures; seaecho
+    # image focuses each pair and their incoherent combination (the mean of the
+    # calibrated intensities); each receiver's image is the image of its bistatic run.
+    from seaecho import api
+    from seaecho.cli import main
+
+    out = tmp_path / "m.nc"
+    assert main(["run", str(_tiny_3rx(tmp_path)), "-o", str(out), "--quiet"]) == 0
+    text = capsys.readouterr().out
+    assert "3 receivers x 4 channels" in text
+    for name in ("formation", "south", "northeast"):
+        assert (tmp_path / f"m_{name}_sigma.png").is_file()
+        assert (tmp_path / f"m_image_{name}_sigma0.png").is_file()
+    assert (tmp_path / "m_image_fused_sigma0.png").is_file()
+    with api.open_dataset(out) as raw, api.open_dataset(tmp_path / "m_image.nc") as img:
+        assert raw.raw.dims == ("pulse", "receiver", "channel", "sample")
+        s0 = img.sigma0.values.astype(np.float64)
+        np.testing.assert_allclose(img.fused_sigma0.values, s0.mean(axis=0), rtol=1e-6)
+        one = api.image(receiver_dataset(raw.load(), "south"))
+        np.testing.assert_array_equal(one.image.values, img.image.sel(receiver="south").values)
