@@ -30,7 +30,7 @@ RECEIVERS = [
     {"name": "near", "position_m": (-50.75, 0.0, 87.91), "antenna": ANT},
     {"name": "north", "position_m": (30.0, 40.0, 60.0), "antenna": ANT,
      "channels": ["HH", "VV"]},
-    {"name": "south", "position_m": (0.0, -60.0, 40.0), "antenna": ANT},
+    {"name": "south", "position_m": (0.0, -150.0, 4.0), "antenna": ANT},  # 1.5 deg grazing
 ]
 
 
@@ -45,7 +45,8 @@ def _scene(receivers=RECEIVERS, sea=True, tracing=None, n_pulses=4, targets=None
          "run": {"seed": seed},
          "tracing": tracing or {"mode": "raytraced"},
          "radar": r,
-         "transmitter": tx or {"position_m": (-93.41, 0.0, 256.65), "antenna": ANT,
+         # 3 deg grazing at the centre: the waves hide facets from the transmitter
+         "transmitter": tx or {"position_m": (-200.0, 0.0, 10.0), "antenna": ANT,
                                "motion": "linear", "velocity_m_s": (0.0, 100.0, 0.0)},
          "targets": targets if targets is not None else
          [{"position_m": (1.0, 2.0, 0.5), "rcs_m2": 3.0}]}
@@ -198,6 +199,10 @@ def test_one_receiver_scene_keeps_the_bistatic_layout_and_bytes():
     one = simulation_of(bi).dataset(progress=False)
     assert one.raw.dims == ("pulse", "channel", "fast_time")
     assert "receiver" not in one.dims and "multistatic" not in one.attrs
+    # the scene JSON of a [receiver] scene is as before [[receivers]] existed (the file's
+    # bytes, a Zarr run's identity)
+    assert '"receivers"' not in one.attrs["scene_json"]
+    assert '"receivers"' in ds.attrs["scene_json"]
     assert np.array_equal(ds.raw.isel(receiver=0).values, one.raw.values)
 
 
@@ -332,3 +337,32 @@ def test_cli_run_and_image_of_three_receivers(tmp_path, capsys):
         np.testing.assert_allclose(img.fused_sigma0.values, s0.mean(axis=0), rtol=1e-6)
         one = api.image(receiver_dataset(raw.load(), "south"))
         np.testing.assert_array_equal(one.image.values, img.image.sel(receiver="south").values)
+
+
+def test_images_per_receiver_and_their_incoherent_combination():
+    # Each receiver's image is its bistatic run's image (same data, same grid); the
+    # combination is the mean of the receivers' calibrated intensities over those that
+    # record the channel (Willis and Griffiths 2007: non-coherent multistatic combination).
+    from seaecho import api
+
+    rx = [dict(r, antenna=ISO) for r in RECEIVERS]
+    sc = _scene(receivers=rx, sea=False, n_pulses=8,
+                tx={"position_m": (-93.41, 0.0, 256.65), "antenna": ISO,
+                    "motion": "linear", "velocity_m_s": (0.0, 100.0, 0.0)},
+                targets=[{"position_m": (1.0, 2.0, 0.5), "rcs_m2": 3.0},
+                         {"position_m": (-3.0, -1.0, 0.0), "rcs_m2": 1.0}])
+    ds = simulation_of(sc).dataset(progress=False)
+    fields = {"extent_m": (-6.0, 6.0, -6.0, 6.0), "pixel_m": 1.0}
+    img = api.image(ds, **fields)
+    assert img.image.dims == ("receiver", "channel", "y", "x")
+    rcs = np.abs(img.image.values.astype(np.complex128)) ** 2
+    with np.errstate(invalid="ignore"):
+        mean = np.nanmean(rcs, axis=0)
+    np.testing.assert_allclose(img.fused_rcs.values, mean, rtol=1e-6)
+    assert list(img.fused_receivers.values) == [3, 2, 2, 3]  # 'north': HH, VV only
+    for i in range(3):
+        one = simulation_of(_alone(sc, ds, i)).dataset(progress=False)
+        alone = api.image(one, **fields)
+        mine = img.image.isel(receiver=i).sel(channel=alone.channel.values)
+        np.testing.assert_array_equal(mine.values, alone.image.values)
+    assert set(api.image_measures(img)) >= {"near HH", "north VV", "south HV"}

@@ -14,7 +14,7 @@ registered here too, each in its own module of this package.
 
 from __future__ import annotations
 
-from pydantic import Field, model_validator
+from pydantic import Field, model_serializer, model_validator
 
 from .base import Name, Section, Text
 from .image import ImageConfig
@@ -65,6 +65,15 @@ class Scene(Section):
     image: ImageConfig | None = Field(
         None, description="SAR focusing after the raw data [image]; omit for raw data only"
     )
+
+    @model_serializer(mode="wrap")
+    def _without_empty_receivers(self, handler):
+        # A scene without [[receivers]] dumps as before they existed: its files' scene_json
+        # (and so their bytes, and a Zarr run's identity) are unchanged
+        data = handler(self)
+        if not self.receivers and isinstance(data, dict):
+            data.pop("receivers", None)
+        return data
 
     @model_validator(mode="after")
     def _across_sections(self) -> Scene:
