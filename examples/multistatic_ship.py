@@ -10,7 +10,9 @@ configurations". ``scenes/multistatic_ship_3rx.toml`` has one airborne X-band tr
 three pairs (docs/multistatic.md). ``seaecho.simulate`` then ``seaecho.image`` (each
 pair focused by bistatic backprojection on one grid, and their incoherent combination)
 and ``seaecho.figures`` write ``multistatic_<receiver>_sigma0.png`` /
-``_pauli.png`` per receiver and ``multistatic_fused_sigma0.png``; this script adds
+``_pauli.png`` per receiver (``multistatic_formation_sigma0.png``,
+``multistatic_south_sigma0.png``, ``multistatic_northeast_sigma0.png``) and
+``multistatic_fused_sigma0.png``; this script adds
 ``multistatic_geometry.png`` (the tracks seen from above and each pair's bistatic angle
 against time) and ``multistatic_polarimetry.png`` (the sea's NRCS per channel seen by
 each receiver, from the run's per-receiver sigma0 maps). The image measures are printed.
