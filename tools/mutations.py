@@ -296,7 +296,7 @@ MUTATIONS = [
     Mutation("multistatic-speckle-per-receiver", S + "simulation.py",
              "g_k, g_b = facet_gaussians(n_facets, 2, seed, \"speckle\", block, xp=xp)",
              "g_k, g_b = facet_gaussians(n_facets, 2, seed + len(self.radar.channels) "
-             "+ int(1e3 * self.radar.rx.state(0.0).position[0]), \"speckle\", block, xp=xp)",
+             "+ int(abs(1e3 * self.radar.rx.state(0.0).position[0])), \"speckle\", block, xp=xp)",
              ("tests/multistatic/test_multistatic.py",),
              "each receiver draws its own sub-facet speckle"),
 
