@@ -34,6 +34,7 @@ NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
+import copy
 import dataclasses
 import os
 from collections.abc import Callable
@@ -700,8 +701,10 @@ class MultistaticModels:
     ----------
     receivers : tuple of SimulationModels
         One per receiver, each the bistatic models of :func:`receiver_scene` (its radar
-        with the receiver's platform drawn from ``"platform"`` stream 1 + i); the sea, the
-        sea model, the tracing and the hull models are the same objects in all of them.
+        with the receiver's platform drawn from ``"platform"`` stream 1 + i); the sea
+        model, the tracing and the hull models are the same objects in all of them, and
+        the sea's surface too: a receiver's ``Sea`` differs only by its ship, whose
+        turbulent-wake film damping is evaluated at that pair's Bragg wavenumber.
     names : tuple of str
         The receivers' names.
     attrs : dict
@@ -724,11 +727,20 @@ def build_multistatic(scene, base_dir: str | os.PathLike = ".") -> MultistaticMo
     """
     if not scene.receivers:
         raise ValueError("the scene has no [[receivers]]: use build_simulation")
+    if scene.scattering.sea_motion == "evolving":
+        raise ValueError("[scattering].sea_motion = 'evolving' with [[receivers]]: not "
+                         "implemented yet (the Bragg lifetimes depend on each pair's "
+                         "Bragg wavenumber); use 'held'")
     first = build_simulation(receiver_scene(scene, 0), base_dir)
     attrs = scene_attrs(scene)
     models = [dataclasses.replace(first, attrs=attrs)]
     for i in range(1, len(scene.receivers)):
-        radar = build_radar(receiver_scene(scene, i), receiver_stream=1 + i)
-        models.append(dataclasses.replace(first, radar=radar))
+        sub = receiver_scene(scene, i)
+        radar = build_radar(sub, receiver_stream=1 + i)
+        sea = first.sea
+        if sea is not None and sea.ship is not None:  # its wake film at its Bragg k
+            sea = copy.copy(sea)
+            sea.ship = _ship(sub)
+        models.append(dataclasses.replace(first, radar=radar, sea=sea))
     return MultistaticModels(receivers=tuple(models),
                              names=tuple(r.name for r in scene.receivers), attrs=attrs)

@@ -60,7 +60,7 @@ from .simulation import Simulation
 MULTISTATIC_DIMS = ("pulse", "receiver", "channel", "sample")
 #: Static variables that differ between receivers (besides every ``rx_*`` track and the
 #: hulls' scattering centres, which are concatenated along ``centre``).
-PER_RECEIVER = ("sigma0", "visibility", "hull_rcs", "hull_rcs_free_space",
+PER_RECEIVER = ("sigma0", "visibility", "wake_mask", "hull_rcs", "hull_rcs_free_space",
                 "hull_trace_pulse")
 
 

@@ -35,7 +35,7 @@ RECEIVERS = [
 
 
 def _scene(receivers=RECEIVERS, sea=True, tracing=None, n_pulses=4, targets=None,
-           seed=3, tx=None, **radar):
+           seed=3, tx=None, ship=False, **radar):
     r = {"carrier_frequency_hz": 1e10, "sampling_rate_hz": 200e6, "prf_hz": 1e3,
          "n_pulses": n_pulses, "sea_clutter": sea, "transmit_power_w": 10.0,
          "waveform": {"kind": "lfm", "bandwidth_hz": 100e6, "duration_s": 1e-6}}
@@ -50,6 +50,9 @@ def _scene(receivers=RECEIVERS, sea=True, tracing=None, n_pulses=4, targets=None
                                "motion": "linear", "velocity_m_s": (0.0, 100.0, 0.0)},
          "targets": targets if targets is not None else
          [{"position_m": (1.0, 2.0, 0.5), "rcs_m2": 3.0}]}
+    if ship:  # its turbulent wake's film damps the Bragg waves of each pair's k_B
+        d["ship"] = {"length_m": 4.0, "beam_m": 1.5, "draft_m": 0.5, "speed_kn": 6.0,
+                     "heading_deg": 30.0, "position_m": (1.0, 0.5)}
     if isinstance(receivers, dict):
         d["receiver"] = receivers
     else:
@@ -74,7 +77,7 @@ def _alone(sc, ds, i):
 def test_each_receiver_is_its_bistatic_run_bit_for_bit(tracing):
     # One sea, one set of sub-facet draws, the transmitter's leg traced once: receiver
     # i's raw and compressed samples and NRCS map equal the run of receiver i alone.
-    sc = _scene(tracing=tracing)
+    sc = _scene(tracing=tracing, ship=True)
     sim = simulation_of(sc)
     assert isinstance(sim, MultistaticSimulation)
     ds = sim.dataset(progress=False)
@@ -86,9 +89,14 @@ def test_each_receiver_is_its_bistatic_run_bit_for_bit(tracing):
         for name in ("raw", "compressed"):
             assert np.array_equal(mine[name].values, one[name].values), (i, name)
         np.testing.assert_array_equal(mine.sigma0.values, one.sigma0.values)
+        np.testing.assert_array_equal(mine.wake_mask.values, one.wake_mask.values)
+        np.testing.assert_array_equal(mine.elevation.values, one.elevation.values)
         np.testing.assert_array_equal(mine.rx_position.values, one.rx_position.values)
         np.testing.assert_array_equal(ds.fast_time.values[i], one.fast_time.values)
         assert np.abs(one.raw.values).max() > 0
+    # one sea; each pair's wake film damping at its own Bragg wavenumber
+    masks = ds.wake_mask.values
+    assert masks.max() > 0 and not np.array_equal(masks[0], masks[2])
     # receiver 'north' records HH and VV only: NaN (no data) in HV and VH, flagged
     assert not ds.recorded.sel(receiver="north", channel="HV")
     assert np.isnan(ds.raw.sel(receiver="north", channel="HV").values).all()
@@ -245,9 +253,16 @@ def test_receivers_and_receiver_together_are_refused():
     (lambda r: r[1].update(channels=["HH", "XV"]), r"#1 \(north\)\.channels"),
     (lambda r: r[2]["antenna"].update(basis="circular"), r"\[radar\]\.channels \(receiver #2"),
     (lambda r: r[0].pop("name"), "name"),
+    (None, r"sea_motion = 'evolving' with \[\[receivers\]\]: not implemented yet"),
 ])
 def test_bad_receivers_are_refused_naming_the_field(change, match):
     rx = [dict(r, antenna=dict(r["antenna"])) for r in RECEIVERS]
+    if change is None:
+        d = _scene().model_dump()
+        d["scattering"]["sea_motion"] = "evolving"
+        with pytest.raises(SceneError, match=match):
+            parse_scene(d)
+        return
     change(rx)
     with pytest.raises(SceneError, match=match):
         _scene(receivers=rx)

@@ -62,6 +62,10 @@ def check_receivers(scene) -> None:
     if scene.receiver is not None:
         raise ValueError(f"[[receivers]] ({len(scene.receivers)} given) and [receiver]: give "
                          "one or the other ([receiver] is the one-receiver shorthand)")
+    if scene.scattering.sea_motion == "evolving":
+        raise ValueError("[scattering].sea_motion = 'evolving' with [[receivers]]: not "
+                         "implemented yet (the Bragg lifetimes depend on each pair's Bragg "
+                         "wavenumber); use 'held'")
     seen: set[str] = set()
     for i, r in enumerate(scene.receivers):
         if r.name in seen:

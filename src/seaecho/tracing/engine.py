@@ -184,7 +184,9 @@ class FacetEngine:
         """
         if self._lead is not None:
             return self._lead.geometry(state)
-        if self._geometry is None or self._geometry[0] is not state:
+        held = self._geometry[0] if self._geometry is not None else None
+        if held is None or not (held is state or (held.elevation is state.elevation
+                                                  and held.velocity is state.velocity)):
             centroid, area, normal = facet_geometry(grid_vertices(state.x, state.y,
                                                                   state.elevation))
             velocity = to_facets(np.asarray(state.velocity, dtype=np.float64))
