@@ -293,9 +293,11 @@ def build_sea_model(scene, frequency: float | None = None,
 def _scene_bragg_wavenumber(scene, k: float) -> float:
     """Mean-plane Bragg wavenumber at the tile centre at the first pulse [rad/m]
     (``k |(n_s - n_i)_h|``; 2 k sin 45 deg without a transmitter, or with a platform at
-    the tile centre)."""
+    the tile centre; with ``[[receivers]]``, the first receiver's pair)."""
     if scene.transmitter is None:
         return float(2.0 * k * np.sin(np.pi / 4))
+    if scene.receivers:  # the first pair's (each receiver's own: build_multistatic)
+        scene = receiver_scene(scene, 0)
     tx, rx = _platforms(scene)
     t0 = scene.radar.start_time_s if scene.radar is not None else 0.0
     p_tx, p_rx = tx.state(t0).position, rx.state(t0).position
