@@ -562,17 +562,22 @@ def _check_multistatic(scene, source: str, base_dir, max_memory_gb, figures, wor
     subs = [receiver_scene(scene, i) for i in range(len(scene.receivers))]
     problems = (two_scale_problems(subs[0]) + receive_problems(subs[0])
                 + object_problems(subs[0], base_dir))
+    def named(i: int, problems: list[str]) -> list[str]:
+        tag = f"[[receivers]] #{i} ({scene.receivers[i].name})"
+        return [p.replace("[receiver]", tag, 1) if p.startswith("[receiver]")
+                else f"{tag}: {p}" for p in problems]
+
     own = []
-    for i, (r, sub) in enumerate(zip(scene.receivers, subs, strict=True)):
-        own += [f"[[receivers]] #{i} ({r.name}): {p}" for p in image_problems(sub)]
+    for i, sub in enumerate(subs):
+        own += named(i, image_problems(sub))
     try:
         _, line = check_memory(scene, source, max_memory_gb, figures, workers=workers,
                                block=block, base_dir=base_dir)
     except SceneError as exc:
         raise SceneError("\n".join([str(exc), *problems, *own])) from None
-    for i, (r, sub) in enumerate(zip(scene.receivers, subs, strict=True)):
-        own += [f"[[receivers]] #{i} ({r.name}): {p}" for p in geometry_problems(sub)
-                if not p.startswith("[transmitter]") or i == 0]
+    for i, sub in enumerate(subs):
+        own += named(i, [p for p in geometry_problems(sub)
+                         if not p.startswith("[transmitter]") or i == 0])
     problems += own
     if problems:
         raise SceneError(f"{source}: cannot be simulated\n" + "\n".join(problems))

@@ -381,3 +381,14 @@ def test_images_per_receiver_and_their_incoherent_combination():
         mine = img.image.isel(receiver=i).sel(channel=alone.channel.values)
         np.testing.assert_array_equal(mine.values, alone.image.values)
     assert set(api.image_measures(img)) >= {"near HH", "north VV", "south HV"}
+
+
+def test_preflight_names_the_receiver_whose_geometry_is_refused():
+    # seaecho check refuses what seaecho run would: each receiver's geometry, named
+    from seaecho.preflight import check_run
+
+    rx = [dict(r) for r in RECEIVERS]
+    rx[2]["position_m"] = (0.0, -150.0, -3.0)  # under the sea
+    with pytest.raises(SceneError, match=r"\[\[receivers\]\] #2 \(south\)\.position_m"):
+        check_run(_scene(receivers=rx), "s.toml")
+    assert "estimated peak memory" in check_run(_scene(), "s.toml")
