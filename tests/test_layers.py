@@ -35,7 +35,7 @@ LAYERS = [
     {"io"},
     {"build"},
     {"imaging"},
-    {"simulation", "guards", "preflight", "resources"},
+    {"simulation", "multistatic", "guards", "preflight", "resources"},
     {"distributed"},
     {"api"},
     {"cli"},

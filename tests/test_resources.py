@@ -32,11 +32,16 @@ def _cal(**radar) -> dict:
 def test_window_size_is_the_radar_window(path):
     """Parity: the estimate's samples and NUFFT period are the radar's own, computed
     without building it (building it allocates the window)."""
+    from seaecho.build import receiver_scene
+
     scene = load_scene(path)
-    radar = RadarSystem(build_radar(scene))
-    n_s, n_fft, n_p = window_size(scene)
-    assert (n_s, n_fft, n_p) == (radar.window.n_samples, radar.n_fft,
-                                 radar.waveform.n_samples)
+    # [[receivers]]: each receiver's bistatic scene (the estimate's, resources.py)
+    for sc in ([receiver_scene(scene, i) for i in range(len(scene.receivers))]
+               if scene.receivers else [scene]):
+        radar = RadarSystem(build_radar(sc))
+        n_s, n_fft, n_p = window_size(sc)
+        assert (n_s, n_fft, n_p) == (radar.window.n_samples, radar.n_fft,
+                                     radar.waveform.n_samples)
 
 
 @pytest.mark.parametrize("radar", [

@@ -483,6 +483,28 @@ MUTATIONS = [
              "return float(coef[0]), float(np.arctan(coef[1])), float(np.arctan(coef[2]))",
              "return float(coef[0]), float(np.arctan(coef[1])), float(-np.arctan(coef[2]))",
              ("tests/targets/test_motion.py",), "the hull rolls against the sea's slope"),
+    # --- several receivers (docs/multistatic.md)
+    Mutation("multistatic-tx-occlusion-of-lead-receiver", S + "tracing/engine.py",
+             "occ_tx = self._lead.occlusion(t, st)[1]",
+             "occ_tx = self._lead.occlusion(t, st)[2]",
+             ("tests/multistatic/test_multistatic.py",),
+             "a receiver takes the first receiver's shadowing as the transmitter's"),
+    Mutation("multistatic-bistatic-angle-supplement", S + "multistatic.py",
+             "return np.arctan2(cross, np.sum(a * b, axis=-1))",
+             "return np.arctan2(cross, -np.sum(a * b, axis=-1))",
+             ("tests/multistatic/test_multistatic.py",),
+             "bistatic angle measured from the forward-scatter direction"),
+    Mutation("multistatic-fused-sum", S + "multistatic.py",
+             'rcs.mean("receiver", skipna=True)', 'rcs.sum("receiver", skipna=True)',
+             ("tests/multistatic/test_multistatic.py",),
+             "the incoherent combination adds the receivers' intensities"),
+    Mutation("multistatic-speckle-per-receiver", S + "simulation.py",
+             "g_k, g_b = facet_gaussians(n_facets, 2, seed, \"speckle\", block, xp=xp)",
+             "g_k, g_b = facet_gaussians(n_facets, 2, seed + len(self.radar.channels) "
+             "+ int(abs(1e3 * self.radar.rx.state(0.0).position[0])), \"speckle\", block, xp=xp)",
+             ("tests/multistatic/test_multistatic.py",),
+             "each receiver draws its own sub-facet speckle"),
+
 ]
 
 

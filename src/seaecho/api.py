@@ -364,7 +364,7 @@ def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | N
     """
     import contextlib
 
-    from .build import build_radar, build_simulation, check_scene
+    from .build import build_multistatic, build_radar, build_simulation, check_scene, receiver_scene
     from .io.zarr_run import is_zarr
     from .radar.system import RadarSystem
     from .simulation import Simulation
@@ -385,8 +385,9 @@ def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | N
     if path is None:
         if resume:
             raise SceneError("resume = True: needs a Zarr path (*.zarr) to continue")
-        try:
-            radar = RadarSystem(build_radar(scene))
+        try:  # [[receivers]]: the first receiver's window (all have its length)
+            radar = RadarSystem(build_radar(receiver_scene(scene, 0) if scene.receivers
+                                            else scene))
         except ValueError as exc:
             raise SceneError(f"{label}: {exc}") from None
         _check_fits_in_memory(scene, radar, max_memory_bytes)
@@ -402,7 +403,12 @@ def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | N
         check_scene(scene)  # SamplingWarning if the tile or the grid is too coarse
     base = _base_dir(scene, base_dir)
     try:
-        sim = Simulation.from_models(build_simulation(scene, base))
+        if scene.receivers:  # one transmitter, several receivers (docs/multistatic.md)
+            from .multistatic import MultistaticSimulation
+
+            sim = MultistaticSimulation.from_models(build_multistatic(scene, base))
+        else:
+            sim = Simulation.from_models(build_simulation(scene, base))
     except ValueError as exc:
         raise SceneError(f"{label}: {exc}") from None
     with contextlib.ExitStack() as stack:
@@ -424,6 +430,8 @@ def _check_fits_in_memory(scene, radar, limit: float | None) -> None:
     available memory). The arrays are ``raw`` and ``compressed``: pulses x channels x
     samples x 2 x 16 bytes, the receive window's samples being the radar's own."""
     n_p, n_c, n_s = radar.n_pulses, len(radar.channels), radar.window.n_samples
+    if scene.receivers:  # every receiver's window has the first one's length
+        n_c *= len(scene.receivers)
     need = 32.0 * n_p * n_c * n_s
     if scene.radar.sea_clutter:  # static maps: surface (3), sigma0 (4), visibility
         ny, nx = scene.sea.shape
@@ -1064,11 +1072,33 @@ def image(raw: xr.Dataset | PathLike, config: ImageConfig | None = None, *,
         raise SceneError(f"raw dataset {os.fspath(raw)} does not exist")
     cfg = config if config is not None else image_config(raw, **fields)
     try:
+        if _multistatic(raw):  # each receiver's image and their combination
+            import contextlib
+
+            import xarray as xr
+
+            from .multistatic import image_multistatic
+
+            with contextlib.ExitStack() as stack:
+                ds = raw if isinstance(raw, xr.Dataset) else stack.enter_context(
+                    open_dataset(raw))
+                return image_multistatic(ds, cfg, backend=backend, progress=progress,
+                                         timings=timings).load()
         return focus(raw, cfg, backend=backend, progress=progress,
                      timings=timings if timings is not None else {})
     except ValueError as exc:  # grid, window, or a dataset that is not a raw run
         where = os.fspath(raw) if isinstance(raw, str | os.PathLike) else "raw dataset"
         raise SceneError(f"{where}: {exc}") from None
+
+
+def _multistatic(raw) -> bool:
+    """Whether a raw dataset (or file) is a multistatic run (``[[receivers]]``)."""
+    import xarray as xr
+
+    if isinstance(raw, xr.Dataset):
+        return bool(int(raw.attrs.get("multistatic", 0)))
+    with open_dataset(raw) as ds:
+        return bool(int(ds.attrs.get("multistatic", 0)))
 
 
 def image_measures(img: xr.Dataset, variable: str = "sigma0") -> dict[str, dict[str, float]]:
@@ -1087,13 +1117,20 @@ def image_measures(img: xr.Dataset, variable: str = "sigma0") -> dict[str, dict[
     dict
         ``{channel: {"sea_db": ..., "wake_db": ..., "contrast_db": ...,
         "secondary_peak_db": ..., "modulation": ...}}``: the measures the image allows
-        (an empty dict for a channel without sea).
+        (an empty dict for a channel without sea). A multistatic image (several
+        receivers) is measured per receiver, keys ``"<receiver> <channel>"``.
     """
     from .imaging.quality import paper_metrics
 
     if variable not in img:
         raise SceneError(f"variable = {variable!r}: not in the image (has "
                          f"{', '.join(sorted(map(str, img.data_vars)))})")
+    if "receiver" in img.dims:  # [[receivers]]: each receiver's image (docs/multistatic.md)
+        from .multistatic import receiver_image
+
+        return {f"{name} {ch}": m for name in img["receiver"].values
+                for ch, m in paper_metrics(receiver_image(img, str(name)),
+                                           variable).items()}
     return paper_metrics(img, variable)
 
 
@@ -1117,6 +1154,12 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
     if str(stem.parent) and not stem.parent.is_dir():
         raise SceneError(f"stem = {os.fspath(stem)!r}: directory {stem.parent} does not "
                          "exist")
+    if "raw" in dataset and int(dataset.attrs.get("multistatic", 0)):
+        from .io.figures import run_figures
+        from .multistatic import receiver_dataset
+
+        return [png for name in dataset["receiver"].values for png in run_figures(
+            receiver_dataset(dataset, str(name)), f"{stem}_{name}")]
     if "raw" in dataset:
         from .io.figures import run_figures
 
@@ -1126,6 +1169,11 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
 
             out += ppi_figures(dataset, stem)
         return out
+    if "image_json" in dataset.attrs and "receiver" in dataset.dims:
+        from .multistatic import multistatic_figures
+
+        cfg = json.loads(dataset.attrs["image_json"])
+        return multistatic_figures(dataset, stem, cfg["dynamic_range_db"])
     if "image_json" in dataset.attrs:
         from .imaging.figures import image_figures
 

@@ -35,6 +35,8 @@ NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
+import copy
+import dataclasses
 import os
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -74,13 +76,16 @@ if TYPE_CHECKING:  # pragma: no cover
     from .tracing.engine import FacetEngine
 
 __all__ = [
+    "MultistaticModels",
     "SimulationModels",
+    "build_multistatic",
     "build_engine",
     "build_radar",
     "build_sea",
     "build_sea_dynamics",
     "build_sea_model",
     "build_ships",
+    "receiver_scene",
     "build_simulation",
     "build_tracing",
     "carrier_frequency",
@@ -316,13 +321,16 @@ def sea_motion(scene) -> str:
     where real sea clutter has a Bragg-shifted spectrum a few tens of hertz wide at X band
     (docs/dynamics.md). It is ``"held"`` when one surface serves every pulse
     (``sea_update_pulses >= n_pulses``: the paper's SAR scenes hold the sea for the
-    aperture, its section V-B), without ``[radar]`` and without sea clutter.
+    aperture, its section V-B), without ``[radar]`` and without sea clutter. A scene with
+    ``[[receivers]]`` is held too: the evolving sea of several receivers is not
+    implemented yet (its Bragg lifetimes depend on each pair's Bragg wavenumber).
     """
     motion = scene.scattering.sea_motion
     if motion != "auto":
         return motion
     r = scene.radar
-    if r is None or not r.sea_clutter or r.sea_update_pulses >= r.n_pulses:
+    if (r is None or not r.sea_clutter or r.sea_update_pulses >= r.n_pulses
+            or getattr(scene, "receivers", ())):
         return "held"
     return "evolving"
 
@@ -330,9 +338,11 @@ def sea_motion(scene) -> str:
 def _scene_bragg_wavenumber(scene, k: float) -> float:
     """Mean-plane Bragg wavenumber at the tile centre at the first pulse [rad/m]
     (``k |(n_s - n_i)_h|``; 2 k sin 45 deg without a transmitter, or with a platform at
-    the tile centre)."""
+    the tile centre; with ``[[receivers]]``, the first receiver's pair)."""
     if scene.transmitter is None:
         return float(2.0 * k * np.sin(np.pi / 4))
+    if scene.receivers:  # the first pair's (each receiver's own: build_multistatic)
+        scene = receiver_scene(scene, 0)
     tx, rx = _platforms(scene)
     t0 = scene.radar.start_time_s if scene.radar is not None else 0.0
     p_tx, p_rx = tx.state(t0).position, rx.state(t0).position
@@ -454,11 +464,15 @@ def _pointing(cfg, platform: Platform, t_ref: float) -> Pointing:
                               float(np.deg2rad(cfg.depression_deg)))
 
 
-def _platforms(scene) -> tuple[Platform, Platform]:
+def _platforms(scene, receiver_stream: int = 1) -> tuple[Platform, Platform]:
     """(transmitter, receiver); the same object twice when monostatic. Perturbations
-    cover the pulses of ``[radar]`` (plus 1 ms), or t = 0 without a radar."""
+    cover the pulses of ``[radar]`` (plus 1 ms), or t = 0 without a radar; the
+    receiver's is drawn from ``"platform"`` stream index ``receiver_stream``."""
     if scene.transmitter is None:
         raise ValueError("the scene has no [transmitter] section")
+    if scene.receivers:
+        raise ValueError(f"the scene has {len(scene.receivers)} [[receivers]]: take one "
+                         "receiver's bistatic scene (receiver_scene(scene, i))")
     t_span = (0.0, 0.0)
     if scene.radar is not None:
         r = scene.radar
@@ -468,7 +482,6 @@ def _platforms(scene) -> tuple[Platform, Platform]:
     tx = _platform(scene.transmitter, seed, 0, t_span, earth)
     if scene.receiver is None:
         return tx, tx
-    return tx, _platform(scene.receiver, seed, 1, t_span, earth)
 
 
 def dwell_pulses(scene) -> int:
@@ -477,6 +490,7 @@ def dwell_pulses(scene) -> int:
     decides what a dwell is (a scanning antenna would take its scan period here)."""
     r = scene.radar
     return int(r.cpi_pulses) if r.cpi_pulses is not None else int(r.n_pulses)
+    return tx, _platform(scene.receiver, seed, receiver_stream, t_span, earth)
 
 
 def _targets(scene) -> TargetSet | None:
@@ -492,8 +506,11 @@ def _targets(scene) -> TargetSet | None:
                      dwell_pulses=dwell_pulses(scene), seed=int(scene.run.seed))
 
 
-def build_radar(scene) -> RadarModel:
+def build_radar(scene, *, receiver_stream: int = 1) -> RadarModel:
     """The radar of ``[radar]``, ``[transmitter]``, ``[receiver]`` and ``[[targets]]``.
+
+    ``receiver_stream`` is the ``"platform"`` stream index of the receiver's perturbation
+    (1; receiver i of ``[[receivers]]`` has 1 + i, :func:`build_multistatic`).
 
     Raises
     ------
@@ -503,7 +520,10 @@ def build_radar(scene) -> RadarModel:
     if scene.radar is None or scene.transmitter is None:
         raise ValueError("the scene needs [radar] and [transmitter] sections")
     r = scene.radar
-    tx, rx = _platforms(scene)
+    if scene.receivers:
+        raise ValueError("a scene with [[receivers]] has one radar per receiver: "
+                         "build_multistatic (or build_radar(receiver_scene(scene, i)))")
+    tx, rx = _platforms(scene, receiver_stream)
     mono = rx is tx
     wavelength = C0 / r.carrier_frequency_hz
     w = r.waveform
@@ -764,3 +784,79 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
     return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
                             attrs=scene_attrs(scene), variant=variant, hulls=hulls,
                             ships=tuple(ships))
+
+
+# ------------------------------------------------------------------ several receivers
+def receiver_scene(scene, index: int):
+    """The bistatic scene of receiver ``index`` of ``[[receivers]]``: the same scene with
+    that receiver as its ``[receiver]`` (its ``channels``, if it has its own, as
+    ``[radar] channels``) and no ``[[receivers]]``.
+
+    Receiver ``index`` of a multistatic run equals the run of this scene
+    (docs/multistatic.md: same seed, its receive window, and a perturbed receiver's path
+    errors drawn from ``"platform"`` stream index 1 + ``index``).
+    """
+    n = len(scene.receivers)
+    if not 0 <= index < n:
+        raise ValueError(f"receiver index {index}: the scene has {n} [[receivers]]")
+    r = scene.receivers[index]
+    # the multistatic scene's resolved sea motion, so that the pair sees the same sea
+    update: dict[str, Any] = {"receiver": r.platform(), "receivers": (),
+                              "scattering": scene.scattering.model_copy(
+                                  update={"sea_motion": sea_motion(scene)})}
+    if r.channels is not None and scene.radar is not None:
+        update["radar"] = scene.radar.model_copy(update={"channels": tuple(r.channels)})
+    return scene.model_copy(update=update)
+
+
+@dataclass(frozen=True)
+class MultistaticModels:
+    """Stage models of a scene with ``[[receivers]]``: one transmitter, several receivers.
+
+    Attributes
+    ----------
+    receivers : tuple of SimulationModels
+        One per receiver, each the bistatic models of :func:`receiver_scene` (its radar
+        with the receiver's platform drawn from ``"platform"`` stream 1 + i); the sea
+        model, the tracing and the hull models are the same objects in all of them, and
+        the sea's surface too: a receiver's ``Sea`` differs only by its ship, whose
+        turbulent-wake film damping is evaluated at that pair's Bragg wavenumber.
+    names : tuple of str
+        The receivers' names.
+    attrs : dict
+        Dataset attributes of the whole scene (scene JSON, version, seed).
+    """
+
+    receivers: tuple[SimulationModels, ...]
+    names: tuple[str, ...]
+    attrs: dict
+
+
+def build_multistatic(scene, base_dir: str | os.PathLike = ".") -> MultistaticModels:
+    """The stage models of a multistatic scene (``[[receivers]]``): the sea, sea model,
+    tracing and hulls built once and shared, one radar per receiver.
+
+    Raises
+    ------
+    ValueError
+        The scene has no ``[[receivers]]``; or as :func:`build_simulation`.
+    """
+    if not scene.receivers:
+        raise ValueError("the scene has no [[receivers]]: use build_simulation")
+    if scene.scattering.sea_motion == "evolving":
+        raise ValueError("[scattering].sea_motion = 'evolving' with [[receivers]]: not "
+                         "implemented yet (the Bragg lifetimes depend on each pair's "
+                         "Bragg wavenumber); use 'held'")
+    first = build_simulation(receiver_scene(scene, 0), base_dir)
+    attrs = scene_attrs(scene)
+    models = [dataclasses.replace(first, attrs=attrs)]
+    for i in range(1, len(scene.receivers)):
+        sub = receiver_scene(scene, i)
+        radar = build_radar(sub, receiver_stream=1 + i)
+        sea = first.sea
+        if sea is not None and sea.ship is not None:  # its wake film at its Bragg k
+            sea = copy.copy(sea)
+            sea.ship = _ship(sub)
+        models.append(dataclasses.replace(first, radar=radar, sea=sea))
+    return MultistaticModels(receivers=tuple(models),
+                             names=tuple(r.name for r in scene.receivers), attrs=attrs)

@@ -43,6 +43,7 @@ from typing import Any
 import numpy as np
 
 from .constants import C0
+from .multistatic import MultistaticSimulation
 from .simulation import Simulation
 
 #: Simulations kept per worker thread (a sweep meets many scenes; each holds its sea).
@@ -75,6 +76,13 @@ class Job:
         return cls(scene, base, h)
 
 
+def _simulation(scene, base_dir: str | os.PathLike = "."):
+    """The scene's Simulation, or its MultistaticSimulation with ``[[receivers]]``."""
+    if scene.receivers:
+        return MultistaticSimulation(scene, base_dir)
+    return Simulation(scene, base_dir=base_dir)
+
+
 def worker_simulation(job: Job) -> Simulation:
     """The simulation of ``job``'s scene on this worker thread, built on first use and
     reused by later tasks (a Simulation's caches are not shared between threads)."""
@@ -84,7 +92,7 @@ def worker_simulation(job: Job) -> Simulation:
         if sim is not None:
             _CACHE.move_to_end(key)
             return sim
-    sim = Simulation(job.scene, base_dir=job.base_dir)
+    sim = _simulation(job.scene, base_dir=job.base_dir)
     with _CACHE_LOCK:
         _CACHE[key] = sim
         mine = [k for k in _CACHE if k[1] == key[1]]
@@ -244,7 +252,7 @@ def run(scene, path: str | os.PathLike, *, client, base_dir: str | os.PathLike =
         The scene's simulation if already built here (its static dataset is written by
         this process).
     """
-    sim = Simulation(scene, base_dir=base_dir) if simulation is None else simulation
+    sim = _simulation(scene, base_dir=base_dir) if simulation is None else simulation
     return sim.run(path, progress=progress, chunk=block, resume=resume,
                    runner=DaskBlocks(client, Job.of(scene, base_dir), block=block))
 
@@ -362,7 +370,7 @@ def run_case(case: Case, base_dir: str, out_dir: str | None, reduce: bool,
     is a row with its error)."""
     row: dict[str, Any] = {"case": case.index, "status": "ok", "error": "", "output": ""}
     try:
-        sim = Simulation(case.scene, base_dir=base_dir)
+        sim = _simulation(case.scene, base_dir=base_dir)
         if reduce:
             from .io.run import block_size, blocks_of
 

@@ -582,6 +582,9 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
 
     from .resources import check_memory
 
+    if scene.receivers:  # [[receivers]]: each receiver's bistatic scene (docs/multistatic.md)
+        return _check_multistatic(scene, source, base_dir, max_memory_gb, figures,
+                                  workers, block)
     problems = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
                 + object_problems(scene, base_dir))
     try:
@@ -590,6 +593,39 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
     except SceneError as exc:
         raise SceneError("\n".join([str(exc), *problems])) from None
     problems += geometry_problems(scene) + horizon_problems(scene)
+    if problems:
+        raise SceneError(f"{source}: cannot be simulated\n" + "\n".join(problems))
+    return line
+
+
+def _check_multistatic(scene, source: str, base_dir, max_memory_gb, figures, workers,
+                       block) -> str:
+    """:func:`check_run` of a scene with ``[[receivers]]``: the sea's and the objects'
+    problems once, each receiver's geometry and image problems named by its receiver,
+    the memory of every receiver together (``seaecho.resources.multistatic_estimate``)."""
+    from .build import receiver_scene
+    from .resources import check_memory
+
+    subs = [receiver_scene(scene, i) for i in range(len(scene.receivers))]
+    problems = (two_scale_problems(subs[0]) + receive_problems(subs[0])
+                + object_problems(subs[0], base_dir))
+    def named(i: int, problems: list[str]) -> list[str]:
+        tag = f"[[receivers]] #{i} ({scene.receivers[i].name})"
+        return [p.replace("[receiver]", tag, 1) if p.startswith("[receiver]")
+                else f"{tag}: {p}" for p in problems]
+
+    own = []
+    for i, sub in enumerate(subs):
+        own += named(i, image_problems(sub))
+    try:
+        _, line = check_memory(scene, source, max_memory_gb, figures, workers=workers,
+                               block=block, base_dir=base_dir)
+    except SceneError as exc:
+        raise SceneError("\n".join([str(exc), *problems, *own])) from None
+    for i, sub in enumerate(subs):
+        own += named(i, [p for p in geometry_problems(sub)
+                         if not p.startswith("[transmitter]") or i == 0])
+    problems += own
     if problems:
         raise SceneError(f"{source}: cannot be simulated\n" + "\n".join(problems))
     return line

@@ -51,6 +51,7 @@ The memory a run may use is the smallest of the memory the system reports availa
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 import os
@@ -498,7 +499,13 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
         ``--block-pulses``: pulses per block (default at most :data:`CHUNK`).
     base_dir : path
         Folder of the scene file (the hulls' meshes are read to size their traces).
+
+    A scene with ``[[receivers]]`` is estimated as the sum of its receivers' bistatic
+    runs (:func:`multistatic_estimate`).
     """
+    if getattr(scene, "receivers", ()):
+        return multistatic_estimate(scene, figures, workers=workers, block=block,
+                                    base_dir=base_dir)
     from .build import sea_motion
 
     r = scene.radar
@@ -651,6 +658,31 @@ def format_time(t: float) -> str:
     if t < 86400 * 2:
         return f"~{t / 3600:.2g} h"
     return f"~{t / 86400:.2g} days"
+
+
+#: Terms of eq (M1) that a multistatic run holds once for all receivers (docs/multistatic.md).
+_SHARED = ("process", "sea grid")
+
+
+def multistatic_estimate(scene, figures: bool = True, **kw) -> Estimate:
+    """:func:`estimate` of a scene with ``[[receivers]]``: each receiver's bistatic run
+    (:func:`seaecho.build.receiver_scene`) estimated, the terms held once (the process,
+    the sea grid) taken once and the others summed; the run time is the sum of the
+    receivers' (an upper bound: the sea synthesis and the transmitter's trace, counted
+    once per receiver there, are shared)."""
+    from .build import receiver_scene
+
+    ests = [estimate(receiver_scene(scene, i), figures, **kw)
+            for i in range(len(scene.receivers))]
+    first = ests[0]
+    terms = {k: (max(e.terms.get(k, 0.0) for e in ests) if k in _SHARED
+                 else sum(e.terms.get(k, 0.0) for e in ests)) for k in first.terms}
+    stages = sum(v for k, v in terms.items() if k != "antenna pattern")
+    peak = SAFETY * max(stages, terms["process"] + terms.get("antenna pattern", 0.0))
+    return dataclasses.replace(
+        first, peak_bytes=peak, time_s=sum(e.time_s for e in ests), terms=terms,
+        channels=sum(e.channels for e in ests), hull_rays=sum(e.hull_rays for e in ests),
+        pixels=sum(e.pixels for e in ests))
 
 
 def describe(est: Estimate, limit: float | None, source: str) -> str:

@@ -41,6 +41,7 @@ NY, USA, 2006, doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
+import dataclasses
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -207,6 +208,59 @@ class Simulation:
         self.hulls = HullEchoes.from_model(
             models.hulls, self.radar, variant=self.variant,
             surface=self.surface_state_at if self.sea is not None else None)
+
+    def share_sea(self, lead: Simulation) -> None:
+        """Take the sea's per-block work from ``lead``, a simulation of the same sea
+        surface, transmitter and seed with another receiver (``seaecho.multistatic``): its
+        surface states (and their prefetch), per-block quantities (breaking placement,
+        speckle draws, which depend on the seed and the block only), facet geometry,
+        tracer and transmitter occlusion
+        (:meth:`~seaecho.tracing.engine.FacetEngine.share_transmitter`). With a ship, this
+        simulation's own turbulent-wake mask replaces the lead's in the states and the
+        damping (its film term is evaluated at this pair's Bragg wavenumber, eq W17). The
+        pulses are those of this simulation alone, bit for bit. Held sea only.
+        """
+        if (lead.models.sea_model is not self.models.sea_model or (self.sea is None)
+                != (lead.sea is None) or (self.sea is not None
+                                          and self.sea.surface is not lead.sea.surface)):
+            raise ValueError("share_sea needs a simulation of the same sea models")
+        if self.sea is None:
+            return
+        if self.evolving:
+            raise ValueError("share_sea: not implemented yet for an evolving sea")
+        self.prefetch_surface = lead.prefetch_surface
+        self.engine.share_transmitter(lead.engine)
+        if self.sea.ship is None or self.sea.ship == lead.sea.ship:
+            self.surface_state = lead.surface_state
+            self._block_quantities = lead._block_quantities
+            return
+        own: dict = {}  # the lead's state with this pair's wake mask, and its damping
+
+        def surface_state(pulse: int):
+            st = lead.surface_state(pulse)
+            if own.get("state", (None,))[0] is not st:
+                from .wake import turbulent_wake_mask
+
+                mask = turbulent_wake_mask(self.sea.ship, st.x, st.y, st.t,
+                                           length=self.sea.turbulent_wake_length)
+                own["state"] = (st, dataclasses.replace(
+                    st, wake_mask=np.asarray(mask, dtype=np.float64)))
+            return own["state"][1]
+
+        def block_quantities(pulse: int, state, n_facets: int) -> dict:
+            from .geometry.mesh import to_facets
+
+            q = lead._block_quantities(pulse, lead.surface_state(pulse), n_facets)
+            if own.get("block", (None,))[0] is not q:
+                damping = to_facets(state.wake_mask).reshape(-1)
+                damping.setflags(write=False)
+                if "draws" in q and q["draws"] is not None and not self._resident:
+                    lead._host_draws(q)  # copied from the device once, for both
+                own["block"] = (q, dict(q, damping=damping))
+            return own["block"][1]
+
+        self.surface_state = surface_state
+        self._block_quantities = block_quantities
 
     # --------------------------------------------------------------------- the sea
     def surface_time(self, pulse: int) -> float:

@@ -48,6 +48,10 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"--floor-db = {args.floor_db}: must be > 0 dB")
     try:
         with xr.open_dataset(raw, engine="h5netcdf") as ds:
+            if int(ds.attrs.get("multistatic", 0)):
+                raise ValueError("a multistatic run (several receivers): not implemented "
+                                 "yet here; take one receiver with "
+                                 "seaecho.multistatic.receiver_dataset(ds, name)")
             product = doppler_dataset(ds, cpi=args.cpi, window=args.window,
                                       floor_db=args.floor_db)
     except (OSError, ValueError) as exc:

@@ -76,6 +76,8 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
     timings: dict = {}
     t = time.perf_counter()
     img = image(raw_path, cfg, backend=backend, progress=progress, timings=timings)
+    if "receiver" in img.dims:  # multistatic: each receiver's checked, and the fusion
+        return _multistatic_files(img, out, cfg, timings, t, figures)
     check_image(img, str(raw_path))  # Inf, or NaN at a defined pixel: exit 2, no file
     with quiet_invalid_netcdf():
         write_dataset_atomic(img, out)
@@ -90,6 +92,35 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
         if m:
             text = ", ".join(f"{k} {v:.2f}" for k, v in m.items())
             print(f"  {ch}: {text}")
+    if figures and cfg.figures:
+        for png in draw(img, out.with_suffix("")):
+            wrote.append(png)
+            print(f"wrote {png}")
+    return wrote
+
+
+def _multistatic_files(img, out: Path, cfg, timings: dict, t: float,
+                       figures: bool) -> list[Path]:
+    """Write a multistatic image (every receiver's and their incoherent combination,
+    ``seaecho.multistatic.image_multistatic``), print each receiver's measures."""
+    import time
+
+    from ..api import figures as draw
+    from ..api import image_measures
+    from ..io.dataset import write_dataset_atomic
+    from ..io.run import quiet_invalid_netcdf
+
+    with quiet_invalid_netcdf():
+        write_dataset_atomic(img, out)
+    wrote = [out]
+    ny, nx = img.sizes["y"], img.sizes["x"]
+    print(f"wrote {out} ({img.sizes['receiver']} receivers x {img.sizes['channel']} "
+          f"channels x {ny} x {nx} pixels of {img.attrs['pixel_m']:g} m and their "
+          f"incoherent combination, track {cfg.track}; total "
+          f"{time.perf_counter() - t:.2f} s)")
+    for what, m in image_measures(img).items():
+        if m:
+            print(f"  {what}: " + ", ".join(f"{k} {v:.2f}" for k, v in m.items()))
     if figures and cfg.figures:
         for png in draw(img, out.with_suffix("")):
             wrote.append(png)

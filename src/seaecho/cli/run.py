@@ -122,8 +122,9 @@ def run(args: argparse.Namespace) -> int:
         return 130
     wrote = [out]
     with ds:
-        print(f"wrote {out} ({ds.sizes['pulse']} pulses x {ds.sizes['channel']} channels x "
-              f"{ds.sizes['fast_time']} samples)")
+        many = (f"{ds.sizes['receiver']} receivers x " if "receiver" in ds.dims else "")
+        print(f"wrote {out} ({ds.sizes['pulse']} pulses x {many}{ds.sizes['channel']} "
+              f"channels x {ds.sizes.get('fast_time', ds.sizes.get('sample'))} samples)")
         if "sweep" in ds:  # a scanning radar: its sweeps as CfRadial 2 (docs/scanning.md)
             from ..io.cfradial import write_ppi
 

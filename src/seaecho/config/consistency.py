@@ -89,15 +89,50 @@ def check_ships(scene) -> None:
             o.follow_ship for o in scene.objects):
         raise ValueError("[[objects]] follow_ship = true with a [ship] on waypoints_m: not "
                          "implemented yet (an object follows a straight course only)")
+def check_receivers(scene) -> None:
+    """``[[receivers]]``: not with ``[receiver]``, unique names, each receiver's channels
+    (its own or ``[radar]``'s) ports of its antenna and the transmitter's."""
+    if not scene.receivers:
+        return
+    if scene.receiver is not None:
+        raise ValueError(f"[[receivers]] ({len(scene.receivers)} given) and [receiver]: give "
+                         "one or the other ([receiver] is the one-receiver shorthand)")
+    if scene.scattering.sea_motion == "evolving":
+        raise ValueError("[scattering].sea_motion = 'evolving' with [[receivers]]: not "
+                         "implemented yet (the Bragg lifetimes depend on each pair's Bragg "
+                         "wavenumber); use 'held'")
+    seen: set[str] = set()
+    for i, r in enumerate(scene.receivers):
+        if r.name in seen:
+            raise ValueError(f"[[receivers]] #{i}: name = {short_repr(r.name)} is used by an "
+                             "earlier receiver; names must be unique")
+        seen.add(r.name)
+        if scene.transmitter is None:
+            continue
+        tx = scene.transmitter.antenna.basis
+        allowed = [m + n for m in PORTS[r.antenna.basis] for n in PORTS[tx]]
+        own = r.channels is not None
+        channels = r.channels if own else (scene.radar.channels if scene.radar else ())
+        bad = [c for c in channels if c not in allowed]
+        if bad:
+            where = (f"[[receivers]] #{i} ({r.name}).channels" if own else
+                     f"[radar].channels (receiver #{i}, {r.name})")
+            raise ValueError(
+                f"{where} = {short_repr(channels)}: channel '{short_repr(bad[0])[1:-1]}' is "
+                f"not one of these antennas; a channel is a receive port of the receiver's "
+                f"'{r.antenna.basis}' basis followed by a transmit port of the "
+                f"transmitter's '{tx}' basis: allowed {', '.join(allowed)}")
 
 
 def check_scene(scene) -> None:
     """Every check of this module (called by :class:`~seaecho.config.scene.Scene`)."""
-    check_channels(scene)
+    check_receivers(scene)
+    if not scene.receivers:  # (each receiver's channels checked against its own antenna)
+        check_channels(scene)
     check_objects(scene)
     check_targets(scene)
     check_ships(scene)
 
 
-__all__ = ["allowed_channels", "check_channels", "check_objects", "check_scene",
-           "check_ships", "check_targets"]
+__all__ = ["allowed_channels", "check_channels", "check_objects", "check_receivers",
+           "check_scene", "check_ships", "check_targets"]

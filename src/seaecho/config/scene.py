@@ -6,6 +6,8 @@ Sections (a TOML table each):
 - ``[ship]``     a ship and its wake (:class:`ShipConfig`), optional
 - ``[[ships]]``  several ships (the same keys each, with a ``name``), optional
 - ``[run]``      seed, output, times (:class:`RunConfig`)
+- ``[[receivers]]`` several receivers of one transmitter (:class:`ReceiverConfig`),
+  instead of ``[receiver]``
 
 Sections that later stages add (radar, platforms, tracing, objects, targets) are
 registered here too, each in its own module of this package.
@@ -13,12 +15,13 @@ registered here too, each in its own module of this package.
 
 from __future__ import annotations
 
-from pydantic import Field, model_validator
+from pydantic import Field, model_serializer, model_validator
 
 from .base import Name, Section, Text
 from .image import ImageConfig
 from .propagation import PropagationConfig
 from .radar import PlatformConfig, RadarConfig, TargetConfig
+from .receivers import MAX_RECEIVERS, ReceiverConfig
 from .run import RunConfig
 from .scattering import ScatteringConfig
 from .sea import SeaConfig
@@ -47,6 +50,11 @@ class Scene(Section):
     receiver: PlatformConfig | None = Field(
         None, description="receiving platform and antenna [receiver]; omit for monostatic"
     )
+    receivers: tuple[ReceiverConfig, ...] = Field(
+        (), max_length=MAX_RECEIVERS,
+        description="several receivers of the one transmitter [[receivers]] (multistatic; "
+        "instead of [receiver])",
+    )
     targets: tuple[TargetConfig, ...] = Field(
         (), max_length=10_000, description="point targets [[targets]]"
     )
@@ -67,6 +75,15 @@ class Scene(Section):
         default_factory=PropagationConfig,
         description="the Earth's curvature and refraction [propagation]",
     )
+
+    @model_serializer(mode="wrap")
+    def _without_empty_receivers(self, handler):
+        # A scene without [[receivers]] dumps as before they existed: its files' scene_json
+        # (and so their bytes, and a Zarr run's identity) are unchanged
+        data = handler(self)
+        if not self.receivers and isinstance(data, dict):
+            data.pop("receivers", None)
+        return data
 
     @model_validator(mode="after")
     def _across_sections(self) -> Scene:

@@ -158,6 +158,9 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
     return xr.Dataset(data, coords=coords, attrs=out)
 
 
+#: Dimensions of ``raw`` and ``compressed`` (a multistatic run adds ``receiver``).
+PULSE_DIMS = ("pulse", "channel", "fast_time")
+
 #: Default pulses per block: memory of a block is block x channels x samples x 32 bytes.
 DEFAULT_BLOCK_PULSES = 16
 
@@ -242,8 +245,9 @@ class SerialBlocks:
 
 
 def write_run(path: str | os.PathLike, static: Callable[[], object], *, identity: dict,
-              shape: tuple[int, int, int], block: int, runner, weighting: str = "none",
-              progress: bool = True, resume: bool = False) -> Path:
+              shape: tuple[int, ...], block: int, runner, weighting: str = "none",
+              progress: bool = True, resume: bool = False,
+              dims: tuple[str, ...] = PULSE_DIMS) -> Path:
     """Write a run's dataset: the static part, then every block of pulses.
 
     Parameters
@@ -270,23 +274,26 @@ def write_run(path: str | os.PathLike, static: Callable[[], object], *, identity
         Show a tqdm progress bar over the pulses.
     resume : bool
         Zarr only: continue an interrupted run (:mod:`seaecho.io.zarr_run`).
+    dims : tuple of str
+        Dimensions of ``raw`` and ``compressed``, pulse first (``shape``'s); a
+        multistatic run's are (pulse, receiver, channel, sample).
     """
     from .zarr_run import is_zarr, write_zarr_run
 
     if is_zarr(path):
         return write_zarr_run(path, static, identity=identity, shape=shape, block=block,
                               runner=runner, weighting=weighting, progress=progress,
-                              resume=resume)
+                              resume=resume, dims=dims)
     if resume:
         raise ValueError(f"{path}: --resume needs a Zarr output (*.zarr); a netCDF run "
                          "is written atomically and restarts from the beginning")
     return write_netcdf_run(path, static(), shape=shape, block=block, runner=runner,
-                            weighting=weighting, progress=progress)
+                            weighting=weighting, progress=progress, dims=dims)
 
 
-def write_netcdf_run(path: str | os.PathLike, static, *, shape: tuple[int, int, int],
+def write_netcdf_run(path: str | os.PathLike, static, *, shape: tuple[int, ...],
                      block: int, runner, weighting: str = "none",
-                     progress: bool = True) -> Path:
+                     progress: bool = True, dims: tuple[str, ...] = PULSE_DIMS) -> Path:
     """Write the static dataset, then every block of pulses in order, atomically.
 
     Memory: the runner's blocks in flight (one for :class:`SerialBlocks`). The file's
@@ -299,20 +306,19 @@ def write_netcdf_run(path: str | os.PathLike, static, *, shape: tuple[int, int, 
         Output netCDF file.
     static : xarray.Dataset
         :func:`run_dataset`.
-    shape, block, runner, weighting, progress
+    shape, block, runner, weighting, progress, dims
         As :func:`write_run`.
     """
     import h5netcdf
 
     from .dataset import atomic_path
 
-    n_pulses, n_channels, n_samples = shape
+    n_pulses = shape[0]
     with atomic_path(path) as tmp, quiet_invalid_netcdf():
         static.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=True)
         with h5netcdf.File(tmp, "a", invalid_netcdf=True) as f:
-            raw_v, rc_v = (f.create_variable(name, ("pulse", "channel", "fast_time"),
-                                             dtype=np.complex128,
-                                             chunks=(1, n_channels, n_samples))
+            raw_v, rc_v = (f.create_variable(name, dims, dtype=np.complex128,
+                                             chunks=(1, *shape[1:]))
                            for name in ("raw", "compressed"))
             raw_v.attrs.update(RAW_ATTRS)
             rc_v.attrs.update(COMPRESSED_ATTRS, weighting=weighting)
@@ -323,8 +329,9 @@ def write_netcdf_run(path: str | os.PathLike, static, *, shape: tuple[int, int, 
     return Path(path)
 
 
-def run_in_memory(static, *, shape: tuple[int, int, int], block: int, runner,
-                  weighting: str = "none", progress: bool = True):
+def run_in_memory(static, *, shape: tuple[int, ...], block: int, runner,
+                  weighting: str = "none", progress: bool = True,
+                  dims: tuple[str, ...] = PULSE_DIMS):
     """The dataset that :func:`write_netcdf_run` writes, held in memory: the same blocks
     from the same runner, so the same values bit for bit.
 
@@ -335,7 +342,7 @@ def run_in_memory(static, *, shape: tuple[int, int, int], block: int, runner,
     ----------
     static : xarray.Dataset
         :func:`run_dataset`.
-    shape, block, runner, weighting, progress
+    shape, block, runner, weighting, progress, dims
         As :func:`write_run`.
 
     Returns
@@ -348,7 +355,6 @@ def run_in_memory(static, *, shape: tuple[int, int, int], block: int, runner,
     for a, b, raw, compressed in in_order(shape[0], block, runner, progress):
         raw_a[a:b] = raw
         rc_a[a:b] = compressed
-    dims = ("pulse", "channel", "fast_time")
     ds = static.copy()
     ds["raw"] = (dims, raw_a, dict(RAW_ATTRS))
     ds["compressed"] = (dims, rc_a, dict(COMPRESSED_ATTRS, weighting=weighting))
@@ -381,6 +387,6 @@ def quiet_invalid_netcdf():
         yield
 
 
-__all__ = ["COMPRESSED_ATTRS", "DEFAULT_BLOCK_PULSES", "RAW_ATTRS", "SerialBlocks",
+__all__ = ["COMPRESSED_ATTRS", "DEFAULT_BLOCK_PULSES", "PULSE_DIMS", "RAW_ATTRS", "SerialBlocks",
            "block_size", "blocks_of", "in_order", "quiet_invalid_netcdf", "run_dataset",
            "run_in_memory", "write_netcdf_run", "write_run"]

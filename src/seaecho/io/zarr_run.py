@@ -202,10 +202,11 @@ def completed_blocks(part: str | os.PathLike, blocks: list[tuple[int, int]]) -> 
     return done
 
 
-def create_store(part: Path, static, identity: dict, shape: tuple[int, int, int],
-                 block: int, weighting: str) -> None:
+def create_store(part: Path, static, identity: dict, shape: tuple[int, ...],
+                 block: int, weighting: str,
+                 dims: tuple[str, ...] = ("pulse", "channel", "fast_time")) -> None:
     """Create the run ``part``: the static variables, the empty ``raw`` and
-    ``compressed`` arrays, then ``run.json``."""
+    ``compressed`` arrays (dimensions ``dims``, pulse first), then ``run.json``."""
     import zarr
 
     from .run import COMPRESSED_ATTRS, RAW_ATTRS
@@ -217,12 +218,11 @@ def create_store(part: Path, static, identity: dict, shape: tuple[int, int, int]
             ds[name] = var.astype(object)
     ds.to_zarr(part / DATA, mode="w-", zarr_format=3, consolidated=False)
     group = zarr.open_group(part / DATA, mode="r+", zarr_format=3)
-    n_pulses, n_channels, n_samples = shape
     for name, attrs in (("raw", RAW_ATTRS),
                         ("compressed", dict(COMPRESSED_ATTRS, weighting=weighting))):
-        group.create_array(name, shape=shape, chunks=(block, n_channels, n_samples),
+        group.create_array(name, shape=shape, chunks=(block, *shape[1:]),
                            dtype=np.complex128, fill_value=0j, attributes=attrs,
-                           dimension_names=("pulse", "channel", "fast_time"))
+                           dimension_names=tuple(dims))
     _write_json_atomic(part / MANIFEST, manifest(identity, shape, block))
 
 
@@ -249,9 +249,10 @@ def open_run(path: str | os.PathLike):
 
 
 def write_zarr_run(path: str | os.PathLike, static: Callable[[], object], *,
-                   identity: dict, shape: tuple[int, int, int], block: int, runner,
+                   identity: dict, shape: tuple[int, ...], block: int, runner,
                    weighting: str = "none", progress: bool = True,
-                   resume: bool = False) -> Path:
+                   resume: bool = False,
+                   dims: tuple[str, ...] = ("pulse", "channel", "fast_time")) -> Path:
     """Write (or continue) a run's Zarr store (module docstring).
 
     Parameters as :func:`seaecho.io.run.write_run`. With ``resume``, an incomplete run
@@ -298,7 +299,7 @@ def write_zarr_run(path: str | os.PathLike, static: Callable[[], object], *,
     else:
         blocks = blocks_of(shape[0], block)
         try:
-            create_store(part, static(), identity, shape, block, weighting)
+            create_store(part, static(), identity, shape, block, weighting, dims)
         except BaseException:
             shutil.rmtree(part, ignore_errors=True)  # nothing worth resuming yet
             raise

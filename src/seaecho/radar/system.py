@@ -217,6 +217,12 @@ class RadarSystem:
         at every target, at the first and last pulse; the window adds ``margin_m``
         (default: 5 % of the tile diagonal + 4 range resolutions + 5 m) on both sides.
         """
+        start, end = self.auto_window_m(margin_m)
+        return ReceiveWindow.from_ranges(start, end, self.model.sampling_rate,
+                                         self.waveform.duration)
+
+    def auto_window_m(self, margin_m: float | None = None) -> tuple[float, float]:
+        """Ranges (start, end) c tau / 2 [m] of :meth:`auto_window`."""
         m = self.model
         lx, ly = m.tile_size if m.tile_size is not None else (0.0, 0.0)
         clutter = m.sea_clutter and m.tile_size is not None
@@ -241,8 +247,7 @@ class RadarSystem:
         if margin_m is None:
             margin_m = (0.05 * np.hypot(lx, ly) * clutter
                         + 4 * C0 / (2 * self.waveform.bandwidth) + 5.0)
-        return ReceiveWindow.from_ranges(max(r.min() - margin_m, 0.0), r.max() + margin_m,
-                                         m.sampling_rate, self.waveform.duration)
+        return float(max(r.min() - margin_m, 0.0)), float(r.max() + margin_m)
 
     # ------------------------------------------------------------------ scatterers
     def scatterer_echo(self, geometry: PulseGeometry, positions: ArrayLike,

@@ -115,6 +115,20 @@ class FacetEngine:
         self.eps_r = eps_r
         self.frequency_hz = frequency_hz
         self.subfacet = subfacet
+        self._lead: FacetEngine | None = None
+
+    def share_transmitter(self, lead: FacetEngine) -> None:
+        """Take the tracer (the sea's BVH), the facet geometry and the transmitter's
+        occlusion from ``lead``, an engine of the same surface provider, transmitter,
+        objects and refresh interval with another receiver (several receivers of one
+        transmitter, docs/multistatic.md): :meth:`occlusion` then traces only this
+        engine's receiver. The masks are those ``lead`` traces, so the facets are the same
+        as this engine's alone.
+        """
+        if lead is self or lead.refresh_interval_s != self.refresh_interval_s:
+            raise ValueError("share_transmitter needs another engine of the same refresh "
+                             "interval")
+        self._lead = lead
 
     @classmethod
     def from_model(cls, model, surface: Callable[[float], object],
@@ -148,6 +162,8 @@ class FacetEngine:
         return self._get_tracer(None)
 
     def _get_tracer(self, st):
+        if self._lead is not None:
+            return self._lead._get_tracer(st)
         if self._tracer is None:
             from .tracer import FacetTracer
 
@@ -163,9 +179,14 @@ class FacetEngine:
 
         Memoised on the state object: a surface held over several pulses (the same
         :class:`~seaecho.sea.SurfaceState`) is meshed once. The arrays are read-only, as
-        they are shared by the facets of those pulses.
+        they are shared by the facets of those pulses (and by the engines that share
+        this one's transmitter, :meth:`share_transmitter`).
         """
-        if self._geometry is None or self._geometry[0] is not state:
+        if self._lead is not None:
+            return self._lead.geometry(state)
+        held = self._geometry[0] if self._geometry is not None else None
+        if held is None or not (held is state or (held.elevation is state.elevation
+                                                  and held.velocity is state.velocity)):
             centroid, area, normal = facet_geometry(grid_vertices(state.x, state.y,
                                                                   state.elevation))
             velocity = to_facets(np.asarray(state.velocity, dtype=np.float64))
@@ -213,7 +234,12 @@ class FacetEngine:
             else:
                 c_ref, _, n_ref = facet_geometry(grid_vertices(st_ref.x, st_ref.y,
                                                                st_ref.elevation))
-            occ_tx = tracer.occluded(c_ref, n_ref, tx_ref, device=True)
+            if self._lead is None:
+                occ_tx = tracer.occluded(c_ref, n_ref, tx_ref, device=True)
+            else:  # the transmitter's leg, traced once for every receiver
+                occ_tx = self._lead.occlusion(t, st)[1]
+                tracer.set_surface(st_ref.elevation)  # (memoised: the lead's surface)
+                tracer.set_time(t_ref)
             occ_rx = occ_tx if np.array_equal(tx_ref, rx_ref) else tracer.occluded(
                 c_ref, n_ref, rx_ref, device=True)
             self._cache = (t_ref, occ_tx, occ_rx)
