@@ -482,6 +482,7 @@ def _platforms(scene, receiver_stream: int = 1) -> tuple[Platform, Platform]:
     tx = _platform(scene.transmitter, seed, 0, t_span, earth)
     if scene.receiver is None:
         return tx, tx
+    return tx, _platform(scene.receiver, seed, receiver_stream, t_span, earth)
 
 
 def dwell_pulses(scene) -> int:
@@ -490,7 +491,6 @@ def dwell_pulses(scene) -> int:
     decides what a dwell is (a scanning antenna would take its scan period here)."""
     r = scene.radar
     return int(r.cpi_pulses) if r.cpi_pulses is not None else int(r.n_pulses)
-    return tx, _platform(scene.receiver, seed, receiver_stream, t_span, earth)
 
 
 def _targets(scene) -> TargetSet | None:
@@ -854,9 +854,10 @@ def build_multistatic(scene, base_dir: str | os.PathLike = ".") -> MultistaticMo
         sub = receiver_scene(scene, i)
         radar = build_radar(sub, receiver_stream=1 + i)
         sea = first.sea
-        if sea is not None and sea.ship is not None:  # its wake film at its Bragg k
+        if sea is not None and sea.ships:  # the wakes' film damping at its Bragg k
             sea = copy.copy(sea)
-            sea.ship = _ship(sub)
+            sea.ships = build_ships(sub)
+            sea.ship = sea.ships[0]
         models.append(dataclasses.replace(first, radar=radar, sea=sea))
     return MultistaticModels(receivers=tuple(models),
                              names=tuple(r.name for r in scene.receivers), attrs=attrs)
