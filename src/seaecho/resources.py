@@ -273,13 +273,17 @@ def window_size(scene) -> tuple[int, int, int]:
         points = tile_outline(lx, ly)
         rx_cfg = scene.receiver or scene.transmitter
         slack = 0.5 * (perturbation_bound(scene.transmitter) + perturbation_bound(rx_cfg))
+        from .build import build_earth
+
+        earth = build_earth(scene)  # a spherical Earth: platforms and targets on it
+        on_earth = (lambda q: q) if earth is None else earth.position
         ranges = []
         for pulse in (0, r.n_pulses - 1):
             t = r.start_time_s + pulse / r.prf_hz
-            pt = _nominal_position(scene.transmitter, t)
-            pr = _nominal_position(rx_cfg, t)
+            pt = on_earth(_nominal_position(scene.transmitter, t))
+            pr = on_earth(_nominal_position(rx_cfg, t))
             pts = [points] if r.sea_clutter else []
-            pts += [np.array(g.position_m) + t * np.array(g.velocity_m_s)
+            pts += [on_earth(np.array(g.position_m) + t * np.array(g.velocity_m_s))
                     for g in scene.targets]
             if not pts:
                 continue
