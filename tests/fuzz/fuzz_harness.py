@@ -8,6 +8,7 @@ import io
 import os
 import tempfile
 import warnings
+from unittest import mock
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -20,6 +21,10 @@ from seaecho.config.toml_writer import dumps
 EXAMPLES = int(os.environ.get("SEAECHO_FUZZ_EXAMPLES", "0")) or None
 #: Memory limit given to every fuzzed command [GB]: large scenes are refused quickly.
 MAX_MEMORY_GB = "2"
+#: The machine's available memory as the fuzzed commands see it [bytes]: fixed above
+#: MAX_MEMORY_GB, so that the limit is MAX_MEMORY_GB whatever else runs on the machine
+#: (a limit that followed MemAvailable made a scene's verdict depend on the load).
+FIXED_AVAILABLE_BYTES = 64e9
 
 
 def examples(default: int) -> int:
@@ -53,8 +58,10 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
             args += ["-o", str(out_nc), "-q"]
         args += list(extra)
         o, e = io.StringIO(), io.StringIO()
+        fixed = (FIXED_AVAILABLE_BYTES, "available memory (fixed by the fuzzing suite)")
         with (contextlib.redirect_stdout(o), contextlib.redirect_stderr(e),
-              warnings.catch_warnings()):
+              warnings.catch_warnings(),
+              mock.patch("seaecho.resources.available_memory", lambda: fixed)):
             warnings.simplefilter("always")  # printed as the console script does
             rc = main(args)
         finite = None
