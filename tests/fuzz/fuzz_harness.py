@@ -8,9 +8,9 @@ import io
 import os
 import tempfile
 import warnings
-from unittest import mock
 from dataclasses import dataclass
 from pathlib import Path
+from unittest import mock
 
 import numpy as np
 

@@ -173,7 +173,6 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"-o {out}: exists and is not a folder")
 
     from .. import distributed
-
     from ..config import SceneError
 
     scene = load_scene(args.scene)
