@@ -43,6 +43,10 @@ everything ``run`` would):
 
 - **Something to receive**: sea clutter on, a target, or an explicit receive window.
 
+- **The output** `seaecho run` would write (``[run] output``, or ``-o``): its folder
+  exists; a Zarr store (``*.zarr``) only without ``[image]`` (the focusing reads a
+  netCDF run).
+
 "The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
 polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona, NY,
 USA, 2006, doi:10.1109/RADAR.2006.1631862.
@@ -497,6 +501,33 @@ def receive_problems(scene) -> list[str]:
             "turn sea_clutter on, add a target, or give window_start_m / window_end_m"]
 
 
+def output_problems(scene, output, field: str = "[run].output") -> list[str]:
+    """The output file ``output`` of `seaecho run` that it cannot write: a folder that
+    does not exist (relative to the working directory, as the run resolves it), or a Zarr
+    store for a scene with ``[image]``. ``field`` names where the path came from."""
+    from .io.zarr_run import is_zarr
+
+    path = Path(output)
+    out = []
+    folder = path.parent
+    if str(folder) and not folder.is_dir():
+        out.append(f"{field} = {short_repr(str(output))}: the folder {folder} does not exist "
+                   f"(relative to the working directory {Path.cwd()}); create it or name "
+                   "another output")
+    if is_zarr(path) and scene.image is not None:
+        out.append(f"{field} = {short_repr(str(output))}: a Zarr store, and the scene has "
+                   "[image]: focusing reads a netCDF run; write the run to a .nc file")
+    return out
+
+
+def default_output(scene, scene_file) -> tuple[Path, str]:
+    """(path, field) of the file `seaecho run SCENE` writes without ``-o``: ``[run]
+    output``, else ``SCENE``'s stem with ``.nc`` in the working directory."""
+    if scene.run.output:
+        return Path(scene.run.output), "[run].output"
+    return Path(Path(scene_file).stem + ".nc"), "the default output"
+
+
 def run_problems(scene, base_dir=".") -> list[str]:
     """Every problem of this module for a scene that has [radar] and [transmitter]."""
     return (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
@@ -505,7 +536,8 @@ def run_problems(scene, base_dir=".") -> list[str]:
 
 def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = None,
               figures: bool = True, workers: int | None = None,
-              block: int | None = None) -> str:
+              block: int | None = None, output=None,
+              output_field: str = "[run].output") -> str:
     """Refuse a scene `seaecho run` cannot simulate; return its resource estimate.
 
     The cheap checks and the memory estimate (``seaecho.resources``) come first, so that
@@ -526,6 +558,9 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
         The run draws figures.
     workers, block : int, optional
         ``--workers`` (a local cluster of that many processes) and ``--block-pulses``.
+    output : path, optional
+        The file the run writes (:func:`output_problems`), named ``output_field`` in the
+        messages; None: not checked (a sweep writes its own files).
 
     Returns
     -------
@@ -537,6 +572,8 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
 
     problems = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
                 + object_problems(scene, base_dir))
+    if output is not None:
+        problems += output_problems(scene, output, output_field)
     try:
         _, line = check_memory(scene, source, max_memory_gb, figures, workers=workers,
                                block=block, base_dir=base_dir)
@@ -565,6 +602,8 @@ __all__ = [
     "min_height",
     "nominal_segments",
     "object_problems",
+    "output_problems",
+    "default_output",
     "receive_problems",
     "run_problems",
     "two_scale_problems",

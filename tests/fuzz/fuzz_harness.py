@@ -55,12 +55,13 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
         args = [command, str(scene), "--max-memory-gb", MAX_MEMORY_GB, "--no-figures"]
         out_nc = folder / "out.nc"
         if command == "run":  # check estimates the same run: without figures
-            args += ["-o", str(out_nc), "-q"]
+            # a scene's own [run] output is kept (check checks it), in the folder
+            args += ([] if _has_output(text) else ["-o", str(out_nc)]) + ["-q"]
         args += list(extra)
         o, e = io.StringIO(), io.StringIO()
         fixed = (FIXED_AVAILABLE_BYTES, "available memory (fixed by the fuzzing suite)")
         with (contextlib.redirect_stdout(o), contextlib.redirect_stderr(e),
-              warnings.catch_warnings(),
+              warnings.catch_warnings(), contextlib.chdir(folder),
               mock.patch("seaecho.resources.available_memory", lambda: fixed)):
             warnings.simplefilter("always")  # printed as the console script does
             rc = main(args)
@@ -81,6 +82,17 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
                 finite = bool(finite) and not image_problems(ds.load())
         files = sorted(p.name for p in folder.iterdir() if p.name != "scene.toml")
         return Outcome(rc, o.getvalue(), e.getvalue(), files, finite)
+
+
+def _has_output(text: str) -> bool:
+    """The scene gives ``[run] output`` (then `run` writes there, relative to its folder)."""
+    import tomllib
+
+    try:
+        run = tomllib.loads(text).get("run")
+    except (tomllib.TOMLDecodeError, RecursionError):
+        return False
+    return isinstance(run, dict) and "output" in run
 
 
 def assert_clean(outcome: Outcome, what: str = "") -> None:

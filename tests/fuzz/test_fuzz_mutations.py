@@ -78,6 +78,35 @@ def _calibration(**radar) -> dict:
 # demanded that run accept it)
 @example(m=Mutation("value", _calibration(window_start_m=0.0, window_end_m=3.0e7), None, ()))
 def test_run_of_a_mutated_scene_agrees_with_check(m):
+    _check_then_run(m)
+
+
+def _with(data: dict, **sections) -> dict:
+    """``data`` with top-level sections added or updated."""
+    for name, fields in sections.items():
+        data.setdefault(name, {}).update(fields)
+    return data
+
+
+#: Found by a random hunt of ``radar`` mutations (``SEAECHO_FUZZ_RANDOM=1``): scenes
+#: `check` accepted and `run` refused, through ``[run] output``: a folder that does not
+#: exist, and a Zarr store with ``[image]`` (the preflight checks the output now).
+IMAGE = {"pixel_m": 0.5, "extent_m": [-4.0, 4.0, -4.0, 4.0], "figures": False}
+
+
+@settings(max_examples=examples(4), deadline=None, suppress_health_check=SLOW)
+@given(m=mutations(scenes(), kinds=("radar",)))
+@example(m=Mutation("radar", _with(_calibration(), run={"output": "no_such_folder/r.nc"}),
+                    None, ("[run].output",)))
+@example(m=Mutation("radar", _with(_calibration(), run={"output": "r.zarr"}, image=IMAGE),
+                    None, ("[run].output",)))
+def test_check_accepts_only_what_run_runs(m):
+    """Radar-side values that stress the models (``radar`` mutations): whatever `check`
+    accepts, `run` runs to finite data, and what check refuses, run refuses."""
+    _check_then_run(m)
+
+
+def _check_then_run(m):
     text = _text(m)
     note(f"{m.kind} mutation, names {m.names}\n{text[:3000]}")
     checked = run_cli("check", text)

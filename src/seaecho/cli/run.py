@@ -75,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
     from ..config import SceneError
     from ..guards import NonFiniteEchoError
     from ..io.zarr_run import StoreError, is_zarr, part_path
-    from ..preflight import check_run
+    from ..preflight import check_run, default_output
     from . import UsageError
 
     scene = load_scene(args.scene)
@@ -89,9 +89,7 @@ def run(args: argparse.Namespace) -> int:
     else:
         out = Path(Path(args.scene).stem + ".nc")
     zarr_out = is_zarr(out)
-    if zarr_out and scene.image is not None:
-        raise UsageError(f"{args.scene} has [image]: focusing reads a netCDF run; write "
-                         "the run to a .nc file")
+    # (a Zarr output with [image], a folder that does not exist: the preflight below)
     if args.workers is not None and args.workers < 1:
         raise UsageError(f"--workers {args.workers}: must be >= 1")
     if args.block_pulses is not None and args.block_pulses < 1:
@@ -102,7 +100,8 @@ def run(args: argparse.Namespace) -> int:
     checked = scene if args.pulses is None else first_pulses(scene, args.pulses)
     print(check_run(checked, args.scene, base_dir=Path(args.scene).parent,
                     max_memory_gb=args.max_memory_gb, figures=not args.no_figures,
-                    workers=args.workers, block=args.block_pulses))
+                    workers=args.workers, block=args.block_pulses, output=out,
+                    output_field="-o" if args.output else default_output(scene, args.scene)[1]))
     try:  # the Python API's run: same checks, same bytes (seaecho.simulate)
         with _cache_disabled(args.no_cache):
             ds = simulate(scene, path=out, pulses=args.pulses, progress=not args.quiet,
