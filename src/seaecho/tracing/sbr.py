@@ -143,11 +143,13 @@ _REVERSE_PATH = np.array([0, 2, 1, 3], dtype=np.int64)
 #: Vacuum permittivity [F/m] (eps0 = 1 / (mu0 c^2), CODATA 2018 mu0).
 _EPS0 = 1.0 / (1.25663706212e-6 * C0**2)
 #: Worker threads of a trace (batches of rays in parallel; the result does not depend
-#: on it). One by default: with several, a scene of the fuzzing suite aborted the process
-#: inside Mitsuba's ray intersection on a worker thread (Dr.Jit LLVM), so threads are
-#: opt-in through the environment variable ``SEAECHO_SBR_THREADS``. (An intersection of
-#: empty arrays, now never made, aborted it on the main thread too; that it was the
-#: worker threads' abort is likely, not verified.)
+#: on it), opt-in through the environment variable ``SEAECHO_SBR_THREADS``. A scene of the
+#: fuzzing suite once aborted the process inside Mitsuba's ray intersection on a worker
+#: thread: an intersection of empty arrays (a batch with no ray left), which
+#: :func:`_intersect` no longer makes; without that guard the abort is reproduced on a
+#: worker thread ("jit_var(r0): unknown variable!", docs/checks.md). One thread stays the
+#: default because the memory estimate (``seaecho.resources``) counts one batch of rays
+#: in flight, and N threads hold N + 1.
 THREADS = max(1, int(os.environ.get("SEAECHO_SBR_THREADS", 1)))
 
 
