@@ -39,7 +39,7 @@ def _names_the_field(m, err: str) -> bool:
 
 @pytest.mark.parametrize("kind", KINDS)
 def test_check_of_a_mutated_scene_is_clean(kind):
-    @settings(max_examples=examples(20), deadline=None, suppress_health_check=SLOW)
+    @settings(max_examples=examples(10), deadline=None, suppress_health_check=SLOW)
     @given(m=mutations(st.one_of(scenes(runnable=False), scenes()), kinds=(kind,)))
     def check(m):
         _check_is_clean(m)
