@@ -32,6 +32,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+from _smoke import GRID, add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 SIM1 = ROOT / "scenes" / "paper_sim1_bistatic_64m.toml"
@@ -131,7 +132,12 @@ def main() -> None:
                     help="geometry update interval of the evolving sea [pulses]")
     ap.add_argument("--kernel-facets", type=int, default=522_242,
                     help="facets of the kernel-alone benchmark [0] (0: skip it)")
+    add_option(ap)
     a = ap.parse_args()
+    if a.smoke:  # Simulation 1 on a small grid with a coarse hull trace, one pulse
+        global SIM1
+        SIM1 = small_scene(SIM1, pulses=10**6)
+        a.grid, a.pulses, a.update, a.kernel_facets = GRID, 1, 1, 2048
     if a.kernel_facets:
         bench_kernel(a.kernel_facets, 5)
     g = a.grid or 648
