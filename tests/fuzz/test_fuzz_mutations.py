@@ -88,9 +88,10 @@ def _with(data: dict, **sections) -> dict:
     return data
 
 
-#: Found by a random hunt of ``radar`` mutations (``SEAECHO_FUZZ_RANDOM=1``): scenes
-#: `check` accepted and `run` refused, through ``[run] output``: a folder that does not
-#: exist, and a Zarr store with ``[image]`` (the preflight checks the output now).
+#: Scenes `check` accepted and `run` refused, through ``[run] output`` (found by reading
+#: what `run` refuses; the hunts' scenes never set it, the ``radar`` mutation does now): a
+#: folder that does not exist, and a Zarr store with ``[image]`` (the preflight checks
+#: the output now).
 IMAGE = {"pixel_m": 0.5, "extent_m": [-4.0, 4.0, -4.0, 4.0], "figures": False}
 
 
