@@ -43,6 +43,11 @@ everything ``run`` would):
 
 - **Something to receive**: sea clutter on, a target, or an explicit receive window.
 
+- **The hulls' traces** (``[[objects]]`` with ``scatterer = true``): at every pulse where
+  the run traces a hull's signature (its refresh schedule), each antenna is outside the
+  sphere the rays are launched from (1.05 times the hull's bounding radius about its
+  centre, ``seaecho.tracing.sbr.bounding_sphere``), which the tracer requires.
+
 - **The output** `seaecho run` would write (``[run] output``, or ``-o``): its folder
   exists; a Zarr store (``*.zarr``) only without ``[image]`` (the focusing reads a
   netCDF run).
@@ -400,6 +405,45 @@ def _material_problems(i: int, obj, shapes, frequency: float) -> list[str]:
     return []
 
 
+def hull_problems(scene, base_dir=".") -> list[str]:
+    """An antenna inside a scatterer hull's launch sphere at a pulse where the run traces
+    the hull (module docstring): the run's own hull echoes and schedule
+    (:meth:`seaecho.tracing.hull_echo.HullEchoes.from_model`) on the run's radar, the
+    tracer's sphere (:func:`seaecho.tracing.sbr.bounding_sphere`)."""
+    if not any(o.scatterer for o in scene.objects):
+        return []
+    import warnings
+
+    from .build import build_hulls, build_radar
+    from .radar.system import RadarSystem
+    from .tracing.hull_echo import HullEchoes
+    from .tracing.sbr import BOUNDING_MARGIN, bounding_sphere
+
+    with warnings.catch_warnings():  # (the window's warning is the run's to give)
+        warnings.simplefilter("ignore")
+        radar = RadarSystem(build_radar(scene))
+        hulls = HullEchoes.from_model(build_hulls(scene, base_dir=base_dir), radar)
+    out = []
+    for h in hulls.hulls if hulls is not None else ():
+        for p in h.schedule:
+            geo = radar.geometry(int(p))
+            centre, radius = bounding_sphere(h.mesh(geo.time).vertices)
+            antennas = [("transmitter", geo.tx)] + ([("receiver", geo.rx)]
+                                                    if scene.receiver is not None else [])
+            for name, state in antennas:
+                d = float(np.linalg.norm(state.position - centre))
+                if d < BOUNDING_MARGIN * radius:
+                    out.append(f"[{name}].position_m: the {name}'s antenna is {d:.3g} m "
+                               f"from the centre of [[objects]] '{h.name}' (scatterer) at "
+                               f"pulse {int(p)} (t = {geo.time:.6g} s), where the run traces "
+                               f"it; the ray tracer launches its rays from a sphere of "
+                               f"{BOUNDING_MARGIN:g} x its bounding radius "
+                               f"{radius:.3g} m and needs the antenna outside: move the "
+                               "antenna or the object")
+                    return out
+    return out
+
+
 #: Largest noise-equivalent RCS [m^2] an ``[image]`` may have at its best pixel: its
 #: noise pixels (Rayleigh, up to ~20 times their mean over 4096^2 pixels), over areas
 #: down to 1e-4 m^2, stay below float32's 3.4e38 (the image file's precision).
@@ -530,8 +574,9 @@ def default_output(scene, scene_file) -> tuple[Path, str]:
 
 def run_problems(scene, base_dir=".") -> list[str]:
     """Every problem of this module for a scene that has [radar] and [transmitter]."""
-    return (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
-            + object_problems(scene, base_dir) + geometry_problems(scene))
+    out = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
+           + object_problems(scene, base_dir))
+    return out + (hull_problems(scene, base_dir) if not out else []) + geometry_problems(scene)
 
 
 def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = None,
@@ -572,6 +617,8 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
 
     problems = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
                 + object_problems(scene, base_dir))
+    if not problems:  # (needs the objects' files and the radar's values)
+        problems += hull_problems(scene, base_dir)
     if output is not None:
         problems += output_problems(scene, output, output_field)
     try:
@@ -602,6 +649,7 @@ __all__ = [
     "min_height",
     "nominal_segments",
     "object_problems",
+    "hull_problems",
     "output_problems",
     "default_output",
     "receive_problems",

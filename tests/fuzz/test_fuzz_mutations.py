@@ -88,6 +88,20 @@ def _with(data: dict, **sections) -> dict:
     return data
 
 
+def _trihedral_with_transmitter_at(position_m: list[float]) -> dict:
+    """The trihedral calibration scene, its mesh found from anywhere, its transmitter at
+    ``position_m`` (looking up): inside the hull's launch sphere at the object's origin,
+    a scene `check` accepted and whose `run` stopped with a traceback in the tracer."""
+    import tomllib
+
+    tri = CAL.with_name("calibration_trihedral.toml")
+    data = tomllib.loads(tri.read_text())
+    data["objects"][0]["file"] = str(tri.parent / data["objects"][0]["file"])
+    data["transmitter"]["position_m"] = position_m
+    data["transmitter"]["antenna"]["look_at_m"] = [0.0, 0.0, 20.0]
+    return data
+
+
 #: Scenes `check` accepted and `run` refused, through ``[run] output`` (found by reading
 #: what `run` refuses; the hunts' scenes never set it, the ``radar`` mutation does now): a
 #: folder that does not exist, and a Zarr store with ``[image]`` (the preflight checks
@@ -101,6 +115,8 @@ IMAGE = {"pixel_m": 0.5, "extent_m": [-4.0, 4.0, -4.0, 4.0], "figures": False}
                     None, ("[run].output",)))
 @example(m=Mutation("radar", _with(_calibration(), run={"output": "r.zarr"}, image=IMAGE),
                     None, ("[run].output",)))
+@example(m=Mutation("radar", _trihedral_with_transmitter_at([0.0, 0.0, 2.0]), None,
+                    ("[transmitter].position_m",)))
 def test_check_accepts_only_what_run_runs(m):
     """Radar-side values that stress the models (``radar`` mutations): whatever `check`
     accepts, `run` runs to finite data, and what check refuses, run refuses."""
