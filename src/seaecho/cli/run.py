@@ -82,12 +82,8 @@ def run(args: argparse.Namespace) -> int:
     if scene.radar is None or scene.transmitter is None:
         raise SceneError(f"{args.scene}: `seaecho run` needs [radar] and [transmitter] "
                          "sections")
-    if args.output:
-        out = Path(args.output)
-    elif scene.run.output:
-        out = Path(scene.run.output)
-    else:
-        out = Path(Path(args.scene).stem + ".nc")
+    out, out_field = ((Path(args.output), "-o") if args.output
+                      else default_output(scene, args.scene))  # [run] output, or SCENE.nc
     zarr_out = is_zarr(out)
     # (a Zarr output with [image], a folder that does not exist: the preflight below)
     if args.workers is not None and args.workers < 1:
@@ -101,7 +97,7 @@ def run(args: argparse.Namespace) -> int:
     print(check_run(checked, args.scene, base_dir=Path(args.scene).parent,
                     max_memory_gb=args.max_memory_gb, figures=not args.no_figures,
                     workers=args.workers, block=args.block_pulses, output=out,
-                    output_field="-o" if args.output else default_output(scene, args.scene)[1]))
+                    output_field=out_field))
     try:  # the Python API's run: same checks, same bytes (seaecho.simulate)
         with _cache_disabled(args.no_cache):
             ds = simulate(scene, path=out, pulses=args.pulses, progress=not args.quiet,
