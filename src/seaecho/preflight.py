@@ -49,8 +49,8 @@ everything ``run`` would):
   centre, ``seaecho.tracing.sbr.bounding_sphere``), which the tracer requires.
 
 - **The output** `seaecho run` would write (``[run] output``, or ``-o``): its folder
-  exists; a Zarr store (``*.zarr``) only without ``[image]`` (the focusing reads a
-  netCDF run).
+  exists, the output is not a folder (a netCDF file is renamed onto it); a Zarr store
+  (``*.zarr``) only without ``[image]`` (the focusing reads a netCDF run).
 
 "The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
 polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona, NY,
@@ -547,8 +547,9 @@ def receive_problems(scene) -> list[str]:
 
 def output_problems(scene, output, field: str = "[run].output") -> list[str]:
     """The output file ``output`` of `seaecho run` that it cannot write: a folder that
-    does not exist (relative to the working directory, as the run resolves it), or a Zarr
-    store for a scene with ``[image]``. ``field`` names where the path came from."""
+    does not exist (relative to the working directory, as the run resolves it), an
+    existing folder where a netCDF file goes, or a Zarr store for a scene with
+    ``[image]``. ``field`` names where the path came from."""
     from .io.zarr_run import is_zarr
 
     path = Path(output)
@@ -558,6 +559,9 @@ def output_problems(scene, output, field: str = "[run].output") -> list[str]:
         out.append(f"{field} = {short_repr(str(output))}: the folder {folder} does not exist "
                    f"(relative to the working directory {Path.cwd()}); create it or name "
                    "another output")
+    if path.is_dir() and not is_zarr(path):  # a netCDF file is renamed onto it
+        out.append(f"{field} = {short_repr(str(output))}: an existing folder, not a file; "
+                   "name the file to write (e.g. run.nc)")
     if is_zarr(path) and scene.image is not None:
         out.append(f"{field} = {short_repr(str(output))}: a Zarr store, and the scene has "
                    "[image]: focusing reads a netCDF run; write the run to a .nc file")

@@ -115,6 +115,8 @@ IMAGE = {"pixel_m": 0.5, "extent_m": [-4.0, 4.0, -4.0, 4.0], "figures": False}
                     None, ("[run].output",)))
 @example(m=Mutation("radar", _with(_calibration(), run={"output": "r.zarr"}, image=IMAGE),
                     None, ("[run].output",)))
+@example(m=Mutation("radar", _with(_calibration(), run={"output": "."}), None,
+                    ("[run].output",)))
 @example(m=Mutation("radar", _trihedral_with_transmitter_at([0.0, 0.0, 2.0]), None,
                     ("[transmitter].position_m",)))
 def test_check_accepts_only_what_run_runs(m):
