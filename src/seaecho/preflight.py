@@ -562,10 +562,20 @@ def output_problems(scene, output, field: str = "[run].output") -> list[str]:
     if path.is_dir() and not is_zarr(path):  # a netCDF file is renamed onto it
         out.append(f"{field} = {short_repr(str(output))}: an existing folder, not a file; "
                    "name the file to write (e.g. run.nc)")
+    image = image_output(path)
+    if scene.image is not None and image.is_dir():
+        out.append(f"{field} = {short_repr(str(output))}: the image goes to {image}, an "
+                   "existing folder; name another output or move the folder")
     if is_zarr(path) and scene.image is not None:
         out.append(f"{field} = {short_repr(str(output))}: a Zarr store, and the scene has "
                    "[image]: focusing reads a netCDF run; write the run to a .nc file")
     return out
+
+
+def image_output(output) -> Path:
+    """Where `seaecho run` writes the ``[image]`` of a run written to ``output``."""
+    path = Path(output)
+    return path.with_name(path.stem + "_image.nc")
 
 
 def default_output(scene, scene_file) -> tuple[Path, str]:
@@ -656,6 +666,7 @@ __all__ = [
     "hull_problems",
     "output_problems",
     "default_output",
+    "image_output",
     "receive_problems",
     "run_problems",
     "two_scale_problems",

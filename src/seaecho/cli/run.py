@@ -75,7 +75,7 @@ def run(args: argparse.Namespace) -> int:
     from ..config import SceneError
     from ..guards import NonFiniteEchoError
     from ..io.zarr_run import StoreError, is_zarr, part_path
-    from ..preflight import check_run, default_output
+    from ..preflight import check_run, default_output, image_output
     from . import UsageError
 
     scene = load_scene(args.scene)
@@ -127,7 +127,7 @@ def run(args: argparse.Namespace) -> int:
         from .image import focus_to_files
 
         try:
-            focus_to_files(out, out.with_name(out.stem + "_image.nc"), scene.image,
+            focus_to_files(out, image_output(out), scene.image,
                            progress=not args.quiet, figures=not args.no_figures)
         except NonFiniteEchoError:  # the image guard: exit 2 leaves no file of this run
             for path in wrote:
