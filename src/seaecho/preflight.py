@@ -343,9 +343,16 @@ def two_scale_problems(scene) -> list[str]:
         from .build import build_sea_model
 
         try:  # the builder's own check: sub-facet slopes in the tilting band
-            build_sea_model(scene)
+            model = build_sea_model(scene)
         except ValueError as exc:
             return [str(exc)]
+        up, cross = model.mss_upwind, model.mss_crosswind
+        if scene.tracing.subfacet_shadowing and not (up > 0 and cross > 0):
+            # (the facet engine's requirement: a shadowing function per direction)
+            return [f"[tracing].subfacet_shadowing = true: the slope variances of the waves "
+                    f"between the grid and the two-scale split are {up:.3g} upwind and "
+                    f"{cross:.3g} crosswind; sub-facet shadowing needs both > 0 (another "
+                    "[sea] grid spacing or fetch, or subfacet_shadowing = false)"]
         return []
     return [f"[sea].size_x_m / nx = {dx:.3g} m: grid spacing at most a quarter of the radar "
             f"wavelength ({lam:.3g} m at [radar].carrier_frequency_hz = "
@@ -562,8 +569,8 @@ def output_problems(scene, output, field: str = "[run].output") -> list[str]:
     if path.is_dir() and not is_zarr(path):  # a netCDF file is renamed onto it
         out.append(f"{field} = {short_repr(str(output))}: an existing folder, not a file; "
                    "name the file to write (e.g. run.nc)")
-    image = image_output(path)
-    if scene.image is not None and image.is_dir():
+    image = image_output(path) if path.name else None
+    if scene.image is not None and image is not None and image.is_dir():
         out.append(f"{field} = {short_repr(str(output))}: the image goes to {image}, an "
                    "existing folder; name another output or move the folder")
     if is_zarr(path) and scene.image is not None:

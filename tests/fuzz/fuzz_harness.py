@@ -66,7 +66,16 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
             warnings.simplefilter("always")  # printed as the console script does
             rc = main(args)
         finite = None
-        if out_nc.exists():
+        own = _output(text) if command == "run" else None
+        if own is not None and (folder / own).exists() and own.endswith(".zarr"):
+            from seaecho.api import open_dataset  # a Zarr run: the same finite check
+
+            with open_dataset(folder / own) as ds:
+                finite = all(bool(np.isfinite(v.values).all())
+                             for v in ds.data_vars.values() if v.dtype.kind in "fc")
+        if own is not None and not own.endswith(".zarr"):
+            out_nc = folder / own
+        if out_nc.exists() and out_nc.is_file():
             import xarray as xr
 
             with xr.open_dataset(out_nc, engine="h5netcdf") as ds:
@@ -84,15 +93,20 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
         return Outcome(rc, o.getvalue(), e.getvalue(), files, finite)
 
 
-def _has_output(text: str) -> bool:
-    """The scene gives ``[run] output`` (then `run` writes there, relative to its folder)."""
+def _output(text: str) -> str | None:
+    """The scene's ``[run] output`` (then `run` writes there, relative to its folder)."""
     import tomllib
 
     try:
         run = tomllib.loads(text).get("run")
     except (tomllib.TOMLDecodeError, RecursionError):
-        return False
-    return isinstance(run, dict) and "output" in run
+        return None
+    out = run.get("output") if isinstance(run, dict) else None
+    return out if isinstance(out, str) else None
+
+
+def _has_output(text: str) -> bool:
+    return _output(text) is not None
 
 
 def assert_clean(outcome: Outcome, what: str = "") -> None:

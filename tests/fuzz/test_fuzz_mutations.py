@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -102,6 +103,71 @@ def _trihedral_with_transmitter_at(position_m: list[float]) -> dict:
     return data
 
 
+#: Found by a random hunt of ``radar`` mutations (361 scenes): a sea whose band between
+#: the grid and the two-scale split has no crosswind slope (mss 0.0038 upwind, 0
+#: crosswind) with [tracing] subfacet_shadowing: `check` accepted it, `run` refused it
+#: ("subfacet = (...): slope variances must be > 0", the facet engine's check).
+NO_CROSSWIND_SLOPE = """
+[sea]
+spreading_s = 48.73988068731162
+wind_speed_m_s = 23.28596850472772
+wind_direction_deg = -169.37073213074484
+fetch_m = 62388696.41978159
+size_x_m = 5.685519159554115
+size_y_m = 8.331399962082116
+nx = 14
+ny = 16
+salinity_psu = 1.1008150990472901e-218
+
+[ship]
+length_m = 183.17110004653793
+beam_m = 33.81807562298543
+draft_m = 18.018766808656537
+heading_deg = -189.0519272144531
+turbulent_wake_length_m = 69155.60513784636
+speed_kn = 38.37292819773275
+
+[radar]
+carrier_frequency_hz = 1478356726.5181434
+sampling_rate_hz = 49071032.26972335
+prf_hz = 4788.408665552279
+start_time_s = 0.02004534829205995
+channels = ["VV", "HH"]
+sea_update_pulses = 3
+accumulation_precision = "double"
+noise_figure_db = 8.336408753386127
+noise_bandwidth_hz = 21909903720.34179
+taylor_nbar = 47
+taylor_sidelobe_db = 150.0
+sigma_map_pulse = 0
+
+[radar.waveform]
+kind = "pulse"
+duration_s = 1.192092896e-07
+
+[transmitter]
+roll_deg = -81.66433849431854
+position_m = [1643.5932768100283, 8.317957358894541e-51, 200.0]
+
+[transmitter.perturbation]
+position_sigma_m = [1.1, 9.999999999999998, 0.3434485124022291]
+position_tau_s = 2.340236489539287e-275
+attitude_tau_s = 2.225073858507e-311
+
+[transmitter.antenna]
+pattern = "dipole"
+width_m = 0.35548562548432827
+height_m = 0.21448964950475388
+azimuth_deg = 51.87288309536052
+depression_deg = -73.37892223179371
+
+[tracing]
+shadowing = "smith"
+subfacet_shadowing = true
+refresh_interval_s = 24.0
+"""
+
+
 #: Scenes `check` accepted and `run` refused, through ``[run] output`` (found by reading
 #: what `run` refuses; the hunts' scenes never set it, the ``radar`` mutation does now): a
 #: folder that does not exist, and a Zarr store with ``[image]`` (the preflight checks
@@ -115,6 +181,8 @@ IMAGE = {"pixel_m": 0.5, "extent_m": [-4.0, 4.0, -4.0, 4.0], "figures": False}
                     None, ("[run].output",)))
 @example(m=Mutation("radar", _with(_calibration(), run={"output": "r.zarr"}, image=IMAGE),
                     None, ("[run].output",)))
+@example(m=Mutation("radar", tomllib.loads(NO_CROSSWIND_SLOPE), None,
+                    ("[tracing].subfacet_shadowing",)))
 @example(m=Mutation("radar", _with(_calibration(), run={"output": "."}), None,
                     ("[run].output",)))
 @example(m=Mutation("radar", _trihedral_with_transmitter_at([0.0, 0.0, 2.0]), None,
