@@ -37,6 +37,10 @@ everything ``run`` would):
   tangent-plane approximation (paper section III: "the curvature of the waves [must be]
   large enough in front of the electromagnetic wavelength").
 
+- **Sub-facet shadowing** (``[tracing] subfacet_shadowing``) needs slope in the tilting
+  band in both directions: the facet engine takes a shadowing function of the upwind and
+  the crosswind slope variances, each > 0.
+
 - **Files and devices** the run needs: every ``[[objects]]`` file the ray-traced sea
   or a hull's echo loads exists beside the scene and loads; the ``[tracing] variant``
   can run here (a CUDA variant has a CUDA GPU).
