@@ -32,6 +32,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
+from _smoke import add_option
 
 from seaecho.radar.echo import GUARD, ReceiveWindow, accumulate, accumulate_direct
 
@@ -217,7 +218,10 @@ def main() -> None:
     ap.add_argument("--sim2", action="store_true",
                     help="also a pulse of Simulation 2 (its facets, 210 modes) and finufft's "
                          "options on it")
+    add_option(ap)
     args = ap.parse_args()
+    if args.smoke:
+        args.points, args.modes, args.repeat = [1e4], [64], 1
 
     cpus = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
     pool = ThreadPoolExecutor(max(1, min(cpus, args.channels)))

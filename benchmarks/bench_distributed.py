@@ -31,6 +31,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+from _smoke import GRID, add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
@@ -199,7 +200,13 @@ def main() -> None:
     ap.add_argument("--tasks", type=int, default=500, help="empty tasks timed")
     ap.add_argument("--cost-grids", type=int, nargs="+", default=[256, 512])
     ap.add_argument("--skip-runs", action="store_true", help="only the per-block costs")
+    add_option(ap)
     args = ap.parse_args()
+    if args.smoke:  # a small grid with a coarse hull trace, a few pulses, one worker
+        global SIM2
+        SIM2 = small_scene(SIM2, pulses=10**6)
+        args.pulses, args.grid, args.workers, args.tasks = 4, GRID, [1], 10
+        args.cost_grids = [GRID]
     if not args.skip_runs:
         bench_runs(args.grid, args.pulses, args.workers, args.block, args.tasks)
     estimate(bench_costs(args.cost_grids))

@@ -32,6 +32,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+from _smoke import GRID, add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 SIM1 = ROOT / "scenes" / "paper_sim1_bistatic_64m.toml"
@@ -135,7 +136,12 @@ def main() -> None:
                     help="facets of the kernel-alone benchmark [0] (0: skip it)")
     ap.add_argument("--motion-only", action="store_true",
                     help="[2] only, against the held blend+breaking baseline (no [0], [1])")
+    add_option(ap)
     a = ap.parse_args()
+    if a.smoke:  # Simulation 1 on a small grid with a coarse hull trace, one pulse
+        global SIM1
+        SIM1 = small_scene(SIM1, pulses=10**6)
+        a.grid, a.pulses, a.update, a.kernel_facets = GRID, 1, 1, 2048
     if a.kernel_facets and not a.motion_only:
         bench_kernel(a.kernel_facets, 5)
     g = a.grid or 648

@@ -37,6 +37,8 @@ import time
 import warnings
 from pathlib import Path
 
+from _smoke import GRID, add_option, small_scene
+
 ROOT = Path(__file__).resolve().parents[1]
 SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -122,7 +124,12 @@ def main() -> None:
     ap.add_argument("--update", type=int, default=160, help="[radar] sea_update_pulses")
     ap.add_argument("--no-cpu", action="store_true", help="skip the CPU comparison")
     ap.add_argument("--child", nargs=2, help=argparse.SUPPRESS)
+    add_option(ap)
     args = ap.parse_args()
+    if args.smoke:  # Simulation 2 on a small grid, one pulse after none
+        global SIM2
+        SIM2 = small_scene(SIM2, grid=GRID, pulses=10**6)
+        args.pulses, args.warmup = 1, 0
     if args.child:  # the CPU comparison, in its own process (one variant per process)
         r = run(args.child[0], args.pulses, args.warmup, args.refresh, args.update,
                 args.child[1], profile=False)
@@ -131,6 +138,12 @@ def main() -> None:
     from seaecho.backend import cuda_available
 
     if not cuda_available():
+        if args.smoke:  # the CPU half, which runs anywhere
+            r = run("llvm_ad_mono_polarized", args.pulses, args.warmup, args.refresh,
+                    args.update, None, profile=True)
+            print(f"bench_gpu --smoke: no CUDA GPU; CPU (llvm) set-up {r['setup_s']:.1f} s, "
+                  f"{len(r['wall'])} pulse(s), {1e3 * statistics.median(r['wall']):.1f} ms")
+            return
         sys.exit("bench_gpu: no CUDA GPU here (Dr.Jit finds no CUDA device)")
     try:
         import cufinufft  # noqa: F401
@@ -159,7 +172,8 @@ def main() -> None:
             res = subprocess.run([sys.executable, __file__, "--pulses", str(args.pulses),
                                   "--warmup", str(args.warmup), "--refresh",
                                   str(args.refresh), "--update", str(args.update),
-                                  "--child", "llvm_ad_mono_polarized", cpu_out],
+                                  "--child", "llvm_ad_mono_polarized", cpu_out,
+                                  *(["--smoke"] if args.smoke else [])],
                                  capture_output=True, text=True)
             if res.returncode != 0:
                 sys.exit(f"CPU run failed:\n{res.stderr[-3000:]}")

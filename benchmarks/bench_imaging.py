@@ -25,6 +25,8 @@ import time
 import warnings
 from pathlib import Path
 
+from _smoke import add_option, small_scene
+
 ROOT = Path(__file__).resolve().parents[1]
 SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
 SIM4 = ROOT / "scenes" / "paper_sim4_sar_500m_u10.toml"
@@ -124,7 +126,12 @@ def main() -> None:
     ap.add_argument("--raw", type=Path, help="reuse this raw dataset of Simulation 2")
     ap.add_argument("--end-to-end", action="store_true", help="also time seaecho run")
     ap.add_argument("--sim4", action="store_true", help="and Simulation 4 end to end")
+    add_option(ap)
     args = ap.parse_args()
+    if args.smoke:  # Simulations 2 and 4 on small grids, 2 pulses, coarse images
+        global SIM2, SIM4
+        SIM2, SIM4 = small_scene(SIM2), small_scene(SIM4)
+        args.repeat = 1
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d)
         raw = args.raw

@@ -15,6 +15,7 @@ import resource
 import time
 
 import numpy as np
+from _smoke import GRID, add_option
 
 from seaecho.ocean.spectra import DirectionalSpectrum
 from seaecho.ocean.surface import SeaSurface
@@ -35,12 +36,16 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--spectrum", default="elfouhaily")
+    add_option(parser)
     args = parser.parse_args()
+    sizes = SIZES
+    if args.smoke:
+        sizes, args.repeat = {f"{GRID}x{GRID}": (GRID, 50.0)}, 1
     spec = DirectionalSpectrum(args.spectrum, "elfouhaily", u19_5=10.0, wind_direction=0.5)
     print(f"cores: {os.cpu_count()}, load: {os.getloadavg()[0]:.2f}, spectrum: {args.spectrum}")
     print(f"{'grid':>10} {'synth [ms]':>11} {'evolve z [ms]':>14} {'z+slopes+vel [ms]':>18} "
           f"{'synth+evolve [ms]':>18} {'peak RSS [MiB]':>15}")
-    for name, (n, size) in SIZES.items():
+    for name, (n, size) in sizes.items():
         t_syn, surf = best_of(
             lambda n=n, size=size: SeaSurface(spec, (size, size), (n, n),
                                               np.random.default_rng(0)), args.repeat)

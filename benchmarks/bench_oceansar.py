@@ -49,6 +49,8 @@ import textwrap
 import time
 from pathlib import Path
 
+from _smoke import PULSES, add_option, small_scene
+
 ROOT = Path(__file__).resolve().parents[1]
 SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
 VENV = Path(tempfile.gettempdir()) / "seaecho-bench-oceansar-venv"
@@ -260,21 +262,15 @@ def seaecho_run(pulses: int | None) -> dict:
             import resource, sys, time
             t0 = time.perf_counter()
             from seaecho.cli import main
-            import seaecho.io.run as run
-            first = []
-            write = run.write_run
-            def timed(*a, **k):
-                pulse = k["pulse"]
-                def p(i):
-                    out = pulse(i)
-                    if not first:
-                        first.append(time.perf_counter() - t0)
-                    return out
-                k["pulse"] = p
-                return write(*a, **k)
-            run.write_run = timed
             import seaecho.simulation as s
-            s.write_run = timed
+            first = []
+            pulse = s.Simulation.pulse
+            def timed(self, *a, **k):  # the first pulse computed (serial run)
+                out = pulse(self, *a, **k)
+                if not first:
+                    first.append(time.perf_counter() - t0)
+                return out
+            s.Simulation.pulse = timed
             rc = main(["run", {str(scene)!r}, "-o", {str(Path(d) / "out.nc")!r}])
             ru = resource.getrusage(resource.RUSAGE_SELF)
             print(first[0] if first else -1, time.perf_counter() - t0,
@@ -319,7 +315,13 @@ def main() -> None:
     ap.add_argument("--rounds", type=int, default=2, help="alternating rounds")
     ap.add_argument("--seaecho-run", action="store_true",
                     help="also time `seaecho run` of Simulation 2 end to end")
+    add_option(ap)
     args = ap.parse_args()
+    if args.smoke:  # seaecho's cases on a small grid, one round, and its `seaecho run`
+        global SIM2
+        SIM2 = small_scene(SIM2, pulses=10**6)
+        args.seaecho_only, args.seaecho_run = True, True
+        args.pulses, args.skip, args.rounds = 1, 0, 1
     if args.oceansar is None and not args.seaecho_only:
         ap.error("--oceansar is required unless --seaecho-only")
     py = None if args.seaecho_only else oceansar_python(args.oceansar.resolve(),
@@ -355,8 +357,10 @@ def main() -> None:
     for name in cases:
         print(_line(name, results[name]))
     if args.seaecho_run:
-        r = seaecho_run(None)
-        print(f"\n  seaecho run of Simulation 2 (160 pulses): {r['total_s']:.1f} s wall, "
+        pulses = PULSES if args.smoke else None
+        r = seaecho_run(pulses)
+        print(f"\n  seaecho run of Simulation 2 ({pulses or 160} pulses): {r['total_s']:.1f} s "
+              "wall, "
               f"{r['cpu_s']:.1f} s CPU, first pulse after {r['first_pulse_s']:.1f} s, "
               f"peak RSS {r['peak_rss_mib']:.0f} MiB, load {r['load']:.2f}")
 

@@ -30,10 +30,13 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+from _smoke import GRID, add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 SIM1 = ROOT / "scenes" / "paper_sim1_bistatic_64m.toml"
 SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
+#: Pulses of the streamed runs of the memory case.
+MEMORY_PULSES = (20, 200)
 
 
 def _best(fn, repeat):
@@ -177,9 +180,10 @@ def bench_sar(repeat: int, refresh: float, update: int, label: str) -> None:
             clock.append(time.perf_counter())
             held = sim._block_quantities(p, st, f.visibility.size)
             clock.append(time.perf_counter())
+            # as Simulation.sea_echo: the block's draws on the host, breaking zones
             amp = speckled_facet_amplitudes(
                 f.n_i, f.n_s, f.normal, f.area * f.visibility, model,
-                draws=held["draws"], wake_damping=held["damping"],
+                draws=sim._host_draws(held), wake_damping=held["damping"],
                 breaking_fraction=held["breaking"], local=f)
             clock.append(time.perf_counter())
             vis = f.visibility > 0
@@ -262,7 +266,7 @@ def bench_memory(grid: int) -> None:
           f"quad-pol; load {os.getloadavg()[0]:.2f}")
     size = 64.0 * grid / 512
     with tempfile.TemporaryDirectory() as d:
-        for pulses in (20, 200):
+        for pulses in MEMORY_PULSES:
             scene = Path(d) / f"m{pulses}.toml"
             scene.write_text(MEMORY_SCENE.format(size=size, n=grid, pulses=pulses))
             out = Path(d) / f"m{pulses}.nc"
@@ -288,10 +292,17 @@ def main() -> None:
     ap.add_argument("--skip-sar", action="store_true")
     ap.add_argument("--skip-memory", action="store_true")
     ap.add_argument("--child", nargs=2, help=argparse.SUPPRESS)
+    add_option(ap)
     args = ap.parse_args()
     if args.child:
         _child_run(*args.child)
         return
+    if args.smoke:  # Simulation 2 on a small grid (its pulses kept: the SAR case
+        global SIM1, SIM2, MEMORY_PULSES  # times pulses 40 on), one round
+        SIM1 = small_scene(SIM1, grid=GRID, pulses=10**6)
+        SIM2 = small_scene(SIM2, grid=GRID, pulses=10**6)
+        MEMORY_PULSES = (2,)
+        args.repeat, args.grid, args.memory_grid = 1, GRID, GRID
     print(f"bench_radar: {os.cpu_count()} CPUs")
     if not args.skip_pulse:
         bench_pulse(args.repeat, args.mode, args.grid)

@@ -23,6 +23,8 @@ import tempfile
 import tomllib
 from pathlib import Path
 
+from _smoke import add_option
+
 ROOT = Path(__file__).resolve().parents[1]
 CAL = ROOT / "scenes" / "calibration_point_target.toml"
 SEAECHO = Path(sys.executable).with_name("seaecho")
@@ -107,7 +109,10 @@ def main() -> None:
     parser.add_argument("--quick", action="store_true", help="small cases only (~1 min)")
     parser.add_argument("--cases", nargs="*", help="run only these cases")
     parser.add_argument("--json", help="also write the results to this file")
+    add_option(parser)
     args = parser.parse_args()
+    if args.smoke:  # one case of each kind
+        args.cases = ["targets_2p", "sea_analytic_64"]
     table = cases(args.quick and not args.cases)
     if args.cases:
         table = {k: v for k, v in cases(False).items() if k in args.cases}

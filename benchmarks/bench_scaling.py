@@ -20,6 +20,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+from _smoke import GRID, add_option, small_scene
+
 ROOT = Path(__file__).resolve().parents[1]
 SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
 
@@ -59,16 +61,23 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--grids", type=int, nargs="+", default=[128, 256, 512, 1024, 2048])
     ap.add_argument("--pulses", type=int, default=4)
+    add_option(ap)
     args = ap.parse_args()
+    scene = SIM2
+    if args.smoke:  # a small grid with a coarse hull trace, one pulse
+        scene = small_scene(SIM2, pulses=10**6)
+        args.grids, args.pulses = [GRID], 1
     print(f"bench_scaling: Simulation 2, quad-pol, refresh 0.1 s; {os.cpu_count()} CPUs")
     print(f"  {'grid':>6s} {'facets':>10s} | {'held sea: wall':>14s} {'CPU':>7s} | "
           f"{'new sea: wall':>13s} {'CPU':>7s} [ms/pulse] | {'set-up':>7s} "
           f"{'peak RSS':>9s} | load")
+    failed = []
     for n in args.grids:
-        res = subprocess.run([sys.executable, "-c", CHILD, str(SIM2), str(n),
+        res = subprocess.run([sys.executable, "-c", CHILD, str(scene), str(n),
                               str(args.pulses)], capture_output=True, text=True)
         if res.returncode != 0:
             print(f"  {n:6d}: failed\n{res.stderr[-2000:]}")
+            failed.append(n)
             continue
         r = json.loads(res.stdout.strip().splitlines()[-1])
         facets = 2 * (n - 1) ** 2
@@ -76,6 +85,8 @@ def main() -> None:
               f" | {1e3 * r['new_wall']:13.0f} {1e3 * r['new_cpu']:7.0f}            | "
               f"{r['held_setup_s']:6.1f}s {r['peak_rss_mib']:7.0f}MiB | {r['load']:.2f}",
               flush=True)
+    if failed:
+        sys.exit(f"bench_scaling: grids {failed} failed")
 
 
 if __name__ == "__main__":

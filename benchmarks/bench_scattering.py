@@ -8,11 +8,13 @@ Target: 262,144 facets (a 512 x 512 sea) in <= 0.1 s on the 2-core machine.
 
 from __future__ import annotations
 
+import argparse
 import os
 import resource
 import time
 
 import numpy as np
+from _smoke import add_option
 
 from seaecho.constants import C0
 from seaecho.ocean.seawater import sea_water_permittivity
@@ -56,6 +58,11 @@ def best_time(fn, repeats: int = REPEATS) -> float:
 
 
 def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    add_option(ap)
+    smoke = ap.parse_args().smoke
+    sizes = {"16x16": 16 * 16} if smoke else SIZES
+    repeats = 1 if smoke else REPEATS
     f = 10e9
     k = 2 * np.pi * f / C0
     eps = complex(sea_water_permittivity(f, 20.0, 35.0))
@@ -68,7 +75,7 @@ def main() -> None:
           "sea state")
     backends = ["numpy"] + (["drjit"] if _drjit_available() else [])
     rng = np.random.default_rng(0)
-    for name, n in SIZES.items():
+    for name, n in sizes.items():
         n_i, n_s, normal = geometry(n)
         area = np.full(n, 4.0)
         for backend in backends:
@@ -81,8 +88,8 @@ def main() -> None:
                 n_i_, n_s_, normal_, sea = args
                 return facet_amplitudes(n_i_, n_s_, normal_, area, sea, rng, backend=backend)
 
-            ts = best_time(sig, REPEATS if n <= 65536 or backend == "drjit" else 3)
-            ta = best_time(amp, REPEATS if n <= 65536 or backend == "drjit" else 3)
+            ts = best_time(sig, repeats if n <= 65536 or backend == "drjit" else 3)
+            ta = best_time(amp, repeats if n <= 65536 or backend == "drjit" else 3)
             print(f"{name:>8} ({n:7d} facets) {backend:>5}: facet_sigma {ts * 1e3:8.1f} ms"
                   f"   facet_amplitudes {ta * 1e3:8.1f} ms")
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024

@@ -29,9 +29,12 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+from _smoke import add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENES = ROOT / "scenes"
+#: [[objects]] fields set in every scene (the smoke mode's coarse trace).
+OBJECTS: dict = {}
 
 
 def _load():
@@ -47,6 +50,7 @@ def _simulation(name: str, **objects):
     from seaecho.simulation import Simulation
 
     scene = load_scene(SCENES / name)
+    objects = {**OBJECTS, **objects}
     if objects:
         objs = tuple(o.model_copy(update=objects) for o in scene.objects)
         scene = scene.model_copy(update={"objects": objs})
@@ -119,7 +123,15 @@ def main() -> None:
     ap.add_argument("--overhead-only", action="store_true", help="only part 3")
     ap.add_argument("--vessel-density", type=float, default=None,
                     help="rays per wavelength for the 80 m ship (default: the scene's)")
+    add_option(ap)
     args = ap.parse_args()
+    if args.smoke:  # the boat of Simulation 2 on a small sea, 1 ray per wavelength, once
+        global SCENES, OBJECTS
+        SCENES = small_scene(SCENES / "paper_sim2_sar_128m_wind55.toml", pulses=10**6).parent
+        OBJECTS = {"rays_per_wavelength": 1.0}
+        bench_trace("paper_sim2_sar_128m_wind55.toml", "Boat 10 m, Simulation 2 (smoke)")
+        bench_overhead(1)
+        return
     print(f"cores: {os.cpu_count()}  [{_load()}]")
     if args.overhead_only:
         bench_overhead(args.repeat)

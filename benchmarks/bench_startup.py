@@ -41,6 +41,8 @@ import tempfile
 import textwrap
 from pathlib import Path
 
+from _smoke import add_option, small_scene
+
 ROOT = Path(__file__).resolve().parents[1]
 SCENES = [ROOT / "scenes" / "paper_sim1_bistatic_64m.toml",
           ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"]
@@ -208,7 +210,11 @@ def main() -> None:
                     "traces every refresh pulse before the first pulse)")
     ap.add_argument("--importtime", action="store_true",
                     help="print the slowest imports of a start-up per scene")
+    add_option(ap)
     args = ap.parse_args()
+    if args.smoke:  # Simulation 2 on a small grid, one run, no hull cache
+        args.scenes = [small_scene(SCENES[1], pulses=10**6)]
+        args.repeat, args.cache, args.pulses = 1, "off", 1
     print(f"python {sys.version.split()[0]}, {os.cpu_count()} cores, load "
           f"{os.getloadavg()[0]:.2f}")
     cases = ["cold", "warm"] if args.cache == "both" else [args.cache]

@@ -22,6 +22,7 @@ import sys
 import time
 
 import numpy as np
+from _smoke import GRID, add_option
 
 
 def _surface(n: int, seed: int = 0) -> np.ndarray:
@@ -91,7 +92,10 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--repeat", type=int, default=5)
     p.add_argument("--variant", default=None)
     p.add_argument("--child", type=int, help=argparse.SUPPRESS)
+    add_option(p)
     args = p.parse_args(argv)
+    if args.smoke:
+        args.sizes, args.repeat = [GRID], 1
     if args.child:
         print(json.dumps(run_size(args.child, args.repeat, args.variant)))
         return 0

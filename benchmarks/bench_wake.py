@@ -13,11 +13,13 @@ doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
+import argparse
 import os
 import time
 import tracemalloc
 
 import numpy as np
+from _smoke import add_option
 
 from seaecho.constants import KNOT
 from seaecho.wake import KelvinWake, Ship, turbulent_wake_mask
@@ -42,6 +44,9 @@ def _time(fn, repeats: int = REPEATS) -> tuple[float, float]:
 
 
 def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    add_option(ap)
+    cases = CASES[:1] if ap.parse_args().smoke else CASES
     print(f"load average: {os.getloadavg()}")
     ship = Ship(10.0, 4.0, 1.5, 10.0 * KNOT, np.deg2rad(35.0), (0.0, 0.0))
     wake = KelvinWake(ship)
@@ -49,7 +54,7 @@ def main() -> None:
         f"{'case':34s} {'fields best/median [ms]':>24s} {'mask best [ms]':>15s} "
         f"{'waves':>6s} {'peak heap [MiB]':>16s}"
     )
-    for name, n, tile in CASES:
+    for name, n, tile in cases:
         dx = tile / n
         x = (np.arange(n) - n / 2) * dx
         y = x.copy()

@@ -32,6 +32,8 @@ import time
 import warnings
 from pathlib import Path
 
+from _smoke import GRID, add_option, small_scene
+
 ROOT = Path(__file__).resolve().parents[1]
 SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
 
@@ -138,7 +140,12 @@ def main() -> None:
     ap.add_argument("--freeze", choices=["on", "off"], default=None,
                     help="replay the fused kernel with drjit.freeze (default: "
                          "seaecho.radar.resident.FREEZE)")
+    add_option(ap)
     args = ap.parse_args()
+    if args.smoke:  # Simulation 2 on a small grid with a coarse hull trace, one pulse
+        global SIM2
+        SIM2 = small_scene(SIM2, pulses=10**6)
+        args.grid, args.pulses = GRID, 1
 
     from seaecho.config import load_scene
     from seaecho.simulation import Simulation

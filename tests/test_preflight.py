@@ -131,3 +131,33 @@ def test_reactive_near_field_boundary():
         0.62 * np.sqrt(1.0 / 0.03))
     iso = _scene({"position_m": (0, 0, 10), "antenna": ANT}).transmitter.antenna
     assert near_field_distance(iso, 300.0) == pytest.approx(300.0 / (2 * np.pi))
+
+
+def test_antenna_inside_a_scatterer_hull_is_refused_by_check_and_run(tmp_path, capsys):
+    # Found by comparing what `run` refuses with what the preflight checks: an antenna
+    # inside the sphere the ray tracer launches its rays from (1.05 x the hull's bounding
+    # radius, 0.449 m for the 0.5 m trihedral) passed `check`, and `run` stopped with a
+    # traceback in the tracer. Both refuse it now, naming the antenna and the object;
+    # 0.49 m from the centre, outside the sphere, both accept it
+    from pathlib import Path
+
+    from seaecho.cli import main
+
+    root = Path(__file__).resolve().parents[1] / "scenes"
+    text = (root / "calibration_trihedral.toml").read_text().replace(
+        'file = "meshes/', f'file = "{root}/meshes/').replace(
+        "look_at_m = [0.0, 0.0, 2.0]", "look_at_m = [0.0, 0.0, 20.0]")
+    scene = tmp_path / "s.toml"
+    scene.write_text(text.replace("position_m = [-500.0, 0.0, 300.0]",
+                                  "position_m = [0.0, 0.0, 2.0]"))
+    for command in ("check", "run"):
+        extra = ["-o", str(tmp_path / "r.nc"), "-q", "--no-figures"] if command == "run" \
+            else []
+        assert main([command, str(scene), *extra]) == 2
+        err = capsys.readouterr().err
+        assert "[transmitter].position_m" in err and "'trihedral'" in err, err
+        assert "bounding radius 0.449 m" in err and "Traceback" not in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.toml"]
+    scene.write_text(text.replace("position_m = [-500.0, 0.0, 300.0]",
+                                  "position_m = [0.2, 0.0, 2.3]"))
+    assert main(["check", str(scene)]) == 0

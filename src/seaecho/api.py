@@ -480,8 +480,13 @@ def save(dataset: xr.Dataset, path: PathLike) -> Path:
     path = Path(path)
     if str(path.parent) and not path.parent.is_dir():
         raise SceneError(f"path = {os.fspath(path)!r}: directory {path.parent} does not exist")
+    guard = None
+    if str(dataset.attrs.get("title", "")).startswith("seaecho SAR image"):
+        from .guards import check_image
+
+        guard = check_image  # no Inf, NaN only at the undefined pixels
     with quiet_invalid_netcdf():
-        return write_dataset_atomic(dataset, path)
+        return write_dataset_atomic(dataset, path, guard=guard)
 
 
 # ------------------------------------------------------------------ stages on their own

@@ -18,6 +18,8 @@ the pulse's own O(K) work; the per-element search only runs once something is wr
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 
 from .config import SceneError
@@ -142,15 +144,34 @@ def _no_truth(ds) -> np.ndarray:
     return ~linear[:, None, None] | (ds["tile"].values == 0)[None]
 
 
+def _no_data(ds) -> np.ndarray:
+    """(y, x): a pixel without data (``valid`` = 0: K < 0.1 max K, or its echoes outside
+    the receive window), where a calibrated product that overflowed is NaN."""
+    return ds["valid"].values == 0
+
+
+def _no_data_look(ds) -> np.ndarray:
+    """(y_look, x_look): a look block holding a pixel without data."""
+    from .imaging.speckle import multilook
+
+    looks = tuple(int(v) for v in json.loads(ds.attrs["image_json"])["looks"])
+    return multilook(_no_data(ds)[None].astype(float), looks)[0] > 0
+
+
 #: Image variables whose NaN marks an undefined pixel, and the pixels where it may:
 #: the calibrated image where no pulse is weighted (K = 0); sigma0, the Pauli powers and
 #: A_eff where A_eff is undefined (NaN: K = 0, or an aperture that does not turn); the
-#: truth outside the simulated sea tile and in channels it does not hold.
+#: truth outside the simulated sea tile and in channels it does not hold; and every
+#: calibrated product at the pixels without data (``valid`` = 0), where a value beyond
+#: float64 is NaN (``seaecho.imaging.focus._calibrated``).
 UNDEFINED_PIXELS = {
-    "image": lambda ds: ds["gain"].values == 0,
+    "image": lambda ds: (ds["gain"].values == 0) | _no_data(ds),
     "resolution_area": lambda ds: True,
-    "sigma0": lambda ds: np.isnan(ds["resolution_area"].values),
-    "pauli": lambda ds: np.isnan(ds["resolution_area"].values),
+    "sigma0": lambda ds: np.isnan(ds["resolution_area"].values) | _no_data(ds),
+    "pauli": lambda ds: np.isnan(ds["resolution_area"].values) | _no_data(ds),
+    "sigma0_filtered": _no_data,
+    "pauli_filtered": _no_data,
+    "sigma0_multilook": _no_data_look,
     "sigma0_truth": _no_truth,
 }
 

@@ -37,6 +37,10 @@ everything ``run`` would):
   tangent-plane approximation (paper section III: "the curvature of the waves [must be]
   large enough in front of the electromagnetic wavelength").
 
+- **Sub-facet shadowing** (``[tracing] subfacet_shadowing``) needs slope in the tilting
+  band in both directions: the facet engine takes a shadowing function of the upwind and
+  the crosswind slope variances, each > 0.
+
 - **Files and devices** the run needs: every ``[[objects]]`` file the ray-traced sea
   or a hull's echo loads exists beside the scene and loads; the ``[tracing] variant``
   can run here (a CUDA variant has a CUDA GPU).
@@ -46,6 +50,14 @@ everything ``run`` would):
 - **The radar horizon** on a spherical Earth (``[propagation] earth = "spherical"``):
   with sea clutter, the whole tile above each antenna's horizon at the first and the
   last pulse (point targets beyond it are simply not seen, at every pulse).
+- **The hulls' traces** (``[[objects]]`` with ``scatterer = true``): at every pulse where
+  the run traces a hull's signature (its refresh schedule), each antenna is outside the
+  sphere the rays are launched from (1.05 times the hull's bounding radius about its
+  centre, ``seaecho.tracing.sbr.bounding_sphere``), which the tracer requires.
+
+- **The output** `seaecho run` would write (``[run] output``, or ``-o``): its folder
+  exists, the output is not a folder (a netCDF file is renamed onto it); a Zarr store
+  (``*.zarr``) only without ``[image]`` (the focusing reads a netCDF run).
 
 "The paper" is A. Arnold-Bos, A. Martin and A. Khenchaf, "A versatile bistatic &
 polarimetric marine radar simulator", Proc. 2006 IEEE Conference on Radar, Verona, NY,
@@ -338,9 +350,16 @@ def two_scale_problems(scene) -> list[str]:
         from .build import build_sea_model
 
         try:  # the builder's own check: sub-facet slopes in the tilting band
-            build_sea_model(scene)
+            model = build_sea_model(scene)
         except ValueError as exc:
             return [str(exc)]
+        up, cross = model.mss_upwind, model.mss_crosswind
+        if scene.tracing.subfacet_shadowing and not (up > 0 and cross > 0):
+            # (the facet engine's requirement: a shadowing function per direction)
+            return [f"[tracing].subfacet_shadowing = true: the slope variances of the waves "
+                    f"between the grid and the two-scale split are {up:.3g} upwind and "
+                    f"{cross:.3g} crosswind; sub-facet shadowing needs both > 0 (another "
+                    "[sea] grid spacing or fetch, or subfacet_shadowing = false)"]
         return []
     return [f"[sea].size_x_m / nx = {dx:.3g} m: grid spacing at most a quarter of the radar "
             f"wavelength ({lam:.3g} m at [radar].carrier_frequency_hz = "
@@ -404,6 +423,45 @@ def _material_problems(i: int, obj, shapes, frequency: float) -> list[str]:
                     "table 3, gives each material's frequency range); choose another "
                     "material or give relative_permittivity and conductivity_s_m"]
     return []
+
+
+def hull_problems(scene, base_dir=".") -> list[str]:
+    """An antenna inside a scatterer hull's launch sphere at a pulse where the run traces
+    the hull (module docstring): the run's own hull echoes and schedule
+    (:meth:`seaecho.tracing.hull_echo.HullEchoes.from_model`) on the run's radar, the
+    tracer's sphere (:func:`seaecho.tracing.sbr.bounding_sphere`)."""
+    if not any(o.scatterer for o in scene.objects):
+        return []
+    import warnings
+
+    from .build import build_hulls, build_radar
+    from .radar.system import RadarSystem
+    from .tracing.hull_echo import HullEchoes
+    from .tracing.sbr import BOUNDING_MARGIN, bounding_sphere
+
+    with warnings.catch_warnings():  # (the window's warning is the run's to give)
+        warnings.simplefilter("ignore")
+        radar = RadarSystem(build_radar(scene))
+        hulls = HullEchoes.from_model(build_hulls(scene, base_dir=base_dir), radar)
+    out = []
+    for h in hulls.hulls if hulls is not None else ():
+        for p in h.schedule:
+            geo = radar.geometry(int(p))
+            centre, radius = bounding_sphere(h.mesh(geo.time).vertices)
+            antennas = [("transmitter", geo.tx)] + ([("receiver", geo.rx)]
+                                                    if scene.receiver is not None else [])
+            for name, state in antennas:
+                d = float(np.linalg.norm(state.position - centre))
+                if d < BOUNDING_MARGIN * radius:
+                    out.append(f"[{name}].position_m: the {name}'s antenna is {d:.3g} m "
+                               f"from the centre of [[objects]] '{h.name}' (scatterer) at "
+                               f"pulse {int(p)} (t = {geo.time:.6g} s), where the run traces "
+                               f"it; the ray tracer launches its rays from a sphere of "
+                               f"{BOUNDING_MARGIN:g} x its bounding radius "
+                               f"{radius:.3g} m and needs the antenna outside: move the "
+                               "antenna or the object")
+                    return out
+    return out
 
 
 #: Largest noise-equivalent RCS [m^2] an ``[image]`` may have at its best pixel: its
@@ -541,18 +599,59 @@ def horizon_problems(scene) -> list[str]:
                     "'flat'")
                 break
     return problems
+def output_problems(scene, output, field: str = "[run].output") -> list[str]:
+    """The output file ``output`` of `seaecho run` that it cannot write: a folder that
+    does not exist (relative to the working directory, as the run resolves it), an
+    existing folder where a netCDF file goes, or a Zarr store for a scene with
+    ``[image]``. ``field`` names where the path came from."""
+    from .io.zarr_run import is_zarr
+
+    path = Path(output)
+    out = []
+    folder = path.parent
+    if str(folder) and not folder.is_dir():
+        out.append(f"{field} = {short_repr(str(output))}: the folder {folder} does not exist "
+                   f"(relative to the working directory {Path.cwd()}); create it or name "
+                   "another output")
+    if path.is_dir() and not is_zarr(path):  # a netCDF file is renamed onto it
+        out.append(f"{field} = {short_repr(str(output))}: an existing folder, not a file; "
+                   "name the file to write (e.g. run.nc)")
+    image = image_output(path) if path.name else None
+    if scene.image is not None and image is not None and image.is_dir():
+        out.append(f"{field} = {short_repr(str(output))}: the image goes to {image}, an "
+                   "existing folder; name another output or move the folder")
+    if is_zarr(path) and scene.image is not None:
+        out.append(f"{field} = {short_repr(str(output))}: a Zarr store, and the scene has "
+                   "[image]: focusing reads a netCDF run; write the run to a .nc file")
+    return out
+
+
+def image_output(output) -> Path:
+    """Where `seaecho run` writes the ``[image]`` of a run written to ``output``."""
+    path = Path(output)
+    return path.with_name(path.stem + "_image.nc")
+
+
+def default_output(scene, scene_file) -> tuple[Path, str]:
+    """(path, field) of the file `seaecho run SCENE` writes without ``-o``: ``[run]
+    output``, else ``SCENE``'s stem with ``.nc`` in the working directory."""
+    if scene.run.output:
+        return Path(scene.run.output), "[run].output"
+    return Path(Path(scene_file).stem + ".nc"), "the default output"
 
 
 def run_problems(scene, base_dir=".") -> list[str]:
     """Every problem of this module for a scene that has [radar] and [transmitter]."""
-    return (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
-            + object_problems(scene, base_dir) + geometry_problems(scene)
-            + horizon_problems(scene))
+    out = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
+           + object_problems(scene, base_dir))
+    return (out + (hull_problems(scene, base_dir) if not out else [])
+            + geometry_problems(scene) + horizon_problems(scene))
 
 
 def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = None,
               figures: bool = True, workers: int | None = None,
-              block: int | None = None) -> str:
+              block: int | None = None, output=None,
+              output_field: str = "[run].output") -> str:
     """Refuse a scene `seaecho run` cannot simulate; return its resource estimate.
 
     The cheap checks and the memory estimate (``seaecho.resources``) come first, so that
@@ -573,6 +672,9 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
         The run draws figures.
     workers, block : int, optional
         ``--workers`` (a local cluster of that many processes) and ``--block-pulses``.
+    output : path, optional
+        The file the run writes (:func:`output_problems`), named ``output_field`` in the
+        messages; None: not checked (a sweep writes its own files).
 
     Returns
     -------
@@ -587,6 +689,10 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
                                   workers, block)
     problems = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
                 + object_problems(scene, base_dir))
+    if not problems:  # (needs the objects' files and the radar's values)
+        problems += hull_problems(scene, base_dir)
+    if output is not None:
+        problems += output_problems(scene, output, output_field)
     try:
         _, line = check_memory(scene, source, max_memory_gb, figures, workers=workers,
                                block=block, base_dir=base_dir)
@@ -649,6 +755,10 @@ __all__ = [
     "min_height",
     "nominal_segments",
     "object_problems",
+    "hull_problems",
+    "output_problems",
+    "default_output",
+    "image_output",
     "receive_problems",
     "run_problems",
     "two_scale_problems",

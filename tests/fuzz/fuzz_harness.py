@@ -10,6 +10,7 @@ import tempfile
 import warnings
 from dataclasses import dataclass
 from pathlib import Path
+from unittest import mock
 
 import numpy as np
 
@@ -20,6 +21,10 @@ from seaecho.config.toml_writer import dumps
 EXAMPLES = int(os.environ.get("SEAECHO_FUZZ_EXAMPLES", "0")) or None
 #: Memory limit given to every fuzzed command [GB]: large scenes are refused quickly.
 MAX_MEMORY_GB = "2"
+#: The machine's available memory as the fuzzed commands see it [bytes]: fixed above
+#: MAX_MEMORY_GB, so that the limit is MAX_MEMORY_GB whatever else runs on the machine
+#: (a limit that followed MemAvailable made a scene's verdict depend on the load).
+FIXED_AVAILABLE_BYTES = 64e9
 
 
 def examples(default: int) -> int:
@@ -50,15 +55,27 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
         args = [command, str(scene), "--max-memory-gb", MAX_MEMORY_GB, "--no-figures"]
         out_nc = folder / "out.nc"
         if command == "run":  # check estimates the same run: without figures
-            args += ["-o", str(out_nc), "-q"]
+            # a scene's own [run] output is kept (check checks it), in the folder
+            args += ([] if _has_output(text) else ["-o", str(out_nc)]) + ["-q"]
         args += list(extra)
         o, e = io.StringIO(), io.StringIO()
+        fixed = (FIXED_AVAILABLE_BYTES, "available memory (fixed by the fuzzing suite)")
         with (contextlib.redirect_stdout(o), contextlib.redirect_stderr(e),
-              warnings.catch_warnings()):
+              warnings.catch_warnings(), contextlib.chdir(folder),
+              mock.patch("seaecho.resources.available_memory", lambda: fixed)):
             warnings.simplefilter("always")  # printed as the console script does
             rc = main(args)
         finite = None
-        if out_nc.exists():
+        own = _output(text) if command == "run" else None
+        if own is not None and (folder / own).exists() and own.endswith(".zarr"):
+            from seaecho.api import open_dataset  # a Zarr run: the same finite check
+
+            with open_dataset(folder / own) as ds:
+                finite = all(bool(np.isfinite(v.values).all())
+                             for v in ds.data_vars.values() if v.dtype.kind in "fc")
+        if own is not None and not own.endswith(".zarr"):
+            out_nc = folder / own
+        if out_nc.exists() and out_nc.is_file():
             import xarray as xr
 
             with xr.open_dataset(out_nc, engine="h5netcdf") as ds:
@@ -74,6 +91,22 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
                 finite = bool(finite) and not image_problems(ds.load())
         files = sorted(p.name for p in folder.iterdir() if p.name != "scene.toml")
         return Outcome(rc, o.getvalue(), e.getvalue(), files, finite)
+
+
+def _output(text: str) -> str | None:
+    """The scene's ``[run] output`` (then `run` writes there, relative to its folder)."""
+    import tomllib
+
+    try:
+        run = tomllib.loads(text).get("run")
+    except (tomllib.TOMLDecodeError, RecursionError):
+        return None
+    out = run.get("output") if isinstance(run, dict) else None
+    return out if isinstance(out, str) else None
+
+
+def _has_output(text: str) -> bool:
+    return _output(text) is not None
 
 
 def assert_clean(outcome: Outcome, what: str = "") -> None:

@@ -15,7 +15,14 @@ A mutation takes a valid scene dict (from :mod:`fuzz_schema`) and breaks one thi
 - ``geometry``: degenerate geometry (a target on an antenna or crossing it, an antenna
   looking at itself, an antenna at or under the sea surface);
 - ``text``: the TOML text itself garbled (a character deleted, doubled or replaced, the
-  file cut short).
+  file cut short);
+- ``radar``: one to three fields of ``[radar]``, ``[radar.waveform]``, ``[transmitter]``,
+  ``[receiver]`` (their antennas and perturbations), ``[[targets]]`` or ``[image]`` set to
+  valid values that stress the models: a bound itself (``ge``, ``le``), the next float
+  past an open bound (``gt``, ``lt``: 5e-324 for ``gt = 0``), an extreme of an unbounded
+  field (+-1e300), the present value scaled by 1e-6 .. 1e6, or any value of the schema's
+  range; and sometimes ``[run] output`` (a Zarr store, a missing folder). The scene may
+  be valid or refused; what `check` accepts, `run` must run.
 
 Each mutation returns the new scene and what a refusal must name (a key, or None where
 the message cannot name one, e.g. garbled TOML).
@@ -26,6 +33,7 @@ from __future__ import annotations
 import copy
 import datetime
 import math
+import typing
 from dataclasses import dataclass
 from typing import Any
 
@@ -147,7 +155,44 @@ def nested(depth: int) -> Any:
 
 
 KINDS = ("value", "type", "range", "nonfinite", "missing", "unknown", "nesting", "geometry",
-         "text")
+         "text", "radar")
+
+#: Sections the ``radar`` mutation changes (first key of a path).
+RADAR_SECTIONS = ("radar", "transmitter", "receiver", "targets", "image")
+
+
+def edge_value(info, current: Any, draw) -> Any:
+    """A valid value of a numeric field that stresses the models (module docstring):
+    a bound, the next float past an open bound, +-1e300 where unbounded, or ``current``
+    scaled by a power of ten; None for a non-numeric field."""
+    annotation = non_none(info.annotation)
+    if typing.get_origin(annotation) is typing.Annotated:
+        annotation = typing.get_args(annotation)[0]
+    if annotation not in (int, float) or isinstance(current, bool):
+        return None
+    c = constraints(info.metadata)
+    is_int = annotation is int
+    choices: list[Any] = []
+    if "ge" in c:
+        choices.append(c["ge"])
+    if "le" in c:
+        choices.append(c["le"])
+    if "gt" in c:
+        choices.append(c["gt"] + 1 if is_int else math.nextafter(c["gt"], math.inf))
+    if "lt" in c:
+        choices.append(c["lt"] - 1 if is_int else math.nextafter(c["lt"], -math.inf))
+    if not is_int:
+        if "gt" not in c and "ge" not in c:
+            choices.append(-1.0e300)
+        if "lt" not in c and "le" not in c:
+            choices.append(1.0e300)
+    if isinstance(current, int | float) and math.isfinite(current) and current:
+        scaled = current * 10.0 ** draw(st.integers(-6, 6))
+        choices.append(int(scaled) if is_int and abs(scaled) < 2**62 else scaled)
+    if not choices:
+        return None
+    v = draw(st.sampled_from(choices))
+    return int(v) if is_int and isinstance(v, float) and math.isfinite(v) else v
 
 
 @st.composite
@@ -174,6 +219,8 @@ def mutations(draw, scenes: st.SearchStrategy[dict], kinds=KINDS) -> Mutation:
         return Mutation(kind, None, text, ())
     if kind == "geometry" and "radar" in data:
         return _geometry(draw, data)
+    if kind == "radar":
+        return _radar(draw, data, paths)
     if kind == "geometry":
         kind = "nonfinite"
     if kind == "unknown":
@@ -223,6 +270,29 @@ def mutations(draw, scenes: st.SearchStrategy[dict], kinds=KINDS) -> Mutation:
         names = names + ("nested too deeply",)
     put(data, path, value)
     return Mutation(kind, data, None, names)
+
+
+def _radar(draw, data: dict, paths: list[tuple]) -> Mutation:
+    """One to three radar-side fields set to stressing valid values (module docstring)."""
+    from fuzz_schema import is_model
+    from fuzz_schema import value as schema_value
+
+    fields = [q for q in paths if q and q[0] in RADAR_SECTIONS and isinstance(q[-1], str)
+              and schema_info(q) is not None
+              and not is_model(non_none(schema_info(q).annotation))]
+    if not fields:
+        return Mutation("radar", data, None, ())
+    if draw(st.integers(0, 4)) == 0:  # the output `run` writes, which check checks too
+        data.setdefault("run", {})["output"] = draw(st.sampled_from(
+            ["out.nc", "out.zarr", "no_such_folder/out.nc", "sub.dir/out.zarr"]))
+    for _ in range(draw(st.integers(1, 3))):
+        path = draw(st.sampled_from(fields))
+        info = schema_info(path)
+        new = edge_value(info, get(data, path), draw) if draw(st.booleans()) else None
+        if new is None:
+            new = thaw(draw(schema_value(info.annotation, info.metadata)))
+        put(data, path, new)
+    return Mutation("radar", data, None, ())
 
 
 def _geometry(draw, data: dict) -> Mutation:
@@ -284,4 +354,4 @@ def _position(platform: dict) -> list[float] | None:
     return None
 
 
-__all__ = ["KINDS", "Mutation", "leaves", "mutations", "schema_info"]
+__all__ = ["KINDS", "Mutation", "edge_value", "leaves", "mutations", "schema_info"]

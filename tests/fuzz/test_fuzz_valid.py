@@ -23,7 +23,7 @@ def test_schema_generated_scenes_validate_and_round_trip(data):
     assert parse_scene(tomllib.loads(text)) == scene
 
 
-@settings(max_examples=examples(12), deadline=None, suppress_health_check=SLOW)
+@settings(max_examples=examples(6), deadline=None, suppress_health_check=SLOW)
 @given(data=scenes())
 def test_valid_scene_passes_check_and_runs_to_finite_data(data):
     text = scene_text(data)

@@ -76,7 +76,8 @@ def _image(**over) -> xr.Dataset:
     truth[1] = np.nan  # a circular channel: not in the raw's (linear) sigma map
     data = {"image": s, "sigma0": sigma0, "gain": gain, "resolution_area": area,
             "pauli": np.stack([sigma0[0]] * 3), "sigma0_truth": truth,
-            "tile": np.array([[0, 1, 1], [0, 1, 1]], dtype=np.uint8)}
+            "tile": np.array([[0, 1, 1], [0, 1, 1]], dtype=np.uint8),
+            "valid": np.array([[1, 0, 0], [1, 1, 1]], dtype=np.uint8)}
     data.update(over)
     dims = {2: ("y", "x"), 3: ("channel", "y", "x")}
     ds = xr.Dataset({k: (dims[np.ndim(v)] if k != "pauli" else ("component", "y", "x"), v)
@@ -102,6 +103,14 @@ def test_guard_accepts_nan_only_at_undefined_pixels():
     with pytest.raises(NonFiniteEchoError, match=r"image of raw\.nc: non-finite values in "
                        r"sigma0 \(1 Inf"):
         check_image(bad, "raw.nc")
+    # a calibrated product past float64 is NaN at a pixel without data (valid = 0), and
+    # only there
+    filtered = np.ones((2, 2, 3))
+    filtered[:, 0, 1] = np.nan  # valid = 0
+    check_image(_image(sigma0_filtered=filtered))
+    filtered[0, 1, 1] = np.nan  # valid = 1
+    assert image_problems(_image(sigma0_filtered=filtered)) == [
+        "sigma0_filtered (1 NaN of 12 values at defined pixels)"]
 
 
 def test_an_image_with_inf_stops_the_run_and_leaves_no_file(tmp_path, capsys, monkeypatch):
@@ -204,3 +213,90 @@ def test_an_image_of_noise_beyond_float32_is_refused_by_check(tmp_path, capsys):
     scene.write_text(SCENE.replace("prf_hz = 500.0", "prf_hz = 500.0\nthermal_noise = "
                                    "true\nnoise_bandwidth_hz = 5e-324"))
     assert main(["check", str(scene)]) == 0
+
+
+#: A scene `check` accepts whose image's noise calibrates beyond float32: a 5e-43 W
+#: transmitter (its noise-equivalent RCS bound, 9e29 m^2, is under the preflight's 1e30)
+#: at 100 m height and 1.5 km range, its 3 m aperture pointed 1.5 deg off the image
+#: (the bound takes the aperture's peak gain and the height for the range). sigma0 of its
+#: noise reaches ~9e39: float32 image files held Inf there (the guard then refused the
+#: image of a scene check had accepted); the products are float64 now.
+BEYOND_FLOAT32 = """
+[sea]
+wind_speed_m_s = 5.0
+size_x_m = 32.0
+nx = 32
+
+[radar]
+carrier_frequency_hz = 1.0e10
+sampling_rate_hz = 180.0e6
+prf_hz = 500.0
+thermal_noise = true
+transmit_power_w = 4.827944717311516e-43
+n_pulses = 16
+start_time_s = -0.015
+sea_clutter = false
+window_start_m = 1470.0
+window_end_m = 1540.0
+[radar.waveform]
+kind = "lfm"
+bandwidth_hz = 150.0e6
+duration_s = 4.0e-6
+
+[transmitter]
+motion = "linear"
+position_m = [-1500.0, 0.0, 100.0]
+velocity_m_s = [0.0, 100.0, 0.0]
+[transmitter.antenna]
+pattern = "rectangular"
+width_m = 3.0
+height_m = 3.0
+azimuth_deg = -88.5
+depression_deg = 3.81
+
+[[targets]]
+position_m = [2.0, -1.5, 0.0]
+rcs_m2 = 10.0
+
+[image]
+pixel_m = 0.5
+extent_m = [-4.0, 4.0, -4.0, 4.0]
+azimuth_window = "hamming"
+figures = false
+speckle_filter = "boxcar"
+looks = [2, 2]
+"""
+
+
+@pytest.mark.filterwarnings("ignore::seaecho.warnings.SamplingWarning")
+def test_image_beyond_float32_is_written_finite(tmp_path, capsys):
+    scene = tmp_path / "s.toml"
+    scene.write_text(BEYOND_FLOAT32)
+    assert main(["check", str(scene)]) == 0
+    assert main(["run", str(scene), "-o", str(tmp_path / "r.nc"), "-q", "--no-figures"]) == 0
+    with xr.open_dataset(tmp_path / "r_image.nc", engine="h5netcdf") as img:
+        img = img.load()
+    assert image_problems(img) == []
+    f32 = float(np.finfo(np.float32).max)
+    valid = img["valid"].values.astype(bool)
+    for name in ("sigma0", "pauli", "sigma0_filtered", "pauli_filtered",
+                 "sigma0_multilook"):
+        a = img[name].values
+        assert a.dtype == np.float64, name
+        assert np.isfinite(a).all(), name  # no pixel without data here: finite everywhere
+    assert valid.all()
+    assert np.nanmax(img["sigma0"].values) > f32  # what float32 held as Inf
+    assert img["image"].dtype == np.complex128
+
+
+def test_calibrated_products_are_nan_only_where_there_is_no_data():
+    # _calibrated: a value past float64 becomes NaN at a pixel without data, and stays
+    # (for the guard to report) at a pixel with data
+    from seaecho.imaging.focus import _calibrated
+
+    a = np.array([[np.inf, 5.0, np.nan], [np.inf, 2.0, 3.0]], dtype=np.float32)
+    nodata = np.array([[True, True, True], [False, False, False]])
+    out = _calibrated(a, nodata)
+    assert out.dtype == np.float64
+    assert np.isnan(out[0, [0, 2]]).all() and out[0, 1] == 5.0  # finite values stay
+    assert np.isinf(out[1, 0]) and out[1, 1] == 2.0

@@ -174,3 +174,33 @@ def test_signature_bytes_do_not_depend_on_the_threads(monkeypatch):
     assert a.totals.tobytes() == b.totals.tobytes()
     assert a.centres.position.tobytes() == b.centres.position.tobytes()
     assert a.centres.s.tobytes() == b.centres.s.tobytes()
+
+
+def test_an_empty_batch_on_a_worker_thread_is_no_hits(monkeypatch):
+    # The abort once seen with SBR threads on: a batch with no ray left after the first
+    # bounce asked Mitsuba to intersect empty arrays, and Dr.Jit aborted the process
+    # ("jit_var(r0): unknown variable!") on whichever thread traced it (reproduced on a
+    # worker thread with the guard of sbr._intersect removed). This bistatic trace of a
+    # sphere over the sea (small batches) holds one such batch: on 4 threads it is no
+    # hits, and the signature has the bytes of one thread.
+    import seaecho.tracing.sbr as sbr
+
+    empty = []
+    intersect = sbr._intersect
+
+    def counted(mi, scene, o, d):
+        empty.append(o.shape[0] == 0)
+        return intersect(mi, scene, o, d)
+
+    monkeypatch.setattr(sbr, "_intersect", counted)
+    v, f = canonical.sphere(0.25, 2)
+    tx, rx = [21.944, 39.971, 14.558], [87.669, -5.565, 28.572]
+    out = []
+    for threads in (4, 1):
+        monkeypatch.setattr(sbr, "THREADS", threads)
+        out.append(trace_signature(TraceMesh.single(v + [0, 0, 1.5], f), tx, rx, F,
+                                   options=SBROptions(rays_per_wavelength=4, batch=2048),
+                                   sea=SeaPlane(eps_r=complex(50, -30), sigma_h=0.02)))
+    assert sum(empty) == 2  # one empty batch in each trace
+    assert out[0].totals.tobytes() == out[1].totals.tobytes()
+    assert out[0].centres.s.tobytes() == out[1].centres.s.tobytes()

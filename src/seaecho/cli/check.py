@@ -23,7 +23,7 @@ def run(args: argparse.Namespace) -> int:
 
     from ..build import check_scene
     from ..config import load_scene
-    from ..preflight import check_run
+    from ..preflight import check_run, default_output
     from . import check_memory_option
 
     check_memory_option(args.max_memory_gb)
@@ -31,8 +31,10 @@ def run(args: argparse.Namespace) -> int:
     runnable = scene.radar is not None and scene.transmitter is not None
     resources = None
     if runnable:  # what `seaecho run` would refuse, refused here too
+        output, field = default_output(scene, args.scene)
         resources = check_run(scene, args.scene, base_dir=Path(args.scene).parent,
-                              max_memory_gb=args.max_memory_gb, figures=not args.no_figures)
+                              max_memory_gb=args.max_memory_gb, figures=not args.no_figures,
+                              output=output, output_field=field)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         check_scene(scene)

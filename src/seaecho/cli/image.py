@@ -78,9 +78,8 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
     img = image(raw_path, cfg, backend=backend, progress=progress, timings=timings)
     if "receiver" in img.dims:  # multistatic: each receiver's checked, and the fusion
         return _multistatic_files(img, out, cfg, timings, t, figures)
-    check_image(img, str(raw_path))  # Inf, or NaN at a defined pixel: exit 2, no file
-    with quiet_invalid_netcdf():
-        write_dataset_atomic(img, out)
+    with quiet_invalid_netcdf():  # Inf, or NaN at a pixel with data: exit 2, no file
+        write_dataset_atomic(img, out, guard=lambda ds: check_image(ds, str(raw_path)))
     wrote = [out]
     ny, nx = img.sizes["y"], img.sizes["x"]
     print(f"wrote {out} ({img.sizes['channel']} channels x {ny} x {nx} pixels of "

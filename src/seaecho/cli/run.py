@@ -75,23 +75,17 @@ def run(args: argparse.Namespace) -> int:
     from ..config import SceneError
     from ..guards import NonFiniteEchoError
     from ..io.zarr_run import StoreError, is_zarr, part_path
-    from ..preflight import check_run
+    from ..preflight import check_run, default_output, image_output
     from . import UsageError
 
     scene = load_scene(args.scene)
     if scene.radar is None or scene.transmitter is None:
         raise SceneError(f"{args.scene}: `seaecho run` needs [radar] and [transmitter] "
                          "sections")
-    if args.output:
-        out = Path(args.output)
-    elif scene.run.output:
-        out = Path(scene.run.output)
-    else:
-        out = Path(Path(args.scene).stem + ".nc")
+    out, out_field = ((Path(args.output), "-o") if args.output
+                      else default_output(scene, args.scene))  # [run] output, or SCENE.nc
     zarr_out = is_zarr(out)
-    if zarr_out and scene.image is not None:
-        raise UsageError(f"{args.scene} has [image]: focusing reads a netCDF run; write "
-                         "the run to a .nc file")
+    # (a Zarr output with [image], a folder that does not exist: the preflight below)
     if args.workers is not None and args.workers < 1:
         raise UsageError(f"--workers {args.workers}: must be >= 1")
     if args.block_pulses is not None and args.block_pulses < 1:
@@ -102,7 +96,8 @@ def run(args: argparse.Namespace) -> int:
     checked = scene if args.pulses is None else first_pulses(scene, args.pulses)
     print(check_run(checked, args.scene, base_dir=Path(args.scene).parent,
                     max_memory_gb=args.max_memory_gb, figures=not args.no_figures,
-                    workers=args.workers, block=args.block_pulses))
+                    workers=args.workers, block=args.block_pulses, output=out,
+                    output_field=out_field))
     try:  # the Python API's run: same checks, same bytes (seaecho.simulate)
         with _cache_disabled(args.no_cache):
             ds = simulate(scene, path=out, pulses=args.pulses, progress=not args.quiet,
@@ -138,7 +133,7 @@ def run(args: argparse.Namespace) -> int:
         from .image import focus_to_files
 
         try:
-            focus_to_files(out, out.with_name(out.stem + "_image.nc"), scene.image,
+            focus_to_files(out, image_output(out), scene.image,
                            progress=not args.quiet, figures=not args.no_figures)
         except NonFiniteEchoError:  # the image guard: exit 2 leaves no file of this run
             for path in wrote:

@@ -3,7 +3,8 @@ parameter studies, serially or on a Dask cluster (:mod:`seaecho.distributed`).
 
 VALUES is a value in TOML syntax (``8``, ``"hh"``, ``[0, 0, 10]``), a comma list of them
 (``4,8,12``; ``jonswap,elfouhaily``) or an inclusive range ``start:stop:step``
-(``4:16:2`` is 4, 6, ..., 16; integers if all three are). The cases are the Cartesian
+(``4:16:2`` is 4, 6, ..., 16; integers if all three are), or ``start:stop`` of integers
+(step 1: ``run.seed=1:3`` is 1, 2, 3). The cases are the Cartesian
 product of the ``--set`` options (the last varies fastest), each validated like a scene
 file before any work starts (:func:`seaecho.config.overrides.with_overrides`).
 """
@@ -19,6 +20,11 @@ from pathlib import Path
 MAX_CASES = 1_000_000
 _NUM = r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?"
 _RANGE = re.compile(rf"^\s*({_NUM})\s*:\s*({_NUM})\s*:\s*({_NUM})\s*$")
+_INT = r"[+-]?\d+"
+_INT_RANGE = re.compile(rf"^\s*({_INT})\s*:\s*({_INT})\s*$")
+#: What a range looks like, for the messages.
+RANGE_SYNTAX = ("a range is start:stop:step (stop included, e.g. 4:16:2 or 0.1:0.5:0.1), "
+                "or start:stop for integers with step 1 (e.g. run.seed=1:3)")
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -69,6 +75,16 @@ def parse_values(text: str) -> tuple[str, list]:
 
     name, _, raw = text.partition("=")
     m = _RANGE.match(raw)
+    m2 = _INT_RANGE.match(raw)
+    if m2 and "=" in text:  # start:stop of integers, step 1
+        parse_assignment(f"{name}=0")  # checks the name
+        a, b = int(m2.group(1)), int(m2.group(2))
+        if b < a:
+            raise SceneError(f"--set {text}: a range start:stop needs stop >= start; "
+                             + RANGE_SYNTAX)
+        if b - a + 1 > MAX_CASES:
+            raise SceneError(f"--set {text}: {b - a + 1} values, at most {MAX_CASES}")
+        return name.strip(), list(range(a, b + 1))
     if m and "=" in text:
         parse_assignment(f"{name}=0")  # checks the name
         start, stop, step = (m.group(i) for i in (1, 4, 7))
@@ -82,7 +98,7 @@ def parse_values(text: str) -> tuple[str, list]:
             values = [round(a + i * d, 12) for i in range(n)] if n <= MAX_CASES else []
         if n < 1:
             raise SceneError(f"--set {text}: a range start:stop:step needs step > 0 and "
-                             "stop >= start")
+                             "stop >= start; " + RANGE_SYNTAX)
         if n > MAX_CASES:
             raise SceneError(f"--set {text}: {n} values, at most {MAX_CASES}")
         return name.strip(), values
@@ -157,9 +173,15 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"-o {out}: exists and is not a folder")
 
     from .. import distributed
+    from ..config import SceneError
 
     scene = load_scene(args.scene)
-    cases = distributed.sweep_cases(scene, grid, source=args.scene)
+    try:
+        cases = distributed.sweep_cases(scene, grid, source=args.scene)
+    except SceneError as exc:  # e.g. "1.5:3" read as a string: name the range syntax
+        if any(isinstance(v, str) and ":" in v for vs in grid.values() for v in vs):
+            raise SceneError(f"{exc}\n(--set: {RANGE_SYNTAX})") from None
+        raise
     if args.pulses is not None:
         cases = [distributed.Case(c.index, c.overrides, first_pulses(c.scene, args.pulses))
                  for c in cases]

@@ -201,12 +201,30 @@ def default_extent(ds, bandwidth: float) -> tuple[float, float, float, float]:
 
 
 def _single(a) -> NDArray:
-    """``a`` in single precision (complex64 if complex, else float32), as the image file
-    holds it: a value beyond its range is +-Inf, which the image's finite-output guard
-    (``seaecho.guards.check_image``) reports, so no overflow warning here."""
+    """``a`` in single precision (complex64 if complex, else float32), for the products
+    bounded by construction (fractions in [0, 1])."""
     a = np.asarray(a)
-    with np.errstate(over="ignore"):
-        return a.astype(np.complex64 if np.iscomplexobj(a) else np.float32)
+    return a.astype(np.complex64 if np.iscomplexobj(a) else np.float32)
+
+
+def _calibrated(a, nodata: NDArray | None = None) -> NDArray:
+    """A calibrated product (s, sigma0, A_eff, K, Pauli powers, their filtered and
+    multilooked versions) in double precision, as computed and as the file holds it
+    (float32 overflowed to Inf beyond 3.4e38: sigma0 = |I|^2 / (K^2 A_eff) of noise at
+    pixels where K is a tiny fraction of its peak). A value that overflowed float64 too
+    becomes NaN where ``nodata`` (broadcast over the leading axis) marks a pixel without
+    data (``valid`` = 0: K < 0.1 max K, or the echoes outside the receive window); at a
+    pixel with data every value is bounded (K >= 0.1 max K) and the image guard
+    (``seaecho.guards.check_image``) reports any that is not."""
+    a = np.asarray(a)
+    a = a.astype(np.complex128 if np.iscomplexobj(a) else np.float64)
+    if nodata is None:
+        return a
+    bad = ~np.isfinite(a) & np.broadcast_to(nodata, a.shape)
+    if bad.any():
+        a = a.copy()
+        a[bad] = np.nan
+    return a
 
 
 def _power_of_two_scale(y: NDArray) -> float:
@@ -433,13 +451,16 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
     coverage = gain / k_max if k_max > 0 else np.zeros_like(gain)
     valid = (coverage >= MIN_COVERAGE) & (inside >= MIN_INSIDE)
     img = acc.reshape((n_c,) + grid.shape)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        s = np.where(gain > 0, img / gain, np.nan + 0j)
+    nodata = ~valid
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        s = _calibrated(np.where(gain > 0, img / gain, np.nan + 0j), nodata)
         # ratios before squares: a finite sigma0 or A_eff does not overflow on the way
-        sigma0 = np.where(q > 0, (np.abs(img) / g0 / np.sqrt(q)) ** 2, np.nan)
+        sigma0 = _calibrated(np.where(q > 0, (np.abs(img) / g0 / np.sqrt(q)) ** 2, np.nan),
+                             nodata)
         # A_eff is undefined (NaN) where sigma0 is: no pulse weighted, or an aperture that
         # does not turn (q = 0); a 0 here made the Pauli powers / A_eff infinite
-        area = np.where((gain > 0) & (q > 0), (np.sqrt(q) / (gain / g0)) ** 2, np.nan)
+        area = _calibrated(np.where((gain > 0) & (q > 0), (np.sqrt(q) / (gain / g0)) ** 2,
+                                    np.nan), nodata)
     coords = {
         "channel": ("channel", np.array(raw.channels)),
         "x": ("x", grid.x, {"units": "m", "long_name": "pixel centre, east"}),
@@ -448,15 +469,15 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         "polarisation": ("polarisation", np.array(["HH", "HV", "VH", "VV"])),
     }
     data = {
-        "image": (("channel", "y", "x"), _single(s),
+        "image": (("channel", "y", "x"), _calibrated(s),
                   {"units": "m", "long_name": "calibrated complex image s = I / K: |s|^2 "
                    "is the RCS sigma_mn at a point target's peak"}),
-        "sigma0": (("channel", "y", "x"), _single(sigma0),
+        "sigma0": (("channel", "y", "x"), _calibrated(sigma0),
                    {"units": "m2 m-2", "long_name": "|I|^2 / (K^2 A_eff): the mean over a "
                     "distributed target is its sigma0"}),
-        "gain": (("y", "x"), _single(gain),
+        "gain": (("y", "x"), _calibrated(gain),
                  {"units": "sqrt(W) m-1", "long_name": "K = sum_p w_p A_p (eq K2)"}),
-        "resolution_area": (("y", "x"), _single(area),
+        "resolution_area": (("y", "x"), _calibrated(area),
                             {"units": "m2", "long_name": "A_eff (eq K3): integral of the "
                              "squared normalised impulse response"}),
         "coverage": (("y", "x"), _single(coverage),
@@ -469,25 +490,26 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
                    f"inside_window >= {MIN_INSIDE}"}),
     }
     chans = dict(zip(raw.channels, s, strict=True))
-    pauli = pauli_powers(chans)
+    with np.errstate(over="ignore"):  # squares past 1e308 at no-data pixels: NaN below
+        pauli = pauli_powers(chans)
     if pauli is not None:
-        with np.errstate(divide="ignore", invalid="ignore"):
-            pauli = pauli / area[None]
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            pauli = _calibrated(pauli / area[None], nodata)
         coords["component"] = ("component", np.array(PAULI_NAMES))
-        data["pauli"] = (("component", "y", "x"), _single(pauli),
+        data["pauli"] = (("component", "y", "x"), _calibrated(pauli),
                          {"units": "m2 m-2", "long_name": "Pauli powers (|HH-VV|^2, "
                           "|HV+VH|^2, |HH+VV|^2) / 2 in sigma0 units"})
     if cfg.speckle_filter != "none":
         stack = np.nan_to_num(sigma0)
         data["sigma0_filtered"] = (
             ("channel", "y", "x"),
-            _single(speckle_filter(stack, cfg.speckle_filter, cfg.filter_size)),
+            _calibrated(speckle_filter(stack, cfg.speckle_filter, cfg.filter_size), nodata),
             {"units": "m2 m-2", "long_name": f"sigma0, {cfg.speckle_filter} filter"})
         if pauli is not None:
             data["pauli_filtered"] = (
                 ("component", "y", "x"),
-                _single(speckle_filter(np.nan_to_num(pauli), cfg.speckle_filter,
-                                       cfg.filter_size)),
+                _calibrated(speckle_filter(np.nan_to_num(pauli), cfg.speckle_filter,
+                                           cfg.filter_size), nodata),
                 {"units": "m2 m-2", "long_name": f"Pauli powers, {cfg.speckle_filter} "
                  "filter"})
     if cfg.looks != (1, 1):
@@ -497,7 +519,8 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         coords["x_look"] = ("x_look", multilook(grid.x[None, :], (1, lx))[0],
                             {"units": "m", "long_name": "centre of the look block"})
         data["sigma0_multilook"] = (("channel", "y_look", "x_look"),
-                                    _single(multilook(np.nan_to_num(sigma0), cfg.looks)),
+                                    _calibrated(multilook(np.nan_to_num(sigma0), cfg.looks),
+                                                multilook(nodata[None], cfg.looks) > 0),
                                     {"units": "m2 m-2", "long_name": f"sigma0, {ly} x {lx} "
                                      "looks (y, x)"})
     truth, truth_attrs = truth_on_grid(raw.ds, grid.x, grid.y, raw.channels)

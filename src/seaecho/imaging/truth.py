@@ -91,8 +91,7 @@ def truth_on_grid(raw, x: NDArray, y: NDArray, channels: list[str]) -> tuple[dic
     for k, name in enumerate(channels):
         if name in pol:
             truth[k] = np.where(tile, s0[pol.index(name)][np.ix_(iy, ix)], np.nan)
-    with np.errstate(over="ignore"):  # beyond float32: Inf, which the image guard reports
-        truth = truth.astype(np.float32)
+    # float64, as the raw file's map: a float32 copy overflowed to Inf beyond 3.4e38
     data["sigma0_truth"] = (("channel", "y", "x"), truth,
                             {"units": "m2 m-2", "long_name": "cell-mean sigma_mn x visibility "
                              "of the facets (sigma-map pulse), nearest cell"})

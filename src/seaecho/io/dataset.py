@@ -12,7 +12,7 @@ import contextlib
 import json
 import os
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -57,14 +57,20 @@ def scene_attrs(scene) -> dict[str, Any]:
     }
 
 
-def write_dataset_atomic(ds: xr.Dataset, path: str | os.PathLike) -> Path:
+def write_dataset_atomic(ds: xr.Dataset, path: str | os.PathLike,
+                         guard: Callable[[xr.Dataset], None] | None = None) -> Path:
     """Write ``ds`` to netCDF-4 (h5netcdf) at ``path`` atomically.
 
     Complex variables are stored as HDF5 compound types (``invalid_netcdf=True``), which
-    ``xarray.open_dataset(path, engine="h5netcdf")`` reads back as complex.
+    ``xarray.open_dataset(path, engine="h5netcdf")`` reads back as complex. ``guard``, if
+    given, is called on ``ds`` inside the atomic write, before the file is renamed into
+    place (e.g. ``seaecho.guards.check_image``): if it raises, nothing is left at
+    ``path``.
     """
     path = Path(path)
     with atomic_path(path) as tmp:
+        if guard is not None:
+            guard(ds)
         ds.to_netcdf(tmp, engine="h5netcdf", invalid_netcdf=True)
     return path
 

@@ -126,7 +126,9 @@ from ..targets.po import local_basis, po_components, shape_function, tube_footpr
 from .variant import drjit_mitsuba, mitsuba_modules
 
 __all__ = [
+    "BOUNDING_MARGIN",
     "SBROptions",
+    "bounding_sphere",
     "SeaPlane",
     "Signature",
     "TraceMesh",
@@ -141,12 +143,30 @@ _RECIPROCAL_SIGN = np.array([[1.0, -1.0], [-1.0, 1.0]])
 #: Path kind of a contribution of the trace from R, seen from T: sea-hull <-> hull-sea.
 _REVERSE_PATH = np.array([0, 2, 1, 3], dtype=np.int64)
 #: Worker threads of a trace (batches of rays in parallel; the result does not depend
-#: on it). One by default: with several, a scene of the fuzzing suite aborted the process
-#: inside Mitsuba's ray intersection on a worker thread (Dr.Jit LLVM), so threads are
-#: opt-in through the environment variable ``SEAECHO_SBR_THREADS``. (An intersection of
-#: empty arrays, now never made, aborted it on the main thread too; that it was the
-#: worker threads' abort is likely, not verified.)
+#: on it), opt-in through the environment variable ``SEAECHO_SBR_THREADS``. A scene of the
+#: fuzzing suite once aborted the process inside Mitsuba's ray intersection on a worker
+#: thread: an intersection of empty arrays (a batch with no ray left), which
+#: :func:`_intersect` no longer makes; without that guard the abort is reproduced on a
+#: worker thread ("jit_var(r0): unknown variable!", docs/checks.md). One thread stays the
+#: default because the memory estimate (``seaecho.resources``) counts one batch of rays
+#: in flight, and N threads hold N + 1.
 THREADS = max(1, int(os.environ.get("SEAECHO_SBR_THREADS", 1)))
+
+
+#: An antenna must be farther than this many bounding radii from a hull's centre: the
+#: rays are launched from a sphere around the hull (checked again by the preflight,
+#: ``seaecho.preflight.hull_problems``).
+BOUNDING_MARGIN = 1.05
+
+
+def bounding_sphere(vertices: NDArray) -> tuple[NDArray[np.float64], float]:
+    """(centre, radius) of the sphere the rays are launched from: the centre of the
+    vertices' axis-aligned box [m], and the largest distance of a vertex from it [m]."""
+    v = np.asarray(vertices, dtype=np.float64)
+    lo, hi = v.min(axis=0), v.max(axis=0)
+    centre = 0.5 * (lo + hi)
+    d = v - centre
+    return centre, float(np.sqrt(_dot(d, d)).max())
 
 
 def _ordered_map(fn: Callable, jobs: Iterable) -> Iterator:
@@ -482,10 +502,8 @@ class _Tracer:
         self.opt = options
         self.sea = sea
         v = hull.vertices
-        lo, hi = v.min(axis=0), v.max(axis=0)
-        self.centre = 0.5 * (lo + hi)
+        self.centre, self.radius = bounding_sphere(v)
         self.hv = v - self.centre
-        self.radius = float(np.sqrt(_dot(self.hv, self.hv)).max())
         normals, area = _face_normals(self.hv, hull.faces)
         good = area > 0
         self.faces = hull.faces[good]
@@ -500,7 +518,7 @@ class _Tracer:
         self.tx = self.tx_w - self.centre
         self.rx = self.rx_w - self.centre
         for name, p in (("transmitter", self.tx), ("receiver", self.rx)):
-            if np.sqrt(_dot(p, p)) < 1.05 * self.radius:
+            if np.sqrt(_dot(p, p)) < BOUNDING_MARGIN * self.radius:
                 raise ValueError(f"the {name} is within the hull's bounding sphere (radius "
                                  f"{self.radius:.1f} m about {self.centre.round(2).tolist()}"
                                  " m): SBR needs it outside")
