@@ -183,7 +183,11 @@ def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:
     ship = _ship(scene)
     kelvin = bool(scene.ship.kelvin_wake) if ship is not None else False
     length = scene.ship.turbulent_wake_length_m if ship is not None else None
-    return Sea(surface, ship, kelvin_wake=kelvin, turbulent_wake_length=length)
+    narrow_v = None
+    if ship is not None and scene.ship.narrow_v and scene.radar is not None:
+        narrow_v = _scene_bragg_vector(scene, 2.0 * np.pi * carrier_frequency(scene) / C0)
+    return Sea(surface, ship, kelvin_wake=kelvin, turbulent_wake_length=length,
+               narrow_v_bragg_vector=narrow_v)
 
 
 def carrier_frequency(scene, frequency: float | None = None) -> float:
@@ -290,16 +294,24 @@ def _scene_bragg_wavenumber(scene, k: float) -> float:
     """Mean-plane Bragg wavenumber at the tile centre at the first pulse [rad/m]
     (``k |(n_s - n_i)_h|``; 2 k sin 45 deg without a transmitter, or with a platform at
     the tile centre)."""
+    return float(np.hypot(*_scene_bragg_vector(scene, k)))
+
+
+def _scene_bragg_vector(scene, k: float) -> tuple[float, float]:
+    """Mean-plane Bragg vector ``k (n_s - n_i)_h`` at the tile centre at the first pulse
+    [rad/m]; (2 k sin 45 deg, 0) without a transmitter, or with a platform at the tile
+    centre (no direction to it)."""
     if scene.transmitter is None:
-        return float(2.0 * k * np.sin(np.pi / 4))
+        return float(2.0 * k * np.sin(np.pi / 4)), 0.0
     tx, rx = _platforms(scene)
     t0 = scene.radar.start_time_s if scene.radar is not None else 0.0
     p_tx, p_rx = tx.state(t0).position, rx.state(t0).position
     r_tx, r_rx = np.linalg.norm(p_tx), np.linalg.norm(p_rx)
     if not (r_tx > 0.0 and r_rx > 0.0):  # a platform at the tile centre (the preflight
-        return float(2.0 * k * np.sin(np.pi / 4))  # refuses it): no direction to it
+        return float(2.0 * k * np.sin(np.pi / 4)), 0.0  # refuses it): no direction to it
     n_i, n_s = -p_tx / r_tx, p_rx / r_rx
-    return float(k * np.hypot(*(n_s - n_i)[:2]))
+    q = k * (n_s - n_i)[:2]
+    return float(q[0]), float(q[1])
 
 
 def build_sea_dynamics(scene, spectrum: DirectionalSpectrum, k: float, k_grid: float,

@@ -29,7 +29,10 @@ class SurfaceState:
     slope_y: NDArray[np.float64]  #: dz/dy, sea + wake [-]
     velocity: NDArray[np.float64]  #: surface velocity (u, v, w), (ny, nx, 3) [m/s]
     wake_elevation: NDArray[np.float64]  #: the Kelvin wake's own height [m]
-    wake_mask: NDArray[np.float64]  #: turbulent wake, 0 (none) .. 1 (short waves damped)
+    #: Bragg spectrum change of the wake: the sea's Bragg spectrum is multiplied by
+    #: 1 - wake_mask; 0 (none) .. 1 (short waves damped by the turbulent wake), negative
+    #: where the narrow-V wake adds Bragg waves (:mod:`seaecho.wake.narrow_v`) [-]
+    wake_mask: NDArray[np.float64]
 
 
 @dataclass(frozen=True)
@@ -128,13 +131,19 @@ class Sea:
         Add the Kelvin wake heights (else only the turbulent-wake mask).
     turbulent_wake_length : float or None
         Length of the turbulent wake [m] (None: the wake stage's default).
+    narrow_v_bragg_vector : (float, float) or None
+        The radar's Bragg vector K_B [rad/m] at which the narrow-V wake's Bragg waves
+        raise the sea's Bragg spectrum (:func:`seaecho.wake.narrow_v_bragg_gain`); None:
+        no narrow-V wake.
     """
 
     def __init__(self, surface: SeaSurface, ship=None, kelvin_wake: bool = True,
-                 turbulent_wake_length: float | None = None) -> None:
+                 turbulent_wake_length: float | None = None,
+                 narrow_v_bragg_vector: tuple[float, float] | None = None) -> None:
         self.surface = surface
         self.ship = ship
         self.turbulent_wake_length = turbulent_wake_length
+        self.narrow_v_bragg_vector = narrow_v_bragg_vector
         self._wake = None
         if ship is not None and kelvin_wake:
             from .wake import KelvinWake
@@ -172,6 +181,14 @@ class Sea:
 
             mask = turbulent_wake_mask(self.ship, self.x, self.y, t,
                                        length=self.turbulent_wake_length)
+            if self.narrow_v_bragg_vector is not None:
+                from .wake import narrow_v_bragg_gain
+
+                k_b = self.narrow_v_bragg_vector
+                gain = narrow_v_bragg_gain(self.ship, self.x, self.y, t, k_b,
+                                           float(self.spectrum.height_spectrum(*k_b)))
+                # Eq N7: the narrow-V's Bragg waves raise what the turbulent wake leaves
+                mask = 1.0 - (1.0 - mask) * (1.0 + gain)
         return w, mask
 
     def state(self, t: float = 0.0) -> SurfaceState:
