@@ -11,17 +11,20 @@ Published observations the tests compare with:
   viscous and radiation decay of short surface waves with first-order Bragg wavelengths".
 * Kelvin's half-angle asin(1/3) = 19.47 deg (Lamb 1932, art. 256) as the gravity limit of
   the ray law (Lighthill 1978, section 3.10).
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 import numpy as np
 import pytest
 
 from seaecho.constants import C0, NU_SEA_WATER, SURFACE_TENSION_OVER_DENSITY, G
-from seaecho.ocean.dispersion import phase_speed
+from seaecho.ocean.dispersion import group_to_phase_ratio, phase_speed, wavenumber_of_phase_speed
 from seaecho.wake import KELVIN_HALF_ANGLE, Ship, narrow_v_amplitude, narrow_v_bragg_gain
 from seaecho.wake.empirical import BREAKING_SLOPE
 from seaecho.wake.narrow_v import (
-    group_to_phase_ratio,
     narrow_v_half_angle,
     ray_angle,
     steady_wave_angle,
@@ -55,6 +58,14 @@ def test_group_to_phase_ratio_limits():
     assert group_to_phase_ratio(1e-3) == pytest.approx(0.5, abs=1e-9)
     assert group_to_phase_ratio(k_m) == pytest.approx(1.0, abs=1e-12)
     assert group_to_phase_ratio(1e6) == pytest.approx(1.5, abs=1e-6)
+
+
+def test_wavenumber_of_phase_speed_inverts_the_dispersion_relation():
+    """Both roots of tau k^2 - c^2 k + g = 0 have phase speed c (eq 15')."""
+    for k in (5.0, 100.0, 296.0, 1000.0):
+        c = float(phase_speed(k))
+        kk = wavenumber_of_phase_speed(c, capillary=k > np.sqrt(G / SURFACE_TENSION_OVER_DENSITY))
+        assert kk == pytest.approx(k, rel=1e-9)
 
 
 @pytest.mark.parametrize("speed", [5.0, 6.0, 8.0, 10.0, 13.0])

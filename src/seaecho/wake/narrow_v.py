@@ -12,7 +12,8 @@ viscous and radiation decay of short surface waves with first-order Bragg wavele
 
 **Ray of a wavenumber** (N1-N3). A wave steady in the ship frame (speed V) travelling at
 angle theta to the track has phase speed ``c(k) = V cos theta``; ``c`` is the deep-water
-capillary-gravity phase speed of eq 15' (:mod:`seaecho.ocean.dispersion`). Its energy
+capillary-gravity phase speed of eq 15' (:mod:`seaecho.ocean.dispersion`, which also
+holds n and the inverse k(c)). Its energy
 moves in the ship frame with the group velocity ``c_g = n c`` along the wave plus the
 stream V along the track, so its ray makes the angle alpha with the track,
 
@@ -113,8 +114,13 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..constants import NU_SEA_WATER, SURFACE_TENSION_OVER_DENSITY, G
-from ..ocean.dispersion import CAPILLARY_WAVENUMBER, phase_speed
+from ..constants import NU_SEA_WATER
+from ..ocean.dispersion import (
+    CAPILLARY_WAVENUMBER,
+    group_to_phase_ratio,
+    phase_speed,
+    wavenumber_of_phase_speed,
+)
 from .empirical import BREAKING_SLOPE
 from .michell import transverse_wavelength, wigley_amplitude
 from .ship import Ship
@@ -126,30 +132,6 @@ _BAND_RESOLUTIONS = 6.0
 _TABLE_SIZE = 2048
 #: Points per cell side averaged by eq N6 [-].
 _SUBSAMPLES = 8
-
-
-def group_to_phase_ratio(k: ArrayLike, surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
-                         g: float = G) -> NDArray[np.float64]:
-    """n = c_g / c of deep-water capillary-gravity waves (eq N1) [-].
-
-    ``d omega / dk`` over ``omega / k`` for ``omega^2 = g k + tau k^3`` (eq 15'):
-    1/2 for gravity waves, 3/2 for capillary waves, 1 at k_m.
-
-    Parameters
-    ----------
-    k : array_like
-        Wavenumber [rad/m], > 0.
-    surface_tension : float
-        Kinematic surface tension tau [m^3/s^2].
-    g : float
-        Gravity [m/s^2].
-
-    References
-    ----------
-    Lighthill (1978) section 3.10; Lamb (1932) art. 267.
-    """
-    tk2 = surface_tension * np.asarray(k, dtype=np.float64) ** 2
-    return (g + 3.0 * tk2) / (2.0 * (g + tk2))  # Eq N1
 
 
 def steady_wave_angle(speed: float, k: ArrayLike) -> NDArray[np.float64]:
@@ -212,16 +194,6 @@ def narrow_v_half_angle(speed: float, bragg_wavenumber: ArrayLike) -> NDArray[np
     return ray_angle(steady_wave_angle(speed, k), group_to_phase_ratio(k))
 
 
-def _branch_wavenumber(c: NDArray[np.float64], capillary: bool) -> NDArray[np.float64]:
-    """k with phase speed c on the gravity (or capillary) branch of eq 15' [rad/m]:
-    ``tau k^2 - c^2 k + g = 0``."""
-    tau = SURFACE_TENSION_OVER_DENSITY
-    disc = np.sqrt(np.maximum(c**4 - 4.0 * G * tau, 0.0))
-    if capillary:
-        return (c * c + disc) / (2.0 * tau)
-    return 2.0 * G / (c * c + disc)  # the smaller root, without cancellation
-
-
 def _rays(ship: Ship, k_lo: float, k_hi: float, capillary: bool):
     """Steady waves of wavenumber in [k_lo, k_hi] (one branch of eq 15'), split where
     alpha(k) turns (the group speed's minimum near 0.39 k_m is an inner caustic of the
@@ -240,7 +212,7 @@ def _rays(ship: Ship, k_lo: float, k_hi: float, capillary: bool):
 
     def phase(th):
         # phi(theta) = k(theta) cos(theta + alpha): phase per metre along the ray alpha
-        return _branch_wavenumber(v * np.cos(th), capillary) * np.cos(th + alpha)
+        return wavenumber_of_phase_speed(v * np.cos(th), capillary) * np.cos(th + alpha)
 
     h = 1e-4 * (0.5 * np.pi - theta)
     phi2 = (phase(theta + h) - 2.0 * phase(theta) + phase(theta - h)) / (h * h)
@@ -297,8 +269,8 @@ def narrow_v_amplitude(ship: Ship, k: ArrayLike, distance: ArrayLike) -> NDArray
     capillary = k_ok > CAPILLARY_WAVENUMBER
 
     def phase(t):
-        kk = np.where(capillary, _branch_wavenumber(v * np.cos(t), True),
-                      _branch_wavenumber(v * np.cos(t), False))
+        kk = np.where(capillary, wavenumber_of_phase_speed(v * np.cos(t), True),
+                      wavenumber_of_phase_speed(v * np.cos(t), False))
         return kk * np.cos(t + alpha)
 
     h = 1e-4 * (0.5 * np.pi - th)
@@ -432,6 +404,6 @@ def _periodogram(ship: Ship, pieces, xs, ys, bragg_vector, dx: float, dy: float
     return w_v
 
 
-__all__ = ["group_to_phase_ratio", "narrow_v_amplitude", "narrow_v_bragg_gain",
+__all__ = ["narrow_v_amplitude", "narrow_v_bragg_gain",
            "narrow_v_half_angle",
            "ray_angle", "steady_wave_angle"]
