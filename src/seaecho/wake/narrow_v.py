@@ -102,6 +102,10 @@ References
    with application to radar (SAR) imagery", J. Ship Res. 32(1), 54-69 (1988).
 .. [6] G. Zilman, A. Zapolski and M. Marom, "The speed and beam of a ship from its wake's
    SAR images", IEEE Trans. Geosci. Remote Sens. 42(10), 2335-2343 (2004).
+.. [10] G. Zilman and T. Miloh, "Radar backscatter of a V-like ship wake from a sea
+   surface covered by surfactants", Proc. 21st Symp. Naval Hydrodynamics, 235-248 (1997):
+   "a bright V with a narrow half angle of 2-3 deg ... explained as a result of the Bragg
+   scattering from ship-generated divergent waves (Milgram 1988)".
 .. [7] M. J. Lighthill, *Waves in Fluids*, Cambridge University Press (1978), section 3.10.
 .. [8] H. Lamb, *Hydrodynamics*, 6th ed., Cambridge University Press (1932), art. 348.
 .. [9] J. K. E. Tunaley, "The narrow-V wake" (abstract): narrow-V wakes are seen
@@ -188,7 +192,9 @@ def narrow_v_half_angle(speed: float, bragg_wavenumber: ArrayLike) -> NDArray[np
 
     References
     ----------
-    Milgram (1988); Shemdin (1990); Reed & Milgram (2002); Zilman, Zapolski & Marom (2004).
+    Milgram (1988); Shemdin (1990); Reed & Milgram (2002). Zilman, Zapolski & Marom (2004)
+    infer a ship's speed from this angle; their text was not available here, so their
+    closed form is not compared.
     """
     k = np.asarray(bragg_wavenumber, dtype=np.float64)
     return ray_angle(steady_wave_angle(speed, k), group_to_phase_ratio(k))
