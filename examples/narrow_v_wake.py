@@ -48,14 +48,17 @@ def _with_narrow_v(scene, on: bool):
     return scene.model_copy(update={"ship": scene.ship.model_copy(update={"narrow_v": on})})
 
 
-def _measure(img, scene) -> dict:
+def _measure(img, scene, img_off) -> dict:
+    """Arm contrast (image with the narrow-V) and arm angle (its ratio to the image
+    without it: same seed, same speckle, so the ratio isolates the narrow-V)."""
     ship = build_sea(scene).ship
     k_b = _scene_bragg_wavenumber(scene, 2.0 * np.pi * carrier_frequency(scene) / C0)
     alpha_b = float(narrow_v_half_angle(ship.speed, k_b))
     x, y = img["x"].values, img["y"].values
     xs, ys = ship.to_ship_frame(x[None, :], y[:, None], 0.0)
-    s = img["sigma0"].values
-    valid = img["valid"].values.astype(bool) & np.all(np.isfinite(s), axis=0)
+    s, s_off = img["sigma0"].values, img_off["sigma0"].values
+    valid = (img["valid"].values.astype(bool) & np.all(np.isfinite(s), axis=0)
+             & np.all(np.isfinite(s_off), axis=0))
     tile = img["tile"].values.astype(bool) if "tile" in img else valid
     sea = valid & img["open_sea"].values.astype(bool)
     start = 0.5 * ship.length + 0.5 * transverse_wavelength(ship.speed)
@@ -68,29 +71,35 @@ def _measure(img, scene) -> dict:
             continue
         sea_mean = float(s[c][sea].mean())
         arm_db = 10 * np.log10(float(s[c][arm].mean()) / sea_mean) if arm.any() else np.nan
-        # arm angle: brightest column per 8 m bin behind the ship, each side
+        rise_db = (10 * np.log10(float(s[c][arm].mean()) / float(s_off[c][arm].mean()))
+                   if arm.any() else np.nan)
+        ratio = s[c] / np.maximum(s_off[c], 1e-30)
+        # arm angle: per 4 m bin behind the ship, each side, the offset of the column
+        # where the ratio (averaged along the bin) peaks, if it rises by 1 dB or more
         pts = []
-        for x0 in np.arange(start, xs[tile].max(), 8.0):
-            band = valid & tile & (xs >= x0) & (xs < x0 + 8.0)
+        for x0 in np.arange(0.5 * ship.length, xs[tile].max(), 4.0):
+            band = valid & tile & (xs >= x0) & (xs < x0 + 4.0)
             for side in (1.0, -1.0):
-                lim = 3.0 * (x0 + 8.0) * np.tan(alpha_b) + 1.0
+                lim = 3.0 * (x0 + 4.0) * np.tan(alpha_b) + 1.0
                 sel = band & (side * ys > 0.0) & (side * ys < lim)
                 if sel.sum() < 8:
                     continue
                 off = np.round(np.abs(ys[sel]) / 0.5).astype(int)
-                prof = np.bincount(off, s[c][sel]) / np.maximum(np.bincount(off), 1)
+                prof = np.bincount(off, ratio[sel]) / np.maximum(np.bincount(off), 1)
                 j = int(np.argmax(prof))
-                if prof[j] > 2.0 * sea_mean:
-                    pts.append((x0 + 4.0, 0.5 * j))
+                if prof[j] > 10 ** 0.1:
+                    pts.append((x0 + 2.0, 0.5 * j))
         if len(pts) >= 3:
             p = np.asarray(pts)
             slope = float(np.sum(p[:, 0] * p[:, 1]) / np.sum(p[:, 0] ** 2))
             angle = float(np.rad2deg(np.arctan(slope)))
         else:
             angle = np.nan
-        out["channels"][name] = {"arm_db": arm_db, "paper_db": paper[name].get("contrast_db",
-                                                                                np.nan),
-                                 "angle_deg": angle, "n_bins": len(pts)}
+        out["channels"][name] = {"arm_db": arm_db, "rise_db": rise_db,
+                                 "paper_db": paper[name].get("contrast_db", np.nan),
+                                 "angle_deg": angle, "n_bins": len(pts),
+                                 "x_max": float(np.max(np.asarray(pts)[:, 0])) if pts
+                                 else np.nan}
     return out
 
 
@@ -122,29 +131,34 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         for label, path in CASES:
             scene = api.load_scene(ROOT / path)
+            imgs = {}
             for on in (False, True):
                 sc = _with_narrow_v(scene, on)
                 raw = api.simulate(sc, path=Path(tmp) / "raw.nc", progress=False,
                                    base_dir=(ROOT / path).parent)
-                img = api.image(raw)
-                m = _measure(img, sc)
-                rows.append((label, on, m))
-                if on:
-                    images.append((label, img, sc, m))
-                print(label, "narrow_v" if on else "off", m, file=sys.stderr, flush=True)
-    print("| scene | narrow_v | k_B [rad/m] | alpha_B [deg] | arms HH / VV [dB] | "
-          "paper's contrast HH / VV [dB] | measured arm angle HH / VV [deg] |")
-    print("|---|---|---|---|---|---|---|")
-    for label, on, m in rows:
-        ch = m["channels"]
+                imgs[on] = (api.image(raw), sc)
+            m_off = _measure(imgs[False][0], imgs[False][1], imgs[False][0])
+            m = _measure(imgs[True][0], imgs[True][1], imgs[False][0])
+            rows.append((label, m_off, m))
+            images.append((label, imgs[True][0], imgs[True][1], m, imgs[False][0]))
+            print(label, m_off, m, file=sys.stderr, flush=True)
+    print("| scene | k_B [rad/m] | alpha_B [deg] | arms / sea, off: HH, VV [dB] | "
+          "arms / sea, on [dB] | rise in the arms, on / off [dB] | paper's contrast, "
+          "off / on: HH, VV [dB] | arm angle from on / off, HH, VV [deg] (bins, to x') |")
+    print("|---|---|---|---|---|---|---|---|")
+    for label, m_off, m in rows:
+        ch, ch0 = m["channels"], m_off["channels"]
 
-        def f(key, fmt, ch=ch):
-            return " / ".join(fmt.format(ch[c][key]) if np.isfinite(ch[c][key]) else "none"
-                              for c in ("HH", "VV"))
+        def f(key, fmt, ch):
+            return ", ".join(fmt.format(ch[c][key]) if np.isfinite(ch[c][key]) else "none"
+                             for c in ("HH", "VV"))
 
-        print(f"| {label} | {'on' if on else 'off'} | {m['k_b']:.0f} | "
-              f"{m['alpha_b_deg']:.2f} | {f('arm_db', '{:+.1f}')} | "
-              f"{f('paper_db', '{:+.1f}')} | {f('angle_deg', '{:.2f}')} |")
+        ang = ", ".join(f"{ch[c]['angle_deg']:.2f} ({ch[c]['n_bins']}, {ch[c]['x_max']:.0f} m)"
+                        if np.isfinite(ch[c]["angle_deg"]) else "none" for c in ("HH", "VV"))
+        print(f"| {label} | {m['k_b']:.0f} | {m['alpha_b_deg']:.2f} | "
+              f"{f('arm_db', '{:+.1f}', ch0)} | {f('arm_db', '{:+.1f}', ch)} | "
+              f"{f('rise_db', '{:+.2f}', ch)} | {f('paper_db', '{:+.1f}', ch0)} / "
+              f"{f('paper_db', '{:+.1f}', ch)} | {ang} |")
     _figure(images)
 
 
@@ -154,8 +168,23 @@ def _figure(images) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    fig, axes = plt.subplots(1, len(images), figsize=(6 * len(images), 5.4))
-    for ax, (label, img, scene, m) in zip(np.atleast_1d(axes), images, strict=True):
+    fig, axes = plt.subplots(2, len(images), figsize=(6 * len(images), 10.8))
+    for ax, (_, img, scene, _, img_off) in zip(axes[1], images, strict=True):
+        c = [str(v) for v in img["channel"].values].index("VV")
+        x, y = img["x"].values, img["y"].values
+        r = 10 * np.log10(np.maximum(img["sigma0"].values[c], 1e-30)
+                          / np.maximum(img_off["sigma0"].values[c], 1e-30))
+        im = ax.pcolormesh(x, y, r, vmin=-3, vmax=10, cmap="magma", shading="auto")
+        ship = build_sea(scene).ship
+        p = ship.position(0.0)
+        end = p - 60.0 * ship.direction  # 60 m astern
+        ax.set_xlim(min(p[0], end[0]) - 10, max(p[0], end[0]) + 10)
+        ax.set_ylim(min(p[1], end[1]) - 10, max(p[1], end[1]) + 10)
+        ax.set_aspect("equal")
+        ax.set_title("VV sigma0 with / without the narrow-V [dB]", fontsize=9)
+        ax.set_xlabel("x east [m]")
+        fig.colorbar(im, ax=ax, shrink=0.8)
+    for ax, (label, img, scene, m, _) in zip(axes[0], images, strict=True):
         c = [str(v) for v in img["channel"].values].index("VV")
         x, y = img["x"].values, img["y"].values
         s = 10 * np.log10(np.maximum(img["sigma0"].values[c], 1e-12))
