@@ -445,6 +445,11 @@ MUTATIONS = [
              "xp.sqrt(xp.clip(1.0 - damping, 0.0, 1.0))",
              ("tests/wake/test_narrow_v.py",),
              "the facet model drops the narrow-V's added Bragg waves (wake mask < 0)"),
+    Mutation("narrow-v-periodogram-one-sided", S + "wake/narrow_v.py",
+             "return 0.25 * a * a * dx * dy / (4.0 * np.pi**2) * resp  # Eq N6",
+             "return 0.5 * a * a * dx * dy / (4.0 * np.pi**2) * resp  # Eq N6",
+             ("tests/wake/test_narrow_v.py",),
+             "the plane wave's variance a^2/2 put whole at +k_w and again at -k_w"),
 ]
 
 

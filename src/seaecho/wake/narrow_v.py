@@ -401,15 +401,43 @@ def _periodogram(ship: Ship, pieces, xs, ys, bragg_vector, dx: float, dy: float
         kx_s, ky_s = k * np.cos(theta), -np.sign(ys[on]) * k * np.sin(theta)
         kwx = -(kx_s * c - ky_s * s)
         kwy = -(kx_s * s + ky_s * c)
-        # Eq N6: the facet's periodogram of the plane wave at +-k_w
-        resp = (np.sinc((kbx - kwx) * dx / (2.0 * np.pi)) ** 2
-                * np.sinc((kby - kwy) * dy / (2.0 * np.pi)) ** 2
-                + np.sinc((kbx + kwx) * dx / (2.0 * np.pi)) ** 2
-                * np.sinc((kby + kwy) * dy / (2.0 * np.pi)) ** 2)
-        w_v[on] += 0.25 * a * a * dx * dy / (4.0 * np.pi**2) * resp
+        w_v[on] += plane_wave_periodogram(a, kwx, kwy, (kbx, kby), dx, dy)
     return w_v
 
 
-__all__ = ["narrow_v_amplitude", "narrow_v_bragg_gain",
+def plane_wave_periodogram(amplitude: ArrayLike, kwx: ArrayLike, kwy: ArrayLike,
+                           bragg_vector: tuple[float, float], dx: float, dy: float
+                           ) -> NDArray[np.float64]:
+    """Height spectrum at K_B that a facet of sides dx, dy sees of the plane wave
+    ``a cos(k_w . r + phase)`` (eq N6) [m^4].
+
+    ``|int_facet z exp(-i K_B . r) dr|^2 / (4 pi^2 dx dy)``: the spectral density whose
+    first-order (small-perturbation) cross section is the facet's (Rice 1951); the cross
+    term between +k_w and -k_w, which depends on the phase and is small once
+    ``|k_w| dx >> 2 pi``, is left out.
+
+    Parameters
+    ----------
+    amplitude : array_like
+        a [m].
+    kwx, kwy : array_like
+        Wave vector k_w [rad/m].
+    bragg_vector : (float, float)
+        K_B [rad/m].
+    dx, dy : float
+        Facet sides [m].
+    """
+    kbx, kby = bragg_vector
+    a = np.asarray(amplitude, dtype=np.float64)
+    kwx = np.asarray(kwx, dtype=np.float64)
+    kwy = np.asarray(kwy, dtype=np.float64)
+    resp = (np.sinc((kbx - kwx) * dx / (2.0 * np.pi)) ** 2
+            * np.sinc((kby - kwy) * dy / (2.0 * np.pi)) ** 2
+            + np.sinc((kbx + kwx) * dx / (2.0 * np.pi)) ** 2
+            * np.sinc((kby + kwy) * dy / (2.0 * np.pi)) ** 2)
+    return 0.25 * a * a * dx * dy / (4.0 * np.pi**2) * resp  # Eq N6
+
+
+__all__ = ["narrow_v_amplitude", "narrow_v_bragg_gain", "plane_wave_periodogram",
            "narrow_v_half_angle",
            "ray_angle", "steady_wave_angle"]
