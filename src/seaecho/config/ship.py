@@ -55,8 +55,9 @@ class ShipConfig(Section):
         False,
         description="add the narrow-V wake: the Bragg-scale divergent waves of the hull raise "
         "the sub-facet Bragg spectrum in two arms of a few degrees about the track "
-        "(docs/wake.md); off by default: their height is Michell's theory capped at the "
-        "breaking steepness, a bound not checked against a measured arm brightness",
+        "(docs/wake.md; needs [radar], whose Bragg vector it uses); off by default: their "
+        "height is Michell's theory capped at the breaking steepness, a bound not checked "
+        "against a measured arm brightness",
     )
     turbulent_wake_length_m: float | None = Field(
         None,
