@@ -10,10 +10,12 @@ SAR's track) with and without it. On each image it measures, per channel:
   |y'| = x' tan alpha_B, from the end of the near field to the tile's edge) over the mean
   over the open sea [dB];
 * the paper's wake-to-sea contrast (``seaecho image``'s, over its Kelvin-arm mask);
-* the arm angle: in 8 m bins of distance behind the ship, the across-track position of
-  the brightest column (sigma0 averaged along the bin) on either side within 3 alpha_B of
-  the track, where it stands 3 dB above the sea; the slope of a line through midship
-  fitted to those positions.
+* the narrow-V's rise in the arms: the image with it over the image without it, mean over
+  the arms [dB] (same seed, so the same speckle);
+* the arm angle: on the ratio of the two images, in 4 m bins of distance behind the ship,
+  the across-track offset of the column where the ratio (averaged along the bin) peaks,
+  on either side within 3 alpha_B of the track, where it rises by 1 dB or more; the slope
+  of a line through midship fitted to those offsets.
 
 Writes ``docs/figures/wake_narrow_v.png`` and prints the table of docs/wake.md. About 4-6
 minutes on two cores. ``--angles`` prints only the half-angle table (eqs N1, N2).
