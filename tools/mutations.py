@@ -505,6 +505,27 @@ MUTATIONS = [
              ("tests/multistatic/test_multistatic.py",),
              "each receiver draws its own sub-facet speckle"),
 
+    # --- the narrow-V wake (eqs N1-N7)
+    Mutation("narrow-v-kelvin-ray-without-n", S + "wake/narrow_v.py",
+             "return np.arctan2(n * t, 1.0 - n + t * t)  # Eq N2",
+             "return np.arctan2(n * t, 1.0 + t * t)  # Eq N2",
+             ("tests/wake/test_narrow_v.py",),
+             "the ray of a steady wave without the group speed's share in its denominator"),
+    Mutation("narrow-v-viscous-decay-halved", S + "wake/narrow_v.py",
+             "np.exp(-2.0 * NU_SEA_WATER * k * k * r / u_e))  # Eq N4",
+             "np.exp(-NU_SEA_WATER * k * k * r / u_e))  # Eq N4",
+             ("tests/wake/test_narrow_v.py",),
+             "the arms' Bragg waves decay at half Lamb's viscous rate"),
+    Mutation("narrow-v-gain-clipped-in-facet-model", S + "scattering/facet.py",
+             "xp.sqrt(xp.maximum(1.0 - damping, 0.0))",
+             "xp.sqrt(xp.clip(1.0 - damping, 0.0, 1.0))",
+             ("tests/wake/test_narrow_v.py",),
+             "the facet model drops the narrow-V's added Bragg waves (wake mask < 0)"),
+    Mutation("narrow-v-periodogram-one-sided", S + "wake/narrow_v.py",
+             "return 0.25 * a * a * dx * dy / (4.0 * np.pi**2) * resp  # Eq N6",
+             "return 0.5 * a * a * dx * dy / (4.0 * np.pi**2) * resp  # Eq N6",
+             ("tests/wake/test_narrow_v.py",),
+             "the plane wave's variance a^2/2 put whole at +k_w and again at -k_w"),
 ]
 
 

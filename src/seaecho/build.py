@@ -206,7 +206,12 @@ def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:
                          rng=generator(scene.run.seed, "surface"), depth=cfg.depth_m)
     ships = build_ships(scene)
     kelvin = [bool(c.kelvin_wake) for c in scene.all_ships]
-    return Sea(surface, list(ships) or None, kelvin_wake=kelvin)
+    narrow = [bool(c.narrow_v) for c in scene.all_ships]
+    k_b = None
+    if any(narrow) and scene.radar is not None:
+        k_b = _scene_bragg_vector(scene, 2.0 * np.pi * carrier_frequency(scene) / C0)
+    return Sea(surface, list(ships) or None, kelvin_wake=kelvin, narrow_v=narrow,
+               narrow_v_bragg_vector=k_b)
 
 
 def carrier_frequency(scene, frequency: float | None = None) -> float:
@@ -339,8 +344,15 @@ def _scene_bragg_wavenumber(scene, k: float) -> float:
     """Mean-plane Bragg wavenumber at the tile centre at the first pulse [rad/m]
     (``k |(n_s - n_i)_h|``; 2 k sin 45 deg without a transmitter, or with a platform at
     the tile centre; with ``[[receivers]]``, the first receiver's pair)."""
+    return float(np.hypot(*_scene_bragg_vector(scene, k)))
+
+
+def _scene_bragg_vector(scene, k: float) -> tuple[float, float]:
+    """Mean-plane Bragg vector ``k (n_s - n_i)_h`` at the tile centre at the first pulse
+    [rad/m]; (2 k sin 45 deg, 0) without a transmitter, or with a platform at the tile
+    centre (no direction to it); with ``[[receivers]]``, the first receiver's pair."""
     if scene.transmitter is None:
-        return float(2.0 * k * np.sin(np.pi / 4))
+        return float(2.0 * k * np.sin(np.pi / 4)), 0.0
     if scene.receivers:  # the first pair's (each receiver's own: build_multistatic)
         scene = receiver_scene(scene, 0)
     tx, rx = _platforms(scene)
@@ -348,9 +360,10 @@ def _scene_bragg_wavenumber(scene, k: float) -> float:
     p_tx, p_rx = tx.state(t0).position, rx.state(t0).position
     r_tx, r_rx = np.linalg.norm(p_tx), np.linalg.norm(p_rx)
     if not (r_tx > 0.0 and r_rx > 0.0):  # a platform at the tile centre (the preflight
-        return float(2.0 * k * np.sin(np.pi / 4))  # refuses it): no direction to it
+        return float(2.0 * k * np.sin(np.pi / 4)), 0.0  # refuses it): no direction to it
     n_i, n_s = -p_tx / r_tx, p_rx / r_rx
-    return float(k * np.hypot(*(n_s - n_i)[:2]))
+    q = k * (n_s - n_i)[:2]
+    return float(q[0]), float(q[1])
 
 
 def build_sea_dynamics(scene, spectrum: DirectionalSpectrum, k: float, k_grid: float,
@@ -858,6 +871,12 @@ def build_multistatic(scene, base_dir: str | os.PathLike = ".") -> MultistaticMo
             sea = copy.copy(sea)
             sea.ships = build_ships(sub)
             sea.ship = sea.ships[0]
+            if sea.narrow_v_ships:  # its narrow-V wakes at its own Bragg vector
+                narrow = [bool(c.narrow_v) for c in sub.all_ships]
+                sea.narrow_v_ships = tuple(s for s, n in zip(sea.ships, narrow, strict=True)
+                                           if n)
+                sea.narrow_v_bragg_vector = _scene_bragg_vector(
+                    sub, 2.0 * np.pi * carrier_frequency(sub) / C0)
         models.append(dataclasses.replace(first, radar=radar, sea=sea))
     return MultistaticModels(receivers=tuple(models),
                              names=tuple(r.name for r in scene.receivers), attrs=attrs)

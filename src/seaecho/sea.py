@@ -29,7 +29,10 @@ class SurfaceState:
     slope_y: NDArray[np.float64]  #: dz/dy, sea + wake [-]
     velocity: NDArray[np.float64]  #: surface velocity (u, v, w), (ny, nx, 3) [m/s]
     wake_elevation: NDArray[np.float64]  #: the Kelvin wake's own height [m]
-    wake_mask: NDArray[np.float64]  #: turbulent wake, 0 (none) .. 1 (short waves damped)
+    #: Bragg spectrum change of the wake: the sea's Bragg spectrum is multiplied by
+    #: 1 - wake_mask; 0 (none) .. 1 (short waves damped by the turbulent wake), negative
+    #: where the narrow-V wake adds Bragg waves (:mod:`seaecho.wake.narrow_v`) [-]
+    wake_mask: NDArray[np.float64]
 
 
 @dataclass(frozen=True)
@@ -136,10 +139,18 @@ class Sea:
     turbulent_wake_length : float or None
         Length of the turbulent wake [m] (None: each ship's own, else the wake stage's
         default).
+    narrow_v : bool or sequence of bool
+        Add each ship's narrow-V wake (:mod:`seaecho.wake.narrow_v`), for all ships or one
+        flag per ship; it needs ``narrow_v_bragg_vector``.
+    narrow_v_bragg_vector : (float, float) or None
+        The radar's Bragg vector K_B [rad/m] at which the narrow-V wakes' Bragg waves
+        raise the sea's Bragg spectrum (:func:`seaecho.wake.narrow_v_bragg_gain`); None:
+        no narrow-V wake.
     """
 
     def __init__(self, surface: SeaSurface, ship=None, kelvin_wake=True,
-                 turbulent_wake_length: float | None = None) -> None:
+                 turbulent_wake_length: float | None = None, narrow_v=False,
+                 narrow_v_bragg_vector: tuple[float, float] | None = None) -> None:
         self.surface = surface
         if ship is None:
             ships: tuple = ()
@@ -156,6 +167,14 @@ class Sea:
                  else [kelvin_wake] * len(ships))
         if len(flags) != len(ships):
             raise ValueError(f"kelvin_wake: {len(flags)} flags for {len(ships)} ships")
+        narrow = (list(narrow_v) if isinstance(narrow_v, (list, tuple))
+                  else [narrow_v] * len(ships))
+        if len(narrow) != len(ships):
+            raise ValueError(f"narrow_v: {len(narrow)} flags for {len(ships)} ships")
+        self.narrow_v_bragg_vector = narrow_v_bragg_vector
+        #: the ships whose narrow-V wake is added (none without a Bragg vector)
+        self.narrow_v_ships = (() if narrow_v_bragg_vector is None else
+                               tuple(s for s, n in zip(ships, narrow, strict=True) if n))
         from .wake import KelvinWake
 
         self._wakes = [KelvinWake(s) for s, k in zip(ships, flags, strict=True) if k]
@@ -200,6 +219,16 @@ class Sea:
                                         length=self.turbulent_wake_length)
                 keep = 1.0 - m if keep is None else keep * (1.0 - m)
             mask = 1.0 - keep if len(self.ships) > 1 else m
+            if self.narrow_v_ships:
+                from .wake import narrow_v_bragg_gain
+
+                k_b = self.narrow_v_bragg_vector
+                s_b = float(self.spectrum.height_spectrum(*k_b))
+                # the ships' Bragg-wave energies add (linear waves)
+                gain = sum(narrow_v_bragg_gain(s, self.x, self.y, t, k_b, s_b)
+                           for s in self.narrow_v_ships)
+                # Eq N7: the narrow-V's Bragg waves raise what the turbulent wakes leave
+                mask = 1.0 - (1.0 - mask) * (1.0 + gain)
         return w, mask
 
     def state(self, t: float = 0.0) -> SurfaceState:

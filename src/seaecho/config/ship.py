@@ -63,6 +63,14 @@ class ShipConfig(Section):
         (0.0, 0.0), description="(x, y) of the hull centre at time 0 [m]"
     )
     kelvin_wake: bool = Field(True, description="add the Kelvin wake (paper eq 16) to the sea")
+    narrow_v: bool = Field(
+        False,
+        description="add the narrow-V wake: the Bragg-scale divergent waves of the hull raise "
+        "the sub-facet Bragg spectrum in two arms of a few degrees about the track "
+        "(docs/wake.md; needs [radar], whose Bragg vector it uses); off by default: their "
+        "height is Michell's theory capped at the breaking steepness, a bound not checked "
+        "against a measured arm brightness",
+    )
     turbulent_wake_length_m: float | None = Field(
         None,
         ge=0.0,

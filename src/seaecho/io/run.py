@@ -118,7 +118,8 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
                            "sigma-map pulse's surface time"}),
             "wake_elevation": (("y", "x"), st.wake_elevation, {"units": "m"}),
             "wake_mask": (("y", "x"), st.wake_mask,
-                          {"units": "1", "long_name": "turbulent wake, 1 = Bragg damped"}),
+                          {"units": "1", "long_name": "wake's Bragg spectrum change d: "
+                           "x (1 - d); 1 = damped, < 0 narrow-V"}),
             "sigma0": (("polarisation", "y_cell", "x_cell"), truth["sigma0"],
                        {"units": "m2 m-2", "long_name": "normalised radar cross section per "
                         "unit horizontal area of the cell (visibility included) at the "

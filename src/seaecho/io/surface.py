@@ -63,7 +63,8 @@ def surface_dataset(sea, times: Sequence[float], attrs: dict | None = None,
     meta = {
         "elevation": ("m", "sea surface elevation above mean sea level, sea + wake"),
         "wake_elevation": ("m", "Kelvin wake elevation alone"),
-        "wake_mask": ("1", "turbulent wake: 0 none, 1 short waves fully damped"),
+        "wake_mask": ("1", "wake's Bragg spectrum change d (the spectrum times 1 - d): 0 none, "
+                      "1 short waves fully damped, < 0 narrow-V Bragg waves added"),
         "slope_x": ("1", "surface slope dz/dx, sea + wake"),
         "slope_y": ("1", "surface slope dz/dy, sea + wake"),
         "velocity_x": ("m s-1", "surface particle velocity along x (linear wave theory)"),

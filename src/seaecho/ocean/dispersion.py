@@ -107,6 +107,58 @@ def phase_speed(
     return np.where(k > 0, c, limit)
 
 
+def group_to_phase_ratio(k: ArrayLike, surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
+                         g: float = G) -> NDArray[np.float64]:
+    """n = c_g / c of deep-water capillary-gravity waves [-] (eq N1 of
+    :mod:`seaecho.wake.narrow_v`).
+
+    ``d omega / dk`` over ``omega / k`` for ``omega^2 = g k + tau k^3`` (eq 15'):
+    1/2 for gravity waves, 3/2 for capillary waves, 1 at k_m.
+
+    Parameters
+    ----------
+    k : array_like
+        Wavenumber [rad/m], > 0.
+    surface_tension : float
+        Kinematic surface tension tau [m^3/s^2].
+    g : float
+        Gravity [m/s^2].
+
+    References
+    ----------
+    M. J. Lighthill, *Waves in Fluids* (1978) section 3.10; Lamb (1932) art. 267.
+    """
+    tk2 = surface_tension * np.asarray(k, dtype=np.float64) ** 2
+    return (g + 3.0 * tk2) / (2.0 * (g + tk2))  # d omega / dk over omega / k
+
+
+def wavenumber_of_phase_speed(c: ArrayLike, capillary: bool = False,
+                              surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
+                              g: float = G) -> NDArray[np.float64]:
+    """Deep-water wavenumber whose phase speed is c (inverse of eq 15') [rad/m].
+
+    ``tau k^2 - c^2 k + g = 0``: two roots above the minimum phase speed
+    ``(4 g tau)^(1/4)``, the gravity branch (k < k_m, default) and the capillary branch
+    (``capillary=True``); below it, the double root k_m.
+
+    Parameters
+    ----------
+    c : array_like
+        Phase speed [m/s], > 0.
+    capillary : bool
+        Return the capillary-branch root.
+    surface_tension : float
+        Kinematic surface tension tau [m^3/s^2].
+    g : float
+        Gravity [m/s^2].
+    """
+    c2 = np.asarray(c, dtype=np.float64) ** 2
+    disc = np.sqrt(np.maximum(c2 * c2 - 4.0 * g * surface_tension, 0.0))
+    if capillary:
+        return (c2 + disc) / (2.0 * surface_tension)
+    return 2.0 * g / (c2 + disc)  # the smaller root, without cancellation
+
+
 def horizontal_to_vertical_ratio(k: ArrayLike, depth: float | None = None
                                  ) -> NDArray[np.float64] | float:
     """coth(K d) [-]: the horizontal over the vertical orbital amplitude at the surface.
@@ -122,5 +174,6 @@ def horizontal_to_vertical_ratio(k: ArrayLike, depth: float | None = None
         return 1.0 / np.tanh(k * depth)  # Lamb art. 228
 
 
-__all__ = ["CAPILLARY_WAVENUMBER", "angular_frequency", "horizontal_to_vertical_ratio",
-           "omega_squared_deep", "phase_speed"]
+__all__ = ["CAPILLARY_WAVENUMBER", "angular_frequency", "group_to_phase_ratio",
+           "horizontal_to_vertical_ratio", "omega_squared_deep", "phase_speed",
+           "wavenumber_of_phase_speed"]

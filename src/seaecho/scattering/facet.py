@@ -13,7 +13,7 @@ part. For each facet the model gives two complex 2x2 *mechanism matrices* in the
     \\mathsf A_s^T\\boldsymbol\\alpha'\\mathsf A_i\\,\\sqrt{W(\\mathbf k'_\\perp)(1-d)}
     \\qquad \\text{(P1, P2)}
 
-(eqs K1-K2 and S7; ``d`` the turbulent-wake damping in [0, 1], 1 = Bragg waves fully
+(eqs K1-K2 and S7; ``d <= 1`` the wake's damping, 1 = Bragg waves fully
 damped), and channel weights ``w`` (eqs B1-B4 with ``beta`` between ``N`` and ``q``).
 Then
 
@@ -361,7 +361,7 @@ def mechanisms(
         ``"bragg4"`` for the axis nodes, the centre weight on ``"bragg"``) and the
         breaking zones' forward tilt [rad] (BR5).
     damping : array, optional
-        Turbulent-wake damping ``d`` in [0, 1].
+        Wake damping ``d <= 1`` (negative where the narrow-V wake adds Bragg waves).
     breaking : array, optional
         Fraction ``q`` of each facet covered by breaking zones [-]: an entry
         ``"breaking"`` (eq P7) and the weights of the others times ``1 - q``.
@@ -419,7 +419,7 @@ def mechanisms(
                            w if keep is None else w * keep)
     if model != "kirchhoff":
         # Eq P2: B = 4 sqrt(pi) k^2 cos cos A_s^T alpha A_i sqrt(W (1 - d)) (eq S7)
-        damp = None if damping is None else xp.sqrt(xp.clip(1.0 - damping, 0.0, 1.0))
+        damp = None if damping is None else xp.sqrt(xp.maximum(1.0 - damping, 0.0))
         kx, ky = bragg_vector(xp, n_i, n_s, N, k)
         if context is not None:
             context["bragg_vector"] = (kx, ky)
@@ -653,8 +653,8 @@ def facet_terms(
         The sea's scattering inputs (wavenumber, permittivity, roughness spectrum,
         unresolved slopes, wind, model, tilt nodes, breaking tilt).
     wake_damping : array_like (N,), optional
-        Turbulent-wake mask in [0, 1] (1 = Bragg waves fully damped); multiplies the
-        Bragg sigma by ``1 - d``.
+        Wake mask ``d <= 1`` (1 = Bragg waves fully damped, negative where the narrow-V
+        wake adds Bragg waves); multiplies the Bragg sigma by ``1 - d``.
     local : mapping or object, optional
         Precomputed ``theta_i, theta_s, phi, rot_i, rot_s`` (e.g. a
         ``seaecho.geometry.facets.Facets`` or the dict of ``facet_frames``); computed

@@ -6,6 +6,8 @@
   (Wigley hull fitted to L, B, T), elevation, slopes and dz/dt at any time (eqs W4-W12).
 - :func:`turbulent_wake_mask`: the damped strip behind the stern (eqs W13-W15), with the
   Marangoni damping of the wake's surfactant film (:mod:`seaecho.wake.film`, eqs W16-W17).
+- :func:`narrow_v_bragg_gain`: the narrow-V wake, Bragg-scale divergent waves that raise
+  the Bragg spectrum in two arms of a few degrees (:mod:`seaecho.wake.narrow_v`, N1-N7).
 
 Theory and sources: ``docs/wake.md``.
 
@@ -28,6 +30,7 @@ from .michell import (
     wigley_wave_resistance,
     wigley_wetted_surface,
 )
+from .narrow_v import narrow_v_amplitude, narrow_v_bragg_gain, narrow_v_half_angle
 from .ship import Ship
 from .turbulent import (
     turbulent_damping_profile,
@@ -48,6 +51,9 @@ __all__ = [
     "havelock_wave_resistance",
     "kelvin_crest_lines",
     "marangoni_damping_ratio",
+    "narrow_v_amplitude",
+    "narrow_v_bragg_gain",
+    "narrow_v_half_angle",
     "submerged_source_amplitude",
     "turbulent_damping_profile",
     "turbulent_wake_film_contrast_db",
