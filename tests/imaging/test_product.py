@@ -139,3 +139,44 @@ def test_a_bad_antenna_variable_is_named(raw, tmp_path, capsys):
     err = capsys.readouterr().err
     assert "tx_antenna_pattern = 9: allowed 0 .. 4" in err and "Traceback" not in err
     assert not out.exists()
+
+
+@pytest.mark.filterwarnings("ignore::seaecho.warnings.SeaechoWarning")
+def test_multistatic_product_has_each_receivers_antenna_and_ignores_the_scene():
+    # [[receivers]]: the rx_antenna_* variables gain the receiver axis (one pattern per
+    # receiver); each receiver's product is focused without parsing the stored scene, so
+    # an unknown key leaves the images bit for bit
+    from seaecho.config import parse_scene
+    from seaecho.config.image import ImageConfig
+    from seaecho.multistatic import MultistaticSimulation, image_multistatic
+
+    aperture = {"pattern": "rectangular", "width_m": 0.3, "height_m": 0.2,
+                "look_at_m": (0.0, 0.0, 0.0)}
+    scene = parse_scene({
+        "sea": {"wind_speed_m_s": 5.0, "size_x_m": 32.0, "nx": 32},
+        "run": {"seed": 1},
+        "radar": {"carrier_frequency_hz": 1e10, "sampling_rate_hz": 200e6, "prf_hz": 500.0,
+                  "n_pulses": 8, "sea_clutter": False, "thermal_noise": False,
+                  "transmit_power_w": 10.0,
+                  "waveform": {"kind": "lfm", "bandwidth_hz": 100e6, "duration_s": 1e-6}},
+        "transmitter": {"position_m": (-200.0, 0.0, 100.0), "antenna": aperture,
+                        "motion": "linear", "velocity_m_s": (0.0, 100.0, 0.0)},
+        "receivers": [
+            {"name": "a", "position_m": (-150.0, 50.0, 80.0), "antenna": aperture},
+            {"name": "b", "position_m": (0.0, -200.0, 60.0),
+             "antenna": {"pattern": "hw_dipole", "look_at_m": (0.0, 0.0, 0.0)}}],
+        "targets": [{"position_m": (1.0, 2.0, 0.0), "rcs_m2": 3.0}]})
+    ds = MultistaticSimulation(scene).dataset(progress=False)
+    assert ds["rx_antenna_pattern"].dims == ("receiver",)
+    assert [int(v) for v in ds["rx_antenna_pattern"].values] == [0, 3]
+    np.testing.assert_array_equal(ds["rx_antenna_width_m"].values, [0.3, 0.0])
+    assert ds["tx_antenna_pattern"].dims == () and ds.attrs["product_version"] == 1
+    cfg = ImageConfig(pixel_m=0.5, extent_m=[-4.0, 6.0, -3.0, 7.0])
+    before = image_multistatic(ds, cfg, backend="numpy")
+    assert (before["fused_receivers"].values == 2).all()  # both pairs focused
+    stored = json.loads(ds.attrs["scene_json"])
+    stored["receivers"][1]["a_key_from_a_newer_seaecho"] = True
+    ds.attrs["scene_json"] = json.dumps(stored)
+    after = image_multistatic(ds, cfg, backend="numpy")
+    for name in before.data_vars:
+        assert before[name].values.tobytes() == after[name].values.tobytes(), name
