@@ -180,3 +180,18 @@ def test_multistatic_product_has_each_receivers_antenna_and_ignores_the_scene():
     after = image_multistatic(ds, cfg, backend="numpy")
     for name in before.data_vars:
         assert before[name].values.tobytes() == after[name].values.tobytes(), name
+
+
+def test_the_product_codes_cover_the_scene_schema():
+    # every pattern, basis and illumination a scene may name has a code in the product
+    # (a new one without a code would make `seaecho run` fail at the writer)
+    import typing
+
+    from seaecho.config.radar import AntennaConfig
+    from seaecho.io.product import BASES, PATTERNS
+    from seaecho.radar.antennas import ILLUMINATIONS
+
+    fields = AntennaConfig.model_fields
+    for name, codes in (("pattern", PATTERNS), ("basis", BASES),
+                        ("illumination", ILLUMINATIONS)):
+        assert set(typing.get_args(fields[name].annotation)) == set(codes), name

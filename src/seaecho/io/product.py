@@ -38,6 +38,9 @@ def antenna_variables(prefix: str, antenna: Antenna) -> dict:
     """The product variables of one antenna, ``<prefix>_antenna_*`` (0-d), as xarray takes
     them: pattern, aperture width and height [m] (0 when the pattern is not an aperture),
     illumination, Taylor sidelobe level [dB] and nbar, port basis."""
+    if antenna.pattern not in PATTERNS:
+        raise ValueError(f"pattern = {antenna.pattern!r}: not implemented yet in the raw "
+                         f"product (version {PRODUCT_VERSION} holds {', '.join(PATTERNS)})")
     aperture = antenna.pattern == "rectangular"
     p = f"{prefix}_antenna_"
     return {
