@@ -68,6 +68,15 @@ def test_the_product_carries_its_version_and_antennas(raw):
             int(ds["tx_antenna_pattern"])] == "rectangular"
         assert float(ds["tx_antenna_width_m"]) == 0.6
         assert float(ds["rx_antenna_width_m"]) == 0.0  # a dipole is not an aperture
+        # the waveform: LFM of B = 150 MHz over T = 4 us, k = B / T (Richards 2014, eq
+        # 4.78), the slope of the stored pulse's instantaneous frequency
+        k = ds.attrs["waveform_chirp_rate_hz_s"]
+        assert k == pytest.approx(150e6 / 4e-6, rel=1e-12)
+        fs = float(ds.attrs["sampling_rate_hz"])
+        phase = np.unwrap(np.angle(ds["transmitted_pulse"].values))
+        f_inst = np.diff(phase) * fs / (2.0 * np.pi)
+        slope = np.polyfit(np.arange(f_inst.size) / fs, f_inst, 1)[0]
+        assert slope == pytest.approx(k, rel=1e-6)
         # the processor's antennas are the builder's: the same gains, bit for bit
         scene_tx, scene_rx = build_antennas(_scene())
         wavelength = 299792458.0 / float(ds.attrs["carrier_frequency_hz"])
