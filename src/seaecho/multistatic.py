@@ -303,11 +303,11 @@ class MultistaticSimulation:
                 "weighting": self.receivers[0].models.radar.range_weighting}
 
 
-def receiver_dataset(ds, receiver: str | int):
+def receiver_dataset(ds, receiver: str | int, *, receiver_scene: bool = True):
     """One receiver of a multistatic dataset in the bistatic layout of ``seaecho run``
-    (``raw``/``compressed`` (pulse, channel, fast_time), ``rx_*`` tracks, ``sigma0``...),
-    its unrecorded channels left out: what ``seaecho image`` and the other readers of a
-    bistatic run take.
+    (``raw``/``compressed`` (pulse, channel, fast_time), ``rx_*`` tracks and antenna,
+    ``sigma0``...), its unrecorded channels left out: what ``seaecho image`` and the other
+    readers of a bistatic run take.
 
     Parameters
     ----------
@@ -315,6 +315,10 @@ def receiver_dataset(ds, receiver: str | int):
         A multistatic run (``ds.attrs["multistatic"] == 1``).
     receiver : str or int
         The receiver's name or index.
+    receiver_scene : bool
+        Give ``scene_json`` the receiver's bistatic scene (parsed from the run's, so only
+        a scene this seaecho can read); False keeps the run's scene as it is (the image
+        processor reads the raw product only, docs/products.md).
     """
     if not int(ds.attrs.get("multistatic", 0)):
         raise ValueError("not a multistatic run (no receiver dimension)")
@@ -343,7 +347,8 @@ def receiver_dataset(ds, receiver: str | int):
              if k not in ("multistatic", "n_receivers", "receiver_note")}
     attrs.update(window_t0_s=float(fast[0]), monostatic=0, receiver=names[index],
                  multistatic_scene_json=ds.attrs["scene_json"],
-                 scene_json=_receiver_scene_json(ds.attrs["scene_json"], index))
+                 scene_json=(_receiver_scene_json(ds.attrs["scene_json"], index)
+                             if receiver_scene else ds.attrs["scene_json"]))
     one.attrs = attrs
     return one
 
@@ -390,8 +395,8 @@ def image_multistatic(ds, config=None, *, backend: str = "drjit", progress: bool
     images = []
     for name in names:
         own: dict = {}
-        img = focus(receiver_dataset(ds, name), config, backend=backend, progress=progress,
-                    timings=own)
+        img = focus(receiver_dataset(ds, name, receiver_scene=False), config,
+                    backend=backend, progress=progress, timings=own)
         check_image(img, f"receiver {name}")  # Inf, or NaN at a defined pixel
         if timings is not None:
             timings[name] = own

@@ -1,10 +1,11 @@
 """SAR image formation from a raw dataset: backprojection, calibration, products, truth.
 
 :func:`focus` reads a ``seaecho run`` dataset through its variables and attributes only
-(``docs/radar.md``, section 7: ``compressed`` or ``raw`` + ``transmitted_pulse``,
-``fast_time``, the ``tx_``/``rx_`` positions, velocities and antenna axes per pulse, true
-and ``_nominal``, ``carrier_frequency_hz``, ``sampling_rate_hz``, ``prf_hz``,
-``transmit_power_w``, ``scene_json`` for the antenna patterns), streams its pulses in
+(the raw product contract of ``docs/products.md``, ``product_version`` 1: ``compressed``
+or ``raw`` + ``transmitted_pulse``, ``fast_time``, the ``tx_``/``rx_`` positions,
+velocities and antenna axes per pulse, true and ``_nominal``, the ``tx_antenna_*`` and
+``rx_antenna_*`` patterns, ``carrier_frequency_hz``, ``sampling_rate_hz``, ``prf_hz``,
+``transmit_power_w``; never the scene), streams its pulses in
 blocks, backprojects them (``imaging.backprojection``, eqs B1-B4) onto a horizontal grid
 and calibrates the result (``imaging.calibration``, eqs K1-K3):
 
@@ -35,6 +36,7 @@ from numpy.typing import NDArray
 
 from ..config.image import ImageConfig
 from ..constants import C0
+from ..io.product import check_product_version, read_antenna
 from .backprojection import PulseBlock, backproject, upsample
 from .calibration import Track, calibration_at, compressed_pulse_energy
 from .windows import AzimuthWindow
@@ -114,9 +116,10 @@ class RawData:
     REQUIRED_VARS = ("fast_time", "transmitted_pulse", "tx_position", "rx_position",
                      "tx_velocity", "rx_velocity", "tx_antenna_axes", "rx_antenna_axes")
     REQUIRED_ATTRS = ("carrier_frequency_hz", "sampling_rate_hz", "prf_hz",
-                      "transmit_power_w", "scene_json")
+                      "transmit_power_w")
 
     def __init__(self, ds) -> None:
+        check_product_version(ds.attrs)
         missing = [v for v in self.REQUIRED_VARS if v not in ds.variables]
         missing += [f"attribute {a}" for a in self.REQUIRED_ATTRS if a not in ds.attrs]
         if "compressed" not in ds and "raw" not in ds:
@@ -139,7 +142,6 @@ class RawData:
         self.pulse = np.asarray(ds["transmitted_pulse"].values, dtype=np.complex128)
         self.range_weighting = str(a.get("range_weighting", "none"))
         self.bandwidth = float(a.get("waveform_bandwidth_hz", self.sampling_rate))
-        self.scene = json.loads(a["scene_json"])
         if self.n_pulses < 1 or self.fast_time.size < 2:
             raise ValueError(f"the dataset has {self.n_pulses} pulses of "
                              f"{self.fast_time.size} samples: nothing to focus")
@@ -158,11 +160,10 @@ class RawData:
         return Track(*arrays)
 
     def antennas(self):
-        """(transmit, receive) antenna patterns of the file's scene (through the builder)."""
-        from ..build import build_antennas
-        from ..config import parse_scene
-
-        return build_antennas(parse_scene(self.scene, source="the dataset's scene_json"))
+        """(transmit, receive) antenna patterns of the product's ``tx_antenna_*`` and
+        ``rx_antenna_*`` variables at the carrier (``io.product``)."""
+        return (read_antenna(self.ds, "tx", self.wavelength),
+                read_antenna(self.ds, "rx", self.wavelength))
 
     def compressed(self, start: int, stop: int, weighting: str | None, nbar: int = 5,
                    sidelobe_db: float = 35.0) -> NDArray[np.complex128]:
@@ -535,7 +536,7 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         "title": "seaecho SAR image (time-domain backprojection)",
         "seaecho_version": __version__,
         "source": os.path.basename(source) if source else "",
-        "scene_json": raw.ds.attrs["scene_json"],
+        "scene_json": raw.ds.attrs.get("scene_json", ""),  # a record, not read
         "image_json": json.dumps(cfg.model_dump(mode="json"), sort_keys=True),
         "track": cfg.track,
         "pixel_m": float(pixel),

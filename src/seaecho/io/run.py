@@ -25,6 +25,7 @@ import numpy as np
 
 from ..constants import C0
 from ..conventions import CHANNELS
+from .product import PRODUCT_VERSION, antenna_variables
 
 
 def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
@@ -94,6 +95,8 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
         data["sweep"] = (("pulse",), scan.sweep(t), {
             "units": "1", "long_name": "sweep index (revolution or sector pass) since t = 0",
             "scan_mode": scan.mode, "scan_period_s": scan.period, "scan_antenna": scanner})
+    for name, antenna in (("tx", radar.tx_antenna), ("rx", radar.rx_antenna)):
+        data.update(antenna_variables(name, antenna))  # the product's gain patterns
     coords["angle"] = ("angle", np.array(["yaw", "pitch", "roll"]))
     coords["antenna_axis"] = ("antenna_axis", np.array(["boresight", "width", "height"]))
     targets = radar.model.targets
@@ -140,6 +143,7 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
          "the matched filter's reference"})
     out = dict(attrs)
     out.update({
+        "product_version": PRODUCT_VERSION,
         "carrier_frequency_hz": radar.carrier,
         "wavelength_m": radar.wavelength,
         "sampling_rate_hz": radar.window.sampling_rate,
@@ -148,6 +152,7 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
         "window_t0_s": radar.window.t0,
         "waveform_bandwidth_hz": radar.waveform.bandwidth,
         "waveform_duration_s": radar.waveform.duration,
+        "waveform_chirp_rate_hz_s": radar.waveform.chirp_rate,
         "monostatic": int(radar.monostatic),
         "sea_clutter": int(truth is not None),
         "raw_units": "sqrt(W): |raw|^2 is the received power [W]",

@@ -30,6 +30,12 @@ import numpy as np
 from numpy.typing import NDArray
 
 
+def chirp_rate(bandwidth: float, duration: float, up: bool = True) -> float:
+    """Chirp rate k = +-B / T [Hz/s] of the linear FM chirp of eq (W1) (Richards 2014,
+    eq 4.78): its instantaneous frequency is k (t - T/2)."""
+    return (1.0 if up else -1.0) * bandwidth / duration
+
+
 def lfm_chirp(bandwidth: float, duration: float, sampling_rate: float, up: bool = True
               ) -> NDArray[np.complex128]:
     """Samples of a unit-amplitude linear FM chirp, eq (W1).
@@ -59,7 +65,7 @@ def lfm_chirp(bandwidth: float, duration: float, sampling_rate: float, up: bool 
                          f"sampling_rate = {sampling_rate} Hz must all be > 0")
     n = max(int(np.ceil(duration * sampling_rate - 1e-9)), 1)
     t = np.arange(n) / sampling_rate
-    k = (1.0 if up else -1.0) * bandwidth / duration
+    k = chirp_rate(bandwidth, duration, up)
     # Eq (W1): quadratic phase, instantaneous frequency k (t - T/2) in [-B/2, B/2]
     return np.exp(1j * np.pi * k * (t - 0.5 * duration) ** 2)
 
@@ -87,19 +93,22 @@ class Waveform:
         B [Hz] (1/T for a plain pulse).
     duration : float
         T [s].
+    chirp_rate : float
+        k [Hz/s] of an LFM chirp (:func:`chirp_rate`); 0 for a plain pulse.
     """
 
     samples: NDArray[np.complex128]
     sampling_rate: float
     bandwidth: float
     duration: float
+    chirp_rate: float = 0.0
 
     @classmethod
     def lfm(cls, bandwidth: float, duration: float, sampling_rate: float,
             up: bool = True) -> Waveform:
         """Linear FM chirp of bandwidth B [Hz] and length T [s] at f_s [Hz], eq (W1)."""
         return cls(lfm_chirp(bandwidth, duration, sampling_rate, up), sampling_rate,
-                   bandwidth, duration)
+                   bandwidth, duration, chirp_rate(bandwidth, duration, up))
 
     @classmethod
     def pulse(cls, duration: float, sampling_rate: float) -> Waveform:
@@ -119,4 +128,4 @@ class Waveform:
         return np.fft.fft(self.samples, n_fft)
 
 
-__all__ = ["Waveform", "lfm_chirp", "plain_pulse"]
+__all__ = ["Waveform", "chirp_rate", "lfm_chirp", "plain_pulse"]
