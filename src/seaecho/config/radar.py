@@ -377,6 +377,13 @@ class RadarConfig(Section):
     sea_update_pulses: int = Field(
         1, ge=1, le=10_000_000, description="recompute the sea surface every N pulses [-]"
     )
+    sea_gain_floor_db: float | Literal["off"] = Field(
+        -60.0, ge=-300.0, le=0.0,
+        description="skip the sea's echo at a pulse where the two-way antenna gain, "
+        "bounded over the whole tile, stays below this level relative to the beams' "
+        "peaks [dB]: the skipped clutter power is at most this gain times the tile's "
+        "clutter power at the peak (docs/scanning.md); 'off' computes it at every pulse",
+    )
     accumulation_precision: Literal["double", "single"] = Field(
         "double",
         description="floating point of the echo accumulation's non-uniform FFT (eq E2): "
