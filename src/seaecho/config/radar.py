@@ -30,7 +30,7 @@ doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
@@ -377,8 +377,8 @@ class RadarConfig(Section):
     sea_update_pulses: int = Field(
         1, ge=1, le=10_000_000, description="recompute the sea surface every N pulses [-]"
     )
-    sea_gain_floor_db: float | Literal["off"] = Field(
-        -60.0, ge=-300.0, le=0.0,
+    sea_gain_floor_db: Annotated[float, Field(ge=-300.0, le=0.0)] | Literal["off"] = Field(
+        -60.0,
         description="skip the sea's echo at a pulse where the two-way antenna gain, "
         "bounded over the whole tile, stays below this level relative to the beams' "
         "peaks [dB]: the skipped clutter power is at most this gain times the tile's "
