@@ -200,6 +200,7 @@ class Simulation:
         self.evolving = self.sea_model is not None and self.sea_model.dynamics is not None
         self._speckle = None
         self._tile_box = None  # the sea tile's box of sea_gain_bound (8, 3) [m]
+        self._skip_cache: dict[int, bool] = {}  # sea_skipped by pulse (a pure function)
         if self.sea is not None:
             from .tracing.engine import FacetEngine
 
@@ -520,7 +521,11 @@ class Simulation:
         floor = self.models.radar.sea_gain_floor
         if self.sea is None or floor is None:
             return False
-        return self.sea_gain_bound(pulse) < floor
+        if pulse not in self._skip_cache:  # asked up to three times per pulse by pulses
+            if len(self._skip_cache) > 4096:
+                self._skip_cache.clear()
+            self._skip_cache[pulse] = self.sea_gain_bound(pulse) < floor
+        return self._skip_cache[pulse]
 
     # ------------------------------------------------------------------- one pulse
     def pulse(self, pulse: int) -> NDArray[np.complex128]:
