@@ -55,6 +55,23 @@ def time_revolution(scene, pulses: np.ndarray) -> dict:
             "skipped": int(skipped), "n": len(pulses), "n_rev": sim.radar.n_pulses}
 
 
+def coverage(path: Path, floors_db=(-60.0, -80.0)) -> None:
+    """Print how the revolution's pulses stand with the beam over the tile of the scene
+    file ``path`` (its own grid): the bound of ``Simulation.sea_gain_bound`` at every
+    pulse (docs/scanning.md, eqs C1-C2)."""
+    from seaecho.config import load_scene
+    from seaecho.simulation import Simulation
+
+    sim = Simulation(load_scene(path))
+    n = sim.radar.n_pulses
+    b = np.array([sim.sea_gain_bound(p) for p in range(n)])
+    db = 10.0 * np.log10(np.maximum(b, 1e-300))
+    below = ", ".join(f"below {f:g} dB at {(db < f).sum()}" for f in floors_db)
+    print(f"  beam over the tile ({path.name}, {n} pulses): bound 1 (beam plane across "
+          f"the tile's box) at {(b >= 1.0).sum()} pulses, {below}; least "
+          f"{db.min():.1f} dB", flush=True)
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--grid", type=int, default=64, help="sea grid points per side")
@@ -69,6 +86,7 @@ def main() -> None:
     print(f"bench_scan: {SCENE.name} on a {grid} x {grid} sea, every {stride}-th pulse of "
           f"the revolution (extrapolated x {stride}); load {os.getloadavg()[0]:.1f}",
           flush=True)
+    coverage(path if a.smoke else SCENE)
     for floor in ("off", a.floor_db):
         scene = scene_with_floor(path, floor)
         pulses = np.arange(0, scene.radar.n_pulses, stride)
