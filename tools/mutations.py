@@ -505,6 +505,19 @@ MUTATIONS = [
              ("tests/multistatic/test_multistatic.py",),
              "each receiver draws its own sub-facet speckle"),
 
+    Mutation("beam-bound-largest-u", S + "radar/coverage.py",
+             "antenna.width * np.abs(u).min() / antenna.wavelength",
+             "antenna.width * np.abs(u).max() / antenna.wavelength",
+             ("tests/radar/test_coverage.py",),
+             "the beam's bound at the tile's farthest corner, not its nearest (eq C1)"),
+    Mutation("beam-bound-no-envelope", S + "radar/coverage.py",
+             "env = np.maximum.accumulate(f[::-1])[::-1]", "env = f",
+             ("tests/radar/test_coverage.py",),
+             "the pattern itself in place of its envelope (eq C1: not a bound)"),
+    Mutation("beam-bound-one-way", S + "radar/coverage.py",
+             "    return g * one_way_bound(radar.rx_antenna,",
+             "    return one_way_bound(radar.rx_antenna,",
+             ("tests/radar/test_coverage.py",), "the two-way bound without the transmitter"),
 ]
 
 
