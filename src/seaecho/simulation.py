@@ -663,6 +663,10 @@ class Simulation:
                    "held: the surface and its speckle are frozen within each block of "
                    "sea_update_pulses pulses (the paper's section V-B)"),
                "phase_update_interval_s": (1.0 / self.radar.prf) if self.evolving else 0.0,
+               # [radar] sea_gain_floor_db as a two-way gain [-]: the sea is skipped where
+               # the beams' bound over the tile is below it (docs/scanning.md, eq C3)
+               "sea_gain_floor": ("off" if self.models.radar.sea_gain_floor is None
+                                  else self.models.radar.sea_gain_floor),
                "subfacet_mss_upwind": m.mss_upwind,
                "subfacet_mss_crosswind": m.mss_crosswind}
         if m.breaking is not None:
