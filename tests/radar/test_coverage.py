@@ -173,3 +173,13 @@ def test_skip_is_independent_of_the_order_of_pulses(motion):
         for p in order:
             p = int(p)
             assert (other.sea_skipped(p), other.pulse(p).tobytes()) == ref[p]
+
+
+def test_antenna_inside_the_box_is_never_skipped():
+    """A radar over the tile (inside its box): directions to the box cover the sphere,
+    the bound is 1 whatever the pointing."""
+    ant = Antenna("rectangular", 0.03, 2.0, 0.1)
+    box = tile_box(np.array([-100.0, 100.0]), np.array([-100.0, 100.0]), 30.0)
+    rot = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    for axes in (np.eye(3), rot):
+        assert one_way_bound(ant, axes, np.array([10.0, -20.0, 15.0]), box) == 1.0

@@ -94,7 +94,9 @@ def one_way_bound(antenna: Antenna, axes: ArrayLike, origin: ArrayLike,
     origin : array_like (3,)
         Antenna phase centre [m].
     corners : array_like (K, 3)
-        Corners of a convex set of points [m] that does not contain ``origin``.
+        Corners of a convex set of points [m]. If the set contains ``origin`` (an
+        antenna over the tile, inside its box), every plane through ``origin`` has
+        corners on both sides and the bound is 1, as it must be.
 
     Returns
     -------
