@@ -140,10 +140,16 @@ def main() -> None:
     ap.add_argument("--freeze", choices=["on", "off"], default=None,
                     help="replay the fused kernel with drjit.freeze (default: "
                          "seaecho.radar.resident.FREEZE)")
+    ap.add_argument("--scene", type=Path, default=None,
+                    help="another scene file (default: Simulation 2)")
+    ap.add_argument("--first", type=int, default=40,
+                    help="first warm-up pulse; the profiled ones follow the two warm-ups")
     add_option(ap)
     args = ap.parse_args()
+    global SIM2
+    if args.scene is not None:
+        SIM2 = args.scene.resolve()
     if args.smoke:  # Simulation 2 on a small grid with a coarse hull trace, one pulse
-        global SIM2
         SIM2 = small_scene(SIM2, pulses=10**6)
         args.grid, args.pulses = GRID, 1
 
@@ -151,9 +157,10 @@ def main() -> None:
     from seaecho.simulation import Simulation
 
     scene = load_scene(SIM2)
-    update = {"tracing": scene.tracing.model_copy(
-                  update={"refresh_interval_s": args.refresh}),
-              "radar": scene.radar.model_copy(update={"sea_update_pulses": args.update})}
+    update = {"radar": scene.radar.model_copy(update={"sea_update_pulses": args.update})}
+    if scene.tracing is not None:
+        update["tracing"] = scene.tracing.model_copy(
+            update={"refresh_interval_s": args.refresh})
     if args.grid:
         update["sea"] = scene.sea.model_copy(update={"nx": args.grid})
     scene = scene.model_copy(update=update)
@@ -171,7 +178,7 @@ def main() -> None:
         sim._resident = None
     elif args.freeze is not None and hasattr(sim._resident, "freeze"):
         sim._resident.freeze = args.freeze == "on"
-    first = 40
+    first = args.first
     for p in (first, first + 1):  # compilation, BVH, lazy imports: not profiled
         sim.compress(sim.pulse(p))
     setup = (time.perf_counter() - w0, time.process_time() - c0)
@@ -190,7 +197,7 @@ def main() -> None:
     res = sim._resident
     path = ("reference path" if res is None else
             f"fused kernel, {'frozen' if getattr(res, 'freeze', False) else 'traced'}")
-    print(f"profile_pulse: Simulation 2, {scene.sea.nx}^2 sea, refresh_interval_s = "
+    print(f"profile_pulse: {SIM2.stem}, {scene.sea.nx}^2 sea, refresh_interval_s = "
           f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses, {path}, "
           f"NUFFT {args.nufft_precision}; "
           f"{os.cpu_count()} CPUs, load {load0:.2f} -> {os.getloadavg()[0]:.2f}")

@@ -526,6 +526,19 @@ MUTATIONS = [
              "return 0.5 * a * a * dx * dy / (4.0 * np.pi**2) * resp  # Eq N6",
              ("tests/wake/test_narrow_v.py",),
              "the plane wave's variance a^2/2 put whole at +k_w and again at -k_w"),
+    Mutation("beam-bound-largest-u", S + "radar/coverage.py",
+             "antenna.width * np.abs(u).min() / antenna.wavelength",
+             "antenna.width * np.abs(u).max() / antenna.wavelength",
+             ("tests/radar/test_coverage.py",),
+             "the beam's bound at the tile's farthest corner, not its nearest (eq C1)"),
+    Mutation("beam-bound-no-envelope", S + "radar/coverage.py",
+             "env = np.maximum.accumulate(f[::-1])[::-1]", "env = f",
+             ("tests/radar/test_coverage.py",),
+             "the pattern itself in place of its envelope (eq C1: not a bound)"),
+    Mutation("beam-bound-one-way", S + "radar/coverage.py",
+             "    return g * one_way_bound(radar.rx_antenna,",
+             "    return one_way_bound(radar.rx_antenna,",
+             ("tests/radar/test_coverage.py",), "the two-way bound without the transmitter"),
 ]
 
 

@@ -562,7 +562,9 @@ def build_radar(scene, *, receiver_stream: int = 1) -> RadarModel:
         taylor_nbar=r.taylor_nbar, taylor_sidelobe_db=r.taylor_sidelobe_db,
         sea_update_pulses=r.sea_update_pulses, sigma_map_pulse=r.sigma_map_pulse,
         accumulation_precision=r.accumulation_precision, earth=build_earth(scene),
-        transmit_phase=r.transmit_phase)
+        transmit_phase=r.transmit_phase,
+        sea_gain_floor=(None if r.sea_gain_floor_db == "off"
+                        else 10.0 ** (r.sea_gain_floor_db / 10.0)))
 
 
 # -------------------------------------------------------------------------- the facets

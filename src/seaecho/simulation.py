@@ -30,6 +30,11 @@ one surface serves every pulse):
 
 Noise is drawn per pulse (``"noise"`` stream, pulse index).
 
+A pulse whose beams do not reach the tile skips the sea (``[radar] sea_gain_floor_db``,
+:meth:`Simulation.sea_skipped`: the two-way gain bounded over the tile's box below the
+floor, a pure function of the scene and the pulse index; docs/scanning.md); targets and
+hulls are computed at every pulse.
+
 :meth:`Simulation.run` writes pulses to a temporary file beside the destination as they
 are computed (memory bounded by one block of pulses) and renames it into place at the end;
 an exception or an interrupt removes it (``seaecho.io.dataset.atomic_path``).
@@ -59,6 +64,10 @@ from .scattering.breaking import breaking_placement
 
 #: Names of the 2x2 scattering channels, (h, v) order flattened.
 POLARISATIONS = CHANNELS
+
+#: Margin of the sea tile's box in the beam's bound [m]: sea elevations and the facets'
+#: horizontal displacements stay below it (a 30 m crest is beyond sea state 9).
+SEA_MARGIN_M = 30.0
 
 
 def wake_damping(state) -> NDArray[np.float64]:
@@ -190,6 +199,8 @@ class Simulation:
         #: sea_motion = "evolving": facets move and their speckle evolves between updates
         self.evolving = self.sea_model is not None and self.sea_model.dynamics is not None
         self._speckle = None
+        self._tile_box = None  # the sea tile's box of sea_gain_bound (8, 3) [m]
+        self._skip_cache: dict[int, bool] = {}  # sea_skipped by pulse (a pure function)
         if self.sea is not None:
             from .tracing.engine import FacetEngine
 
@@ -490,6 +501,32 @@ class Simulation:
                                variant=self.variant)
         return SeaEcho(echo, sig, facets)
 
+    # ------------------------------------------------------ the beam and the tile
+    def sea_gain_bound(self, pulse: int) -> float:
+        """Upper bound of the two-way antenna gain relative to the beams' peaks over the
+        whole sea tile at ``pulse`` [-] (:func:`seaecho.radar.coverage.two_way_bound` on
+        the tile's box, :data:`SEA_MARGIN_M` around the grid and its mean level)."""
+        if self.sea is None:
+            raise ValueError("sea clutter is off in this scene ([radar] sea_clutter)")
+        from .radar.coverage import tile_box, two_way_bound
+
+        if self._tile_box is None:
+            self._tile_box = tile_box(self.sea.x, self.sea.y, SEA_MARGIN_M)
+        return two_way_bound(self.radar, pulse, self._tile_box)
+
+    def sea_skipped(self, pulse: int) -> bool:
+        """True when ``pulse`` skips the sea: ``[radar] sea_gain_floor_db`` is set and
+        :meth:`sea_gain_bound` is below it. A pure function of (scene, pulse), so the
+        pulses stay computable in any order (docs/scanning.md)."""
+        floor = self.models.radar.sea_gain_floor
+        if self.sea is None or floor is None:
+            return False
+        if pulse not in self._skip_cache:  # asked up to three times per pulse by pulses
+            if len(self._skip_cache) > 4096:
+                self._skip_cache.clear()
+            self._skip_cache[pulse] = self.sea_gain_bound(pulse) < floor
+        return self._skip_cache[pulse]
+
     # ------------------------------------------------------------------- one pulse
     def pulse(self, pulse: int) -> NDArray[np.complex128]:
         """Raw samples of one pulse, shape (channels, fast_time) [sqrt(W)]."""
@@ -497,7 +534,7 @@ class Simulation:
             raise ValueError(f"pulse = {pulse}: must be in [0, {self.radar.n_pulses})")
         geo = self.radar.geometry(pulse)
         echoes = []
-        if self.sea is not None:
+        if self.sea is not None and not self.sea_skipped(pulse):
             echoes.append(self.sea_echo(pulse, geo).echo)
         t = self.radar.target_echo(geo, variant=self.variant)  # its pulse: geo.time
         if t is not None:
@@ -514,7 +551,8 @@ class Simulation:
         (stop - start, channels, fast_time) [sqrt(W)]: :meth:`pulse` and :meth:`compress`."""
         out = []
         for p in range(start, stop):
-            if p + 1 < stop and self.sea is not None:
+            if (p + 1 < stop and self.sea is not None and not self.sea_skipped(p)
+                    and not self.sea_skipped(p + 1)):
                 self.surface_state(p)  # this pulse's sea (computed ahead, if it was)
                 self.prefetch_surface(p + 1)  # the next one's, while this pulse runs
             out.append(self.pulse(p))
@@ -625,6 +663,10 @@ class Simulation:
                    "held: the surface and its speckle are frozen within each block of "
                    "sea_update_pulses pulses (the paper's section V-B)"),
                "phase_update_interval_s": (1.0 / self.radar.prf) if self.evolving else 0.0,
+               # [radar] sea_gain_floor_db as a two-way gain [-]: the sea is skipped where
+               # the beams' bound over the tile is below it (docs/scanning.md, eq C3)
+               "sea_gain_floor": ("off" if self.models.radar.sea_gain_floor is None
+                                  else self.models.radar.sea_gain_floor),
                "subfacet_mss_upwind": m.mss_upwind,
                "subfacet_mss_crosswind": m.mss_crosswind}
         if m.breaking is not None:
@@ -707,4 +749,4 @@ class Simulation:
                 "weighting": self.models.radar.range_weighting}
 
 
-__all__ = ["POLARISATIONS", "SeaEcho", "Simulation"]
+__all__ = ["POLARISATIONS", "SEA_MARGIN_M", "SeaEcho", "Simulation"]

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from ..conventions import PORTS
 from .base import Name, Section, short_repr
@@ -377,6 +377,21 @@ class RadarConfig(Section):
     sea_update_pulses: int = Field(
         1, ge=1, le=10_000_000, description="recompute the sea surface every N pulses [-]"
     )
+    sea_gain_floor_db: float | Literal["off"] = Field(
+        -60.0,
+        description="skip the sea's echo at a pulse where the two-way antenna gain, "
+        "bounded over the whole tile, stays below this level relative to the beams' "
+        "peaks [dB]: the skipped clutter power is at most this gain times the tile's "
+        "clutter power at the peak (docs/scanning.md), in [-300, 0]; 'off' computes it "
+        "at every pulse",
+    )
+
+    @field_validator("sea_gain_floor_db")
+    @classmethod
+    def _floor_in_range(cls, v: float | str) -> float | str:
+        if v != "off" and not -300.0 <= v <= 0.0:
+            raise ValueError(f"{v}: allowed a level in [-300, 0] dB or 'off'")
+        return v
     accumulation_precision: Literal["double", "single"] = Field(
         "double",
         description="floating point of the echo accumulation's non-uniform FFT (eq E2): "

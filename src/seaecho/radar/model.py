@@ -137,6 +137,9 @@ class RadarModel:
     transmit_phase : str
         'coherent' (every pulse leaves with phase 0) or 'random' (a magnetron: each
         pulse's phase uniform in [0, 2 pi) from the ``"transmit-phase"`` stream).
+    sea_gain_floor : float or None
+        Two-way gain relative to the beams' peaks [-] below which, bounded over the
+        whole tile, a pulse skips the sea (:mod:`seaecho.radar.coverage`); None: never.
     """
 
     carrier: float
@@ -169,6 +172,7 @@ class RadarModel:
     accumulation_precision: str = "double"
     earth: SphericalEarth | None = None
     transmit_phase: str = "coherent"
+    sea_gain_floor: float | None = None
 
     @property
     def monostatic(self) -> bool:
