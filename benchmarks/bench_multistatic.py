@@ -32,6 +32,8 @@ import time
 import warnings
 from pathlib import Path
 
+from _smoke import add_option
+
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "scenes" / "multistatic_ship_3rx.toml"
 
@@ -116,7 +118,7 @@ def bench_shared(smoke: bool) -> dict:
 
 def main(argv: list[str] | None = None) -> dict:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--smoke", action="store_true", help="tiny sizes, seconds")
+    add_option(p)  # --smoke: a 16 m tile on 64 x 64, 3 pulses, seconds
     p.add_argument("--pulses", type=int, default=None, help="pulses timed per case + 1")
     args = p.parse_args(argv)
     pulses = args.pulses or (3 if args.smoke else 6)
