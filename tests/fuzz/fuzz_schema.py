@@ -22,6 +22,7 @@ Two things are not in the field annotations and are given here:
 from __future__ import annotations
 
 import math
+import types
 import typing
 from collections.abc import Callable
 from pathlib import Path
@@ -124,6 +125,8 @@ def value(annotation, metadata=(), path: tuple = ()) -> st.SearchStrategy:
         return st.tuples(*(value(a, (), path + (i,)) for i, a in enumerate(args)))
     if is_model(annotation):
         return section(annotation, path)
+    if origin in (typing.Union, types.UnionType):  # e.g. a level or 'off'
+        return st.one_of(*(value(a, metadata, path) for a in args))
     raise NotImplementedError(f"no strategy for {annotation!r} at {path}")
 
 
@@ -533,7 +536,12 @@ TINY: dict[tuple[str, str], st.SearchStrategy] = {
     ("Scene", "objects"): st.lists(section(ObjectConfig, ("objects",)), max_size=1).map(tuple),
     ("Scene", "ships"): st.lists(section(ShipConfig, ("ships",)), max_size=2).map(tuple),
 }
-CAPS = TINY
+CAPS = {
+    **TINY,
+    # a level in [-300, 0] dB (its validator's range) or 'off'
+    ("RadarConfig", "sea_gain_floor_db"): st.one_of(
+        st.floats(-300.0, 0.0, allow_nan=False), st.just("off")),
+}
 #: Fields left out of generated scenes: an output path would write beside the tests;
 #: [[receivers]] (multistatic; its cross-receiver rules are tested in tests/multistatic).
 SKIP = {("RunConfig", "output"), ("Scene", "receivers")}

@@ -80,6 +80,7 @@ def test_fused_sea_pulse_equals_the_reference_path_bit_for_bit(refresh):
         assert fused.pulse(p).tobytes() == ref.pulse(p).tobytes()
 
 
+@pytest.mark.slow  # a parity guard of ~10-20 s (the default set keeps the bit-for-bit pulse)
 def test_bistatic_fused_pulse_equals_the_reference_path():
     # Simulation 1: transmitter and receiver apart (two ranges, two occlusion masks)
     sim1 = SIM2.parent / "paper_sim1_bistatic_64m.toml"
@@ -96,6 +97,7 @@ def test_bistatic_fused_pulse_equals_the_reference_path():
     assert fused.pulse(1).tobytes() == ref.pulse(1).tobytes()
 
 
+@pytest.mark.slow  # a parity guard of ~10-20 s (the default set keeps the bit-for-bit pulse)
 def test_fused_window_cut_equals_the_reference_path():
     # A receive window over part of the tile: echoes outside it are dropped in the
     # kernel (ReceiveWindow.bounds) exactly as receive() drops them.
@@ -108,6 +110,7 @@ def test_fused_window_cut_equals_the_reference_path():
     assert fused.pulse(2).tobytes() == ref.pulse(2).tobytes()
 
 
+@pytest.mark.slow  # a parity guard of ~10-20 s (the default set keeps the bit-for-bit pulse)
 def test_new_sea_every_pulse_equals_the_reference_path():
     # A new surface per pulse: the kernel's node copies follow the surface state
     fused, ref = _pair(_scene(radar={"sea_update_pulses": 1}))
@@ -117,6 +120,7 @@ def test_new_sea_every_pulse_equals_the_reference_path():
 
 @pytest.mark.parametrize("scattering", [{"model": "blend+breaking", "unresolved_tilt": True},
                                         {"model": "blend", "unresolved_tilt": False}])
+@pytest.mark.slow  # a parity guard of ~10-20 s (the default set keeps the bit-for-bit pulse)
 def test_fused_mechanisms_equal_the_reference_path(scattering):
     # The paper's scenes (the tests above) are "blend" with the Bragg term averaged over
     # the unresolved tilts (eq P6); with the breaking zones too (eq P7, the default
@@ -221,6 +225,7 @@ class _FakePlan:
         return out
 
 
+@pytest.mark.slow  # a parity guard of ~10-20 s (the default set keeps the bit-for-bit pulse)
 def test_device_echo_goes_through_cufinufft_on_array_pointers(monkeypatch):
     # The CUDA branch of the fused pulse (a DeviceEcho, accumulated by accumulate_cuda
     # through __cuda_array_interface__) run on the CPU back end: the stand-in cufinufft
@@ -361,6 +366,7 @@ def _same_echo(a, b):
                     for x, y in zip(a.amplitudes, b.amplitudes, strict=True)))
 
 
+@pytest.mark.slow  # a parity guard of ~10-20 s (the default set keeps the bit-for-bit pulse)
 @pytest.mark.parametrize(("refresh", "update"), [(0.0, 160), (0.1, 1)])
 def test_frozen_pulse_kernel_equals_the_traced_one(refresh, update):
     # drjit.freeze replays the kernel recorded at the first pulse: the platform moves
@@ -425,6 +431,7 @@ def test_a_platform_view_that_is_not_bound_is_refused():
     bound.vconst(np.array([0.0, 0.0, 1.0]))  # a vector of its own: a constant
 
 
+@pytest.mark.slow  # a parity guard of ~10-20 s (the default set keeps the bit-for-bit pulse)
 def test_float32_scattering_against_the_float64_kernel():
     # The fused kernel evaluates eqs P1-P7, the antenna gains and port states in float32
     # (ResidentSea.precision, default facet.PRECISION) and the geometry, delays, carrier
