@@ -66,7 +66,7 @@ def _pair(scene):
     return fused, ref
 
 
-@pytest.mark.parametrize("refresh", [0.1, 0.0])
+@pytest.mark.parametrize("refresh", [pytest.param(0.1, marks=pytest.mark.slow), 0.0])
 def test_fused_sea_pulse_equals_the_reference_path_bit_for_bit(refresh):
     # Simulation 2's geometry on a 64 x 64 sea with the boat's shadow: some facets are
     # hidden, so the kernel's compaction runs; refresh 0 re-traces every pulse.

@@ -198,6 +198,9 @@ def test_random_transmit_phase_is_seeded_and_uniform():
      "needs depression_deg"),
     ({"scan": {"mode": "sector", "rate_rpm": 20.0, "sector_deg": (10.0, 10.0)}},
      "empty sector"),
+    # a sector of 1e-300 deg overflowed the sweep count (found by the fuzzing suite)
+    ({"scan": {"mode": "sector", "rate_rpm": 20.0, "sector_deg": (1e-300, 0.0)}},
+     "must be at least 0.01 deg wide"),
     ({"scan": {"mode": "fixed", "rate_rpm": 20.0}}, "takes no"),
 ])
 def test_bad_scan_is_refused(antenna, message):

@@ -87,6 +87,10 @@ class GaussMarkovConfig(Section):
         return self
 
 
+#: Narrowest sector scan [deg] (a narrower one overflows the sweep count).
+MIN_SECTOR_DEG = 0.01
+
+
 class ScanConfig(Section):
     """How an antenna scans about its platform's vertical (body z) axis.
 
@@ -137,9 +141,14 @@ class ScanConfig(Section):
             if any(not abs(v) <= 360.0 for v in self.sector_deg):
                 raise ValueError(f"sector_deg = {list(self.sector_deg)}: each must be "
                                  "within +-360 deg")
-            if (self.sector_deg[0] - self.sector_deg[1]) % 360.0 == 0.0:
+            width = (self.sector_deg[0] - self.sector_deg[1]) % 360.0
+            if width == 0.0:
                 raise ValueError(f"sector_deg = {list(self.sector_deg)}: an empty sector; "
                                  "use mode 'rotating' for a full turn")
+            if width < MIN_SECTOR_DEG:
+                raise ValueError(f"sector_deg = {list(self.sector_deg)}: a sector of "
+                                 f"{width:.3g} deg; it must be at least {MIN_SECTOR_DEG} deg "
+                                 "wide")
         return self
 
     @property
