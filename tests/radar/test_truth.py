@@ -142,6 +142,11 @@ def test_ship_and_ships_are_exclusive():
                        "turn_radius_m": 50.0}])
     with pytest.raises(SceneError, match="waypoints_m sets the track"):
         _scene(ships=[{**one, "waypoints_m": [(0, 0), (10, 0)], "heading_deg": 10.0}])
+    # a ship on waypoints without a speed: one message, not a TypeError inside the
+    # validator (found by the fuzzing suite)
+    slow = {k: v for k, v in one.items() if k != "speed_m_s"}
+    with pytest.raises(SceneError, match="exactly one of speed_kn and speed_m_s"):
+        _scene(ships=[{**slow, "waypoints_m": [(0, 0), (10, 0)]}])
 
 
 def test_generic_hull_scales_to_the_ships_dimensions():

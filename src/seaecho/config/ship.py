@@ -161,6 +161,8 @@ class ShipConfig(Section):
         if any(abs(c) > 1.0e7 for p in w for c in p):
             raise ValueError(f"waypoints_m = {short_repr(w)}: each coordinate must be within "
                              "+-1e7 m")
+        if (self.speed_kn is None) == (self.speed_m_s is None):  # (before its validator)
+            raise ValueError("give exactly one of speed_kn and speed_m_s")
         if self.speed == 0.0:
             raise ValueError("a ship on waypoints_m needs a speed > 0")
         legs = [math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(w, w[1:], strict=False)]
