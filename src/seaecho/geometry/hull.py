@@ -70,7 +70,22 @@ def motor_boat_hull(length: float = 10.0, beam: float = 4.0, draft: float = 1.5,
         for py, pz in zip(prof_y, prof_z, strict=True):
             z = freeboard if pz is None else float(pz) * d
             verts.append((x, py * b, z))
-    verts = np.array(verts)
+    parts = [lofted_hull(np.array(verts), n_stations, m)]
+    if cabin_height > 0:
+        cabin = trimesh.creation.box(extents=(0.3 * length, 0.6 * beam, cabin_height))
+        cabin.apply_translation((-0.05 * length, 0.0, freeboard + cabin_height / 2))
+        parts.append(cabin)
+    mesh = trimesh.util.concatenate(parts)
+    return np.asarray(mesh.vertices, dtype=np.float64), np.asarray(mesh.faces, dtype=np.int64)
+
+
+def lofted_hull(verts: np.ndarray, n_stations: int, m: int):
+    """Closed hull lofted through ``n_stations`` sections of ``m`` points each
+    (``verts`` (n_stations m, 3) [m], section by section, each a closed ring whose last
+    point joins its first across the deck): quads between neighbouring sections, fans
+    capping the transom and the stem, triangles facing outwards (a ``trimesh.Trimesh``)."""
+    import trimesh
+
     faces = []
     for s in range(n_stations - 1):
         a, b = s * m, (s + 1) * m
@@ -87,13 +102,7 @@ def motor_boat_hull(length: float = 10.0, beam: float = 4.0, draft: float = 1.5,
     hull = trimesh.Trimesh(verts, np.array(faces), process=True)
     if hull.volume < 0:  # make the triangles face outwards
         hull.invert()
-    parts = [hull]
-    if cabin_height > 0:
-        cabin = trimesh.creation.box(extents=(0.3 * length, 0.6 * beam, cabin_height))
-        cabin.apply_translation((-0.05 * length, 0.0, freeboard + cabin_height / 2))
-        parts.append(cabin)
-    mesh = trimesh.util.concatenate(parts)
-    return np.asarray(mesh.vertices, dtype=np.float64), np.asarray(mesh.faces, dtype=np.int64)
+    return hull
 
 
 def _main(argv: list[str]) -> int:

@@ -23,6 +23,8 @@ from functools import lru_cache
 
 import numpy as np
 
+from .hull import lofted_hull
+
 __all__ = ["vessel", "vessel_mesh"]
 
 LENGTH, BEAM, DRAFT = 80.0, 13.0, 4.5
@@ -30,7 +32,6 @@ LENGTH, BEAM, DRAFT = 80.0, 13.0, 4.5
 
 def _hull(n_stations: int = 41):
     """Closed hull body from cross-sections (wall sides, bilge, flat bottom, V bow)."""
-    import trimesh
 
     xs = np.linspace(-LENGTH / 2, LENGTH / 2, n_stations)
     u = (xs + LENGTH / 2) / LENGTH  # 0 at the transom, 1 at the stem
@@ -55,22 +56,7 @@ def _hull(n_stations: int = 41):
             verts.append((py * b, pz * (top if pz > 0 else d)))
     verts = np.array([(x, y, z) for x, sec in zip(xs, np.array(verts).reshape(-1, m, 2),
                                                    strict=True) for y, z in sec])
-    faces = []
-    for s in range(n_stations - 1):
-        a, b = s * m, (s + 1) * m
-        for k in range(m):  # closed ring: the deck is the edge from the last to the first
-            k2 = (k + 1) % m
-            faces += [(a + k, b + k, b + k2), (a + k, b + k2, a + k2)]
-    for s in (0, n_stations - 1):  # transom and stem caps
-        centre = len(verts)
-        verts = np.vstack([verts, verts[s * m:(s + 1) * m].mean(axis=0)])
-        for k in range(m):
-            k1, k2 = s * m + k, s * m + (k + 1) % m
-            faces.append((centre, k1, k2) if s == 0 else (centre, k2, k1))
-    hull = trimesh.Trimesh(verts, np.array(faces), process=True)
-    if hull.volume < 0:
-        hull.invert()
-    return hull
+    return lofted_hull(verts, n_stations, m)
 
 
 def _box(extents, centre):
