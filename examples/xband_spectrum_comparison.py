@@ -214,8 +214,8 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     path = out / "xband_spectrum_comparison.csv"
-    keys = sorted({k for r in xrows for k in r}, key=lambda k: list(xrows[0]).index(k)
-                  if k in xrows[0] else 999)
+    # columns in order of first appearance (a set's order changes from run to run)
+    keys = list(dict.fromkeys(k for r in xrows for k in r))
     with path.open("w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
