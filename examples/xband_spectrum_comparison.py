@@ -12,7 +12,10 @@ water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py`
 * the other candidates at X band with E97: the scale split (k/4 instead of k/3), the tilt
   average (untilted SPM + breaking), the breaking zones (two-scale alone);
 * C band (5.3 GHz), 20-50 deg incidence: VV against CMOD5.N and VV/HH against Mouche et
-  al. (2005), for both spectra.
+  al. (2005), for both spectra;
+* the non-polarised part that the published X-band models imply (eq CP3,
+  ``seaecho.scattering.copol``, with seaecho's two-scale Bragg ratio HH/VV) against
+  KHCC03's ``q sigma_wb``: where the remaining VV/HH excess at 20-30 deg lies.
 
 About 5 s of CPU; ``--simulate`` adds the facet sums of one simulated surface (the
 simulation's own sigma0, ``examples/sigma0_facets_vs_grazing.py``) at sea state 3 for both
@@ -41,6 +44,7 @@ from reference_models import (  # noqa: E402
 from seaecho.ocean.seawater import sea_water_permittivity  # noqa: E402
 from seaecho.ocean.spectra import DirectionalSpectrum  # noqa: E402
 from seaecho.ocean.wind import u19_5_from_u10  # noqa: E402
+from seaecho.scattering.copol import non_polarised_component  # noqa: E402
 from seaecho.scattering.models import sea_sigma  # noqa: E402
 from seaecho.warnings import ValidityWarning  # noqa: E402
 
@@ -139,6 +143,46 @@ def cband_rows() -> list[dict]:
     return rows
 
 
+def np_rows() -> list[dict]:
+    """Non-polarised part [dB] implied by each published model (eq CP3 with seaecho's
+    look-averaged two-scale Bragg ratio HH/VV, RAW97) beside KHCC03's ``q sigma_wb``, and
+    the Bragg ratio with both spectra."""
+    rows = []
+    inc = 90.0 - np.array(GRAZING_DEG)
+    for ss in SEA_STATES:
+        u10 = SEA_STATE_WIND[ss]
+        ratio = {name: look_averaged("two-scale", X_GHZ * 1e9, u10, inc, sp)
+                 for name, sp in SPECTRA}
+        ratio = {name: s[:, 0] / s[:, 3] for name, s in ratio.items()}
+        q, wb = _breaking_share(u10, inc)
+        for j, g in enumerate(GRAZING_DEG):
+            row = {"sea_state": ss, "u10_m_s": u10, "grazing_deg": g,
+                   "KHCC03 NP": round(float(db(wb[j, 3])), 2),
+                   **{f"{n} Bragg HH/VV": round(float(db(r[j])), 2) for n, r in ratio.items()}}
+            for name, (hh, vv) in references(ss, g).items():
+                npc, _ = non_polarised_component(10 ** (vv / 10), 10 ** (hh / 10),
+                                                 ratio["RAW97"][j])
+                row[f"{name} NP"] = round(float(db(npc)), 2)
+            rows.append(row)
+    return rows
+
+
+def np_markdown(rows: list[dict]) -> str:
+    lines = ["Non-polarised part [dB]: KHCC03's q sigma_wb and the value each published "
+             "model implies (eq CP3, Bragg ratio of the RAW97 two-scale model):", "",
+             "| SS (U10) | grazing | Bragg HH/VV E97 / RAW97 | KHCC03 NP | Nathanson NP "
+             "| GIT NP | NRL NP | implied - KHCC03 |", "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        implied = [r[f"{n} NP"] for n in ("Nathanson", "GIT", "NRL") if f"{n} NP" in r]
+        gap = [x - r["KHCC03 NP"] for x in implied]
+        lines.append(
+            f"| {r['sea_state']} ({r['u10_m_s']}) | {r['grazing_deg']:.0f} "
+            f"| {r['E97 Bragg HH/VV']:.1f} / {r['RAW97 Bragg HH/VV']:.1f} "
+            f"| {r['KHCC03 NP']:.1f} | {_fmt(r.get('Nathanson NP'))} | {_fmt(r['GIT NP'])} "
+            f"| {_fmt(r['NRL NP'])} | {min(gap):+.1f}..{max(gap):+.1f} |")
+    return "\n".join(lines)
+
+
 def _fmt(x: float) -> str:
     return "-" if x is None or not np.isfinite(x) else f"{x:.1f}"
 
@@ -221,6 +265,8 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
         w.writeheader()
         w.writerows(xrows)
     print(markdown(xrows, crows))
+    print()
+    print(np_markdown(np_rows()))
     if "--simulate" in flags:
         print(simulated_rows())
     return path
