@@ -539,6 +539,14 @@ MUTATIONS = [
              "    return g * one_way_bound(radar.rx_antenna,",
              "    return one_way_bound(radar.rx_antenna,",
              ("tests/radar/test_coverage.py",), "the two-way bound without the transmitter"),
+    Mutation("copol-np-sign", S + "scattering/copol.py",
+             "regular_vv = (vv - hh) / (1.0 - p)", "regular_vv = (vv - hh) / (1.0 + p)",
+             ("tests/scattering/test_copol.py", "tests/scattering/test_validation_gmf.py"),
+             "eq CP3: the polarisation difference over (1 + p) instead of (1 - p)"),
+    Mutation("copol-np-hh", S + "scattering/copol.py",
+             "return vv - regular_vv, regular_vv", "return hh - regular_vv, regular_vv",
+             ("tests/scattering/test_copol.py", "tests/scattering/test_validation_gmf.py"),
+             "eq CP3: NP taken from HH minus the regular VV"),
 ]
 
 
