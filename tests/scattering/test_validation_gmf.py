@@ -303,8 +303,8 @@ def test_xband_non_polarised_part_implied_by_the_published_models(ss):
     * at 30 deg grazing every model implies more NP than KHCC03 gives (measured +1.1 to
       +9.5 dB over sea states 2-5; +3.8 to +9.5 at sea state 2): a known remaining
       disagreement, kept visible. KHCC03's sigma_wb is flat from 60 to 90 deg incidence
-      (its front term eps_wb / s_wb^2), the implied NP grows by 2-6 dB from 10 to 30 deg
-      grazing;
+      (its front term eps_wb / s_wb^2), the implied NP grows by 1.0-7.1 dB from 10 to
+      30 deg grazing;
     * the spectrum cannot remove it: the Bragg ratio HH/VV of E97 and RAW97 differ by
       less than 1 dB at 30 deg (measured 0.5-0.6 dB), while VV with RAW97 is already
       within 0.6 dB of the models."""
