@@ -309,7 +309,7 @@ def test_xband_non_polarised_part_implied_by_the_published_models(ss):
       less than 1 dB at 30 deg (measured 0.5-0.6 dB), while VV with RAW97 is already
       within 0.6 dB of the models."""
     from seaecho.constants import C0
-    from seaecho.scattering.breaking import breaking_statistics, breaking_nrcs_monostatic
+    from seaecho.scattering.breaking import breaking_nrcs_monostatic, breaking_statistics
     from seaecho.scattering.copol import non_polarised_component
 
     u10 = SEA_STATE_WIND[ss]
