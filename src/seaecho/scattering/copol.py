@@ -14,7 +14,7 @@ model (two-scale Bragg: a function of the incidence, the permittivity and the ti
 one pair of measured co-polarised values gives both parts: the decomposition of
 Kudryavtsev, Chapron, Myasoedov, Collard & Johannessen (2013) into a polarised and a
 non-polarised part (used again by Kudryavtsev et al. 2019); CP2-CP3 are the algebra of
-CP1 (their paper was not accessible here to quote its equation numbers):
+CP1 (the article itself was not accessible here to quote its equation numbers):
 
 .. math::
     PD = \\sigma_{vv} - \\sigma_{hh} = \\sigma^{R}_{vv}\\,(1 - p)                  (CP2)
