@@ -143,6 +143,38 @@ def cband_rows() -> list[dict]:
     return rows
 
 
+def _outside(value: float, refs: list[float]) -> float:
+    """How far [dB] ``value`` lies outside the span of ``refs`` (0 inside)."""
+    return max(min(refs) - value, value - max(refs), 0.0)
+
+
+def span_summary(xrows: list[dict]) -> str:
+    """Distances [dB] of HH, VV and VV/HH to the span of the published models (Nathanson
+    where tabulated, GIT, NRL), per spectrum, at 5-10 and 20-30 deg grazing."""
+    lines = ["Distance to the span of the published models [dB] (0 = inside), sea states 2-5:",
+             "", "| spectrum | grazing | HH | VV | VV/HH | VV/HH > 2 dB at |",
+             "|---|---|---|---|---|---|"]
+    for name, _ in SPECTRA:
+        for lo, hi in ((5.0, 10.0), (20.0, 30.0)):
+            d = {"HH": [], "VV": [], "PR": []}
+            miss = []
+            for r in xrows:
+                if not lo <= r["grazing_deg"] <= hi:
+                    continue
+                refs = [n for n in ("Nathanson", "GIT", "NRL") if f"{n} HH" in r]
+                for pol in ("HH", "VV"):
+                    d[pol].append(_outside(r[f"{name} {pol}"], [r[f"{n} {pol}"] for n in refs]))
+                pr = _outside(r[f"{name} VV"] - r[f"{name} HH"],
+                              [r[f"{n} VV"] - r[f"{n} HH"] for n in refs])
+                d["PR"].append(pr)
+                if pr > 2.0:
+                    miss.append(f"SS{r['sea_state']} {r['grazing_deg']:.0f}")
+            lines.append(f"| {name} | {lo:.0f}-{hi:.0f} | " + " | ".join(
+                f"{min(v):.1f}-{max(v):.1f}" for v in d.values())
+                + f" | {', '.join(miss) or 'none'} |")
+    return "\n".join(lines)
+
+
 def np_rows() -> list[dict]:
     """Non-polarised part [dB] implied by each published model (eq CP3 with seaecho's
     look-averaged two-scale Bragg ratio HH/VV, RAW97) beside KHCC03's ``q sigma_wb``, and
@@ -265,6 +297,8 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
         w.writeheader()
         w.writerows(xrows)
     print(markdown(xrows, crows))
+    print()
+    print(span_summary(xrows))
     print()
     print(np_markdown(np_rows()))
     if "--simulate" in flags:
