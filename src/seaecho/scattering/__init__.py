@@ -9,6 +9,7 @@ Plain arrays in, plain arrays out; nothing here knows about meshes or radars.
 - :mod:`.twoscale` two-scale model (SPM over tilted facets)
 - :mod:`.blend` Kirchhoff / SPM blend (eqs 10-11)
 - :mod:`.facet` per-facet sigma_mn and speckled complex amplitudes for the radar stage
+- :mod:`.copol` dual co-polarised decomposition (the non-polarised part of a pair)
 - :mod:`.models` mean-plane entry point (``seaecho sigma``)
 
 Theory, equations and sources: ``docs/scattering.md``.
