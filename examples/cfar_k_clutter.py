@@ -11,7 +11,9 @@ antenna, looking upwind at 1 and 3 deg grazing over an evolving Elfouhaily sea, 
 resolution and channel (HH, VV):
 
 * the K shape nu of the cells' intensities (maximum likelihood, eq ST5 of
-  docs/scattering.md; the pooled cells normalised by their mean);
+  docs/scattering.md; the pooled cells normalised by their mean), beside the empirical
+  law of Watts & Wicks as restated by Ward, Tough & Watts (eq ST6, no swell; A_c =
+  resolution / cos(grazing) x tile width);
 * a 1-D CA-CFAR along range (N = 2 x 4, 2 x 8, 2 x 16 training cells, 2 guard cells each
   side, windows inside the tile) at the design P_FA = 1e-2 and 1e-3 of exponential
   noise (eq D1): the measured false-alarm rate, with its exact binomial 95 % interval;
@@ -43,7 +45,7 @@ import clutter_statistics as cs  # noqa: E402
 
 from seaecho.detection import CFAR  # noqa: E402
 from seaecho.detection.theory import pfa_ca, pfa_ca_k, scale_for_pfa  # noqa: E402
-from seaecho.processing.statistics import fit_k  # noqa: E402
+from seaecho.processing.statistics import fit_k, k_shape_empirical  # noqa: E402
 
 GRAZING_DEG = (1.0, 3.0)
 FRACTIONS = (1, 4)  # 0.75 m and 3 m cells
@@ -86,6 +88,8 @@ def rows_for(grazing_deg: float, n_pulses: int) -> list[dict]:
                 continue
             p = np.abs(x[:, ci][:, cells]) ** 2
             nu = float(fit_k((p / p.mean()).ravel()).nu)
+            area = 0.75 * frac / np.cos(np.radians(grazing_deg)) * cs.SIZE
+            nu_law = float(k_shape_empirical(grazing_deg, area, ch))
             for tr in TRAIN:
                 n = 2 * tr
                 if p.shape[1] < 2 * (tr + GUARD) + 1:
@@ -99,7 +103,9 @@ def rows_for(grazing_deg: float, n_pulses: int) -> list[dict]:
                     a_k = scale_for_pfa(pfa_ca_k, pfa, n, nu_q)
                     rows.append({
                         "grazing_deg": grazing_deg, "resolution_m": 0.75 * frac,
-                        "channel": ch, "nu_ml": round(nu, 3), "train_n": n,
+                        "channel": ch, "cell_area_m2": round(area, 1),
+                        "nu_ml": round(nu, 3), "nu_watts_wicks": round(nu_law, 3),
+                        "train_n": n,
                         "design_pfa": pfa, "tested": m, "alarms": k,
                         "measured_pfa": k / m, "ci_low": lo, "ci_high": hi,
                         "pfa_constant_texture": pfa,
@@ -162,6 +168,13 @@ def main(argv: list[str] | None = None) -> list[dict]:
         w.writeheader()
         w.writerows(rows)
     plot(rows, out / "cfar_k_clutter.png")
+    print("| grazing | cell (A_c) | HH nu simulated / ST6 | VV nu simulated / ST6 |")
+    print("|---|---|---|---|")
+    shapes = {(q["grazing_deg"], q["resolution_m"], q["channel"]): q for q in rows}
+    for g, res in sorted({(k[0], k[1]) for k in shapes}):
+        h, v = shapes[(g, res, "HH")], shapes[(g, res, "VV")]
+        print(f"| {g:g} deg | {res:g} m ({h['cell_area_m2']:.0f} m^2) | {h['nu_ml']:.2f} / "
+              f"{h['nu_watts_wicks']:.2f} | {v['nu_ml']:.2f} / {v['nu_watts_wicks']:.2f} |")
     return rows
 
 
