@@ -18,8 +18,9 @@ in Hz and as line-of-sight velocity ``lambda f / 2``, beside the references:
   VV centroid is expected to fall short of measurements by the drift's Doppler
   ``2 (0.03 U10) cos(psi) / lambda`` (printed),
 * the measured orderings: HH centroids above VV at low grazing (Trizna 1985; Lee et al.
-  1995), the speed of the HH "fast scatterers" increasing with the wind (Lee et al. 1996,
-  3.8-10.3 m/s), widths growing with the wind (the orbital velocities; Walker 2001).
+  1995), the speed of the "faster-than-Bragg" scatterers increasing with the wind (Lee et
+  al. 1996, data at winds of 3.8-10.3 m/s), widths growing with the wind (the orbital
+  velocities; Walker 2001).
 
 Writes ``dynamics_doppler_measured.csv``.
 """
