@@ -11,7 +11,9 @@ antenna, looking upwind at 1 and 3 deg grazing over an evolving Elfouhaily sea, 
 resolution and channel (HH, VV):
 
 * the K shape nu of the cells' intensities (maximum likelihood, eq ST5 of
-  docs/scattering.md; the pooled cells normalised by their mean), beside the empirical
+  docs/scattering.md, on the pooled cells normalised by their mean; also the moments
+  estimator <z^2>/<z>^2 = 2 (1 + 1/nu), eq ST3, Ward, Tough & Watts 2013 ch. 4, and
+  "z log z", eq ST4, Blacknell & Tough 2001), beside the empirical
   law of Watts & Wicks as restated by Ward, Tough & Watts (eq ST6, no swell; A_c =
   resolution / cos(grazing) x tile width);
 * a 1-D CA-CFAR along range (N = 2 x 4, 2 x 8, 2 x 16 training cells, 2 guard cells each
@@ -45,7 +47,12 @@ import clutter_statistics as cs  # noqa: E402
 
 from seaecho.detection import CFAR  # noqa: E402
 from seaecho.detection.theory import pfa_ca, pfa_ca_k, scale_for_pfa  # noqa: E402
-from seaecho.processing.statistics import fit_k, k_shape_empirical  # noqa: E402
+from seaecho.processing.statistics import (  # noqa: E402
+    fit_k,
+    k_shape_empirical,
+    k_shape_moments,
+    k_shape_zlogz,
+)
 
 GRAZING_DEG = (1.0, 3.0)
 FRACTIONS = (1, 4)  # 0.75 m and 3 m cells
@@ -88,6 +95,7 @@ def rows_for(grazing_deg: float, n_pulses: int) -> list[dict]:
                 continue
             p = np.abs(x[:, ci][:, cells]) ** 2
             nu = float(fit_k((p / p.mean()).ravel()).nu)
+            nu_mom, nu_zlz = float(k_shape_moments(p.ravel())), float(k_shape_zlogz(p.ravel()))
             area = 0.75 * frac / np.cos(np.radians(grazing_deg)) * cs.SIZE
             nu_law = float(k_shape_empirical(grazing_deg, area, ch))
             for tr in TRAIN:
@@ -104,7 +112,8 @@ def rows_for(grazing_deg: float, n_pulses: int) -> list[dict]:
                     rows.append({
                         "grazing_deg": grazing_deg, "resolution_m": 0.75 * frac,
                         "channel": ch, "cell_area_m2": round(area, 1),
-                        "nu_ml": round(nu, 3), "nu_watts_wicks": round(nu_law, 3),
+                        "nu_ml": round(nu, 3), "nu_moments": round(nu_mom, 3),
+                        "nu_zlogz": round(nu_zlz, 3), "nu_watts_wicks": round(nu_law, 3),
                         "train_n": n,
                         "design_pfa": pfa, "tested": m, "alarms": k,
                         "measured_pfa": k / m, "ci_low": lo, "ci_high": hi,
@@ -168,13 +177,17 @@ def main(argv: list[str] | None = None) -> list[dict]:
         w.writeheader()
         w.writerows(rows)
     plot(rows, out / "cfar_k_clutter.png")
-    print("| grazing | cell (A_c) | HH nu simulated / ST6 | VV nu simulated / ST6 |")
+    print("| grazing | cell (A_c) | HH nu ML / moments / z log z / ST6 | "
+          "VV nu ML / moments / z log z / ST6 |")
     print("|---|---|---|---|")
     shapes = {(q["grazing_deg"], q["resolution_m"], q["channel"]): q for q in rows}
     for g, res in sorted({(k[0], k[1]) for k in shapes}):
         h, v = shapes[(g, res, "HH")], shapes[(g, res, "VV")]
-        print(f"| {g:g} deg | {res:g} m ({h['cell_area_m2']:.0f} m^2) | {h['nu_ml']:.2f} / "
-              f"{h['nu_watts_wicks']:.2f} | {v['nu_ml']:.2f} / {v['nu_watts_wicks']:.2f} |")
+        def cell(q):
+            return (f"{q['nu_ml']:.2f} / {q['nu_moments']:.2f} / {q['nu_zlogz']:.2f} / "
+                    f"{q['nu_watts_wicks']:.2f}")
+        print(f"| {g:g} deg | {res:g} m ({h['cell_area_m2']:.0f} m^2) | {cell(h)} | "
+              f"{cell(v)} |")
     return rows
 
 
