@@ -108,7 +108,8 @@ def test_vv_within_the_published_models(table):
 def test_scanning_ppi_returns_the_sea_nrcs_and_falls_off_as_r_cubed():
     """A scanning run's PPI calibrated by the radar equation (eq V1 of the example) gives
     the run's own facet NRCS (the chain antenna - scan - radar equation - range
-    compression), HH and VV, at 1 and 2 km (grazing 2 and 1 deg): within 3 dB, three
+    compression), HH and VV, at 1 and 2 km (grazing 2 and 1 deg; one sea realisation,
+    seed 3): within 3 dB, three
     standard deviations of the PPI's estimate (about 60 independent K cells of nu ~ 1
     over a 128 m tile at 1 km; measured 0.05-1.1 dB). The clutter power of the
     beam-limited cell then falls off between 1 and 2 km as R^-n with n within 1 of
@@ -117,7 +118,7 @@ def test_scanning_ppi_returns_the_sea_nrcs_and_falls_off_as_r_cubed():
     of the interference region."""
     from low_grazing_clutter import falloff_exponents, ppi_table
 
-    rows = ppi_table((1000.0, 2000.0), sea_state=4, tile_m=128.0, n=128)
+    rows = ppi_table((1000.0, 2000.0), sea_state=4, tile_m=128.0, n=128, seeds=(3,))
     for r in rows:
         for ch in ("HH", "VV"):
             assert abs(r[f"ppi_{ch}_db"] - r[f"map_{ch}_db"]) < 3.0, r
