@@ -88,11 +88,12 @@ def test_k_shape_grows_with_the_cell_more_slowly_than_the_law(clutter):
 
 def test_ca_cfar_false_alarms_in_simulated_clutter(clutter):
     """A CA-CFAR (2 x 8 training cells, 2 guard) at the design P_FA = 1e-2 of exponential
-    noise, on the 0.75 m cells: in HH (nu ~ 0.4-0.6) it raises the false alarms five
-    times and more, to within a factor 2 of eq D8 with the measured nu (independent
-    textures: the spikes of breaking crests decorrelate from cell to cell; measured
-    0.9-1.3 times eq D8); in VV it lies between the design and twice eq D8 (the texture
-    partly correlated over the 12 m window). The factor 2 covers the K fit's nu (+-20 %
+    noise, on the 0.75 m cells: above the design beyond binomial noise in both channels
+    (the clutter is not exponential), more in HH (spikier) than in VV; in HH within a
+    factor 2 of eq D8 with the measured nu (independent textures: the spikes of breaking
+    crests decorrelate from cell to cell; measured 1.2 times eq D8, 5-7 times the
+    design); in VV below twice eq D8 (measured 0.6 times: the texture partly
+    correlated over the 12 m window). The factor 2 covers the K fit's nu (+-20 %
     from these samples) and the departure of the simulated tail from K."""
     from scipy import stats
 
@@ -103,6 +104,7 @@ def test_ca_cfar_false_alarms_in_simulated_clutter(clutter):
     cf = CFAR("ca", 8, 2)
     alpha = scale_for_pfa(pfa_ca, 1e-2, 16)
     for g in (1.0, 3.0):
+        measured = {}
         for ch in ("HH", "VV"):
             p = data[(g, 0.75, ch)]
             s = cf(p)
@@ -114,4 +116,7 @@ def test_ca_cfar_false_alarms_in_simulated_clutter(clutter):
             assert lo > 1e-2, (g, ch, pfa)  # above the design: the clutter is not exponential
             assert pfa < 2.0 * d8, (g, ch, pfa, d8)
             if ch == "HH":
-                assert pfa > max(0.5 * d8, 5e-2), (g, ch, pfa, d8)
+                assert pfa > 0.5 * d8, (g, ch, pfa, d8)
+            measured[ch] = pfa
+        # the spikier channel has the more false alarms
+        assert measured["HH"] > measured["VV"], (g, measured)

@@ -70,14 +70,14 @@ def test_hh_within_the_published_models_from_1_to_3_deg(table):
 
 
 def test_hh_falls_off_below_3_deg_but_too_slowly(table):
-    """Known disagreement, bounded: from 3 to 0.3 deg the simulated HH falls (shadowing)
-    but by less than NRL's and Nathanson's fall-off (no propagation factor): measured
-    2.3-3.7 dB against NRL's 6.5-8.6 dB and Nathanson's 6-13 dB."""
+    """Known disagreement, bounded: from 3 to 0.3 deg the simulated HH falls (shadowing:
+    more than 1 dB; measured 2.3-3.7 dB) but less than NRL's 6.5-8.6 dB and Nathanson's
+    6-13 dB, so that at 0.3 deg it lies above NRL, by less than 10 dB (measured
+    4.0-7.8 dB). The agreement itself is the strict xfail below."""
     for ss in (2, 3, 4, 5):
         hi, lo = table[(ss, 3.0, "HH")], table[(ss, 0.3, "HH")]
-        drop = {k: hi[k] - lo[k] for k in ("sim_db", "nrl_db", "nathanson_db")}
-        assert 1.0 < drop["sim_db"] < drop["nrl_db"], (ss, drop)
-        assert drop["sim_db"] < drop["nathanson_db"], (ss, drop)
+        assert hi["sim_db"] - lo["sim_db"] > 1.0, (ss, hi, lo)
+        assert lo["sim_db"] - lo["nrl_db"] < 10.0, (ss, lo)
 
 
 @pytest.mark.xfail(strict=True, reason="no multipath/propagation factor: at 0.3 deg, sea "
@@ -89,12 +89,12 @@ def test_hh_within_the_published_models_at_0_3_deg(table):
 
 
 def test_vv_above_the_published_models_by_a_bounded_excess(table):
-    """Known disagreement, bounded: at 1-3 deg VV lies above NRL at every point, by less
-    than 7 dB (measured 3.8-6.2 dB; 4.5-8.6 dB at 0.3 deg, where the propagation factor
-    is missing too)."""
+    """Known disagreement, bounded: at 1-3 deg VV lies less than 7 dB above NRL (measured
+    3.8-6.2 dB; 4.5-8.6 dB at 0.3 deg, where the propagation factor is missing too). The
+    agreement itself is the strict xfail below."""
     for k, r in table.items():
         if k[2] == "VV" and k[1] >= 1.0:
-            assert 0.0 < r["sim_db"] - r["nrl_db"] < 7.0, (k, r)
+            assert r["sim_db"] - r["nrl_db"] < 7.0, (k, r)
 
 
 @pytest.mark.xfail(strict=True, reason="the X-band Bragg excess of VV (docs/scattering.md): "
