@@ -53,8 +53,9 @@ SIZE, N = 256.0, 256
 
 
 def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
-              grazing_deg=GRAZING) -> np.ndarray:
-    """Facet-sum sigma0 (grazing, 4) averaged over the four looks [m^2/m^2]."""
+              grazing_deg=GRAZING, f_hz: float = F) -> np.ndarray:
+    """Facet-sum sigma0 (grazing, 4) averaged over the four looks [m^2/m^2] at the
+    carrier ``f_hz`` [Hz]."""
     grazing_deg = np.asarray(grazing_deg, dtype=float)
     sc = parse_scene({
         "sea": {"spectrum": spectrum, "spreading": "elfouhaily",
@@ -64,7 +65,7 @@ def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
         "tracing": {"mode": "analytic"},
     })
     sea = build_sea(sc)
-    model = build_sea_model(sc, F)
+    model = build_sea_model(sc, f_hz)
     st = sea.state(0.0)
     acc = to_facets(sea.kinematics(0.0).acceleration[..., 2]).reshape(-1)
     out = np.zeros((grazing_deg.size, 4))

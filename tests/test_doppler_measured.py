@@ -9,13 +9,15 @@ The default scene's sea (``sea_motion = "auto"``, evolving here) seen by a monos
   scatter. *IEEE J. Oceanic Eng.* 10(4), 368-375: the measured VV Doppler peak is the
   Bragg phase speed plus the long waves' orbital velocity plus the wind drift of the
   surface; HH (and HV) peaks are higher than VV.
-* Wu, J. (1975). Wind-induced drift currents. *J. Fluid Mech.* 68, 49-70: surface drift
-  about 3 % of U10.
+* Wu, J. (1975). Wind-induced drift currents. *J. Fluid Mech.* 68, 49-70: the total
+  surface drift approaches about 3.5 % of the wind speed at long fetches (tank data);
+  the AMS Glossary of Meteorology gives 2.5-3.0 % ("Surface current"): 3 % is used.
 * Lee, P. H. Y. et al. (1995). X band microwave backscattering from ocean waves. *J.
   Geophys. Res.* 100(C2), 2591-2611, and Lee et al. (1996), Wind-speed dependence of
   small-grazing-angle microwave backscatter from sea surfaces, *IEEE Trans. Antennas
-  Propag.* 44(3), 333-340: HH spectra carry "fast" (faster-than-Bragg) scatterers whose
-  speed grows with the wind (3.8-10.3 m/s); VV stays near the Bragg speed.
+  Propag.* 44(3), 333-340: X-band data at winds of 3.8-10.3 m/s (the range of the
+  data); "the speed of faster-than-Bragg scatterers and their time-averaged
+  polarization ratio both increase with wind speed"; VV stays near the Bragg speed.
 * Walker, D. (2001). Doppler modelling of radar sea clutter. *IEE Proc. Radar Sonar
   Navig.* 148(2), 73-80: Bragg component at the Bragg speed plus drift, widths growing
   with the wind.

@@ -32,6 +32,18 @@ Rohling, H. (1983). Radar CFAR thresholding in clutter and multiple target situa
 Gandhi, P. P. and Kassam, S. A. (1988). Analysis of CFAR processors in nonhomogeneous
 background. *IEEE Trans. Aerosp. Electron. Syst.* 24(4), 427-445 (GO and SO in homogeneous
 noise, after Hansen and Weiss).
+Ward, K. D., Tough, R. J. A. and Watts, S. (2013). *Sea Clutter: Scattering, the K
+Distribution and Radar Performance*, 2nd ed. IET: the compound (K) model of sea clutter,
+gamma texture times exponential speckle (ch. 4), and CFAR detection in it, where the
+texture is either constant over the CFAR window or varies within it.
+Watts, S. (1985). Radar detection prediction in sea clutter using the compound
+K-distribution model. *IEE Proc. F* 132(7), 613-620.
+Watts, S. (1996). Cell-averaging CFAR gain in spatially correlated K-distributed
+clutter. *IEE Proc. Radar Sonar Navig.* 143(5), 321-327.
+Armstrong, B. C. and Griffiths, H. D. (1991). CFAR detection of fluctuating targets in
+spatially correlated K-distributed clutter. *IEE Proc. F* 138(2), 139-152.
+Abramowitz, M. and Stegun, I. A. (1964). *Handbook of Mathematical Functions*, NBS:
+13.2.5 (Tricomi's U as an integral), 13.5.2 (its asymptotic series).
 Nitzberg, R. (1986). Clutter map CFAR analysis. *IEEE Trans. Aerosp. Electron. Syst.*
 AES-22(4), 419-421 (the exponentially weighted map; the clutter-map idea goes back to
 Nitzberg's and others' work of the late 1970s).
@@ -43,8 +55,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import integrate, optimize, special, stats
 
-__all__ = ["pd_ca_swerling0", "pd_swerling1", "pfa_ca", "pfa_clutter_map", "pfa_go",
-           "pfa_m_of_n", "pfa_os", "pfa_so", "scale_for_pfa"]
+__all__ = ["k_intensity_laplace", "pd_ca_swerling0", "pd_swerling1", "pfa_ca",
+           "pfa_ca_k", "pfa_clutter_map", "pfa_go", "pfa_m_of_n", "pfa_os", "pfa_so",
+           "scale_for_pfa"]
 
 
 def pfa_ca(alpha: ArrayLike, n: int) -> NDArray:
@@ -60,6 +73,111 @@ def pfa_ca(alpha: ArrayLike, n: int) -> NDArray:
         Training cells N.
     """
     return (1.0 + np.asarray(alpha, dtype=float) / n) ** (-float(n))
+
+
+def k_intensity_laplace(s: ArrayLike, nu: float) -> NDArray:
+    """E[exp(-s z)] of a K-distributed intensity z of unit mean and shape ``nu``.
+
+    z = x y, texture x ~ Gamma(nu, mean 1), speckle y ~ Exp(1) (Ward, Tough & Watts 2013,
+    ch. 4), so E[exp(-s z)] = E_x[1 / (1 + s x)], and with Tricomi's U (Abramowitz &
+    Stegun 13.2.5, t = s x):
+
+    phi(s) = nu^nu / Gamma(nu) int_0^inf x^(nu-1) exp(-nu x) / (1 + s x) dx
+           = (nu / s)^nu U(nu, nu, nu / s)                                       (D7)
+
+    Parameters
+    ----------
+    s : array_like
+        Laplace variable, s >= 0 [-].
+    nu : float
+        K shape parameter (> 0) [-].
+    """
+    s = np.asarray(s, dtype=float)
+    out = np.ones_like(s)
+    pos = s > 0.0
+    z = nu / s[pos]
+    # z^nu U(nu, nu, z) -> 1 as z -> infinity, where scipy's hyperu underflows: the
+    # asymptotic series 1 - nu/z + nu (nu + 1)/z^2 - ... (A&S 13.5.2) takes over, its
+    # error below (nu + 3)^4 / z^4 < 1e-12
+    big = z > 1e3 * (nu + 3.0) ** 2
+    u = np.empty_like(z)
+    zs = z[~big]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        us = np.exp(nu * np.log(zs) + np.log(special.hyperu(nu, nu, zs)))
+    bad = ~np.isfinite(us) | (us <= 0.0)
+    if bad.any():
+        # scipy's hyperu fails (NaN, or 0 by underflow) for z below about nu when
+        # nu >~ 3: there the gamma texture sits near 1, far from the pole at x = -1/s,
+        # and generalised Gauss-Laguerre quadrature of E_x[1/(1 + s x)] converges fast
+        y, w = special.roots_genlaguerre(160, nu - 1.0)
+        w = np.exp(np.log(w) - special.gammaln(nu))
+        us[bad] = (w / (1.0 + (nu / zs[bad])[:, None] * (y / nu))).sum(axis=-1)
+    u[~big] = us
+    zb = z[big]
+    u[big] = (1.0 - nu / zb + nu * (nu + 1.0) / zb**2
+              - nu * (nu + 1.0) * (nu + 2.0) / zb**3)
+    out[pos] = u
+    return out
+
+
+def pfa_ca_k(alpha: ArrayLike, n: int, nu: float, texture: str = "independent",
+             nodes: int = 160) -> NDArray:
+    """False-alarm probability of a CA-CFAR (eq D1's threshold) in K clutter, no noise.
+
+    Every cell's intensity is z = x y (texture x ~ Gamma(nu, mean 1), speckle y ~
+    Exp(1)); the CFAR compares the cell under test z_0 with alpha times the mean of N
+    training cells. Two limits of the texture's spatial correlation (Watts 1985, 1996;
+    Armstrong & Griffiths 1991, whose worst case is the uncorrelated texture; Ward, Tough
+    & Watts 2013, CFAR detection in K clutter):
+
+    * ``texture="constant"``: one texture over the CUT and the window (texture
+      correlated over the window): conditioned on x the cells are exponential of mean x,
+      so P_FA is eq D1 whatever x: the CA-CFAR keeps its design (the loss of a CA-CFAR
+      there is in detection, not in false alarms).
+    * ``texture="independent"``: an independent texture in every cell. Conditioned on
+      x_0 and the training intensities, P(z_0 > alpha mean z_i) = exp(-alpha sum z_i /
+      (N x_0)); averaging over the independent z_i (eq D7) and then over x_0,
+
+      P_FA = E_x0[phi(alpha / (N x_0))^N]                                   (D8)
+
+      evaluated by generalised Gauss-Laguerre quadrature over nu x_0 (``nodes`` nodes).
+      It tends to eq D1 as nu -> infinity.
+
+    Partly correlated clutter usually lies between the two; it is not a strict bound
+    (a texture anti-correlated between the CUT and its neighbours, a lit crest next to
+    a shadowed trough, gives more false alarms than independent textures).
+
+    Parameters
+    ----------
+    alpha : array_like
+        Threshold multiplier on the training mean [-].
+    n : int
+        Training cells N.
+    nu : float
+        K shape parameter, 0 < nu <= 100 [-].
+    texture : {"independent", "constant"}
+        The texture's correlation over the window (the two limits above).
+    nodes : int
+        Quadrature nodes of eq D8.
+
+    Raises
+    ------
+    ValueError
+        ``nu`` not positive, or an unknown ``texture``.
+    """
+    if not 0.0 < nu <= 100.0:
+        raise ValueError(f"nu = {nu}: the K shape parameter must be in (0, 100] (the "
+                         "quadrature of eq D8; beyond, use eq D1's exponential law)")
+    if texture == "constant":
+        return pfa_ca(alpha, n)
+    if texture != "independent":
+        raise ValueError(f"texture = {texture!r}: use 'independent' or 'constant'")
+    a = np.asarray(alpha, dtype=float)
+    y, w = special.roots_genlaguerre(nodes, nu - 1.0)
+    x0 = y / nu  # texture of the CUT, Gamma(nu, mean 1)
+    phi = k_intensity_laplace(a[..., None] / (n * x0), nu)
+    log_w = np.log(w) - special.gammaln(nu)
+    return np.exp(special.logsumexp(log_w + n * np.log(np.maximum(phi, 1e-300)), axis=-1))
 
 
 def _pfa_so_sum(t: NDArray, n_half: int) -> NDArray:
