@@ -482,7 +482,7 @@ def save(dataset: xr.Dataset, path: PathLike) -> Path:
         raise SceneError(f"path = {os.fspath(path)!r}: directory {path.parent} does not exist")
     guard = None
     if str(dataset.attrs.get("title", "")).startswith("seaecho SAR image"):
-        from .guards import check_image
+        from .checks.guards import check_image
 
         guard = check_image  # no Inf, NaN only at the undefined pixels
     with quiet_invalid_netcdf():

@@ -173,10 +173,10 @@ class DaskBlocks:
 
 def check_workers(client, job: Job, block: int | None = None) -> None:
     """Refuse (:class:`~seaecho.config.SceneError`) a run whose per-worker memory
-    (``seaecho.resources.worker_bytes``: per thread a simulation and a block of pulses)
+    (``seaecho.checks.resources.worker_bytes``: per thread a simulation and a block of pulses)
     exceeds a worker's memory limit, from the scheduler's worker information; the
-    client's own memory is checked by ``seaecho.preflight.check_run``."""
-    from .resources import check_workers_memory
+    client's own memory is checked by ``seaecho.checks.preflight.check_run``."""
+    from .checks.resources import check_workers_memory
 
     try:
         info = client.scheduler_info(n_workers=-1)
@@ -393,7 +393,7 @@ def sweep(cases: list[Case], out_dir: str | os.PathLike, *, base_dir: str | os.P
           progress: bool = True, refused: dict[int, str] | None = None) -> list[dict]:
     """Run every case (one task each on ``client``, else here one after the other);
     return the rows of the summary in case order (:func:`write_summary`). The cases in
-    ``refused`` (index -> message, e.g. from ``seaecho.preflight.check_run``) are not
+    ``refused`` (index -> message, e.g. from ``seaecho.checks.preflight.check_run``) are not
     run: their rows are failed with that message."""
     from tqdm import tqdm
 

@@ -217,7 +217,7 @@ class MultistaticSimulation:
         """Everything but the pulses, with a ``receiver`` dimension (module docstring)."""
         import xarray as xr
 
-        from .guards import check_dataset
+        from .checks.guards import check_dataset
 
         parts = [s.static_dataset() for s in self.receivers]
         first = parts[0]
@@ -388,7 +388,7 @@ def image_multistatic(ds, config=None, *, backend: str = "drjit", progress: bool
     """
     import xarray as xr
 
-    from .guards import check_image
+    from .checks.guards import check_image
     from .imaging.focus import focus
 
     names = [str(n) for n in ds["receiver"].values]

@@ -388,7 +388,7 @@ def test_images_per_receiver_and_their_incoherent_combination():
 
 def test_preflight_names_the_receiver_whose_geometry_is_refused():
     # seaecho check refuses what seaecho run would: each receiver's geometry, named
-    from seaecho.preflight import check_run
+    from seaecho.checks.preflight import check_run
 
     rx = [dict(r) for r in RECEIVERS]
     rx[2]["position_m"] = (0.0, -150.0, -3.0)  # under the sea

@@ -216,7 +216,7 @@ def _calibrated(a, nodata: NDArray | None = None) -> NDArray:
     becomes NaN where ``nodata`` (broadcast over the leading axis) marks a pixel without
     data (``valid`` = 0: K < 0.1 max K, or the echoes outside the receive window); at a
     pixel with data every value is bounded (K >= 0.1 max K) and the image guard
-    (``seaecho.guards.check_image``) reports any that is not."""
+    (``seaecho.checks.guards.check_image``) reports any that is not."""
     a = np.asarray(a)
     a = a.astype(np.complex128 if np.iscomplexobj(a) else np.float64)
     if nodata is None:

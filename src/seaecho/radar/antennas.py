@@ -220,7 +220,7 @@ def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: 
 def aperture_quadrature(width: float, height: float, wavelength: float) -> tuple[int, int]:
     """Nodes ``(n_u, n_phi)`` of :func:`aperture_radiated_power`'s quadrature of eq A3:
     the band of each integrand plus the margin ``4 z^(1/3) + 32`` (its docstring).
-    (``seaecho.resources`` sizes the normalisation's time from them.)
+    (``seaecho.checks.resources`` sizes the normalisation's time from them.)
 
     Parameters
     ----------
