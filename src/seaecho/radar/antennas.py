@@ -559,7 +559,7 @@ def project_ports(ports: NDArray[np.complex128], h: NDArray, v: NDArray
     ports : ndarray (..., 2, 3) complex
         Port vectors in the world (from :meth:`Antenna.response`).
     h, v : ndarray (..., 3)
-        World FSA basis of the wave (``seaecho.scattering.frames.polarisation_basis``).
+        World FSA basis of the wave (``seaecho.geometry.frames.polarisation_basis``).
     """
     return np.stack([np.einsum("...pi,...i->...p", ports, h),
                      np.einsum("...pi,...i->...p", ports, v)], axis=-1)
