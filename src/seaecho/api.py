@@ -459,8 +459,7 @@ def open_dataset(path: PathLike) -> xr.Dataset:
     """Open a seaecho file (run, image, surface, facets) lazily, complex variables
     included (h5netcdf), or a run's Zarr store (``*.zarr``). Close it, or use it in a
     ``with`` block."""
-    from .io.run import quiet_invalid_netcdf
-    from .io.zarr_run import open_run
+    from .io.run import open_run, quiet_invalid_netcdf
 
     with quiet_invalid_netcdf():
         return open_run(path)

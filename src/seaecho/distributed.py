@@ -299,7 +299,8 @@ def run_case(case: Case, base_dir: str, out_dir: str | None, reduce: bool,
     try:
         sim = _simulation(case.scene, base_dir=base_dir)
         if reduce:
-            from .io.run import block_size, blocks_of
+            from .io.pulses import blocks_of
+            from .io.run import block_size
 
             blocks = blocks_of(sim.radar.n_pulses, block_size(sim.block_edges(), block))
             comp = np.concatenate([sim.pulses(a, b)[1] for a, b in blocks])

@@ -16,7 +16,7 @@ from seaecho import distributed
 from seaecho.cli import main
 from seaecho.cli.sweep import parse_values
 from seaecho.config import SceneError
-from seaecho.io.zarr_run import open_run
+from seaecho.io.run import open_run
 from seaecho.processing.reductions import reduce_run
 from seaecho.simulation import Simulation
 

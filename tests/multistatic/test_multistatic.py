@@ -220,7 +220,7 @@ def test_one_receiver_scene_keeps_the_bistatic_layout_and_bytes():
 @pytest.mark.slow
 @pytest.mark.filterwarnings("ignore::seaecho.scattering.validity.SPMValidityWarning")
 def test_netcdf_zarr_and_resumed_zarr_have_the_same_bytes(tmp_path):
-    from seaecho.io.zarr_run import open_run
+    from seaecho.io.run import open_run
 
     sc = _scene(n_pulses=4, sea_update_pulses=2)
     nc = simulation_of(sc).run(tmp_path / "m.nc", progress=False, chunk=2)
@@ -276,7 +276,7 @@ def test_bad_receivers_are_refused_naming_the_field(change, match):
 def test_dask_run_has_the_serial_bytes(tmp_path):
     # Blocks of pulses on two Dask workers (each its own MultistaticSimulation)
     from seaecho import distributed
-    from seaecho.io.zarr_run import open_run
+    from seaecho.io.run import open_run
 
     sc = _scene(n_pulses=4)
     serial = simulation_of(sc).run(tmp_path / "s.nc", progress=False, chunk=1)
