@@ -129,6 +129,57 @@ def test_no_import_cycle_between_packages():
         visit(start, [])
 
 
+def _modules() -> set[str]:
+    """Every module of the source, dotted (``seaecho.io.run``; a package by its name)."""
+    out = set()
+    for path in SRC.rglob("*.py"):
+        parts = list(path.relative_to(SRC.parent).with_suffix("").parts)
+        out.add(".".join(parts[:-1] if parts[-1] == "__init__" else parts))
+    return out
+
+
+def test_no_import_cycle_between_modules():
+    # Modules, not only packages: no module imports (at module level or inside a
+    # function) a module that imports it back, directly or through others. ``from .x
+    # import name`` counts as importing module ``x``, or the package when ``name`` is not
+    # a module. Strongly connected components of the graph (Tarjan) name each cycle.
+    modules = _modules()
+    graph: dict[str, set[str]] = {}
+    for module, target, _ in _imports():
+        if (module, target) in LAZY_REEXPORTS:
+            continue
+        if target not in modules:
+            target = target.rsplit(".", 1)[0]
+        if target in modules and target != module:
+            graph.setdefault(module, set()).add(target)
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    cycles = []
+
+    def connect(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        for w in sorted(graph.get(v, ())):
+            if w not in index:
+                connect(w)
+                low[v] = min(low[v], low[w])
+            elif w in stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = []
+            while component[-1:] != [v]:
+                component.append(stack.pop())
+            if len(component) > 1:
+                cycles.append(sorted(component))
+
+    for v in sorted(graph):
+        if v not in index:
+            connect(v)
+    assert not cycles, "import cycles between modules: " + "; ".join(
+        " <-> ".join(c) for c in cycles)
+
+
 def test_stages_never_read_the_scene_schema():
     bad = [f"{m}:{line} imports {t}" for m, t, line in _imports()
            if _package(m) in STAGES and _package(t) == "config"]
