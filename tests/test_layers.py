@@ -34,6 +34,7 @@ LAYERS = [
     {"detection"},
     {"io"},
     {"imaging"},
+    {"plotting"},
     {"build"},
     {"checks"},
     {"simulation", "multistatic"},

@@ -1159,17 +1159,17 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
         raise SceneError(f"stem = {os.fspath(stem)!r}: directory {stem.parent} does not "
                          "exist")
     if "raw" in dataset and int(dataset.attrs.get("multistatic", 0)):
-        from .io.figures import run_figures
         from .multistatic import receiver_dataset
+        from .plotting.run import run_figures
 
         return [png for name in dataset["receiver"].values for png in run_figures(
             receiver_dataset(dataset, str(name)), f"{stem}_{name}")]
     if "raw" in dataset:
-        from .io.figures import run_figures
+        from .plotting.run import run_figures
 
         out = run_figures(dataset, stem)
         if "sweep" in dataset:  # a scanning radar: a PPI per sweep
-            from .io.cfradial import ppi_figures
+            from .plotting.ppi import ppi_figures
 
             out += ppi_figures(dataset, stem)
         return out
@@ -1179,7 +1179,7 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
         cfg = json.loads(dataset.attrs["image_json"])
         return multistatic_figures(dataset, stem, cfg["dynamic_range_db"])
     if "image_json" in dataset.attrs:
-        from .imaging.figures import image_figures
+        from .plotting.image import image_figures
 
         cfg = json.loads(dataset.attrs["image_json"])
         return image_figures(dataset, stem, cfg["dynamic_range_db"])

@@ -440,10 +440,10 @@ def receiver_image(img, receiver: str | int):
 def multistatic_figures(img, stem: str | os.PathLike, dynamic_range_db: float = 50.0
                         ) -> list[Path]:
     """Figures of :func:`image_multistatic`: every receiver's (``<stem>_<name>_*.png``,
-    :func:`seaecho.imaging.figures.image_figures`) and the incoherent combination's,
+    :func:`seaecho.plotting.image.image_figures`) and the incoherent combination's,
     ``<stem>_fused_sigma0.png`` (or ``_fused_rcs.png`` without sea), on one dB scale per
     figure."""
-    from .imaging.figures import image_figures, sigma0_figure
+    from .plotting.image import image_figures, sigma0_figure
 
     out: list[Path] = []
     for name in img["receiver"].values:

@@ -96,7 +96,7 @@ M_PIXEL = 120.0  #: per image pixel (calibration maps, coverage, products' tempo
 M_PIXEL_CHANNEL = 160.0  #: per image pixel and channel (accumulator, image, sigma0...)
 M_UPSAMPLED = 40.0  #: per upsampled sample of the focusing's block of pulses
 M_IMAGE_FIGURE = 60.0  #: per image pixel and figure panel drawn
-IMAGE_PANELS = 12  #: figure panels of an image (``seaecho.imaging.figures``)
+IMAGE_PANELS = 12  #: figure panels of an image (``seaecho.plotting.image``)
 M_TRUTH_CELL = 100.0  #: per sea cell of a raw dataset read as the image's truth (sigma
 #: map, elevations, wake mask, the Kelvin amplitude's filter)
 #: Margin on the sum, so that the estimate stays above the measured peak.
