@@ -1162,8 +1162,9 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
         from .multistatic import receiver_dataset
         from .plotting.run import run_figures
 
+        # each receiver's product as it is (its figures read no scene: docs/products.md)
         return [png for name in dataset["receiver"].values for png in run_figures(
-            receiver_dataset(dataset, str(name)), f"{stem}_{name}")]
+            receiver_dataset(dataset, str(name), receiver_scene=False), f"{stem}_{name}")]
     if "raw" in dataset:
         from .plotting.run import run_figures
 
