@@ -36,7 +36,7 @@ LAYERS = [
     {"imaging"},
     {"plotting"},
     {"build"},
-    {"checks"},
+    {"checks", "summary"},
     {"simulation", "multistatic"},
     {"distributed"},
     {"api"},
@@ -47,9 +47,12 @@ LAYERS = [
 STAGES = {"ocean", "wake", "sea", "scattering", "geometry", "targets", "tracing", "radar",
           "processing", "detection", "io"}
 RANK = {name: i for i, layer in enumerate(LAYERS) for name in layer}
-#: The top-level package re-exports the Python API lazily (PEP 562 ``__getattr__``), so
-#: that ``import seaecho`` loads nothing heavy (tests/api/test_api_scene.py checks it).
-LAZY_REEXPORTS = {("seaecho", "seaecho.api")}
+#: The only imports that reach up the layers, each deferred (inside a function) and for
+#: display or convenience, never for the pipeline: the top-level package re-exports the
+#: Python API lazily (PEP 562 ``__getattr__``), so that ``import seaecho`` loads nothing
+#: heavy (tests/api/test_api_scene.py checks it); a ``Scene`` prints its summary
+#: (``repr``, a notebook's display), which ``seaecho.summary`` computes with the builder.
+LAZY_REEXPORTS = {("seaecho", "seaecho.api"), ("seaecho.config.scene", "seaecho.summary")}
 
 
 def _package(module: str) -> str:

@@ -16,9 +16,9 @@ import pytest
 from seaecho.build import receiver_scene
 from seaecho.config import SceneError, parse_scene
 from seaecho.constants import C0
+from seaecho.geometry.bistatic import bistatic_angle
 from seaecho.multistatic import (
     MultistaticSimulation,
-    bistatic_angle,
     receiver_dataset,
     simulation_of,
 )
