@@ -34,7 +34,8 @@ from .tracing import ObjectConfig, TracingConfig
 class Scene(Section):
     """A validated scene file.
 
-    It knows its folder and shows a readable summary. Made by :func:`~seaecho.config.load_scene` (which records the file's folder,
+    It knows its folder and shows a readable summary. Made by
+    :func:`~seaecho.config.load_scene` (which records the file's folder,
     :attr:`base_dir`), :func:`~seaecho.config.parse_scene` and
     :func:`~seaecho.config.with_overrides`; every builder takes it. Printed, or shown in a
     notebook, it gives :meth:`summary`. Frozen: change it with ``with_overrides``.
