@@ -560,6 +560,16 @@ MUTATIONS = [
              "return vv - regular_vv, regular_vv", "return hh - regular_vv, regular_vv",
              ("tests/scattering/test_copol.py", "tests/scattering/test_validation_gmf.py"),
              "eq CP3: NP taken from HH minus the regular VV"),
+    Mutation("ground-resolution-monostatic-factor", S + "radar/resolution.py",
+             "    return C0 / (bandwidth * gh), grad / gh",
+             "    return C0 / (2 * bandwidth * gh), grad / gh",
+             ("tests/radar/test_resolution.py",),
+             "the bistatic ground cell with the monostatic factor 2 again (eq R2)"),
+    Mutation("azimuth-resolution-full-aperture", S + "radar/resolution.py",
+             "    return wavelength * slant_range / (2 * aperture)",
+             "    return wavelength * slant_range / aperture",
+             ("tests/radar/test_resolution.py",),
+             "lambda R / L: the two-way phase of a synthetic aperture forgotten (eq R3)"),
 ]
 
 
