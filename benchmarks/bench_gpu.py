@@ -144,7 +144,7 @@ def run(variant: str, pulses: int, warmup: int, refresh: float, update: int,
     return results
 
 
-def sbr(variant: str, batch: int) -> None:
+def sbr(variant: str, batch: int, profile: bool = False) -> None:
     """Time the hull trace of Simulation 2 on ``variant`` (module docstring, ``--sbr``).
 
     The first trace goes through the signature cache (``SEAECHO_CACHE_DIR``; an empty
@@ -162,7 +162,7 @@ def sbr(variant: str, batch: int) -> None:
     hulls = sim.hulls
     print(f"  SBR on {variant}: simulation built in {time.perf_counter() - t0:.1f} s",
           flush=True)
-    spent = {"casts": 0.0, "shadow": 0.0}
+    spent = {"casts": 0.0, "shadow": 0.0, "scenes": 0.0}
 
     def timed(fn, key):
         def wrapper(*a, **k):
@@ -175,6 +175,7 @@ def sbr(variant: str, batch: int) -> None:
 
     sbr_module._intersect = timed(sbr_module._intersect, "casts")
     sbr_module._blocked = timed(sbr_module._blocked, "shadow")
+    sbr_module._mi_scene = timed(sbr_module._mi_scene, "scenes")
     hull = hulls.hulls[0]
     default = hull.options
     pulse = hulls.refresh_pulse(0, 40)
@@ -189,9 +190,20 @@ def sbr(variant: str, batch: int) -> None:
             spent[k] = 0.0
         dr.set_flag(dr.JitFlag.KernelHistory, True)
         dr.kernel_history()
+        prof = None
+        if profile and i == 1:
+            import cProfile
+
+            prof = cProfile.Profile()
+            prof.enable()
         w, c = time.perf_counter(), time.process_time()
         sig = hulls._trace(0, pulse)
         w, c = time.perf_counter() - w, time.process_time() - c
+        if prof is not None:
+            import pstats
+
+            prof.disable()
+            pstats.Stats(prof).sort_stats("tottime").print_stats(14)
         hist = dr.kernel_history()
         dr.set_flag(dr.JitFlag.KernelHistory, False)
         jit = [k for k in hist if str(k["type"]).endswith("JIT")]
@@ -200,8 +212,9 @@ def sbr(variant: str, batch: int) -> None:
                         for k in jit) / 1e3
         run_s = sum(float(k.get("execution_time", 0.0)) for k in hist) / 1e3
         print(f"  SBR {label}: {w:.2f} s wall, {c:.2f} s CPU; ray casts {spent['casts']:.2f} s, "
-              f"shadow rays {spent['shadow']:.2f} s, the rest "
-              f"{w - spent['casts'] - spent['shadow']:.2f} s; {sig.n_rays} rays, "
+              f"shadow rays {spent['shadow']:.2f} s, Mitsuba scenes {spent['scenes']:.2f} s, "
+              f"the rest {w - spent['casts'] - spent['shadow'] - spent['scenes']:.2f} s; "
+              f"{sig.n_rays} rays, "
               f"{sig.n_hits} hits; {len(hist)} launches ({len(jit)} JIT kernels, "
               f"{sum(1 for k in jit if k.get('uses_optix'))} OptiX, {len(miss)} compiled, "
               f"{compile_s:.2f} s compiling, {run_s:.2f} s running)", flush=True)
@@ -268,6 +281,8 @@ def main() -> None:
     ap.add_argument("--sbr", action="store_true", help="time the SBR hull trace instead")
     ap.add_argument("--sbr-batch", type=int, default=1 << 20,
                     help="a second ray batch size of --sbr [rays]")
+    ap.add_argument("--sbr-profile", action="store_true",
+                    help="--sbr: cProfile of the second trace (its time is inflated)")
     ap.add_argument("--scan", action="store_true",
                     help="time the coastal revolution instead")
     ap.add_argument("--stride", type=int, default=25, help="--scan: every N-th pulse")
@@ -295,7 +310,7 @@ def main() -> None:
         print(f"bench_gpu: {_device()}; {os.cpu_count()} CPUs, load "
               f"{os.getloadavg()[0]:.2f}", flush=True)
         if args.sbr:
-            sbr(variant, args.sbr_batch)
+            sbr(variant, args.sbr_batch, args.sbr_profile)
         else:
             scan(variant, 1250 if args.smoke else args.stride, args.smoke)
         return
