@@ -278,6 +278,9 @@ def main() -> None:
     ap.add_argument("--save", help="folder for the GPU pulses' samples (.npy)")
     ap.add_argument("--freeze", choices=("0", "1"),
                     help="SEAECHO_FREEZE of the timed pulses (default: the environment's)")
+    ap.add_argument("--unbatched", action="store_true",
+                    help="one cufinufft call per channel (radar.echo.CUDA_BATCH_CHANNELS "
+                    "off)")
     ap.add_argument("--sbr", action="store_true", help="time the SBR hull trace instead")
     ap.add_argument("--sbr-batch", type=int, default=1 << 20,
                     help="a second ray batch size of --sbr [rays]")
@@ -302,6 +305,10 @@ def main() -> None:
         return
     if args.freeze is not None:
         os.environ["SEAECHO_FREEZE"] = args.freeze
+    if args.unbatched:
+        from seaecho.radar import echo
+
+        echo.CUDA_BATCH_CHANNELS = False
     from seaecho.backend import cuda_available
 
     if args.sbr or args.scan:

@@ -218,7 +218,10 @@ class _FakePlan:
     def execute(self, data, out=None):
         import finufft
 
-        assert out is not None and out.shape == (self.n,) and data.dtype == np.complex128
+        shape = (self.n,) if self.n_trans == 1 else (self.n_trans, self.n)
+        assert out is not None and out.shape == shape and data.dtype == np.complex128
+        assert data.shape == ((self.x.size,) if self.n_trans == 1
+                              else (self.n_trans, self.x.size))
         _host_view(out)[...] = finufft.nufft1d1(self.x, _host_view(data).copy(),
                                                 n_modes=self.n, eps=self.eps,
                                                 isign=self.isign, modeord=1)
@@ -252,11 +255,13 @@ def test_device_echo_goes_through_cufinufft_on_array_pointers(monkeypatch):
     assert _FakePlan.made == 1  # one plan, reused for every channel and pulse
 
 
-def test_host_scatterers_of_a_gpu_pulse_take_cufinufft(monkeypatch):
+@pytest.mark.parametrize("batched", [True, False])
+def test_host_scatterers_of_a_gpu_pulse_take_cufinufft(monkeypatch, batched):
     # A pulse whose sea is a DeviceEcho accumulates there, through cufinufft on the same
     # plan, a host scatterer set too large for the direct sum (a hull's centres); one
     # small enough for the direct sum stays on the host. The samples are the host
-    # path's to the NUFFT tolerance (stand-in cufinufft on the CPU back end).
+    # path's to the NUFFT tolerance (stand-in cufinufft on the CPU back end), with the
+    # channels in one cufinufft call (n_trans = C) or one call each.
     from seaecho.radar import echo as echo_mod
     from seaecho.radar.echo import DIRECT_TERMS, ReceiveWindow
     from seaecho.radar.system import DeviceEcho, RadarSystem, ScattererEcho
@@ -264,6 +269,7 @@ def test_host_scatterers_of_a_gpu_pulse_take_cufinufft(monkeypatch):
     monkeypatch.setitem(sys.modules, "cufinufft", types.SimpleNamespace(Plan=_FakePlan))
     monkeypatch.setattr(backend, "cuda_synchronize", lambda: None)
     monkeypatch.setattr(echo_mod, "_CUDA_PLANS", {})
+    monkeypatch.setattr(echo_mod, "CUDA_BATCH_CHANNELS", batched)  # one call or C calls
     calls = []
     monkeypatch.setattr(_FakePlan, "setpts", lambda self, x: (
         calls.append(x.shape[0]), setattr(self, "x", _host_view(x).copy())))
