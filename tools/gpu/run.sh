@@ -5,8 +5,8 @@
 # site.tar.xz: tools/gpu/make_site.sh's archive (packages the machine lacks; it had
 # numpy, scipy, xarray, h5py, matplotlib, pytest and hypothesis, and CUDA 13's cuFFT in
 # PyTorch's environment). Each step has its own time limit; the log is $OUT/log.
-# (Run in four calls there: steps 1-4 and 7, then 3 with the CPU comparison, 5 and 8 on
-# LLVM, then 2 and 5 with --sbr-profile, then 6.)
+# (Run in five calls there: steps 1-4 and 7; 3 with the CPU comparison, 5 and 8; 2 and 5
+# with --sbr-profile; 6; 3 and 3b with 60 pulses.)
 set -u
 export PYTHONUNBUFFERED=1
 R=$(pwd); L=$OUT/log; mkdir -p "$OUT"
@@ -21,6 +21,7 @@ B=benchmarks/bench_gpu.py
 step 40 $PY tools/gpu/check_env.py                                          # 1
 step 150 $PY $B --sbr --sbr-profile --variant cuda_ad_mono_polarized        # 2
 step 180 $PY $B --save $OUT --pulses 30 --warmup 3                          # 3
+step 60 $PY $B --no-cpu --pulses 60 --warmup 3 --freeze 1 --unbatched       # 3b
 step 150 $PY -m pytest -q -p no:cacheprovider -m gpu tests/test_backend.py tests/radar/test_resident.py  # 4
 step 90 $PY $B --sbr --sbr-profile --variant llvm_ad_mono_polarized --sbr-batch 262144  # 5
 step 200 $PY $B --no-cpu --pulses 12 --warmup 2 --update 1                  # 6
