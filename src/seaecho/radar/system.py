@@ -22,16 +22,17 @@ emission time (the echo arrives microseconds later).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..backend import aligned
 from ..constants import C0
 from ..geometry.frames import tile_outline
 from ..rng import generator
-from .echo import ReceiveWindow, accumulate, accumulate_cuda
+from .echo import DIRECT_TERMS, ReceiveWindow, accumulate, accumulate_cuda
 from .equation import noise_power, thermal_noise
 from .model import RadarModel
 from .platforms import PlatformState
@@ -98,6 +99,18 @@ class DeviceEcho:
     tau: Any
     amplitudes: Any
     n_channels: int
+    #: host arrays the device arrays may alias (LLVM maps aligned numpy memory)
+    host: Any = field(default=None, repr=False, compare=False)
+
+    @classmethod
+    def upload(cls, xp: Any, tau: NDArray, amplitudes) -> DeviceEcho:
+        """Host delays (K,) [s] and C channels' complex amplitudes (K,) [sqrt(W)] as a
+        device echo in ``xp`` (the inverse of :meth:`to_host`)."""
+        host = [aligned(np.asarray(tau, dtype=np.float64), np.float64)]
+        host += [aligned(np.ascontiguousarray(a, dtype=np.complex128).view(np.float64),
+                         np.float64) for a in amplitudes]
+        dev = [xp.Float(h) for h in host]
+        return cls(xp, dev[0], tuple(dev[1:]), len(dev) - 1, host)
 
     def to_host(self) -> ScattererEcho:
         """The same echo as numpy arrays (a copy from the device)."""
@@ -343,6 +356,9 @@ class RadarSystem:
             out = np.zeros((n_ch, self.window.n_samples), dtype=np.complex128)
         else:
             out[...] = 0.0
+        # A pulse whose sea is on a GPU accumulates there the host scatterer sets that
+        # would take the NUFFT (a hull's centres): uploaded, cufinufft on the same plan
+        device = next((e.xp for e in echoes if isinstance(e, DeviceEcho)), None)
         for e in echoes:  # a handful of scatterer sets (sea, targets), each one vectorised
             if isinstance(e, DeviceEcho):  # already cut to the window, on the GPU
                 out += accumulate_cuda(e.xp, e.tau, e.amplitudes, self._spectrum,
@@ -355,7 +371,11 @@ class RadarSystem:
                 tau, amp = e.tau[keep], e.amplitudes[:, keep]
             else:
                 tau, amp = e.tau[keep], [a[keep] for a in e.amplitudes]
-            if tau.size:
+            if device is not None and tau.size * self._spectrum.size > DIRECT_TERMS:
+                d = DeviceEcho.upload(device, tau, amp)
+                out += accumulate_cuda(device, d.tau, d.amplitudes, self._spectrum,
+                                       self.window)
+            elif tau.size:
                 out += accumulate(tau, amp, self._spectrum, self.window,
                                   precision=self.model.accumulation_precision)
         if self.model.transmit_phase == "random":  # a magnetron: a new phase per pulse
