@@ -16,8 +16,8 @@ from numpy.typing import NDArray
 from ..geometry.earth import SphericalEarth
 from .antennas import Antenna
 from .platforms import Platform
-from .propagation import TwoRay
 from .pointing import Pointing
+from .propagation import TwoRay
 from .waveform import Waveform
 
 
