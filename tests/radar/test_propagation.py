@@ -244,3 +244,29 @@ def test_hulls_ask_for_no_factor():
     np.testing.assert_array_equal(free.scatterer_echo(free.geometry(0), p, v, s,
                                                       multipath=True).amplitudes,
                                   plain.amplitudes)
+
+
+@pytest.mark.slow  # about 5 s (two sea-tile simulations)
+@pytest.mark.filterwarnings("ignore::seaecho.scattering.validity.SPMValidityWarning")
+def test_sea_facets_carry_the_factor_of_their_own_height():
+    # the sea's reference path: facet k's HH amplitude is multiplied by F_h(z_k)^2
+    # (monostatic), the factor of the facet's own phase centre (eq P1)
+    from seaecho.simulation import Simulation
+
+    def sim(multipath):
+        scene = _target_scene([], 25.0, 0.0, multipath, channels=("HH", "VV"))
+        scene["radar"]["sea_clutter"] = True
+        scene["transmitter"]["position_m"] = (0.0, -1500.0, 25.0)
+        scene["sea"] = {"wind_speed_m_s": 5.0, "size_x_m": 64.0, "nx": 64}
+        return Simulation(parse_scene(scene))
+
+    with_f, free = sim("two-ray"), sim("none")
+    a, b = (s.sea_echo(0, sigma=True) for s in (with_f, free))
+    vis = a.facets.visibility > 0
+    p = with_f.phase_centres(0, with_f.surface_state(0))[vis]
+    fh, fv = with_f.radar.model.multipath.factors(with_f.radar.geometry(0).tx.position, p)
+    assert np.ptp(p[:, 2]) > 0.2 and np.ptp(np.abs(fh)) > 0.1  # heights matter
+    np.testing.assert_allclose(a.echo.amplitudes[0], b.echo.amplitudes[0] * fh**2,
+                               rtol=1e-5, atol=1e-6 * np.abs(b.echo.amplitudes[0]).max())
+    np.testing.assert_allclose(a.echo.amplitudes[1], b.echo.amplitudes[1] * fv**2,
+                               rtol=1e-5, atol=1e-6 * np.abs(b.echo.amplitudes[1]).max())
