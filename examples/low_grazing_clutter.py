@@ -296,6 +296,8 @@ def main(argv: list[str] | None = None) -> None:
                     help="a 64 m tile and two sea states (a smoke run)")
     ap.add_argument("--multipath", action="store_true",
                     help="the sea's two-ray propagation factor (module docstring)")
+    ap.add_argument("--seeds", type=int, default=len(PPI_SEEDS),
+                    help=f"sea realisations per range of part 2 (default {len(PPI_SEEDS)})")
     a = ap.parse_args(argv)
     tag = "_multipath" if a.multipath else ""
     out = Path(a.outdir)
@@ -311,7 +313,7 @@ def main(argv: list[str] | None = None) -> None:
     if a.part in ("ppi", "all"):
         tile, n = (64.0, 64) if a.quick else (128.0, 128)
         ranges = (1000.0, 2000.0) if a.quick else PPI_RANGES_M
-        rows = ppi_table(ranges, tile_m=tile, n=n, seeds=(3,) if a.quick else PPI_SEEDS,
+        rows = ppi_table(ranges, tile_m=tile, n=n, seeds=(3,) if a.quick else PPI_SEEDS[:a.seeds],
                          multipath=a.multipath)
         write_csv(rows, out / f"low_grazing_ppi{tag}.csv")
         ex = falloff_exponents(rows)
