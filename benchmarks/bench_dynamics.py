@@ -76,8 +76,8 @@ def bench(label: str, grid: int | None, pulses: int, model: str, tilt: bool, mot
 def bench_kernel(n: int, repeat: int) -> None:
     """The fused facet kernel alone (eqs P1-P7), best of ``repeat``, wall and CPU."""
     from seaecho.constants import C0
+    from seaecho.geometry import frames
     from seaecho.ocean.spectra import DirectionalSpectrum
-    from seaecho.scattering import frames
     from seaecho.scattering.dynamics import EvolvingSpeckle, SeaDynamics
     from seaecho.scattering.facet import (
         FacetModel,

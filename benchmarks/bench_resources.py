@@ -1,9 +1,9 @@
-"""Measured peak memory and run time of `seaecho run` against ``seaecho.resources``.
+"""Measured peak memory and run time of `seaecho run` against ``seaecho.checks.resources``.
 
 Run as ``python benchmarks/bench_resources.py`` (about 5 minutes; ``--quick`` for the
 small cases only, ``--cases NAME ...`` for some). Each case is a variant of the
 calibration scene that grows one term of the memory model (eq M1 of
-``seaecho.resources``): the sea grid (analytic and ray-traced facets), the receive window
+``seaecho.checks.resources``): the sea grid (analytic and ray-traced facets), the receive window
 (samples per pulse), the pulses, the figures. Each run is a child process (the console
 script); its peak resident memory is ``ru_maxrss`` of the children, read by a wrapper
 process that does nothing else. Printed per case: the sizes, the estimate, the measured
@@ -86,9 +86,9 @@ def cases(quick: bool) -> dict[str, tuple[dict, bool]]:
 
 
 def measure(scene: dict, figures: bool) -> dict:
+    from seaecho.checks.resources import estimate
     from seaecho.config import parse_scene
     from seaecho.config.toml_writer import dumps
-    from seaecho.resources import estimate
 
     est = estimate(parse_scene(copy.deepcopy(scene)), figures=figures)
     with tempfile.TemporaryDirectory() as tmp:

@@ -49,7 +49,7 @@ SCENES = [ROOT / "scenes" / "paper_sim1_bistatic_64m.toml",
 
 #: (label, module, attribute path, depth): functions timed in the child (inclusive).
 STAGES = [
-    ("preflight checks (check_run)", "seaecho.preflight", "check_run", 0),
+    ("preflight checks (check_run)", "seaecho.checks.preflight", "check_run", 0),
     ("build models (build_simulation)", "seaecho.build", "build_simulation", 0),
     ("antenna normalisation", "seaecho.radar.antennas", "aperture_radiated_power", 1),
     ("simulation set-up", "seaecho.simulation", "Simulation._setup", 0),

@@ -34,8 +34,10 @@ LAYERS = [
     {"detection"},
     {"io"},
     {"imaging"},
+    {"plotting"},
     {"build"},
-    {"simulation", "multistatic", "guards", "preflight", "resources"},
+    {"checks", "summary"},
+    {"simulation", "multistatic"},
     {"distributed"},
     {"api"},
     {"cli"},
@@ -45,9 +47,12 @@ LAYERS = [
 STAGES = {"ocean", "wake", "sea", "scattering", "geometry", "targets", "tracing", "radar",
           "processing", "detection", "io"}
 RANK = {name: i for i, layer in enumerate(LAYERS) for name in layer}
-#: The top-level package re-exports the Python API lazily (PEP 562 ``__getattr__``), so
-#: that ``import seaecho`` loads nothing heavy (tests/api/test_api_scene.py checks it).
-LAZY_REEXPORTS = {("seaecho", "seaecho.api")}
+#: The only imports that reach up the layers, each deferred (inside a function) and for
+#: display or convenience, never for the pipeline: the top-level package re-exports the
+#: Python API lazily (PEP 562 ``__getattr__``), so that ``import seaecho`` loads nothing
+#: heavy (tests/api/test_api_scene.py checks it); a ``Scene`` prints its summary
+#: (``repr``, a notebook's display), which ``seaecho.summary`` computes with the builder.
+LAZY_REEXPORTS = {("seaecho", "seaecho.api"), ("seaecho.config.scene", "seaecho.summary")}
 
 
 def _package(module: str) -> str:
@@ -126,6 +131,57 @@ def test_no_import_cycle_between_packages():
 
     for start in graph:
         visit(start, [])
+
+
+def _modules() -> set[str]:
+    """Every module of the source, dotted (``seaecho.io.run``; a package by its name)."""
+    out = set()
+    for path in SRC.rglob("*.py"):
+        parts = list(path.relative_to(SRC.parent).with_suffix("").parts)
+        out.add(".".join(parts[:-1] if parts[-1] == "__init__" else parts))
+    return out
+
+
+def test_no_import_cycle_between_modules():
+    # Modules, not only packages: no module imports (at module level or inside a
+    # function) a module that imports it back, directly or through others. ``from .x
+    # import name`` counts as importing module ``x``, or the package when ``name`` is not
+    # a module. Strongly connected components of the graph (Tarjan) name each cycle.
+    modules = _modules()
+    graph: dict[str, set[str]] = {}
+    for module, target, _ in _imports():
+        if (module, target) in LAZY_REEXPORTS:
+            continue
+        if target not in modules:
+            target = target.rsplit(".", 1)[0]
+        if target in modules and target != module:
+            graph.setdefault(module, set()).add(target)
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    cycles = []
+
+    def connect(v):
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        for w in sorted(graph.get(v, ())):
+            if w not in index:
+                connect(w)
+                low[v] = min(low[v], low[w])
+            elif w in stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            component = []
+            while component[-1:] != [v]:
+                component.append(stack.pop())
+            if len(component) > 1:
+                cycles.append(sorted(component))
+
+    for v in sorted(graph):
+        if v not in index:
+            connect(v)
+    assert not cycles, "import cycles between modules: " + "; ".join(
+        " <-> ".join(c) for c in cycles)
 
 
 def test_stages_never_read_the_scene_schema():

@@ -1,4 +1,4 @@
-"""Checks before a run (``seaecho.preflight``): the closest approach over the pulses,
+"""Checks before a run (``seaecho.checks.preflight``): the closest approach over the pulses,
 the crest bound, the reactive near field."""
 
 from __future__ import annotations
@@ -9,9 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from seaecho.build import _platforms as build_platforms
-from seaecho.config import parse_scene
-from seaecho.constants import G
-from seaecho.preflight import (
+from seaecho.checks.preflight import (
     Pulses,
     crest_bound,
     exhaustive_min_distance,
@@ -20,6 +18,8 @@ from seaecho.preflight import (
     near_field_distance,
     nominal_segments,
 )
+from seaecho.config import parse_scene
+from seaecho.constants import G
 from seaecho.radar.platforms import Platform
 
 ANT = {"pattern": "isotropic", "look_at_m": (0.0, 0.0, 0.0)}

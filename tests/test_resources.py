@@ -1,4 +1,4 @@
-"""Resource estimate (``seaecho.resources``): window parity with the radar, refusal of
+"""Resource estimate (``seaecho.checks.resources``): window parity with the radar, refusal of
 runs that cannot fit, and a measured peak below the estimate."""
 
 from __future__ import annotations
@@ -13,11 +13,11 @@ import numpy as np
 import pytest
 
 from seaecho.build import build_radar
+from seaecho.checks.resources import estimate, memory_limit, window_size
 from seaecho.cli import main
 from seaecho.config import SceneError, load_scene, parse_scene
 from seaecho.constants import C0
 from seaecho.radar.system import RadarSystem
-from seaecho.resources import estimate, memory_limit, window_size
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENES = sorted((ROOT / "scenes").glob("*.toml"))
@@ -37,7 +37,7 @@ def test_window_size_is_the_radar_window(path):
     shipborne radar's random roll) widens the estimate by its 8-sigma bound: there the
     estimate is an upper bound, by at most that bound's samples."""
     from seaecho.build import receiver_scene
-    from seaecho.resources import perturbation_bound
+    from seaecho.checks.resources import perturbation_bound
 
     scene = load_scene(path)
     # [[receivers]]: each receiver's bistatic scene (the estimate's, resources.py)
@@ -181,7 +181,7 @@ TRIHEDRAL = ROOT / "scenes" / "calibration_trihedral.toml"
 def test_bistatic_hull_traces_count_the_reverse_launch():
     """A bistatic trace launches from T and from R (the reciprocal mean, eq X2 of
     ``seaecho.tracing.sbr``): the estimate counts two sources, the monostatic one."""
-    from seaecho.resources import hull_sizes
+    from seaecho.checks.resources import hull_sizes
 
     d = tomllib.loads(TRIHEDRAL.read_text())
     mono = parse_scene(d)
@@ -225,9 +225,9 @@ def test_antenna_normalisation_time_follows_its_quadrature(monkeypatch):
 
     import scipy.special
 
+    from seaecho.checks.resources import antenna_quadratures
     from seaecho.constants import C0
     from seaecho.radar import antennas
-    from seaecho.resources import antenna_quadratures
 
     scene = load_scene(ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml")
     assert scene.receiver is None

@@ -339,7 +339,7 @@ def _nan_target_echo(real, bad_pulse, bad_target):
 
 
 def test_non_finite_pulse_stops_the_run_and_names_the_target(tmp_path, monkeypatch):
-    from seaecho.guards import NonFiniteEchoError
+    from seaecho.checks.guards import NonFiniteEchoError
     from seaecho.radar.system import RadarSystem
 
     monkeypatch.setattr(RadarSystem, "target_echo",
@@ -351,7 +351,7 @@ def test_non_finite_pulse_stops_the_run_and_names_the_target(tmp_path, monkeypat
 
 
 def test_non_finite_sea_facets_are_named(monkeypatch):
-    from seaecho.guards import NonFiniteEchoError
+    from seaecho.checks.guards import NonFiniteEchoError
 
     sim = Simulation(_scene(sea=True, n_pulses=2))
     real = sim.sea_echo
@@ -367,7 +367,7 @@ def test_non_finite_sea_facets_are_named(monkeypatch):
 
 
 def test_non_finite_static_variable_stops_the_run(tmp_path, monkeypatch):
-    from seaecho.guards import NonFiniteEchoError
+    from seaecho.checks.guards import NonFiniteEchoError
     from seaecho.io import run as io_run
 
     sim = Simulation(_scene(n_pulses=3))

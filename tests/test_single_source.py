@@ -108,13 +108,13 @@ def test_each_law_and_constant_is_written_once(pattern, homes):
 
 
 def test_resources_imports_the_sizes_it_models():
-    """resources.py takes the block, cache and batch sizes from their modules, not copies."""
-    code = _code("resources.py")
+    """checks/resources.py takes the block, cache and batch sizes from their modules, not copies."""
+    code = _code("checks/resources.py")
     copies = re.findall(r"(?m)^(CHUNK|SBR_BATCH|SIGNATURE_CACHE|IMAGE_BLOCK)\s*=", code)
-    assert not copies, f"resources.py redefines {copies}"
+    assert not copies, f"checks/resources.py redefines {copies}"
     import inspect
 
-    import seaecho.resources as res
+    import seaecho.checks.resources as res
     from seaecho.imaging.focus import focus
     from seaecho.io.run import DEFAULT_BLOCK_PULSES
     from seaecho.tracing.hull_echo import SIGNATURE_CACHE

@@ -16,7 +16,8 @@ files), ``ocean`` (spectra, surfaces, sea water), ``wake`` (ship wakes), ``scatt
 (polarimetric sea scattering), ``tracing`` (Sionna RT / Mitsuba facets), ``geometry``
 (analytic facets), ``radar`` (antennas, waveform, platforms, echoes), ``processing``
 (range compression, Doppler), ``detection`` (CFAR detectors, scores), ``imaging`` (SAR
-focusing), ``io`` (datasets and figures).
+focusing), ``io`` (datasets), ``plotting`` (figures), ``checks`` (what a scene must meet
+before it runs).
 """
 
 from importlib.metadata import PackageNotFoundError, version

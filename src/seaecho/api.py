@@ -52,20 +52,13 @@ from __future__ import annotations
 import functools
 import math
 import os
-import tomllib
 from collections.abc import Mapping
-from dataclasses import dataclass, field
-from html import escape
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from pydantic import PrivateAttr
-
-from .config import Scene as SceneModel
-from .config import SceneError
-from .config import load_scene as _load_scene
-from .config import parse_scene as _parse_scene
-from .config import with_overrides as _with_overrides
+from .config import Scene, SceneError, load_scene, parse_scene, with_overrides
+from .summary import SceneSummary, format_bytes, scene_summary
 
 if TYPE_CHECKING:  # pragma: no cover
     import xarray as xr
@@ -118,134 +111,6 @@ MEMORY_FRACTION = 0.5
 
 
 # ------------------------------------------------------------------------------ scenes
-class Scene(SceneModel):
-    """A validated scene that knows its folder and shows a readable summary.
-
-    The same fields as :class:`seaecho.config.Scene` (every builder takes it); made by
-    :func:`load_scene`, :func:`parse_scene` and :func:`with_overrides`. Printed, or shown
-    in a notebook, it gives :meth:`summary`. Frozen: change it with
-    :func:`with_overrides`.
-    """
-
-    _base_dir: Path | None = PrivateAttr(default=None)
-
-    @property
-    def base_dir(self) -> Path | None:
-        """Folder of the scene file (``[[objects]]`` paths are relative to it), or None."""
-        return self._base_dir
-
-    def summary(self) -> str:
-        """Sea state, geometry, radar, resolution cells and run size, as text
-        (:func:`scene_summary`)."""
-        return scene_summary(self).text()
-
-    def _repr_html_(self) -> str:
-        return scene_summary(self).html()
-
-    def __repr__(self) -> str:
-        try:
-            return scene_summary(self).text()
-        except Exception as exc:  # a repr must not raise; the fields still say it all
-            return f"{super().__repr__()}\n(no summary: {exc})"
-
-    __str__ = __repr__
-
-
-def _wrap(scene: SceneModel, base_dir: PathLike | None) -> Scene:
-    """``scene`` as an API :class:`Scene` (no revalidation: it is valid already)."""
-    if isinstance(scene, Scene) and (base_dir is None or scene.base_dir == Path(base_dir)):
-        return scene
-    out = Scene.model_construct(_fields_set=set(scene.model_fields_set),
-                                **{name: getattr(scene, name)
-                                   for name in SceneModel.model_fields})
-    if base_dir is not None:
-        out._base_dir = Path(base_dir)
-    elif isinstance(scene, Scene):
-        out._base_dir = scene.base_dir
-    return out
-
-
-def load_scene(path: PathLike) -> Scene:
-    """Read and validate a TOML scene file.
-
-    Parameters
-    ----------
-    path : path
-        Scene file; ``[[objects]]`` mesh paths are relative to its folder.
-
-    Returns
-    -------
-    Scene
-
-    Raises
-    ------
-    SceneError
-        Missing, unreadable or not TOML, or not a valid scene: the message names the
-        field (``[sea].wind_speed_m_s``), the value and what is allowed.
-    """
-    return _wrap(_load_scene(path), Path(path).resolve().parent)
-
-
-def parse_scene(source: str | Mapping[str, Any], *, base_dir: PathLike | None = None) -> Scene:
-    """A scene from TOML text or from a dict (the parsed TOML), validated.
-
-    Parameters
-    ----------
-    source : str or mapping
-        The text of a scene file, or its tables as nested dicts.
-    base_dir : path, optional
-        Folder that relative ``[[objects]]`` paths start from (default: the working
-        directory when a run needs them).
-
-    Raises
-    ------
-    SceneError
-        Not TOML, or not a valid scene (field, value and what is allowed).
-    """
-    if isinstance(source, str):
-        try:
-            data = tomllib.loads(source)
-        except tomllib.TOMLDecodeError as exc:
-            hint = (" (to read a file, use seaecho.load_scene)"
-                    if source.strip().endswith(".toml") else "")
-            raise SceneError(f"<string>: not valid TOML ({exc}){hint}") from None
-        where = "<string>"
-    elif isinstance(source, Mapping):
-        data, where = dict(source), "<dict>"
-    else:
-        raise SceneError(f"source: expected TOML text or a dict, got {type(source).__name__}")
-    return _wrap(_parse_scene(data, source=where), base_dir)
-
-
-def with_overrides(scene: SceneModel | Mapping[str, Any],
-                   overrides: Mapping[str, Any]) -> Scene:
-    """The scene with fields replaced by dotted name, validated like a scene file.
-
-    Parameters
-    ----------
-    scene : Scene or mapping
-        A scene, or the dict of a scene file.
-    overrides : mapping of str to value
-        ``{"sea.wind_speed_m_s": 8.0, "radar.n_pulses": 16, "targets.0.rcs_m2": 10}``:
-        the path of a field through the sections of a scene file, arrays of tables
-        indexed by position (:mod:`seaecho.config.overrides`).
-
-    Returns
-    -------
-    Scene
-        A new scene (the input is not changed), with the same folder.
-
-    Raises
-    ------
-    SceneError
-        Unknown name, or a value out of range: the message names the field, the value
-        and what is allowed, e.g. ``[sea].wind_speed_m_s = -3.0: Input should be greater
-        than 0``.
-    """
-    base = scene.base_dir if isinstance(scene, Scene) else None
-    return _wrap(_with_overrides(scene, overrides), base)
-
-
 def _base_dir(scene, base_dir: PathLike | None) -> Path:
     if base_dir is not None:
         return Path(base_dir)
@@ -253,8 +118,8 @@ def _base_dir(scene, base_dir: PathLike | None) -> Path:
     return b if b is not None else Path(".")
 
 
-def _scene(scene) -> SceneModel:
-    if isinstance(scene, SceneModel):
+def _scene(scene) -> Scene:
+    if isinstance(scene, Scene):
         return scene
     if isinstance(scene, str | os.PathLike):
         raise SceneError(f"scene = {os.fspath(scene)!r}: expected a Scene; read a file with "
@@ -264,7 +129,7 @@ def _scene(scene) -> SceneModel:
 
 
 # -------------------------------------------------------------------------- simulation
-def first_pulses(scene: SceneModel, n: int) -> SceneModel:
+def first_pulses(scene: Scene, n: int) -> Scene:
     """The scene limited to its first ``n`` pulses, the sigma-map pulse kept inside
     (``simulate(pulses=n)``, ``--pulses N``); ``[scattering] sea_motion = "auto"`` is
     resolved on the whole run (:func:`seaecho.build.sea_motion`), so that these are the
@@ -295,14 +160,7 @@ def _available_memory() -> float | None:
         return None
 
 
-def _format_bytes(n: float) -> str:
-    for unit, size in (("GiB", 2.0**30), ("MiB", 2.0**20), ("KiB", 2.0**10)):
-        if n >= size:
-            return f"{n / size:.3g} {unit}"
-    return f"{n:.0f} B"
-
-
-def simulate(scene: SceneModel, *, path: PathLike | None = None, pulses: int | None = None,
+def simulate(scene: Scene, *, path: PathLike | None = None, pulses: int | None = None,
              progress: bool = True, base_dir: PathLike | None = None,
              max_memory_bytes: float | None = None, workers: int | None = None,
              scheduler: str | None = None, block_pulses: int | None = None,
@@ -441,7 +299,7 @@ def _check_fits_in_memory(scene, radar, limit: float | None) -> None:
         if avail is None:
             return
         limit, source = MEMORY_FRACTION * avail, (
-            f"half of the {_format_bytes(avail)} the system has available")
+            f"half of the {format_bytes(avail)} the system has available")
     else:
         if not (isinstance(limit, int | float) and limit > 0):
             raise SceneError(f"max_memory_bytes = {limit!r}: must be a positive number of "
@@ -450,7 +308,7 @@ def _check_fits_in_memory(scene, radar, limit: float | None) -> None:
     if need > limit:
         raise SceneError(
             f"the run holds {n_p} pulses x {n_c} channels x {n_s} samples of raw and "
-            f"compressed echoes ({_format_bytes(need)}), more than {_format_bytes(limit)} "
+            f"compressed echoes ({format_bytes(need)}), more than {format_bytes(limit)} "
             f"({source}): stream it to a file with simulate(scene, path='run.nc'), or "
             "simulate fewer pulses (pulses=N)")
 
@@ -459,8 +317,7 @@ def open_dataset(path: PathLike) -> xr.Dataset:
     """Open a seaecho file (run, image, surface, facets) lazily, complex variables
     included (h5netcdf), or a run's Zarr store (``*.zarr``). Close it, or use it in a
     ``with`` block."""
-    from .io.run import quiet_invalid_netcdf
-    from .io.zarr_run import open_run
+    from .io.run import open_run, quiet_invalid_netcdf
 
     with quiet_invalid_netcdf():
         return open_run(path)
@@ -482,7 +339,7 @@ def save(dataset: xr.Dataset, path: PathLike) -> Path:
         raise SceneError(f"path = {os.fspath(path)!r}: directory {path.parent} does not exist")
     guard = None
     if str(dataset.attrs.get("title", "")).startswith("seaecho SAR image"):
-        from .guards import check_image
+        from .checks.guards import check_image
 
         guard = check_image  # no Inf, NaN only at the undefined pixels
     with quiet_invalid_netcdf():
@@ -490,7 +347,7 @@ def save(dataset: xr.Dataset, path: PathLike) -> Path:
 
 
 # ------------------------------------------------------------------ stages on their own
-def surface(scene: SceneModel, times: ArrayLike | None = None, *,
+def surface(scene: Scene, times: ArrayLike | None = None, *,
             progress: bool = False) -> xr.Dataset:
     """The sea surface and ship wake of a scene at given times (``seaecho surface``).
 
@@ -561,7 +418,7 @@ def _engine(scene, time: float, *, mode, tx_position, rx_position, variant, freq
     return _Geometry(scene, sea, engine, frequency_hz)
 
 
-def trace(scene: SceneModel, time: float = 0.0, *, mode: str | None = None,
+def trace(scene: Scene, time: float = 0.0, *, mode: str | None = None,
           tx_position: ArrayLike | None = None, rx_position: ArrayLike | None = None,
           variant: str | None = None, frequency_hz: float | None = None,
           base_dir: PathLike | None = None) -> xr.Dataset:
@@ -606,7 +463,7 @@ def trace(scene: SceneModel, time: float = 0.0, *, mode: str | None = None,
     return ds
 
 
-def compare(scene: SceneModel, time: float = 0.0, *, tx_position: ArrayLike | None = None,
+def compare(scene: Scene, time: float = 0.0, *, tx_position: ArrayLike | None = None,
             rx_position: ArrayLike | None = None, variant: str | None = None,
             frequency_hz: float | None = None,
             base_dir: PathLike | None = None) -> xr.Dataset:
@@ -717,7 +574,7 @@ def _angles(value: ArrayLike, name: str, lo: float, hi: float):
 
 def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
           theta_s_deg: ArrayLike = 30.0, phi_i_deg: ArrayLike = 0.0,
-          phi_s_deg: ArrayLike = 0.0, scene: SceneModel | None = None,
+          phi_s_deg: ArrayLike = 0.0, scene: Scene | None = None,
           frequency_hz: float | None = None, wind_speed_m_s: float | None = None,
           wind_direction_deg: float | None = None, spectrum: str | None = None,
           spreading: str | None = None, spreading_s: float | None = None,
@@ -867,7 +724,7 @@ def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
 
 def wave_spectrum(wavenumber_rad_m: ArrayLike, *, wind_speed_m_s: float = 4.53,
                   spectrum: str = "elfouhaily", fetch_m: float | None = None,
-                  scene: SceneModel | None = None) -> xr.DataArray:
+                  scene: Scene | None = None) -> xr.DataArray:
     """Omnidirectional wavenumber spectrum S(K) of a wind sea (the paper's eq 5 for
     Pierson-Moskowitz; :mod:`seaecho.ocean.spectra` for the others and their sources).
 
@@ -1160,17 +1017,18 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
         raise SceneError(f"stem = {os.fspath(stem)!r}: directory {stem.parent} does not "
                          "exist")
     if "raw" in dataset and int(dataset.attrs.get("multistatic", 0)):
-        from .io.figures import run_figures
         from .multistatic import receiver_dataset
+        from .plotting.run import run_figures
 
+        # each receiver's product as it is (its figures read no scene: docs/products.md)
         return [png for name in dataset["receiver"].values for png in run_figures(
-            receiver_dataset(dataset, str(name)), f"{stem}_{name}")]
+            receiver_dataset(dataset, str(name), receiver_scene=False), f"{stem}_{name}")]
     if "raw" in dataset:
-        from .io.figures import run_figures
+        from .plotting.run import run_figures
 
         out = run_figures(dataset, stem)
         if "sweep" in dataset:  # a scanning radar: a PPI per sweep
-            from .io.cfradial import ppi_figures
+            from .plotting.ppi import ppi_figures
 
             out += ppi_figures(dataset, stem)
         return out
@@ -1180,7 +1038,7 @@ def figures(dataset: xr.Dataset, stem: PathLike) -> list[Path]:
         cfg = json.loads(dataset.attrs["image_json"])
         return multistatic_figures(dataset, stem, cfg["dynamic_range_db"])
     if "image_json" in dataset.attrs:
-        from .imaging.figures import image_figures
+        from .plotting.image import image_figures
 
         cfg = json.loads(dataset.attrs["image_json"])
         return image_figures(dataset, stem, cfg["dynamic_range_db"])
@@ -1212,234 +1070,6 @@ def ppi(dataset: xr.Dataset, path: PathLike | None = None):
     if path is not None:
         write_ppi(dataset, path)
     return ppi_tree(dataset)
-
-
-# ----------------------------------------------------------------------------- summary
-@dataclass(frozen=True)
-class SceneSummary:
-    """What a scene will simulate, in sections of (label, text) rows.
-
-    Attributes
-    ----------
-    title : str
-    sections : list of (str, list of (str, str))
-        Section name and its rows.
-    """
-
-    title: str
-    sections: list[tuple[str, list[tuple[str, str]]]] = field(default_factory=list)
-
-    def text(self) -> str:
-        """Plain text, one row per line."""
-        width = max((len(k) for _, rows in self.sections for k, _ in rows), default=0)
-        lines = [self.title]
-        for name, rows in self.sections:
-            lines.append(f"{name}")
-            lines += [f"  {k:<{width}}  {v}" for k, v in rows]
-        return "\n".join(lines)
-
-    def html(self) -> str:
-        """An HTML table (notebooks)."""
-        out = ['<div class="seaecho-scene"><table style="text-align:left">',
-               f'<caption style="text-align:left"><b>{escape(self.title)}</b></caption>']
-        for name, rows in self.sections:
-            out.append(f'<tr><th colspan="2" style="text-align:left">{escape(name)}</th></tr>')
-            out += [f'<tr><td style="text-align:left;padding-left:1.5em">{escape(k)}</td>'
-                    f'<td style="text-align:left">{escape(v)}</td></tr>' for k, v in rows]
-        out.append("</table></div>")
-        return "\n".join(out)
-
-
-def _vec(v) -> str:
-    return "(" + ", ".join(f"{float(c):.4g}" for c in v) + ")"
-
-
-def _si(value: float, unit: str) -> str:
-    for prefix, scale in (("G", 1e9), ("M", 1e6), ("k", 1e3), ("", 1.0), ("m", 1e-3),
-                          ("u", 1e-6), ("n", 1e-9)):
-        if abs(value) >= scale:
-            return f"{value / scale:.4g} {prefix}{unit}"
-    return f"{value:.4g} {unit}"
-
-
-def scene_summary(scene: SceneModel) -> SceneSummary:
-    """What a scene describes and what simulating it costs.
-
-    Sea: spectrum, wind, water, the expected significant wave height
-    H_s = 4 sqrt(int S(K) dK) of the whole spectrum and of the band the tile resolves
-    (2 pi / L < K < pi / dx). Geometry at the tile centre, nominal tracks at the middle
-    of the acquisition: incidence and grazing angles, ranges, bistatic angle. Radar:
-    carrier, waveform, PRF, pulses, channels, and the resolution cells:
-
-    - slant range resolution c / (2 B), and on the ground at the tile centre
-      c / (B |grad_h (r_t + r_r)|), the gradient of the bistatic range sum projected on
-      the ground: c / (2 B cos psi) monostatic at grazing psi, c / (2 B cos(beta / 2))
-      in the bistatic plane (Willis 2005, ch. 8);
-    - with a moving monostatic platform, the azimuth resolution lambda R / (2 L) of a
-      synthetic aperture L, the flight over the acquisition or, if shorter, the beam's
-      footprint lambda R / D for an aperture of length D (Cumming and Wong 2005, ch. 4),
-      i.e. D / 2 in stripmap.
-
-    Run: pulses x channels x samples of the receive window and the size of the raw and
-    compressed arrays.
-
-    References
-    ----------
-    N. J. Willis, *Bistatic Radar*, 2nd ed., SciTech, 2005.
-    I. G. Cumming and F. H. Wong, *Digital Processing of Synthetic Aperture Radar Data*,
-    Artech House, 2005.
-    """
-    import numpy as np
-
-    from .build import build_radar, sea_motion, sea_spectrum
-    from .constants import C0, KNOT
-    from .ocean.twoscale import height_variance
-
-    scene = _scene(scene)
-    sea = scene.sea
-    title = f"seaecho scene '{scene.name}'" if scene.name else "seaecho scene"
-    sections: list[tuple[str, list[tuple[str, str]]]] = []
-    about = " ".join(scene.description.split())
-    if about:
-        sections.append(("About", [("description",
-                                    about if len(about) <= 240 else about[:237] + "...")]))
-
-    spec = sea_spectrum(scene)
-    lx, ly = sea.size_m
-    ny, nx = sea.shape
-    dx, dy = lx / nx, ly / ny
-    hs = 4.0 * math.sqrt(height_variance(spec, 0.0, 1.0e4))
-    hs_tile = 4.0 * math.sqrt(height_variance(spec, 2 * math.pi / max(lx, ly),
-                                              math.pi / min(dx, dy)))
-    spreading = sea.spreading + (f" (s = {sea.spreading_s:g})"
-                                 if sea.spreading == "longuet-higgins" else "")
-    rows = [("spectrum", f"{sea.spectrum}, {spreading} spreading"
-             + (f", fetch {sea.fetch_m:g} m" if sea.fetch_m else "")),
-            ("wind", f"U19.5 = {sea.wind_speed_m_s:g} m/s towards {sea.wind_direction_deg:g} deg"),
-            ("expected Hs", f"{hs:.3g} m (whole spectrum), {hs_tile:.3g} m in the tile's band"),
-            ("water", f"{sea.temperature_c:g} degC, {sea.salinity_psu:g} psu, "
-             + ("deep" if sea.depth_m is None else f"depth {sea.depth_m:g} m")),
-            ("tile", f"{lx:g} x {ly:g} m on {nx} x {ny} nodes ({dx:.4g} x {dy:.4g} m), "
-             f"{(nx - 1) * (ny - 1) * 2:,} facets")]
-    sections.append(("Sea", rows))
-    for s, name in zip(scene.all_ships, scene.ship_names(), strict=True):
-        wakes = ["Kelvin" if s.kelvin_wake else None, "turbulent"]
-        track = (f"through {len(s.waypoints_m)} waypoints, turns of radius "
-                 f"{s.turn_radius:.3g} m" if s.waypoints_m is not None
-                 else f"heading {s.heading_deg:g} deg")
-        sections.append(("Ship" if scene.ship is not None else f"Ship {name}", [
-            ("hull", f"{s.length_m:g} x {s.beam_m:g} m, draft {s.draft_m:g} m at "
-             f"{_vec(s.position_m if s.waypoints_m is None else s.waypoints_m[0])} m"
-             + (", echoes" if s.hull_echo else "")),
-            ("track", f"{s.speed:.3g} m/s ({s.speed / KNOT:.3g} kn) {track}; "
-             f"{' and '.join(w for w in wakes if w)} wake")]))
-    if scene.objects:
-        sections.append(("Objects", [(o.name or f"object {i}", f"{o.file}"
-                                      + (", echoes" if o.scatterer else ", occludes"))
-                                     for i, o in enumerate(scene.objects)]))
-
-    if scene.radar is not None and scene.transmitter is not None:
-        from .radar.system import RadarSystem
-
-        r = scene.radar
-        model = build_radar(scene)
-        radar = RadarSystem(model)
-        t_mid = r.start_time_s + 0.5 * (r.n_pulses - 1) / r.prf_hz
-        tx = model.tx.nominal_state(np.array([t_mid])).position[0]
-        rx = model.rx.nominal_state(np.array([t_mid])).position[0]
-        centre = np.zeros(3)
-        geo = []
-        units = []
-        for name, p in (("transmitter", tx), ("receiver", rx)):
-            d = p - centre
-            rng = float(np.linalg.norm(d))
-            inc = math.degrees(math.acos(max(-1.0, min(1.0, d[2] / rng))))
-            units.append(-d / rng)  # from the platform towards the centre
-            if name == "receiver" and model.rx is model.tx:
-                geo.append(("receiver", "the transmitter (monostatic)"))
-                break
-            geo.append((name, f"{_vec(p)} m: range {rng:.4g} m, incidence {inc:.3g} deg "
-                        f"(grazing {90.0 - inc:.3g} deg)"))
-        mono = model.rx is model.tx
-        if not mono:
-            beta = math.degrees(math.acos(float(np.clip(np.dot(units[0], units[1]), -1, 1))))
-            geo.append(("bistatic angle", f"{beta:.3g} deg"))
-        sections.append((f"Geometry at the tile centre (t = {t_mid:.3g} s)", geo))
-
-        w = r.waveform
-        bandwidth = w.bandwidth_hz if w.kind == "lfm" else 1.0 / w.duration_s
-        lam = C0 / r.carrier_frequency_hz
-        wave = (f"LFM {_si(w.bandwidth_hz, 'Hz')} x {_si(w.duration_s, 's')}"
-                if w.kind == "lfm" else f"pulse {_si(w.duration_s, 's')}")
-        duration = r.n_pulses / r.prf_hz
-        rad = [("carrier", f"{_si(r.carrier_frequency_hz, 'Hz')} (lambda {lam * 100:.3g} cm)"),
-               ("waveform", f"{wave}, sampled at {_si(r.sampling_rate_hz, 'Hz')}"),
-               ("pulses", f"{r.n_pulses} at PRF {_si(r.prf_hz, 'Hz')} "
-                f"({_si(duration, 's')}); sea surface every {r.sea_update_pulses} "
-                f"pulse(s), {sea_motion(scene)} between"),
-               ("channels", " ".join(r.channels)),
-               ("sea clutter", "on" if r.sea_clutter else "off")]
-        if scene.targets:
-            rad.append(("targets", f"{len(scene.targets)} point target(s)"))
-        if model.scan_period is not None:
-            scan = (scene.transmitter.antenna.scan if scene.transmitter.antenna.scan.scanning
-                    else scene.receiver.antenna.scan)
-            per = model.scan_period * r.prf_hz
-            step = 6.0 * scan.rate_rpm / r.prf_hz
-            rad.append(("scan", f"{scan.mode} at {scan.rate_rpm:g} rpm, clockwise: period "
-                        f"{model.scan_period:.4g} s = {per:.4g} pulses, {step:.3g} deg per "
-                        f"pulse; {r.n_pulses / per:.3g} period(s) simulated"))
-        if model.earth is not None:
-            from .geometry.earth import horizon_range
-
-            h = float(scene.transmitter.position_m[2]) if scene.transmitter.position_m \
-                else float(tx[2])
-            rad.append(("Earth", f"spherical, k = {scene.propagation.earth_radius_factor:.4g}"
-                        f": the transmitter's horizon at sea level "
-                        f"{horizon_range(max(h, 0.0), 0.0, model.earth.radius) / 1e3:.4g} km"))
-        sections.append(("Radar", rad))
-
-        grad = -(units[0] + (units[0] if mono else units[1]))  # grad of r_t + r_r
-        gh = float(np.hypot(grad[0], grad[1]))
-        res = [("range", f"c / 2B = {C0 / (2 * bandwidth):.3g} m slant")]
-        if gh > 1e-9:
-            ground = C0 / (bandwidth * gh)
-            u = grad[:2] / gh
-            across = lx * abs(u[0]) + ly * abs(u[1])
-            res[0] = (res[0][0], res[0][1] + f", {ground:.3g} m on the ground: "
-                      f"{across / ground:.3g} cells across the tile")
-        v = model.tx.nominal_state(np.array([t_mid])).velocity[0]
-        if mono and float(np.linalg.norm(v)) > 0:
-            los = units[0]
-            v_perp = float(np.linalg.norm(v - np.dot(v, los) * los))
-            r_c = float(np.linalg.norm(tx))
-            aperture = v_perp * duration
-            ant = scene.transmitter.antenna
-            if ant.pattern == "rectangular":
-                aperture = min(aperture, lam * r_c / ant.width_m)
-            if aperture > 0:
-                res.append(("azimuth", f"lambda R / 2L = {lam * r_c / (2 * aperture):.3g} m "
-                            f"(synthetic aperture L = {aperture:.3g} m)"))
-        res.append(("sea grid", f"{dx * dy:.3g} m2 per cell, "
-                    f"{(nx - 1) * (ny - 1):,} cells"))
-        sections.append(("Resolution", res))
-
-        n_s, n_c = radar.window.n_samples, len(radar.channels)
-        size = 32.0 * r.n_pulses * n_c * n_s
-        run = [("arrays", f"{r.n_pulses} pulses x {n_c} channels x {n_s} samples"),
-               ("memory", f"raw + compressed {_format_bytes(size)} (in memory: simulate "
-                "without path=); run time not estimated"),
-               ("facet mode", f"{scene.tracing.mode}"
-                + (f", re-traced every {scene.tracing.refresh_interval_s:g} s"
-                   if scene.tracing.mode == "raytraced" and scene.tracing.refresh_interval_s
-                   else ""))]
-        # The resource model of `seaecho check` (peak memory and run time of a run, from
-        # the grid, the channels and the window) belongs here once it is part of seaecho;
-        # until then the rows give the size of the arrays the run produces.
-        if scene.image is not None:
-            run.append(("image", "focused after the run ([image])"))
-        sections.append(("Run", run))
-    return SceneSummary(title, sections)
 
 
 # ------------------------------------------------------------------ detection, scores

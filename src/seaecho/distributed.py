@@ -22,7 +22,8 @@ Sweeps
 ------
 :func:`sweep` runs the Cartesian product of scene overrides
 (:mod:`seaecho.config.overrides`), one task per case: each case is a serial run written
-to its own file, or reduced (:func:`reduce_run`) to a few numbers. A failed case is
+to its own file, or reduced
+(:func:`seaecho.processing.reductions.reduce_run`) to a few numbers. A failed case is
 reported with its error and does not stop the others.
 """
 
@@ -42,8 +43,8 @@ from typing import Any
 
 import numpy as np
 
-from .constants import C0
 from .multistatic import MultistaticSimulation
+from .processing.reductions import reduce_run
 from .simulation import Simulation
 
 #: Simulations kept per worker thread (a sweep meets many scenes; each holds its sea).
@@ -173,10 +174,10 @@ class DaskBlocks:
 
 def check_workers(client, job: Job, block: int | None = None) -> None:
     """Refuse (:class:`~seaecho.config.SceneError`) a run whose per-worker memory
-    (``seaecho.resources.worker_bytes``: per thread a simulation and a block of pulses)
+    (``seaecho.checks.resources.worker_bytes``: per thread a simulation and a block of pulses)
     exceeds a worker's memory limit, from the scheduler's worker information; the
-    client's own memory is checked by ``seaecho.preflight.check_run``."""
-    from .resources import check_workers_memory
+    client's own memory is checked by ``seaecho.checks.preflight.check_run``."""
+    from .checks.resources import check_workers_memory
 
     try:
         info = client.scheduler_info(n_workers=-1)
@@ -257,80 +258,6 @@ def run(scene, path: str | os.PathLike, *, client, base_dir: str | os.PathLike =
                    runner=DaskBlocks(client, Job.of(scene, base_dir), block=block))
 
 
-# ------------------------------------------------------------------------- reductions
-def clutter_gates(ds) -> np.ndarray:
-    """Mask (pulse, fast_time) of the range gates filled by the sea tile.
-
-    A gate is kept when its delay lies at least half a delay resolution inside the span
-    of the bistatic delays (|p - tx| + |p - rx|) / c of the grid nodes p (z = 0) at that
-    pulse: 0.5 / bandwidth (the pulse length without modulation), about the -4 dB half
-    width of the compressed sinc main lobe, so that a kept gate's main lobe lies on sea.
-    """
-    x, y = ds["x"].values, ds["y"].values
-    sx = max(1, x.size // 64)
-    sy = max(1, y.size // 64)
-    xs = np.unique(np.concatenate([x[::sx], x[-1:]]))
-    ys = np.unique(np.concatenate([y[::sy], y[-1:]]))
-    gx, gy = np.meshgrid(xs, ys)
-    nodes = np.stack([gx.ravel(), gy.ravel(), np.zeros(gx.size)], axis=-1)  # (N, 3)
-    tx, rx = ds["tx_position"].values, ds["rx_position"].values  # (P, 3)
-    path = (np.linalg.norm(nodes[None] - tx[:, None], axis=-1)
-            + np.linalg.norm(nodes[None] - rx[:, None], axis=-1))  # (P, N)
-    bw = float(ds.attrs.get("waveform_bandwidth_hz", 0.0))
-    res = 1.0 / bw if bw > 0 else float(ds.attrs["waveform_duration_s"])
-    lo = path.min(axis=1) / C0 + 0.5 * res
-    hi = path.max(axis=1) / C0 - 0.5 * res
-    t = ds["fast_time"].values
-    return (t[None, :] >= lo[:, None]) & (t[None, :] <= hi[:, None])
-
-
-def reduce_run(ds) -> dict[str, float]:
-    """Reduced products of a run's dataset (netCDF, Zarr or in memory).
-
-    Per channel ``c`` (HH, HV, VH, VV):
-
-    * ``sigma0_<c>``: mean of the NRCS map ``sigma0`` over the cells [m^2/m^2] (the
-      scene's sigma0 at the sigma-map pulse; NaN without sea clutter);
-    * ``power_<c>``: mean intensity <z> = <|compressed|^2> over the sea's range gates
-      (:func:`clutter_gates`) of every pulse [W];
-    * ``k_shape_zlogz_<c>``, ``k_shape_moments_<c>``: K-distribution shape nu of the
-      same intensities (:func:`seaecho.processing.statistics.k_shape_zlogz`, eq ST4,
-      Blacknell & Tough 2001; :func:`~seaecho.processing.statistics.k_shape_moments`,
-      eq ST3); NaN where the estimator has no value (e.g. sub-exponential tails);
-    * ``n_gates``: number of (pulse, gate) samples used.
-
-    Targets in the scene are part of the intensities: reduce scenes without targets for
-    clutter statistics.
-    """
-    from .processing.statistics import k_shape_moments, k_shape_zlogz
-
-    out: dict[str, float] = {}
-    channels = [str(c) for c in ds["channel"].values]
-    sea = "sigma0" in ds.variables
-    if sea:
-        pols = [str(p) for p in ds["polarisation"].values]
-        s0 = ds["sigma0"].values
-        for c in channels:
-            out[f"sigma0_{c}"] = float(np.mean(s0[pols.index(c)]))
-        gates = clutter_gates(ds)
-    else:
-        for c in channels:
-            out[f"sigma0_{c}"] = float("nan")
-        gates = np.ones((ds.sizes["pulse"], ds.sizes["fast_time"]), dtype=bool)
-    out["n_gates"] = float(gates.sum())
-    comp = ds["compressed"].values
-    for k, c in enumerate(channels):
-        z = np.abs(comp[:, k, :][gates]) ** 2
-        out[f"power_{c}"] = float(z.mean()) if z.size else float("nan")
-        for name, fn in (("k_shape_zlogz", k_shape_zlogz), ("k_shape_moments",
-                                                             k_shape_moments)):
-            try:
-                out[f"{name}_{c}"] = float(fn(z[z > 0]))
-            except ValueError:
-                out[f"{name}_{c}"] = float("nan")
-    return out
-
-
 # ----------------------------------------------------------------------------- sweeps
 @dataclass(frozen=True)
 class Case:
@@ -372,7 +299,8 @@ def run_case(case: Case, base_dir: str, out_dir: str | None, reduce: bool,
     try:
         sim = _simulation(case.scene, base_dir=base_dir)
         if reduce:
-            from .io.run import block_size, blocks_of
+            from .io.pulses import blocks_of
+            from .io.run import block_size
 
             blocks = blocks_of(sim.radar.n_pulses, block_size(sim.block_edges(), block))
             comp = np.concatenate([sim.pulses(a, b)[1] for a, b in blocks])
@@ -393,7 +321,7 @@ def sweep(cases: list[Case], out_dir: str | os.PathLike, *, base_dir: str | os.P
           progress: bool = True, refused: dict[int, str] | None = None) -> list[dict]:
     """Run every case (one task each on ``client``, else here one after the other);
     return the rows of the summary in case order (:func:`write_summary`). The cases in
-    ``refused`` (index -> message, e.g. from ``seaecho.preflight.check_run``) are not
+    ``refused`` (index -> message, e.g. from ``seaecho.checks.preflight.check_run``) are not
     run: their rows are failed with that message."""
     from tqdm import tqdm
 
@@ -474,6 +402,6 @@ def write_summary(rows: list[dict], out_dir: str | os.PathLike) -> tuple[Path, P
     return csv_path, nc_path
 
 
-__all__ = ["Case", "DaskBlocks", "Job", "check_workers", "clutter_gates", "cluster",
-           "compute_block", "reduce_run", "run", "run_case", "store_block", "sweep",
+__all__ = ["Case", "DaskBlocks", "Job", "check_workers", "cluster",
+           "compute_block", "run", "run_case", "store_block", "sweep",
            "sweep_cases", "worker_environment", "worker_simulation", "write_summary"]

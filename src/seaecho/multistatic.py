@@ -51,6 +51,7 @@ from numpy.typing import NDArray
 
 from .build import MultistaticModels, build_multistatic
 from .constants import C0
+from .geometry.bistatic import bistatic_angle
 from .radar.echo import ReceiveWindow
 from .radar.model import RadarModel
 from .radar.system import RadarSystem
@@ -106,25 +107,6 @@ def common_windows(radars: Sequence[RadarModel]) -> list[RadarModel]:
                          "equal")
     return [dataclasses.replace(r, window_m=(s, e))
             for r, s, e in zip(radars, starts, ends, strict=True)]
-
-
-def bistatic_angle(tx: NDArray[np.float64], rx: NDArray[np.float64],
-                   point: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Bistatic angle beta [rad] at ``point``: the angle between the directions from the
-    point to the transmitter and to the receiver (Willis, *Bistatic Radar*, 2nd ed., 2005,
-    section 3.1, Fig. 3.1), 0 for a monostatic radar.
-
-    Parameters
-    ----------
-    tx, rx : (..., 3) arrays
-        Transmitter and receiver positions [m].
-    point : (3,) array
-        The point [m].
-    """
-    a = np.asarray(tx, dtype=np.float64) - point
-    b = np.asarray(rx, dtype=np.float64) - point
-    cross = np.linalg.norm(np.cross(a, b), axis=-1)
-    return np.arctan2(cross, np.sum(a * b, axis=-1))
 
 
 class MultistaticSimulation:
@@ -217,7 +199,7 @@ class MultistaticSimulation:
         """Everything but the pulses, with a ``receiver`` dimension (module docstring)."""
         import xarray as xr
 
-        from .guards import check_dataset
+        from .checks.guards import check_dataset
 
         parts = [s.static_dataset() for s in self.receivers]
         first = parts[0]
@@ -388,7 +370,7 @@ def image_multistatic(ds, config=None, *, backend: str = "drjit", progress: bool
     """
     import xarray as xr
 
-    from .guards import check_image
+    from .checks.guards import check_image
     from .imaging.focus import focus
 
     names = [str(n) for n in ds["receiver"].values]
@@ -440,10 +422,10 @@ def receiver_image(img, receiver: str | int):
 def multistatic_figures(img, stem: str | os.PathLike, dynamic_range_db: float = 50.0
                         ) -> list[Path]:
     """Figures of :func:`image_multistatic`: every receiver's (``<stem>_<name>_*.png``,
-    :func:`seaecho.imaging.figures.image_figures`) and the incoherent combination's,
+    :func:`seaecho.plotting.image.image_figures`) and the incoherent combination's,
     ``<stem>_fused_sigma0.png`` (or ``_fused_rcs.png`` without sea), on one dB scale per
     figure."""
-    from .imaging.figures import image_figures, sigma0_figure
+    from .plotting.image import image_figures, sigma0_figure
 
     out: list[Path] = []
     for name in img["receiver"].values:
@@ -473,6 +455,6 @@ def _receiver_scene_json(scene_json: str, index: int) -> str:
     return scene_attrs(receiver_scene(scene, index))["scene_json"]
 
 
-__all__ = ["MULTISTATIC_DIMS", "PER_RECEIVER", "MultistaticSimulation", "bistatic_angle",
+__all__ = ["MULTISTATIC_DIMS", "PER_RECEIVER", "MultistaticSimulation",
            "common_windows", "image_multistatic", "multistatic_figures", "receiver_dataset",
            "receiver_image", "simulation_of"]

@@ -55,8 +55,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .build import SimulationModels, build_simulation
+from .checks.guards import check_dataset, check_pulse
 from .conventions import CHANNELS
-from .guards import check_dataset, check_pulse
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import facet_gaussians
@@ -543,7 +543,7 @@ class Simulation:
         if self.hulls is not None:
             echoes += self.hulls.echoes(geo, pulse)
         raw = self.radar.receive(pulse, echoes)
-        check_pulse(self, pulse, raw, echoes)  # NaN/Inf: NonFiniteEchoError (guards.py)
+        check_pulse(self, pulse, raw, echoes)  # NaN/Inf: NonFiniteEchoError (checks/guards.py)
         return raw
 
     def pulses(self, start: int, stop: int) -> tuple[NDArray[np.complex128],

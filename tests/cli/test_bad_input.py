@@ -263,7 +263,7 @@ def test_object_consistency_is_in_the_schema(tmp_path, capsys, objects, named):
 
 
 def test_non_finite_pulse_is_exit_2_with_no_file(tmp_path, capsys, monkeypatch):
-    # The finite-output guard (seaecho.guards): a NaN that no scene check foresaw stops
+    # The finite-output guard (seaecho.checks.guards): a NaN that no scene check foresaw stops
     # the run with a message naming the pulse and the scatterer, and leaves no file
     from seaecho.radar.system import RadarSystem
 

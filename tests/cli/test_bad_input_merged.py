@@ -51,9 +51,9 @@ def test_run_with_workers_gets_the_same_refusal_before_any_cluster(tmp_path, cap
 def test_workers_multiply_the_memory_estimate(tmp_path):
     import tomllib
 
+    from seaecho.checks.resources import estimate
     from seaecho.config import parse_scene
     from seaecho.config.toml_writer import dumps  # noqa: F401 - the writer round-trips
-    from seaecho.resources import estimate
 
     scene = parse_scene(tomllib.loads(CAL))
     one, four = estimate(scene, figures=False), estimate(scene, figures=False, workers=4)
@@ -99,8 +99,8 @@ def test_missing_hull_mesh_is_refused_by_check_in_any_facet_mode(tmp_path, capsy
 
 
 def test_hull_traces_enter_the_estimate(tmp_path):
+    from seaecho.checks.resources import estimate, hull_sizes
     from seaecho.config import load_scene
-    from seaecho.resources import estimate, hull_sizes
 
     scene = load_scene(TRIHEDRAL)
     (h,) = hull_sizes(scene, TRIHEDRAL.parent)
@@ -118,8 +118,8 @@ def test_hull_traces_enter_the_estimate(tmp_path):
 
 
 def test_non_finite_hull_echo_is_named(tmp_path, monkeypatch):
+    from seaecho.checks.guards import NonFiniteEchoError
     from seaecho.config import load_scene
-    from seaecho.guards import NonFiniteEchoError
     from seaecho.simulation import Simulation
     from seaecho.tracing.hull_echo import HullEchoes
 
@@ -156,8 +156,8 @@ def test_image_the_run_cannot_focus_is_refused_before_the_raw(tmp_path, capsys, 
 def test_image_pixels_enter_the_estimate(tmp_path):
     import tomllib
 
+    from seaecho.checks.resources import estimate, image_shape
     from seaecho.config import parse_scene
-    from seaecho.resources import estimate, image_shape
 
     d = tomllib.loads(CAL)
     d["image"] = {"pixel_m": 0.5, "extent_m": [-20.0, 20.0, -10.0, 10.0]}

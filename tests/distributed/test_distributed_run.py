@@ -8,8 +8,7 @@ import xarray as xr
 from dask_helpers import tiny_scene
 
 from seaecho import distributed
-from seaecho.io.run import block_size
-from seaecho.io.zarr_run import open_run
+from seaecho.io.run import block_size, open_run
 from seaecho.simulation import Simulation
 
 

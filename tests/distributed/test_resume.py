@@ -12,7 +12,8 @@ import zarr
 from dask_helpers import tiny_scene
 
 from seaecho.cli import main
-from seaecho.io.zarr_run import StoreError, open_run, part_path
+from seaecho.io.run import open_run
+from seaecho.io.zarr_run import StoreError, part_path
 from seaecho.simulation import Simulation
 
 ROOT = Path(__file__).resolve().parents[2]

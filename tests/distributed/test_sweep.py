@@ -16,7 +16,8 @@ from seaecho import distributed
 from seaecho.cli import main
 from seaecho.cli.sweep import parse_values
 from seaecho.config import SceneError
-from seaecho.io.zarr_run import open_run
+from seaecho.io.run import open_run
+from seaecho.processing.reductions import reduce_run
 from seaecho.simulation import Simulation
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -85,7 +86,7 @@ def test_sweep_of_2x2_cases_equals_the_4_runs(tmp_path, client):
                                     wind=case.overrides["sea.wind_speed_m_s"]))
         path = own.run(tmp_path / f"own{case.index}.nc", progress=False)
         with open_run(path) as ds:
-            expected = distributed.reduce_run(ds.load())
+            expected = reduce_run(ds.load())
         for key, value in expected.items():
             assert row[key] == value or (math.isnan(value) and math.isnan(row[key])), key
         if case.index < 2:

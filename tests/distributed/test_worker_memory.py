@@ -1,5 +1,5 @@
 """The memory estimate against the Dask workers' own limits (``--scheduler``): the client's
-check (``seaecho.preflight.check_run``) sees only this machine, so a cluster whose workers
+check (``seaecho.checks.preflight.check_run``) sees only this machine, so a cluster whose workers
 cannot hold a simulation and a block of pulses per thread is refused, by name, before any
 block is submitted."""
 
@@ -9,14 +9,14 @@ import pytest
 from dask_helpers import tiny_scene
 
 from seaecho import distributed
-from seaecho.config import SceneError
-from seaecho.resources import (
+from seaecho.checks.resources import (
     SAFETY,
     check_workers_memory,
     estimate,
     format_bytes,
     worker_bytes,
 )
+from seaecho.config import SceneError
 
 GB = 1e9
 

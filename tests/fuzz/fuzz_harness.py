@@ -39,7 +39,7 @@ class Outcome:
     err: str
     files: list[str]  #: what the command left in its folder besides the scene
     finite: bool | None  #: every float/complex variable of the output finite (if written),
-    #: and its image's (``[image]``) but at the undefined pixels (``seaecho.guards``)
+    #: and its image's (``[image]``) but at the undefined pixels (``seaecho.checks.guards``)
 
 
 def scene_text(data: dict) -> str:
@@ -62,7 +62,7 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
         fixed = (FIXED_AVAILABLE_BYTES, "available memory (fixed by the fuzzing suite)")
         with (contextlib.redirect_stdout(o), contextlib.redirect_stderr(e),
               warnings.catch_warnings(), contextlib.chdir(folder),
-              mock.patch("seaecho.resources.available_memory", lambda: fixed)):
+              mock.patch("seaecho.checks.resources.available_memory", lambda: fixed)):
             warnings.simplefilter("always")  # printed as the console script does
             rc = main(args)
         finite = None
@@ -85,7 +85,7 @@ def run_cli(command: str, text: str, *extra: str) -> Outcome:
         if img_nc.exists():  # [image]: no Inf, NaN only at its undefined pixels
             import xarray as xr
 
-            from seaecho.guards import image_problems
+            from seaecho.checks.guards import image_problems
 
             with xr.open_dataset(img_nc, engine="h5netcdf") as ds:
                 finite = bool(finite) and not image_problems(ds.load())

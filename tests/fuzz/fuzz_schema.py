@@ -570,7 +570,7 @@ def _with_image_noise_held(d: dict) -> dict:
     """An [image] whose thermal noise its file can hold (the preflight refuses a
     noise-equivalent RCS above ``MAX_IMAGE_NOISE_RCS``, e.g. at 5e-324 W): else 1 kW
     and the default noise figure, else no thermal noise."""
-    from seaecho.preflight import MAX_IMAGE_NOISE_RCS, image_noise_rcs
+    from seaecho.checks.preflight import MAX_IMAGE_NOISE_RCS, image_noise_rcs
 
     if image_noise_rcs(parse_scene(d)) <= MAX_IMAGE_NOISE_RCS:
         return d

@@ -227,8 +227,8 @@ def _estimated_time(text: str) -> float:
     """Estimated time of `run --pulses 2` (0 for a scene that `run` refuses at once)."""
     import tomllib
 
+    from seaecho.checks.resources import estimate
     from seaecho.config import parse_scene
-    from seaecho.resources import estimate
 
     scene = parse_scene(tomllib.loads(text))
     if scene.radar is None or scene.transmitter is None:

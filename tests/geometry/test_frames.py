@@ -93,10 +93,3 @@ def test_beta_zero_at_specular_and_pi_half_without_q():
     n_i, n_s = frames.directions_from_angles(0.5, 0.0, 0.5, 0.0)
     assert frames.beta_angle(n_i, n_s) < 1e-7
     assert abs(frames.beta_angle(n_i, n_i) - np.pi / 2) < 1e-12
-
-
-def test_former_import_path_is_the_same_module():
-    # scattering.frames moved to geometry.frames; the old path stays an alias meanwhile
-    from seaecho.scattering import frames as old
-
-    assert old is frames

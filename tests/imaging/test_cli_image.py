@@ -90,8 +90,8 @@ def test_image_estimate_counts_the_pixels_the_focusing_makes(raw):
     # for the default one (the targets' box plus 20 range resolutions, a quarter of the
     # range resolution per pixel)
     from seaecho.api import image_config
+    from seaecho.checks.resources import IMAGE_PANELS, image_estimate
     from seaecho.imaging.focus import ImageGrid, RawData
-    from seaecho.resources import IMAGE_PANELS, image_estimate
 
     with xr.open_dataset(raw, engine="h5netcdf") as ds:
         rd = RawData(ds)
@@ -185,7 +185,7 @@ def test_a_processed_doppler_band_of_5e_324_hz_is_clean(raw, tmp_path, backend):
     # eq (B4) with it (RuntimeWarnings from the window and the numpy kernel); the offsets
     # are then outside the band: here no pulse is weighted, K = 0 and the image is NaN,
     # undefined, at every pixel
-    from seaecho.guards import image_problems
+    from seaecho.checks.guards import image_problems
 
     out = tmp_path / "img.nc"
     assert main(["image", raw, "-o", str(out), "-q", "--no-figures", "--backend", backend,

@@ -1,5 +1,5 @@
 """A focused image never holds Inf, nor NaN but at its undefined pixels: what the fuzzing
-suite found, and the finite-output guard on images (``seaecho.guards.check_image``)."""
+suite found, and the finite-output guard on images (``seaecho.checks.guards.check_image``)."""
 
 from __future__ import annotations
 
@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 import xarray as xr
 
+from seaecho.checks.guards import NonFiniteEchoError, check_image, image_problems
 from seaecho.cli import main
-from seaecho.guards import NonFiniteEchoError, check_image, image_problems
 
 #: Shrunk from a scene of the fuzzing suite (tests/fuzz/test_fuzz_valid.py) that `check`
 #: accepted: a transmitter at rest, four linear channels, [image] with its defaults. The
@@ -180,7 +180,7 @@ def test_noise_equivalent_rcs_bound_against_the_image_noise(tmp_path):
     from sar_helpers import point_scene, simulate
 
     from seaecho.api import image
-    from seaecho.preflight import image_noise_rcs
+    from seaecho.checks.preflight import image_noise_rcs
 
     grid = {"pixel_m": 0.5, "extent_m": (-4.0, 4.0, -4.0, 4.0)}
     scene = point_scene([{"position_m": (0.0, 0.0, 0.0), "rcs_m2": 1e-12}], n_pulses=16,

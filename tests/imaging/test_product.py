@@ -151,7 +151,7 @@ def test_a_bad_antenna_variable_is_named(raw, tmp_path, capsys):
 
 
 @pytest.mark.filterwarnings("ignore::seaecho.warnings.SeaechoWarning")
-def test_multistatic_product_has_each_receivers_antenna_and_ignores_the_scene():
+def test_multistatic_product_has_each_receivers_antenna_and_ignores_the_scene(tmp_path):
     # [[receivers]]: the rx_antenna_* variables gain the receiver axis (one pattern per
     # receiver); each receiver's product is focused without parsing the stored scene, so
     # an unknown key leaves the images bit for bit
@@ -189,6 +189,12 @@ def test_multistatic_product_has_each_receivers_antenna_and_ignores_the_scene():
     after = image_multistatic(ds, cfg, backend="numpy")
     for name in before.data_vars:
         assert before[name].values.tobytes() == after[name].values.tobytes(), name
+    # the raw file's figures (one set per receiver) read the product, not the scene
+    from seaecho.api import figures
+
+    pngs = figures(ds, tmp_path / "m")
+    assert sorted(p.name for p in pngs) == ["m_a_compressed.png", "m_a_signal.png",
+                                            "m_b_compressed.png", "m_b_signal.png"]
 
 
 def test_the_product_codes_cover_the_scene_schema():

@@ -16,9 +16,9 @@ import pytest
 from seaecho.build import receiver_scene
 from seaecho.config import SceneError, parse_scene
 from seaecho.constants import C0
+from seaecho.geometry.bistatic import bistatic_angle
 from seaecho.multistatic import (
     MultistaticSimulation,
-    bistatic_angle,
     receiver_dataset,
     simulation_of,
 )
@@ -220,7 +220,7 @@ def test_one_receiver_scene_keeps_the_bistatic_layout_and_bytes():
 @pytest.mark.slow
 @pytest.mark.filterwarnings("ignore::seaecho.scattering.validity.SPMValidityWarning")
 def test_netcdf_zarr_and_resumed_zarr_have_the_same_bytes(tmp_path):
-    from seaecho.io.zarr_run import open_run
+    from seaecho.io.run import open_run
 
     sc = _scene(n_pulses=4, sea_update_pulses=2)
     nc = simulation_of(sc).run(tmp_path / "m.nc", progress=False, chunk=2)
@@ -276,7 +276,7 @@ def test_bad_receivers_are_refused_naming_the_field(change, match):
 def test_dask_run_has_the_serial_bytes(tmp_path):
     # Blocks of pulses on two Dask workers (each its own MultistaticSimulation)
     from seaecho import distributed
-    from seaecho.io.zarr_run import open_run
+    from seaecho.io.run import open_run
 
     sc = _scene(n_pulses=4)
     serial = simulation_of(sc).run(tmp_path / "s.nc", progress=False, chunk=1)
@@ -388,7 +388,7 @@ def test_images_per_receiver_and_their_incoherent_combination():
 
 def test_preflight_names_the_receiver_whose_geometry_is_refused():
     # seaecho check refuses what seaecho run would: each receiver's geometry, named
-    from seaecho.preflight import check_run
+    from seaecho.checks.preflight import check_run
 
     rx = [dict(r) for r in RECEIVERS]
     rx[2]["position_m"] = (0.0, -150.0, -3.0)  # under the sea

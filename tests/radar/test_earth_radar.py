@@ -12,9 +12,9 @@ import pytest
 
 import seaecho
 from seaecho.build import build_radar
+from seaecho.checks.preflight import check_run
 from seaecho.config import SceneError, parse_scene
 from seaecho.geometry.earth import effective_radius, grazing_angle, horizon_range
-from seaecho.preflight import check_run
 from seaecho.radar.system import RadarSystem
 
 R43 = effective_radius(4.0 / 3.0)

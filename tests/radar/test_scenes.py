@@ -92,8 +92,8 @@ def test_antenna_errors_name_the_field():
 def test_scanning_scenes(name):
     # docs/scanning.md: X band, 24 rpm (2.5 s, 2500 pulses at 1 kHz: one revolution),
     # 4/3 Earth, the sea tile above the horizon; `seaecho check` accepts them
+    from seaecho.checks.preflight import check_run
     from seaecho.geometry.earth import effective_radius, grazing_angle
-    from seaecho.preflight import check_run
 
     sc = load_scene(SCENES / f"{name}.toml")
     model = build_radar(sc)

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from seaecho.constants import C0
+from seaecho.geometry import frames
 from seaecho.ocean.spectra import DirectionalSpectrum
 from seaecho.ocean.wind import u10_from_u19_5, u19_5_from_u10
-from seaecho.scattering import frames
 from seaecho.scattering.breaking import (
     EPS_WB,
     S_WB2,

@@ -12,9 +12,9 @@ import pytest
 from scipy import special
 
 from seaecho.constants import C0, G
+from seaecho.geometry import frames
 from seaecho.ocean.spectra import DirectionalSpectrum
 from seaecho.ocean.surface import SeaSurface
-from seaecho.scattering import frames
 from seaecho.scattering.breaking import (
     THETA_WB,
     add_breaking,

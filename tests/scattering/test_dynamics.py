@@ -6,11 +6,11 @@ import numpy as np
 import pytest
 
 from seaecho.constants import C0, SURFACE_TENSION_OVER_DENSITY, G
+from seaecho.geometry import frames
 from seaecho.ocean.dispersion import phase_speed
 from seaecho.ocean.spectra import DirectionalSpectrum
 from seaecho.ocean.surface import SeaSurface
 from seaecho.ocean.twoscale import orbital_velocity_covariance
-from seaecho.scattering import frames
 from seaecho.scattering.breaking import (
     dissipation_exponent,
     wind_growth_rate,

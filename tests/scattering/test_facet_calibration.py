@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scattering_helpers import gaussian_spectrum
 
-from seaecho.scattering import frames
+from seaecho.geometry import frames
 from seaecho.scattering.facet import FacetModel, facet_amplitudes
 from seaecho.scattering.spm import spm_sigma
 

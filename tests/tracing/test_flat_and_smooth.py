@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from seaecho.geometry.facets import analytic_facets
-from seaecho.scattering.frames import local_angles
+from seaecho.geometry.frames import local_angles
 from seaecho.tracing.tracer import FacetTracer
 
 N = 32
@@ -71,7 +71,7 @@ def test_smooth_surface_normals_match_analytic(tracer):
 
 @pytest.mark.parametrize("rx", [None, RX], ids=["monostatic", "bistatic"])
 def test_drjit_frames_kernel_equals_numpy_reference(rx):
-    """The Dr.Jit kernel reproduces geometry.facets.facet_frames (scattering.frames),
+    """The Dr.Jit kernel reproduces geometry.facets.facet_frames (geometry.frames),
     degenerate directions included (a transmitter straight above flat facets)."""
     from seaecho.geometry.facets import facet_frames
     from seaecho.tracing.kernels import facet_frames_drjit

@@ -22,8 +22,8 @@ def run(args: argparse.Namespace) -> int:
     from pathlib import Path
 
     from ..build import check_scene
+    from ..checks.preflight import check_run, default_output
     from ..config import load_scene
-    from ..preflight import check_run, default_output
     from . import check_memory_option
 
     check_memory_option(args.max_memory_gb)

@@ -52,15 +52,9 @@ def table_rows(ds) -> list[tuple]:
 def run(args: argparse.Namespace) -> int:
     import csv
 
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-
     from ..api import compare
-    from ..io.dataset import atomic_path, atomic_savefig
-    from ..io.facets import node_extent
+    from ..io.dataset import atomic_path
+    from ..plotting.facets import compare_figures
     from . import UsageError
     from .trace import geometry_arguments, load
 
@@ -78,34 +72,7 @@ def run(args: argparse.Namespace) -> int:
         for r in rows:
             w.writerow([r[0], r[1]] + [f"{v:.6g}" for v in r[2:]])
 
-    ext = node_extent(ds)
-    vis = ds["visibility"]
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6), constrained_layout=True)
-    for ax, (a, title, cmap, lim) in zip(axes, [
-            (vis.sel(mode="raytraced").values, "ray-traced: lit and seen", "gray", (0, 1)),
-            (vis.sel(mode="analytic").values,
-             f"analytic ({ds.attrs['shadowing']}): lit and seen", "gray", (0, 1)),
-            ((vis.sel(mode="analytic") - vis.sel(mode="raytraced")).values,
-             "analytic - ray-traced", "RdBu_r", (-1, 1))], strict=True):
-        im = ax.imshow(a, origin="lower", extent=ext, cmap=cmap, vmin=lim[0], vmax=lim[1],
-                       interpolation="nearest")
-        ax.set_title(title)
-        ax.set_xlabel("x (east) [m]")
-        ax.set_ylabel("y (north) [m]")
-        fig.colorbar(im, ax=ax, shrink=0.8)
-    atomic_savefig(fig, out / "compare_visibility.png", dpi=100)
-    plt.close(fig)
-
-    fig, axes = plt.subplots(1, 4, figsize=(16, 3.8), constrained_layout=True)
-    for ax, name in zip(axes, ("theta_i", "theta_s", "phi", "normal"), strict=True):
-        d = ds[f"{name}_difference"].values
-        ax.hist(d[np.isfinite(d)], bins=100, color="C0")
-        ax.set_xlabel(f"{name}: analytic - ray-traced [deg]" if name != "normal"
-                      else "angle between normals [deg]")
-        ax.set_yscale("log")
-    fig.suptitle("per-facet differences (facets visible in both modes)")
-    atomic_savefig(fig, out / "compare_angles.png", dpi=100)
-    plt.close(fig)
+    compare_figures(ds, out)
     print(f"wrote {table}, {out / 'compare_visibility.png'}, {out / 'compare_angles.png'}")
     for r in rows[:3]:
         print(f"  {r[0]}: raytraced {r[2]:.4f}, analytic {r[3]:.4f}")

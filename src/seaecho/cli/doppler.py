@@ -32,8 +32,9 @@ def run(args: argparse.Namespace) -> int:
     import xarray as xr
 
     from ..io.dataset import write_dataset_atomic
-    from ..io.doppler import doppler_dataset, doppler_figure
+    from ..io.doppler import doppler_dataset
     from ..io.run import quiet_invalid_netcdf
+    from ..plotting.doppler import doppler_figure
     from . import UsageError
 
     raw = Path(args.raw)

@@ -69,7 +69,7 @@ def focus_to_files(raw_path: Path, out: Path, cfg, backend: str = "drjit",
 
     from ..api import figures as draw
     from ..api import image, image_measures
-    from ..guards import check_image
+    from ..checks.guards import check_image
     from ..io.dataset import write_dataset_atomic
     from ..io.run import quiet_invalid_netcdf
 
@@ -141,7 +141,7 @@ def run(args: argparse.Namespace) -> int:
         raise UsageError(f"output {out} would overwrite the raw dataset")
     cfg = image_config(raw, **image_fields(args))
     from ..api import open_dataset
-    from ..resources import check_image_memory
+    from ..checks.resources import check_image_memory
     from . import check_memory_option
 
     check_memory_option(args.max_memory_gb)

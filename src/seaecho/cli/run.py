@@ -72,10 +72,10 @@ def _cache_disabled(disabled: bool):
 
 def run(args: argparse.Namespace) -> int:
     from ..api import figures, first_pulses, load_scene, simulate
+    from ..checks.guards import NonFiniteEchoError
+    from ..checks.preflight import check_run, default_output, image_output
     from ..config import SceneError
-    from ..guards import NonFiniteEchoError
     from ..io.zarr_run import StoreError, is_zarr, part_path
-    from ..preflight import check_run, default_output, image_output
     from . import UsageError
 
     scene = load_scene(args.scene)

@@ -95,48 +95,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run)
 
 
-def _figure(rows, varying, path, title):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-
-    from ..io.dataset import atomic_savefig
-
-    names = ["HH", "HV", "VH", "VV"]
-    db = rows[:, 4:]
-    if len(varying) == 2:
-        (ia, a), (ib, b) = varying
-        fig, axes = plt.subplots(2, 2, figsize=(9, 7), constrained_layout=True)
-        vmax = np.max(db[db > DB_FLOOR]) if np.any(db > DB_FLOOR) else 0.0
-        for c, ax in enumerate(axes.flat):
-            grid = db[:, c].reshape(len(a), len(b))
-            im = ax.pcolormesh(b, a, grid, shading="auto", vmin=vmax - 50, vmax=vmax,
-                               cmap="viridis")
-            ax.set_title(f"sigma_{names[c]} [dB]")
-            ax.set_xlabel(_LABELS[ib])
-            ax.set_ylabel(_LABELS[ia])
-        fig.colorbar(im, ax=axes, label="sigma [dB]")
-    else:
-        fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
-        col = varying[0][0] if varying else 3
-        x = rows[:, col]
-        for c in range(4):
-            ax.plot(x, np.where(db[:, c] > DB_FLOOR, db[:, c], np.nan), label=names[c],
-                    ls="-" if c in (0, 3) else "--")
-        ax.set_xlabel(_LABELS[col])
-        ax.set_ylabel("sigma [dB]")
-        ax.grid(True, alpha=0.3)
-        ax.legend()
-    fig.suptitle(title, fontsize=9)
-    atomic_savefig(fig, path, dpi=110)
-    plt.close(fig)
-
-
-_LABELS = ["theta_i [deg]", "theta_s [deg]", "phi_i [deg]", "phi_s [deg]"]
-
-
 def run(args: argparse.Namespace) -> int:
     import sys
     import warnings
@@ -146,6 +104,7 @@ def run(args: argparse.Namespace) -> int:
 
     from ..api import SIGMA_FREQUENCY_HZ, SIGMA_WIND_M_S, load_scene, sigma
     from ..io.dataset import atomic_path
+    from ..plotting.sigma import sigma_sweep_figure
     from . import UsageError
 
     sea_options = {"wind_speed": "--wind-speed", "wind_direction_deg": "--wind-direction-deg",
@@ -216,7 +175,7 @@ def run(args: argparse.Namespace) -> int:
             title = (f"{args.model}, {a['frequency_hz'] / 1e9:g} GHz, U19.5 = "
                      f"{a['wind_speed_m_s']:g} m/s towards {a['wind_direction_deg']:g} deg, "
                      f"{a['spectrum']}")
-            _figure(rows, varying, png, title)
+            sigma_sweep_figure(rows, varying, png, title, DB_FLOOR)
             print(f"wrote {png}")
         else:
             print("no figure: more than two angles vary", file=sys.stderr)

@@ -30,7 +30,7 @@ def run(args: argparse.Namespace) -> int:
     import warnings
 
     from ..api import load_scene, save, surface
-    from ..io.figures import elevation_map
+    from ..plotting.run import elevation_map
     from . import UsageError
 
     scene = load_scene(args.scene)

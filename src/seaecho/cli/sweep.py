@@ -130,10 +130,10 @@ def _split_top_level(raw: str) -> list[str]:
 
 def preflight_cases(cases, base_dir: Path, max_memory_gb: float | None,
                     workers: int | None, block: int | None) -> dict[int, str]:
-    """The cases `seaecho run` would refuse (``seaecho.preflight.check_run``: geometry,
+    """The cases `seaecho run` would refuse (``seaecho.checks.preflight.check_run``: geometry,
     files, memory), each with its message: they are reported as failed, not run."""
+    from ..checks.preflight import check_run
     from ..config import SceneError
-    from ..preflight import check_run
 
     refused = {}
     for c in cases:

@@ -64,7 +64,7 @@ def load(args: argparse.Namespace):
 
 def run(args: argparse.Namespace) -> int:
     from ..api import save, trace
-    from ..io.facets import facet_maps
+    from ..plotting.facets import facet_maps
     from . import UsageError
 
     out = Path(args.output)

@@ -19,8 +19,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from ..io.run import open_run
     from ..io.truth_tracks import write_truth_csv
-    from ..io.zarr_run import open_run
     from . import UsageError
 
     src = Path(args.run)

@@ -7,7 +7,9 @@ with status 2 without a traceback.
 
 from __future__ import annotations
 
+import os
 import tomllib
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -162,30 +164,67 @@ def _lists_to_tuples(data: Any) -> Any:
     return data
 
 
-def parse_scene(data: dict[str, Any], source: str = "<scene>") -> Scene:
-    """Validate a scene given as a dict (the parsed TOML).
+def parse_scene(data: str | Mapping[str, Any], source: str | None = None, *,
+                base_dir: str | os.PathLike | None = None) -> Scene:
+    """A scene from TOML text or from a dict (the parsed TOML), validated.
 
     Validation is strict: a number must be written as a number (``nx = 32``, not
     ``"32"``), a boolean as ``true``/``false`` (not ``1``), an integer field takes no
     fraction (``nx = 32.0`` is refused); an integer is accepted where a float is expected.
+
+    Parameters
+    ----------
+    data : str or mapping
+        The text of a scene file, or its tables as nested dicts.
+    source : str, optional
+        What the error messages name as the scene's origin (default ``<string>`` for
+        text, ``<scene>`` for a dict).
+    base_dir : path, optional
+        Folder that relative ``[[objects]]`` paths start from (:attr:`Scene.base_dir`;
+        default: the working directory when a run needs them).
+
+    Raises
+    ------
+    SceneError
+        Not TOML, or not a valid scene (field, value and what is allowed).
     """
+    if isinstance(data, str):
+        where = "<string>" if source is None else source
+        try:
+            data = tomllib.loads(data)
+        except tomllib.TOMLDecodeError as exc:
+            hint = (" (to read a file, use seaecho.load_scene)"
+                    if data.strip().endswith(".toml") else "")
+            raise SceneError(f"{where}: not valid TOML ({exc}){hint}") from None
+        except RecursionError:
+            raise SceneError(f"{where}: not valid TOML for seaecho: arrays or tables nested "
+                             "too deeply (a scene file needs at most a few levels)") from None
+    elif isinstance(data, Mapping):
+        where = "<scene>" if source is None else source
+    else:
+        raise SceneError(f"source: expected TOML text or a dict, got {type(data).__name__}")
     try:
-        return Scene.model_validate(_lists_to_tuples(data), strict=True)
+        scene = Scene.model_validate(_lists_to_tuples(dict(data)), strict=True)
     except ValidationError as exc:
-        raise SceneError(f"{source}: invalid scene\n{format_validation_error(exc)}") from None
+        raise SceneError(f"{where}: invalid scene\n{format_validation_error(exc)}") from None
     except RecursionError:
-        raise SceneError(f"{source}: invalid scene: values nested too deeply (a scene "
+        raise SceneError(f"{where}: invalid scene: values nested too deeply (a scene "
                          "file needs at most a few levels of tables and arrays)") from None
+    if base_dir is not None:
+        scene._base_dir = Path(base_dir)
+    return scene
 
 
-def load_scene(path: str | Path) -> Scene:
-    """Read and validate a TOML scene file.
+def load_scene(path: str | os.PathLike) -> Scene:
+    """Read and validate a TOML scene file; the scene's :attr:`~Scene.base_dir` is the
+    file's folder (``[[objects]]`` mesh paths are relative to it).
 
     Raises
     ------
     SceneError
         If the file is missing, unreadable, not valid TOML or not a valid scene; the
-        message names the field, the value and what is allowed.
+        message names the field (``[sea].wind_speed_m_s``), the value and what is
+        allowed.
     """
     path = Path(path)
     try:
@@ -201,7 +240,7 @@ def load_scene(path: str | Path) -> Scene:
     except RecursionError:
         raise SceneError(f"{path}: not valid TOML for seaecho: arrays or tables nested too "
                          "deeply (a scene file needs at most a few levels)") from None
-    return parse_scene(data, source=str(path))
+    return parse_scene(data, source=str(path), base_dir=path.resolve().parent)
 
 
 def scene_to_toml_dict(scene: Scene) -> dict[str, Any]:

@@ -85,7 +85,8 @@ def with_overrides(scene: Scene | Mapping[str, Any], overrides: Mapping[str, Any
     Returns
     -------
     Scene
-        A new validated scene (the input is not changed).
+        A new validated scene (the input is not changed), with the same folder
+        (:attr:`Scene.base_dir`).
 
     Raises
     ------
@@ -99,7 +100,8 @@ def with_overrides(scene: Scene | Mapping[str, Any], overrides: Mapping[str, Any
     for name, value in overrides.items():
         _check_name(name)
         _assign(data, name, value)
-    return parse_scene(data, source=f"{source} ({', '.join(overrides) or 'none'})")
+    return parse_scene(data, source=f"{source} ({', '.join(overrides) or 'none'})",
+                       base_dir=scene.base_dir if isinstance(scene, Scene) else None)
 
 
 def _check_name(name: str) -> None:

@@ -578,7 +578,7 @@ class TargetConfig(Section):
         """The 2x2 complex scattering amplitude [m] in (h, v) order: [[s_hh, s_hv], [s_vh, s_vv]].
 
         ``M[m, n]``: m received, n transmitted, both ordered (h, v) as in
-        ``seaecho.scattering.frames``, so ``M.reshape(4)`` lists HH, HV, VH, VV. A preset
+        ``seaecho.geometry.frames``, so ``M.reshape(4)`` lists HH, HV, VH, VV. A preset
         needs the carrier [Hz] (:func:`preset_rcs_m2`).
         """
         import numpy as np

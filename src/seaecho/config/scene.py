@@ -15,7 +15,9 @@ registered here too, each in its own module of this package.
 
 from __future__ import annotations
 
-from pydantic import Field, model_serializer, model_validator
+from pathlib import Path
+
+from pydantic import Field, PrivateAttr, model_serializer, model_validator
 
 from .base import Name, Section, Text
 from .image import ImageConfig
@@ -30,7 +32,14 @@ from .tracing import ObjectConfig, TracingConfig
 
 
 class Scene(Section):
-    """A validated scene file."""
+    """A validated scene file.
+
+    It knows its folder and shows a readable summary. Made by
+    :func:`~seaecho.config.load_scene` (which records the file's folder,
+    :attr:`base_dir`), :func:`~seaecho.config.parse_scene` and
+    :func:`~seaecho.config.with_overrides`; every builder takes it. Printed, or shown in a
+    notebook, it gives :meth:`summary`. Frozen: change it with ``with_overrides``.
+    """
 
     name: Name = Field("", max_length=200, description="a short name for the scene")
     description: Text = Field("", max_length=5000, description="free text")
@@ -76,6 +85,8 @@ class Scene(Section):
         description="the Earth's curvature and refraction [propagation]",
     )
 
+    _base_dir: Path | None = PrivateAttr(default=None)
+
     @model_serializer(mode="wrap")
     def _without_empty_receivers(self, handler):
         # A scene without [[receivers]] dumps as before they existed: its files' scene_json
@@ -100,6 +111,34 @@ class Scene(Section):
     def ship_names(self) -> tuple[str, ...]:
         """The ships' names (``ship0``, ``ship1``, ... where none is given)."""
         return tuple(s.name or f"ship{i}" for i, s in enumerate(self.all_ships))
+
+    @property
+    def base_dir(self) -> Path | None:
+        """Folder of the scene file (``[[objects]]`` paths are relative to it), or None."""
+        return self._base_dir
+
+    # The display calls up to seaecho.summary, which builds the radar to give the scene's
+    # geometry and resolution cells: a deferred import, the schema's one upward edge
+    # (tests/test_layers.py lists it; docs/design.md).
+    def summary(self) -> str:
+        """Sea state, geometry, radar, resolution cells and run size, as text
+        (:func:`seaecho.summary.scene_summary`)."""
+        from ..summary import scene_summary
+
+        return scene_summary(self).text()
+
+    def _repr_html_(self) -> str:
+        from ..summary import scene_summary
+
+        return scene_summary(self).html()
+
+    def __repr__(self) -> str:
+        try:
+            return self.summary()
+        except Exception as exc:  # a repr must not raise; the fields still say it all
+            return f"{super().__repr__()}\n(no summary: {exc})"
+
+    __str__ = __repr__
 
 
 __all__ = ["Scene"]

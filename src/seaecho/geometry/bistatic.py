@@ -19,10 +19,11 @@ import math
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 from ..backend import NUMPY, Boundary
 
-__all__ = ["azimuths", "global_angles", "ranges", "ranges_directions"]
+__all__ = ["azimuths", "bistatic_angle", "global_angles", "ranges", "ranges_directions"]
 
 #: Below this horizontal length a direction is vertical (no azimuth).
 _VERTICAL = 1e-9
@@ -120,3 +121,22 @@ def global_angles(n_i: np.ndarray, n_s: np.ndarray) -> tuple[np.ndarray, np.ndar
     """
     io = Boundary(NUMPY)
     return tuple(io.numpy(*azimuths(NUMPY, io.vec3(n_i), io.vec3(n_s))))
+
+
+def bistatic_angle(tx: NDArray[np.float64], rx: NDArray[np.float64],
+                   point: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Bistatic angle beta [rad] at ``point``: the angle between the directions from the
+    point to the transmitter and to the receiver (Willis, *Bistatic Radar*, 2nd ed., 2005,
+    section 3.1, Fig. 3.1), 0 for a monostatic radar.
+
+    Parameters
+    ----------
+    tx, rx : (..., 3) arrays
+        Transmitter and receiver positions [m].
+    point : (3,) array
+        The point [m].
+    """
+    a = np.asarray(tx, dtype=np.float64) - point
+    b = np.asarray(rx, dtype=np.float64) - point
+    cross = np.linalg.norm(np.cross(a, b), axis=-1)
+    return np.arctan2(cross, np.sum(a * b, axis=-1))

@@ -216,7 +216,7 @@ def _calibrated(a, nodata: NDArray | None = None) -> NDArray:
     becomes NaN where ``nodata`` (broadcast over the leading axis) marks a pixel without
     data (``valid`` = 0: K < 0.1 max K, or the echoes outside the receive window); at a
     pixel with data every value is bounded (K >= 0.1 max K) and the image guard
-    (``seaecho.guards.check_image``) reports any that is not."""
+    (``seaecho.checks.guards.check_image``) reports any that is not."""
     a = np.asarray(a)
     a = a.astype(np.complex128 if np.iscomplexobj(a) else np.float64)
     if nodata is None:
@@ -407,25 +407,64 @@ def focus_points(source, points, config: ImageConfig | None = None, *,
 
 def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timings: dict,
            progress: bool, source: str):
+    """Focus ``raw`` on the image grid of ``cfg``: :func:`focus` after its checks.
+
+    The steps, each its own function: the backprojection of every pulse block onto the
+    pixels (:meth:`_Processor.backproject`, eqs B1-B4); the calibration maps K and
+    K^2 A_eff on the grid's nodes, interpolated to the pixels (:func:`_calibration_maps`,
+    eqs K1-K3); the calibrated products (:func:`_products`: image, sigma0, A_eff,
+    coverage, validity, Pauli powers, filtered and multilooked sigma0); the truth on the
+    grid (:func:`seaecho.imaging.truth.truth_on_grid`); the attributes
+    (:func:`_image_attrs`). ``timings`` receives the seconds of each step, the pixel and
+    pulse counts and the pixel-pulse rate; ``source`` is the raw file's name (an
+    attribute).
+    """
     import xarray as xr
 
-    from .. import __version__
-    from .speckle import PAULI_NAMES, multilook, pauli_powers, speckle_filter
     from .truth import truth_on_grid
 
     proc = _Processor(raw, cfg, backend)
     pixel = cfg.pixel_m if cfg.pixel_m is not None else C0 / (8.0 * raw.bandwidth)
     extent = cfg.extent_m if cfg.extent_m is not None else raw.default_extent()
     grid = ImageGrid.from_extent(extent, pixel, cfg.height_m)
-    track, window, weighting = proc.track, proc.window, proc.weighting
     points = grid.points()
-    n_c = len(raw.channels)
     acc, wsum = proc.backproject(points, block_pulses, timings, progress)
-    # Calibration (eqs K1-K3) on the node grid, interpolated to the pixels. The receive
-    # window cuts K sharply, which no interpolation follows: the nodes ignore it and each
-    # pixel's K is scaled by the fraction of its weight inside the window (exact where the
-    # window covers the pixel's whole aperture, the valid pixels)
     t = time.perf_counter()
+    gain, q, inside, g0, e_chi = _calibration_maps(proc, grid, wsum)
+    t_cal = time.perf_counter() - t
+    t = time.perf_counter()
+    coords, data = _products(raw, cfg, grid, acc, gain, q, inside, g0)
+    truth, truth_attrs = truth_on_grid(raw.ds, grid.x, grid.y, raw.channels)
+    data.update(truth)
+    if "ship_track" in data:
+        coords["xy"] = ("xy", np.array(["x", "y"]))
+    for name in ("tx_position", "rx_position"):
+        data[f"{name}_used"] = (("pulse", "xyz"), getattr(proc.track, name[:2]),
+                                {"units": "m", "long_name": f"{name} of the {cfg.track} "
+                                 "track, used by the processor"})
+    attrs = _image_attrs(raw, cfg, proc, source, pixel, extent, e_chi)
+    attrs.update(truth_attrs)
+    out = xr.Dataset(data, coords=coords, attrs=attrs)
+    t_prod = time.perf_counter() - t
+    n_pp = points.shape[0] * raw.n_pulses
+    t_bp = timings["backprojection"]
+    timings.update(calibration=t_cal, products=t_prod, pixels=points.shape[0],
+                   pulses=raw.n_pulses, channels=len(raw.channels),
+                   pixel_pulses_per_s=n_pp / t_bp if t_bp > 0 else np.inf)
+    return out
+
+
+def _calibration_maps(proc: _Processor, grid: ImageGrid, wsum: NDArray
+                      ) -> tuple[NDArray, NDArray, NDArray, float, float]:
+    """Calibration (eqs K1-K3) on the node grid, interpolated to the pixels.
+
+    Returns K [sqrt(W) / m] and K^2 A_eff / g0^2 at the pixels, the fraction of each
+    pixel's weight inside the receive window, the scale g0 (a power of two near the
+    largest K) and the compressed pulse's energy E_chi [s]. The receive window cuts K
+    sharply, which no interpolation follows: the nodes ignore it and each pixel's K is
+    scaled by the fraction of its weight inside the window (exact where the window covers
+    the pixel's whole aperture, the valid pixels).
+    """
     nodes = grid.nodes()
     cal, e_chi = proc.calibration(nodes.points(), window_cut=False)
     if not np.isfinite(cal.area).any():
@@ -436,7 +475,7 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         warnings.warn("the aperture does not turn over the image (platforms at rest or "
                       "one pulse): no azimuth resolution, so sigma0 (eq K3) is undefined; "
                       "the calibrated image (RCS) is still given", SamplingWarning,
-                      stacklevel=3)
+                      stacklevel=4)
     # K^2 A_eff (smooth), over g0^2, g0 ~ the largest K: a 5e-324 W transmitter's K^2
     # (1e-340) underflowed to 0, and sigma0 with it
     g0 = _power_of_two_scale(cal.gain)
@@ -445,9 +484,18 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
         inside = np.where(wsum[0] > 0, wsum[1] / wsum[0], 0.0).reshape(grid.shape)
     gain = np.maximum(_interpolate(nodes, cal.gain, grid), 0.0) * inside
     q = np.maximum(_interpolate(nodes, q_nodes, grid), 0.0) * inside
-    t_cal = time.perf_counter() - t
-    # Products
-    t = time.perf_counter()
+    return gain, q, inside, g0, e_chi
+
+
+def _products(raw: RawData, cfg: ImageConfig, grid: ImageGrid, acc: NDArray, gain: NDArray,
+              q: NDArray, inside: NDArray, g0: float) -> tuple[dict, dict]:
+    """The image dataset's coordinates and calibrated variables (no truth yet): the image
+    s = I / K, sigma0 = |I|^2 / (K^2 A_eff), K, A_eff, coverage, the fraction inside the
+    window, the validity mask, the Pauli powers, and the filtered and multilooked sigma0
+    that ``cfg`` asks for. ``acc`` holds the backprojected sums I (channel, pixel)."""
+    from .speckle import PAULI_NAMES, multilook, pauli_powers, speckle_filter
+
+    n_c = len(raw.channels)
     k_max = float(gain.max()) if gain.size else 0.0
     coverage = gain / k_max if k_max > 0 else np.zeros_like(gain)
     valid = (coverage >= MIN_COVERAGE) & (inside >= MIN_INSIDE)
@@ -524,14 +572,16 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
                                                 multilook(nodata[None], cfg.looks) > 0),
                                     {"units": "m2 m-2", "long_name": f"sigma0, {ly} x {lx} "
                                      "looks (y, x)"})
-    truth, truth_attrs = truth_on_grid(raw.ds, grid.x, grid.y, raw.channels)
-    data.update(truth)
-    if "ship_track" in data:
-        coords["xy"] = ("xy", np.array(["x", "y"]))
-    for name in ("tx_position", "rx_position"):
-        data[f"{name}_used"] = (("pulse", "xyz"), getattr(track, name[:2]),
-                                {"units": "m", "long_name": f"{name} of the {cfg.track} "
-                                 "track, used by the processor"})
+    return coords, data
+
+
+def _image_attrs(raw: RawData, cfg: ImageConfig, proc: _Processor, source: str,
+                 pixel: float, extent, e_chi: float) -> dict:
+    """The image dataset's attributes: provenance, the processing and calibration
+    parameters, the formulas (eqs B1-B4, K1-K3)."""
+    from .. import __version__
+
+    window, weighting = proc.window, proc.weighting
     attrs = {
         "title": "seaecho SAR image (time-domain backprojection)",
         "seaecho_version": __version__,
@@ -558,12 +608,4 @@ def _focus(raw: RawData, cfg: ImageConfig, backend: str, block_pulses: int, timi
                           "w_p(x) = W((f_D - f_c,p) / B_a) (docs/imaging.md, eqs B1-B4)",
         "Conventions": "CF-1.8",
     }
-    attrs.update(truth_attrs)
-    out = xr.Dataset(data, coords=coords, attrs=attrs)
-    t_prod = time.perf_counter() - t
-    n_pp = points.shape[0] * raw.n_pulses
-    t_bp = timings["backprojection"]
-    timings.update(calibration=t_cal, products=t_prod, pixels=points.shape[0],
-                   pulses=raw.n_pulses, channels=n_c,
-                   pixel_pulses_per_s=n_pp / t_bp if t_bp > 0 else np.inf)
-    return out
+    return attrs

@@ -170,7 +170,7 @@ def ppi_tree(run):
                 "longitude": ((), 0.0, {"units": "degrees_east"}),
                 "altitude": ((), float(position[0, 2]), {"units": "meters"})},
         attrs={"Conventions": "Cf/Radial", "version": "2.0",
-               "title": _scene_name(run) or "seaecho scanning radar",
+               "title": scene_name(run) or "seaecho scanning radar",
                "instrument_name": "seaecho",
                "source": f"seaecho {run.attrs.get('seaecho_version', '')}".strip(),
                "institution": "", "references": "doi:10.1109/RADAR.2006.1631862",
@@ -194,7 +194,7 @@ def write_ppi(run, path: str | os.PathLike) -> Path:
     return path
 
 
-def _scene_name(run) -> str:
+def scene_name(run) -> str:
     """The scene's name from the run's ``scene_json`` attribute ('' without one)."""
     import json
 
@@ -204,77 +204,4 @@ def _scene_name(run) -> str:
         return ""
 
 
-def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
-                max_sweeps: int = 8) -> list[Path]:
-    """A PPI figure per sweep, ``<stem>_ppi_sweep<N>.png`` (the first ``max_sweeps``).
-
-    Range-compressed power [dB] of the run's first channel, drawn on the plane: x east
-    and y north of the radar, x = r sin(az), y = r cos(az) with az the ray's azimuth
-    clockwise from north and r its range (the slant range, as a radar's PPI draws it).
-    Truth from the run: the point targets (circles, at the sweep's middle time) and the
-    ship's hull centre (triangle, ``ship_position``), relative to the radar's position.
-    """
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    from .dataset import atomic_savefig
-
-    tree = ppi_tree(run)
-    stem = Path(stem)
-    t_run = np.asarray(run["time"].values, dtype=float)
-    out = []
-    channel = str(run["channel"].values[0])
-    for name in list(tree.children)[:max_sweeps]:
-        sw = tree[name].to_dataset()
-        # the rays in time order, unwrapped: a sweep turns one way (a sector crossing
-        # north, a revolution from its start back to it)
-        az = np.unwrap(np.radians(sw["azimuth"].values))
-        r = sw["range"].values
-        p = sw[f"{channel}_power"].values.astype(float)
-        if az.size > 1 and az[-1] < az[0]:
-            az, p = az[::-1], p[::-1]
-        # cell edges: half-way between rays (a ray's own width at the ends) and gates
-        if az.size > 1:
-            mid = 0.5 * (az[1:] + az[:-1])
-            a_edges = np.concatenate([[2 * az[0] - mid[0]], mid, [2 * az[-1] - mid[-1]]])
-        else:
-            a_edges = az[0] + np.array([-0.5, 0.5]) * np.radians(0.5)
-        dr = r[1] - r[0] if r.size > 1 else 1.0
-        r_edges = np.concatenate([r - 0.5 * dr, [r[-1] + 0.5 * dr]])
-        x = r_edges[None, :] * np.sin(a_edges)[:, None]
-        y = r_edges[None, :] * np.cos(a_edges)[:, None]
-        top = float(p.max())
-        fig, ax = plt.subplots(figsize=(6.6, 5.8), constrained_layout=True)
-        im = ax.pcolormesh(x / 1e3, y / 1e3, p, shading="flat", cmap="viridis",
-                           vmin=top - dynamic_range_db, vmax=top, rasterized=True)
-        fig.colorbar(im, ax=ax, label=f"{channel} range-compressed power [dB re 1 W]")
-        rows = np.flatnonzero(run["sweep"].values == int(name.split("_")[1])
-                              + int(run["sweep"].values[0]))
-        mid = rows[len(rows) // 2] if rows.size else 0
-        scanner = run["sweep"].attrs.get("scan_antenna", "tx")
-        radar = np.asarray(run[f"{scanner}_position"].values[mid], dtype=float)
-        t_mid = t_run[mid]
-        if "target_position" in run:
-            tp = (run["target_position"].values + t_mid * run["target_velocity"].values)
-            ax.plot((tp[:, 0] - radar[0]) / 1e3, (tp[:, 1] - radar[1]) / 1e3, "o", ms=9,
-                    mfc="none", mec="r", mew=1.2, label="targets (truth)")
-        if "ship_position" in run:
-            sp = np.asarray(run["ship_position"].values[mid], dtype=float)
-            ax.plot((sp[0] - radar[0]) / 1e3, (sp[1] - radar[1]) / 1e3, "^", ms=9,
-                    mfc="none", mec="orange", mew=1.5, label="ship (truth)")
-        if "target_position" in run or "ship_position" in run:
-            ax.legend(loc="upper right", fontsize=8)
-        ax.set_aspect("equal")
-        ax.set_xlabel("x east of the radar [km]")
-        ax.set_ylabel("y north of the radar [km]")
-        ax.set_title(f"{_scene_name(run)} PPI, {name} "
-                     f"({str(sw['sweep_mode'].values)}), t = {t_mid:.2f} s", fontsize=9)
-        out.append(atomic_savefig(fig, stem.with_name(f"{stem.name}_ppi_{name}.png"),
-                                  dpi=110))
-        plt.close(fig)
-    return out
-
-
-__all__ = ["EPOCH", "boresight_angles", "ppi_figures", "ppi_tree", "write_ppi"]
+__all__ = ["EPOCH", "boresight_angles", "ppi_tree", "scene_name", "write_ppi"]

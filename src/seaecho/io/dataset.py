@@ -64,7 +64,7 @@ def write_dataset_atomic(ds: xr.Dataset, path: str | os.PathLike,
     Complex variables are stored as HDF5 compound types (``invalid_netcdf=True``), which
     ``xarray.open_dataset(path, engine="h5netcdf")`` reads back as complex. ``guard``, if
     given, is called on ``ds`` inside the atomic write, before the file is renamed into
-    place (e.g. ``seaecho.guards.check_image``): if it raises, nothing is left at
+    place (e.g. ``seaecho.checks.guards.check_image``): if it raises, nothing is left at
     ``path``.
     """
     path = Path(path)

@@ -1,4 +1,5 @@
-"""Facets as an xarray dataset, and maps of them as PNG (``seaecho trace`` / ``compare``).
+"""Facets as an xarray dataset (``seaecho trace`` / ``compare``; their maps are drawn by
+:mod:`seaecho.plotting.facets`).
 
 Dataset layout: per-facet arrays on the dimensions ``("y_cell", "x_cell", "triangle")``
 (the cell ``(j, i)`` between nodes ``j, j+1`` and ``i, i+1``, its two triangles, facet
@@ -9,15 +10,11 @@ rotations on ``("pol_to", "pol_from")`` with labels ``h, v``. Angles in radians
 
 from __future__ import annotations
 
-import os
-from pathlib import Path
-
 import numpy as np
 
 from ..geometry.facets import Facets
-from .dataset import atomic_savefig
 
-__all__ = ["facet_maps", "facets_dataset", "node_extent", "visibility_summary"]
+__all__ = ["facets_dataset", "node_extent", "visibility_summary"]
 
 _UNITS = {
     "centroid": "m", "area": "m2", "normal": "1", "velocity": "m s-1", "r_tx": "m",
@@ -106,34 +103,3 @@ def node_extent(ds) -> tuple[float, float, float, float]:
     hx = 0.5 * (xc[1] - xc[0]) if xc.size > 1 else 0.5
     hy = 0.5 * (yc[1] - yc[0]) if yc.size > 1 else 0.5
     return (float(xc[0] - hx), float(xc[-1] + hx), float(yc[0] - hy), float(yc[-1] + hy))
-
-
-def facet_maps(ds, path: str | os.PathLike, title: str = "") -> Path:
-    """PNG maps of a facet dataset (:func:`facets_dataset`), cell means of the two
-    triangles: lit, seen, local incidence, local scattering angle [deg]."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    ext = node_extent(ds)
-    fig, axes = plt.subplots(2, 2, figsize=(10, 8.5), constrained_layout=True)
-    panels = [("lit", "lit from Tx [-]", "gray", (0, 1)),
-              ("seen", "seen from Rx [-]", "gray", (0, 1)),
-              ("theta_i", "local incidence theta_i [deg]", "viridis", None),
-              ("theta_s", "local scattering theta_s [deg]", "viridis", None)]
-    for ax, (name, label, cmap, lim) in zip(axes.ravel(), panels, strict=True):
-        a = ds[name].values.mean(axis=-1)
-        if name.startswith("theta"):
-            a = np.degrees(a)
-        vmin, vmax = lim if lim else (np.nanpercentile(a, 1), np.nanpercentile(a, 99))
-        im = ax.imshow(a, origin="lower", extent=ext, cmap=cmap, vmin=vmin, vmax=vmax,
-                       interpolation="nearest")
-        ax.set_xlabel("x (east) [m]")
-        ax.set_ylabel("y (north) [m]")
-        ax.set_title(label)
-        fig.colorbar(im, ax=ax, shrink=0.85)
-    fig.suptitle(title or f"{ds.attrs['facet_mode']} facets at t = {ds.attrs['time_s']:g} s")
-    out = atomic_savefig(fig, path, dpi=110)
-    plt.close(fig)
-    return out

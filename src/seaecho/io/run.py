@@ -26,6 +26,8 @@ import numpy as np
 from ..constants import C0
 from ..conventions import CHANNELS
 from .product import PRODUCT_VERSION, antenna_variables
+from .pulses import COMPRESSED_ATTRS, PULSE_DIMS, RAW_ATTRS, blocks_of
+from .zarr_run import is_zarr, write_block, write_zarr_run
 
 
 def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
@@ -164,9 +166,6 @@ def run_dataset(radar, attrs: dict, truth: dict | None = None, x=None, y=None,
     return xr.Dataset(data, coords=coords, attrs=out)
 
 
-#: Dimensions of ``raw`` and ``compressed`` (a multistatic run adds ``receiver``).
-PULSE_DIMS = ("pulse", "channel", "fast_time")
-
 #: Default pulses per block: memory of a block is block x channels x samples x 32 bytes.
 DEFAULT_BLOCK_PULSES = 16
 
@@ -215,11 +214,6 @@ def block_size(edges: np.ndarray, size: int | None = None,
     return best[1]
 
 
-def blocks_of(n_pulses: int, size: int) -> list[tuple[int, int]]:
-    """``[(start, stop), ...]`` of consecutive blocks of ``size`` pulses."""
-    return [(a, min(a + size, n_pulses)) for a in range(0, n_pulses, size)]
-
-
 class SerialBlocks:
     """Blocks computed one after the other in this process (the runner of
     ``Simulation.run``; ``seaecho.distributed`` has the Dask runner).
@@ -243,8 +237,6 @@ class SerialBlocks:
                ) -> Iterator[dict]:
         """Compute and write each block of ``todo`` into the Zarr run ``part``; yield
         its completion record (:func:`seaecho.io.zarr_run.write_block`)."""
-        from .zarr_run import write_block
-
         for i in todo:
             a, b = blocks[i]
             yield write_block(part, i, a, b, *self.compute(a, b))
@@ -284,8 +276,6 @@ def write_run(path: str | os.PathLike, static: Callable[[], object], *, identity
         Dimensions of ``raw`` and ``compressed``, pulse first (``shape``'s); a
         multistatic run's are (pulse, receiver, channel, sample).
     """
-    from .zarr_run import is_zarr, write_zarr_run
-
     if is_zarr(path):
         return write_zarr_run(path, static, identity=identity, shape=shape, block=block,
                               runner=runner, weighting=weighting, progress=progress,
@@ -380,9 +370,13 @@ def in_order(n_pulses: int, block: int, runner, progress: bool = True
             bar.update(b - a)
 
 
-#: Attributes of the ``raw`` and ``compressed`` variables (both file formats).
-RAW_ATTRS = {"units": "sqrt(W)", "long_name": "complex baseband raw echo"}
-COMPRESSED_ATTRS = {"units": "sqrt(W)", "long_name": "range-compressed echo"}
+def open_run(path: str | os.PathLike):
+    """Open a run's dataset, netCDF file or Zarr store, with xarray (lazily)."""
+    import xarray as xr
+
+    if is_zarr(path):
+        return xr.open_zarr(path, consolidated=False)
+    return xr.open_dataset(path, engine="h5netcdf")
 
 
 @contextlib.contextmanager
@@ -393,6 +387,6 @@ def quiet_invalid_netcdf():
         yield
 
 
-__all__ = ["COMPRESSED_ATTRS", "DEFAULT_BLOCK_PULSES", "PULSE_DIMS", "RAW_ATTRS", "SerialBlocks",
-           "block_size", "blocks_of", "in_order", "quiet_invalid_netcdf", "run_dataset",
-           "run_in_memory", "write_netcdf_run", "write_run"]
+__all__ = ["DEFAULT_BLOCK_PULSES", "SerialBlocks", "block_size", "in_order", "open_run",
+           "quiet_invalid_netcdf", "run_dataset", "run_in_memory", "write_netcdf_run",
+           "write_run"]

@@ -39,6 +39,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .pulses import COMPRESSED_ATTRS, RAW_ATTRS, blocks_of
+
 #: Format tag of ``run.json``.
 FORMAT = "seaecho-zarr-run/1"
 DATA = "data.zarr"
@@ -209,8 +211,6 @@ def create_store(part: Path, static, identity: dict, shape: tuple[int, ...],
     ``compressed`` arrays (dimensions ``dims``, pulse first), then ``run.json``."""
     import zarr
 
-    from .run import COMPRESSED_ATTRS, RAW_ATTRS
-
     (part / RECORDS).mkdir(parents=True)
     ds = static.copy()
     for name, var in ds.variables.items():  # Zarr 3 has no stable fixed-width string
@@ -239,15 +239,6 @@ def finalize(part: Path, path: Path) -> None:
         shutil.rmtree(old) if old.is_dir() else old.unlink()
 
 
-def open_run(path: str | os.PathLike):
-    """Open a run's dataset, netCDF file or Zarr store, with xarray (lazily)."""
-    import xarray as xr
-
-    if is_zarr(path):
-        return xr.open_zarr(path, consolidated=False)
-    return xr.open_dataset(path, engine="h5netcdf")
-
-
 def write_zarr_run(path: str | os.PathLike, static: Callable[[], object], *,
                    identity: dict, shape: tuple[int, ...], block: int, runner,
                    weighting: str = "none", progress: bool = True,
@@ -266,8 +257,6 @@ def write_zarr_run(path: str | os.PathLike, static: Callable[[], object], *,
         corrupt or of another run.
     """
     from tqdm import tqdm
-
-    from .run import blocks_of
 
     path = Path(path)
     directory = path.parent if str(path.parent) else Path(".")
@@ -318,4 +307,4 @@ def write_zarr_run(path: str | os.PathLike, static: Callable[[], object], *,
 
 
 __all__ = ["StoreError", "check_identity", "completed_blocks", "create_store", "finalize",
-           "is_zarr", "manifest", "open_run", "part_path", "write_block", "write_zarr_run"]
+           "is_zarr", "manifest", "part_path", "write_block", "write_zarr_run"]

@@ -60,7 +60,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.special import erf
 
 from ..constants import G
-from .spectra import K_FLOOR, register_spectrum, register_spreading
+from .registry import K_FLOOR, register_spectrum, register_spreading
 from .wind import u10_from_u19_5
 
 #: Level of the RAW97 spectrum a_0 [-] (eq 39).

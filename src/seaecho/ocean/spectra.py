@@ -52,9 +52,7 @@ References
 from __future__ import annotations
 
 import warnings
-from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -62,7 +60,17 @@ from scipy.special import gammaln
 
 from ..constants import G
 from ..warnings import ValidityWarning
+
+# The spectra defined in their own modules register themselves on import.
+from . import romeiser as _romeiser  # noqa: F401  (Romeiser et al. 1997)
 from .dispersion import CAPILLARY_WAVENUMBER, angular_frequency, phase_speed
+from .registry import (
+    K_FLOOR,
+    OMNI_SPECTRA,
+    SPREADINGS,
+    register_spectrum,
+    register_spreading,
+)
 from .wind import OMEGA_C_DEVELOPED, friction_velocity, u10_from_u19_5
 
 #: Pierson-Moskowitz constants (paper eq 5; Pierson & Moskowitz 1964).
@@ -72,58 +80,6 @@ PM_B0 = 0.74
 #: dispersion relation's sqrt(g rho / tau) = 369.8 rad/m) and that speed [m/s] (their c_m).
 K_M = CAPILLARY_WAVENUMBER
 C_M = 0.23
-
-
-class OmniSpectrum(Protocol):
-    """Contract of an omnidirectional spectrum: S_1d(k) [m^3] for k [rad/m]."""
-
-    def __call__(
-        self, k: NDArray[np.float64], u19_5: float, fetch: float | None
-    ) -> NDArray[np.float64]: ...
-
-
-class Spreading(Protocol):
-    """Contract of a spreading function: D(k, psi) [1/rad], unit integral over psi."""
-
-    def __call__(
-        self,
-        k: NDArray[np.float64],
-        psi: NDArray[np.float64],
-        u19_5: float,
-        fetch: float | None,
-        s: float,
-    ) -> NDArray[np.float64]: ...
-
-
-#: Registry of omnidirectional spectra, by name.
-OMNI_SPECTRA: dict[str, OmniSpectrum] = {}
-#: Registry of spreading functions, by name.
-SPREADINGS: dict[str, Spreading] = {}
-
-
-def register_spectrum(name: str) -> Callable[[OmniSpectrum], OmniSpectrum]:
-    """Decorator: register an omnidirectional spectrum under ``name``."""
-
-    def wrap(func: OmniSpectrum) -> OmniSpectrum:
-        OMNI_SPECTRA[name] = func
-        return func
-
-    return wrap
-
-
-def register_spreading(name: str) -> Callable[[Spreading], Spreading]:
-    """Decorator: register a spreading function under ``name``."""
-
-    def wrap(func: Spreading) -> Spreading:
-        SPREADINGS[name] = func
-        return func
-
-    return wrap
-
-
-#: Below this wavenumber [rad/m] (wavelength 6,000 km) every spectrum here is 0 in double
-#: precision (exp(-b0 g^2 / (K^2 U^4)) underflows); treating it as 0 avoids 0 x inf.
-K_FLOOR = 1e-6
 
 
 def _positive(k: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.bool_], NDArray[np.float64]]:
@@ -543,6 +499,3 @@ __all__ = [
     "register_spreading",
     "u10_from_u19_5",
 ]
-
-# The spectra defined in their own modules register themselves on import.
-from . import romeiser as _romeiser  # noqa: E402, F401  (Romeiser et al. 1997)

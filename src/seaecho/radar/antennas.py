@@ -220,7 +220,7 @@ def aperture_field(d_local: ArrayLike, width: float, height: float, wavelength: 
 def aperture_quadrature(width: float, height: float, wavelength: float) -> tuple[int, int]:
     """Nodes ``(n_u, n_phi)`` of :func:`aperture_radiated_power`'s quadrature of eq A3:
     the band of each integrand plus the margin ``4 z^(1/3) + 32`` (its docstring).
-    (``seaecho.resources`` sizes the normalisation's time from them.)
+    (``seaecho.checks.resources`` sizes the normalisation's time from them.)
 
     Parameters
     ----------
@@ -559,7 +559,7 @@ def project_ports(ports: NDArray[np.complex128], h: NDArray, v: NDArray
     ports : ndarray (..., 2, 3) complex
         Port vectors in the world (from :meth:`Antenna.response`).
     h, v : ndarray (..., 3)
-        World FSA basis of the wave (``seaecho.scattering.frames.polarisation_basis``).
+        World FSA basis of the wave (``seaecho.geometry.frames.polarisation_basis``).
     """
     return np.stack([np.einsum("...pi,...i->...p", ports, h),
                      np.einsum("...pi,...i->...p", ports, v)], axis=-1)

@@ -2,7 +2,8 @@
 
 Plain arrays in, plain arrays out; nothing here knows about meshes or radars.
 
-- :mod:`.frames` polarisation bases (FSA), local bistatic angles, tilt rotation
+- the polarisation bases (FSA), local bistatic angles and tilt rotation it uses are
+  geometry: :mod:`seaecho.geometry.frames`
 - :mod:`.fresnel` Fresnel coefficients of a lossy interface
 - :mod:`.kirchhoff`, :mod:`.slopes` Kirchhoff / geometric optics (eq 7), slope densities
 - :mod:`.spm` first-order small perturbation model (eqs 8-9)
@@ -28,7 +29,6 @@ from .facet import (
     hhvv_coherence,
     speckle_amplitudes,
 )
-from .frames import local_angles, polarisation_basis, tilt_rotation, to_global
 from .models import sea_sigma
 from .spectrum_table import BraggSpectrumTable
 
@@ -40,10 +40,6 @@ __all__ = [
     "facet_sigma",
     "facet_terms",
     "hhvv_coherence",
-    "local_angles",
-    "polarisation_basis",
     "sea_sigma",
     "speckle_amplitudes",
-    "tilt_rotation",
-    "to_global",
 ]

@@ -137,10 +137,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..backend import NUMPY, Boundary, Mat2
 from ..constants import NU_SEA_WATER, RHO_AIR, RHO_SEA_WATER, VON_KARMAN
-from ..geometry import frames as frames_ns
+from ..geometry import frames
 from ..ocean.dispersion import CAPILLARY_WAVENUMBER, angular_frequency, phase_speed
 from ..ocean.wind import charnock_roughness_length, friction_velocity
-from . import frames
 
 #: Mean square slope of the enhanced roughness of breaking zones s_wb^2 [-] (KHCC03).
 S_WB2 = 0.19
@@ -405,10 +404,10 @@ def breaking_matrix(xp, n_i: Any, n_s: Any, N: Any, basis_i: tuple[Any, Any],
     spec = xp.select(valid, xp.exp(xp.minimum(log_spec, xp.exp_cap)), 0.0)
     amp = xp.select(lit, xp.sqrt(spec + EPS_WB / S_WB2), 0.0)
     # Eq BR6: T = A_s^T diag(-1, 1) A_i with the bases of the bisector facet.
-    h, v_i = frames_ns.fsa_basis(xp, n_i, n_sp)
-    a_i = frames_ns.basis_change(xp, basis_i, (h, v_i))
-    a_s = frames_ns.basis_change(xp, basis_s, (h, xp.cross(h, n_s)))
-    t = frames_ns.global_matrix(Mat2.diag(-1.0, 1.0), a_i, a_s)
+    h, v_i = frames.fsa_basis(xp, n_i, n_sp)
+    a_i = frames.basis_change(xp, basis_i, (h, v_i))
+    a_s = frames.basis_change(xp, basis_s, (h, xp.cross(h, n_s)))
+    t = frames.global_matrix(Mat2.diag(-1.0, 1.0), a_i, a_s)
     return t * amp
 
 
@@ -457,8 +456,8 @@ def breaking_amplitude(
     vi, vs, vn = io.vec3(n_i), io.vec3(n_s), io.vec3(nn)
     z = NUMPY.vec(0.0, 0.0, 1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
-        m = breaking_matrix(NUMPY, vi, vs, vn, frames_ns.fsa_basis(NUMPY, vi, z),
-                            frames_ns.fsa_basis(NUMPY, vs, z), np.cos(w), np.sin(w), eps)
+        m = breaking_matrix(NUMPY, vi, vs, vn, frames.fsa_basis(NUMPY, vi, z),
+                            frames.fsa_basis(NUMPY, vs, z), np.cos(w), np.sin(w), eps)
     out = np.empty(shape[:-1] + (2, 2), dtype=complex)
     for (r, c), e in zip(((0, 0), (0, 1), (1, 0), (1, 1)), m.flat(), strict=True):
         out[..., r, c] = np.broadcast_to(e, shape[:-1])

@@ -33,6 +33,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..constants import C0
+from ..geometry import frames
 from ..ocean.twoscale import (
     ROUGHNESS_K_MAX_RATIO,
     TWO_SCALE_CUT_RATIO,
@@ -40,7 +41,6 @@ from ..ocean.twoscale import (
     slope_variances,
 )
 from ..ocean.wind import u12_5_from_u19_5
-from . import frames
 from .blend import blend
 from .kirchhoff import KIRCHHOFF_DOMAIN_DEG, kirchhoff_sigma
 from .slopes import cox_munk_parameters

@@ -39,8 +39,8 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..geometry import frames
 from ..ocean.twoscale import SPM_KH_MAX
-from . import frames
 from .spm import HeightSpectrum, spm_matrix
 from .validity import SPMValidityWarning
 

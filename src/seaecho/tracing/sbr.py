@@ -148,14 +148,14 @@ _REVERSE_PATH = np.array([0, 2, 1, 3], dtype=np.int64)
 #: thread: an intersection of empty arrays (a batch with no ray left), which
 #: :func:`_intersect` no longer makes; without that guard the abort is reproduced on a
 #: worker thread ("jit_var(r0): unknown variable!", docs/checks.md). One thread stays the
-#: default because the memory estimate (``seaecho.resources``) counts one batch of rays
+#: default because the memory estimate (``seaecho.checks.resources``) counts one batch of rays
 #: in flight, and N threads hold N + 1.
 THREADS = max(1, int(os.environ.get("SEAECHO_SBR_THREADS", 1)))
 
 
 #: An antenna must be farther than this many bounding radii from a hull's centre: the
 #: rays are launched from a sphere around the hull (checked again by the preflight,
-#: ``seaecho.preflight.hull_problems``).
+#: ``seaecho.checks.preflight.hull_problems``).
 BOUNDING_MARGIN = 1.05
 
 

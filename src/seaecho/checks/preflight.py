@@ -75,9 +75,9 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from .config import SceneError
-from .config.base import short_repr
-from .constants import C0, K_B, T0
+from ..config import SceneError
+from ..config.base import short_repr
+from ..constants import C0, K_B, T0
 from .resources import PERTURBATION_SIGMAS, Segment, nominal_segments, perturbation_bound
 
 #: Crest bound of a Gaussian sea in significant wave heights (2 H_s = 8 sigma).
@@ -255,8 +255,8 @@ def near_field_distance(antenna_cfg, wavelength: float) -> float:
 def crest_bound(scene) -> float:
     """2 H_s of the tile's sea [m]: H_s = 4 sqrt(m0), m0 the height variance of every
     wavenumber the grid holds (0 < K < sqrt(2) pi / min(dx, dy))."""
-    from .build import sea_spectrum
-    from .ocean.twoscale import height_variance
+    from ..build import sea_spectrum
+    from ..ocean.twoscale import height_variance
 
     sea = scene.sea
     spectrum = sea_spectrum(scene)
@@ -268,7 +268,7 @@ def crest_bound(scene) -> float:
 
 def _platforms(scene) -> list[tuple[str, object, object]]:
     """[(section name, config, Platform)] of the transmitter and (if any) the receiver."""
-    from .build import _platforms as build_platforms
+    from ..build import _platforms as build_platforms
 
     tx, rx = build_platforms(scene)
     out = [("transmitter", scene.transmitter, tx)]
@@ -347,7 +347,7 @@ def two_scale_problems(scene) -> list[str]:
     (lx, ly), (ny, nx) = scene.sea.size_m, scene.sea.shape
     dx = max(lx / nx, ly / ny)
     if dx > lam / 4.0:
-        from .build import build_sea_model
+        from ..build import build_sea_model
 
         try:  # the builder's own check: sub-facet slopes in the tilting band
             model = build_sea_model(scene)
@@ -376,7 +376,7 @@ def object_problems(scene, base_dir) -> list[str]:
     as one has ``scatterer = true`` (the hulls' echoes, whatever the facet mode:
     :func:`seaecho.build.build_hulls`).
     """
-    from .backend import check_variant
+    from ..backend import check_variant
 
     out = []
     try:
@@ -398,7 +398,7 @@ def object_problems(scene, base_dir) -> list[str]:
             out.append(f"[[objects]] #{i} ({obj.name}): file = {short_repr(obj.file)}: no such "
                        f"file in {Path(base_dir).resolve()}")
             continue
-        from .tracing.scene import load_object
+        from ..tracing.scene import load_object
 
         try:
             shapes = load_object(obj, base_dir=str(base_dir), ship=scene.ship)
@@ -412,7 +412,7 @@ def object_problems(scene, base_dir) -> list[str]:
 def _material_problems(i: int, obj, shapes, frequency: float) -> list[str]:
     """An ITU-R P.2040 material the table does not define at the carrier (the tracer's
     radio material and the hull echo's Fresnel coefficients need it)."""
-    from .tracing.sbr import material_permittivity
+    from ..tracing.sbr import material_permittivity
 
     for itu in sorted({sh.itu_type for sh in shapes if sh.itu_type is not None}):
         try:
@@ -434,10 +434,10 @@ def hull_problems(scene, base_dir=".") -> list[str]:
         return []
     import warnings
 
-    from .build import build_hulls, build_radar
-    from .radar.system import RadarSystem
-    from .tracing.hull_echo import HullEchoes
-    from .tracing.sbr import BOUNDING_MARGIN, bounding_sphere
+    from ..build import build_hulls, build_radar
+    from ..radar.system import RadarSystem
+    from ..tracing.hull_echo import HullEchoes
+    from ..tracing.sbr import BOUNDING_MARGIN, bounding_sphere
 
     with warnings.catch_warnings():  # (the window's warning is the run's to give)
         warnings.simplefilter("ignore")
@@ -514,7 +514,7 @@ def image_problems(scene) -> list[str]:
     raw file and no image): no extent given and nothing that sets a default one (no sea
     clutter, no targets); fewer than 2 x 2 pixels or more than the focusing takes; more
     looks than pixels; a receive window of fewer than 2 samples."""
-    from .imaging.focus import MAX_PIXELS
+    from ..imaging.focus import MAX_PIXELS
     from .resources import image_shape
 
     cfg = scene.image
@@ -570,9 +570,9 @@ def horizon_problems(scene) -> list[str]:
     horizon (eq E2 of ``seaecho.geometry.earth``) at the first and the last pulse; a
     tile partly beyond it is refused too (the sea model has no partial occlusion by the
     Earth's bulge)."""
-    from .build import build_earth
-    from .geometry.earth import horizon_range
-    from .geometry.frames import tile_outline
+    from ..build import build_earth
+    from ..geometry.earth import horizon_range
+    from ..geometry.frames import tile_outline
 
     earth = build_earth(scene)
     if earth is None or not scene.radar.sea_clutter:
@@ -604,7 +604,7 @@ def output_problems(scene, output, field: str = "[run].output") -> list[str]:
     does not exist (relative to the working directory, as the run resolves it), an
     existing folder where a netCDF file goes, or a Zarr store for a scene with
     ``[image]``. ``field`` names where the path came from."""
-    from .io.zarr_run import is_zarr
+    from ..io.zarr_run import is_zarr
 
     path = Path(output)
     out = []
@@ -654,7 +654,7 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
               output_field: str = "[run].output") -> str:
     """Refuse a scene `seaecho run` cannot simulate; return its resource estimate.
 
-    The cheap checks and the memory estimate (``seaecho.resources``) come first, so that
+    The cheap checks and the memory estimate (``seaecho.checks.resources``) come first, so that
     a scene too large for memory is refused before its tracks are drawn; then the
     geometry. Every problem found is listed in one :class:`~seaecho.config.SceneError`.
 
@@ -708,8 +708,8 @@ def _check_multistatic(scene, source: str, base_dir, max_memory_gb, figures, wor
                        block) -> str:
     """:func:`check_run` of a scene with ``[[receivers]]``: the sea's and the objects'
     problems once, each receiver's geometry and image problems named by its receiver,
-    the memory of every receiver together (``seaecho.resources.multistatic_estimate``)."""
-    from .build import receiver_scene
+    the memory of every receiver together (``seaecho.checks.resources.multistatic_estimate``)."""
+    from ..build import receiver_scene
     from .resources import check_memory
 
     subs = [receiver_scene(scene, i) for i in range(len(scene.receivers))]

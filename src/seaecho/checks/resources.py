@@ -62,9 +62,9 @@ import numpy as np
 from numpy.typing import NDArray
 from scipy.fft import next_fast_len
 
-from .config import SceneError
-from .constants import C0
-from .geometry.frames import tile_outline
+from ..config import SceneError
+from ..constants import C0
+from ..geometry.frames import tile_outline
 
 MiB = 1024.0**2
 GiB = 1024.0**3
@@ -96,7 +96,7 @@ M_PIXEL = 120.0  #: per image pixel (calibration maps, coverage, products' tempo
 M_PIXEL_CHANNEL = 160.0  #: per image pixel and channel (accumulator, image, sigma0...)
 M_UPSAMPLED = 40.0  #: per upsampled sample of the focusing's block of pulses
 M_IMAGE_FIGURE = 60.0  #: per image pixel and figure panel drawn
-IMAGE_PANELS = 12  #: figure panels of an image (``seaecho.imaging.figures``)
+IMAGE_PANELS = 12  #: figure panels of an image (``seaecho.plotting.image``)
 M_TRUTH_CELL = 100.0  #: per sea cell of a raw dataset read as the image's truth (sigma
 #: map, elevations, wake mask, the Kelvin amplitude's filter)
 #: Margin on the sum, so that the estimate stays above the measured peak.
@@ -134,21 +134,21 @@ _OWNED = ("CHUNK", "SIGNATURE_CACHE", "SBR_BATCH", "IMAGE_BLOCK")
 def _owned(name: str) -> int:
     """The size ``name`` of :data:`_OWNED`, read from its module."""
     if name == "CHUNK":
-        from .io.run import DEFAULT_BLOCK_PULSES
+        from ..io.run import DEFAULT_BLOCK_PULSES
 
         return 2 * DEFAULT_BLOCK_PULSES
     if name == "SIGNATURE_CACHE":
-        from .tracing.hull_echo import SIGNATURE_CACHE
+        from ..tracing.hull_echo import SIGNATURE_CACHE
 
         return SIGNATURE_CACHE
     if name == "SBR_BATCH":
-        from .tracing.sbr import SBROptions
+        from ..tracing.sbr import SBROptions
 
         return SBROptions.batch
     if name == "IMAGE_BLOCK":
         import inspect
 
-        from .imaging.focus import focus
+        from ..imaging.focus import focus
 
         return inspect.signature(focus).parameters["block_pulses"].default
     raise AttributeError(name)
@@ -259,7 +259,7 @@ def window_size(scene) -> tuple[int, int, int]:
     (parity-tested), on the nominal tracks; a perturbed track widens the window by its
     8-sigma bound on each side, so the estimate stays an upper bound.
     """
-    from .radar.echo import GUARD
+    from ..radar.echo import GUARD
 
     r = scene.radar
     w = r.waveform
@@ -273,7 +273,7 @@ def window_size(scene) -> tuple[int, int, int]:
         points = tile_outline(lx, ly)
         rx_cfg = scene.receiver or scene.transmitter
         slack = 0.5 * (perturbation_bound(scene.transmitter) + perturbation_bound(rx_cfg))
-        from .build import build_earth
+        from ..build import build_earth
 
         earth = build_earth(scene)  # a spherical Earth: platforms and targets on it
         on_earth = (lambda q: q) if earth is None else earth.position
@@ -335,7 +335,7 @@ def antenna_quadratures(scene) -> list[tuple[int, int]]:
     """Quadrature nodes ``(n_u, n_phi)`` of each distinct rectangular aperture's pattern
     normalisation (``seaecho.radar.antennas.aperture_quadrature``; the normalisation is
     cached, so an aperture met twice, such as a monostatic radar's, counts once)."""
-    from .radar.antennas import aperture_quadrature
+    from ..radar.antennas import aperture_quadrature
 
     lam = C0 / scene.radar.carrier_frequency_hz
     sizes = []
@@ -394,11 +394,11 @@ class HullSize:
 
 def hull_sizes(scene, base_dir=".") -> list[HullSize]:
     """:class:`HullSize` of each scatterer object whose files load (the others are
-    reported by ``seaecho.preflight.object_problems``)."""
+    reported by ``seaecho.checks.preflight.object_problems``)."""
     if not any(o.scatterer for o in scene.objects):
         return []
-    from .targets.centres import refresh_schedule
-    from .tracing.scene import load_object
+    from ..targets.centres import refresh_schedule
+    from ..tracing.scene import load_object
 
     r = scene.radar
     lam = C0 / r.carrier_frequency_hz
@@ -456,7 +456,7 @@ def image_shape(scene) -> tuple[int, int]:
         x0, x1 = p[:, 0].min() - m, p[:, 0].max() + m
         y0, y1 = p[:, 1].min() - m, p[:, 1].max() + m
     else:
-        return 0, 0  # no extent to focus on: seaecho.preflight.image_problems
+        return 0, 0  # no extent to focus on: seaecho.checks.preflight.image_problems
     return pixel_count(y1 - y0, pixel), pixel_count(x1 - x0, pixel)
 
 
@@ -510,7 +510,7 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     if getattr(scene, "receivers", ()):
         return multistatic_estimate(scene, figures, workers=workers, block=block,
                                     base_dir=base_dir)
-    from .build import sea_motion
+    from ..build import sea_motion
 
     r = scene.radar
     sea = r.sea_clutter
@@ -674,7 +674,7 @@ def multistatic_estimate(scene, figures: bool = True, **kw) -> Estimate:
     the sea grid) taken once and the others summed; the run time is the sum of the
     receivers' (an upper bound: the sea synthesis and the transmitter's trace, counted
     once per receiver there, are shared)."""
-    from .build import receiver_scene
+    from ..build import receiver_scene
 
     ests = [estimate(receiver_scene(scene, i), figures, **kw)
             for i in range(len(scene.receivers))]
@@ -826,7 +826,7 @@ def focus_shape(raw, cfg) -> tuple[int, int]:
     """(ny, nx) pixels ``seaecho image`` makes of the raw dataset ``raw`` with ``cfg``:
     its extent (default the raw's sea tile or targets' box) over its pixel (default a
     quarter of the range resolution), as ``ImageGrid.from_extent`` counts them."""
-    from .imaging.focus import default_extent
+    from ..imaging.focus import default_extent
 
     a = raw.attrs
     bandwidth = float(a.get("waveform_bandwidth_hz", a.get("sampling_rate_hz", 1.0)))
@@ -875,7 +875,7 @@ def check_image_memory(raw, cfg, source: str, max_memory_gb: float | None = None
     """:func:`image_estimate` and its one-line description; :class:`SceneError` naming
     the fields if the focusing cannot fit in the memory it may use (:func:`memory_limit`),
     as :func:`check_memory` does for a run."""
-    from .imaging.focus import MAX_PIXELS
+    from ..imaging.focus import MAX_PIXELS
 
     try:
         est = image_estimate(raw, cfg, figures)
@@ -887,7 +887,7 @@ def check_image_memory(raw, cfg, source: str, max_memory_gb: float | None = None
             f"{est.pixels} pixels, more than {MAX_PIXELS}; use a larger pixel or a "
             "smaller extent (--pixel-m, --extent)")
     ny, nx = focus_shape(raw, cfg)
-    if ny < 2 or nx < 2:  # as seaecho.preflight.image_problems: the measures need 2 x 2
+    if ny < 2 or nx < 2:  # as seaecho.checks.preflight.image_problems: the measures need 2 x 2
         raise SceneError(
             f"{source}: [image].pixel_m = {cfg.pixel_m!r}, extent_m = {cfg.extent_m!r}: "
             f"an image of {ny} x {nx} pixels; it needs at least 2 x 2 (a smaller pixel or "

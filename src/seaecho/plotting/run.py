@@ -25,7 +25,7 @@ import numpy as np  # noqa: E402
 import xarray as xr  # noqa: E402
 
 from ..constants import C0  # noqa: E402
-from .dataset import atomic_savefig  # noqa: E402
+from ..io.dataset import atomic_savefig  # noqa: E402
 
 
 def elevation_map(ds: xr.Dataset, path: str | os.PathLike, time_index: int = 0) -> Path:

@@ -9,7 +9,7 @@ the scattering centres of a hull, ``[[objects]]`` with ``scatterer = true``, by 
 the CLI prints it and exits with status 2, and the run's temporary file is removed, so
 no file with NaN is left. :func:`check_dataset` does the same for everything else the run
 writes (tracks, surface, sigma maps), once, before writing. The scene checks of
-``seaecho.preflight`` refuse the degenerate geometries known to produce them; this guard
+``seaecho.checks.preflight`` refuse the degenerate geometries known to produce them; this guard
 catches any that remain.
 
 Cost: one sum per array on the usual (finite) path, O(K) for K scatterers, small against
@@ -22,8 +22,8 @@ import json
 
 import numpy as np
 
-from .config import SceneError
-from .config.base import short_repr
+from ..config import SceneError
+from ..config.base import short_repr
 
 
 class NonFiniteEchoError(SceneError):
@@ -152,7 +152,7 @@ def _no_data(ds) -> np.ndarray:
 
 def _no_data_look(ds) -> np.ndarray:
     """(y_look, x_look): a look block holding a pixel without data."""
-    from .imaging.speckle import multilook
+    from ..imaging.speckle import multilook
 
     looks = tuple(int(v) for v in json.loads(ds.attrs["image_json"])["looks"])
     return multilook(_no_data(ds)[None].astype(float), looks)[0] > 0
