@@ -1,8 +1,17 @@
 """Sea clutter of a scanning X-band radar at low grazing against the published models.
 
-Run: ``python examples/low_grazing_clutter.py [--part nrcs|ppi|all] [--quick] [OUTDIR]``
-(default ``all`` into ``docs/figures``). Rerunnable on any version of the code: every
-number of docs/scanning.md's "Validation at low grazing" comes from here.
+Run: ``python examples/low_grazing_clutter.py [--part nrcs|ppi|all] [--quick]
+[--multipath] [OUTDIR]`` (default ``all`` into ``docs/figures``). Rerunnable on any
+version of the code: every number of docs/scanning.md's "Validation at low grazing" and
+"Propagation over the sea" comes from here.
+
+``--multipath`` turns on the sea's two-ray propagation factor (``[propagation]
+multipath = "two-ray"``, ``seaecho.radar.propagation``): part 1 adds the apparent NRCS
+that a radar 35 m up (at h / tan psi) sees, each facet's sigma_mn weighted by
+|F_m F_n|^2 at its own height (``low_grazing_sigma0_multipath.csv``); part 2 runs the
+sea with the factor and calibrates by the target in free space, so that the PPI's
+sigma0 is the apparent one, as the published models' (``low_grazing_ppi_multipath.csv``,
+``low_grazing_falloff_multipath.csv``).
 
 1. **Per-facet NRCS** (``--part nrcs``): the simulation's sea NRCS at 9.4 GHz, grazing
    0.3-3 deg, sea states 2-5 (U10 = 4.5, 7, 10, 12.5 m/s, ``tests/reference_models.py``),
@@ -84,8 +93,8 @@ def references(sea_state: int, grazing_deg: float, pol: str, f_ghz: float = F_HZ
 
 # --- 1. the per-facet NRCS ---------------------------------------------------------------
 
-def facet_table(sea_states=SEA_STATES, grazing_deg=GRAZING_DEG, seed: int = 1
-                ) -> list[dict]:
+def facet_table(sea_states=SEA_STATES, grazing_deg=GRAZING_DEG, seed: int = 1,
+                multipath: bool = False) -> list[dict]:
     from sigma0_facets_vs_grazing import simulated
 
     rows = []
@@ -94,22 +103,28 @@ def facet_table(sea_states=SEA_STATES, grazing_deg=GRAZING_DEG, seed: int = 1
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             sim = simulated(SEA_STATE_WIND[ss], seed=seed, grazing_deg=grazing_deg,
-                            f_hz=F_HZ)
+                            f_hz=F_HZ,
+                            radar_height_m=RADAR_HEIGHT_M if multipath else None)
+        sim, apparent = sim if multipath else (sim, None)
         for i, g in enumerate(grazing_deg):
             for pol, j in (("H", 0), ("V", 3)):
                 ref = references(ss, g, pol)
+                mp = ({"sim_multipath_db": round(float(db(apparent[i, j])), 2)}
+                      if multipath else {})
                 rows.append({"sea_state": ss, "u10_m_s": SEA_STATE_WIND[ss],
                              "grazing_deg": g, "pol": pol + pol,
-                             "sim_db": round(float(db(sim[i, j])), 2),
+                             "sim_db": round(float(db(sim[i, j])), 2), **mp,
                              **{k: round(v, 2) for k, v in ref.items()}})
         print(f"sea state {ss}: {time.perf_counter() - t:.0f} s", flush=True)
     return rows
 
 
 def print_facet_table(rows: list[dict]) -> None:
-    print("| sea state (U10) | grazing [deg] | simulation HH / VV | NRL HH / VV | "
-          "GIT HH / VV | Nathanson HH / VV |")
-    print("|---|---|---|---|---|---|")
+    mp = "sim_multipath_db" in rows[0]
+    print("| sea state (U10) | grazing [deg] | simulation HH / VV | "
+          + ("with multipath HH / VV | " if mp else "")
+          + "NRL HH / VV | GIT HH / VV | Nathanson HH / VV |")
+    print("|---|---|---|---|---|---|" + ("---|" if mp else ""))
     key = {(r["sea_state"], r["grazing_deg"], r["pol"]): r for r in rows}
     for ss in sorted({r["sea_state"] for r in rows}):
         for g in sorted({r["grazing_deg"] for r in rows}):
@@ -119,7 +134,8 @@ def print_facet_table(rows: list[dict]) -> None:
                 if math.isnan(h[k]):
                     return "-"
                 return f"{h[k]:.1f} / {v[k]:.1f}"
-            print(f"| {ss} ({SEA_STATE_WIND[ss]}) | {g:g} | {pair('sim_db')} | "
+            extra = f"{pair('sim_multipath_db')} | " if mp else ""
+            print(f"| {ss} ({SEA_STATE_WIND[ss]}) | {g:g} | {pair('sim_db')} | {extra}"
                   f"{pair('nrl_db')} | {pair('git_db')} | {pair('nathanson_db')} |")
 
 
@@ -162,8 +178,10 @@ def plot_facet_table(rows: list[dict], path: Path) -> None:
 # --- 2. from the PPI of a scanning run ---------------------------------------------------
 
 def ppi_scene(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
-              n: int = 128, target: bool = False, seed: int = 3):
-    """The coastal scene's radar, a sector scan over a tile ``range_m`` north of it."""
+              n: int = 128, target: bool = False, seed: int = 3, multipath: bool = False):
+    """The coastal scene's radar, a sector scan over a tile ``range_m`` north of it
+    (the sea with the two-ray factor when ``multipath``; the calibration target always
+    in free space)."""
     import seaecho
     from seaecho.ocean.wind import u19_5_from_u10
 
@@ -178,6 +196,7 @@ def ppi_scene(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 12
           "radar.window_start_m": range_m - 0.75 * tile_m - 60.0,
           "radar.window_end_m": range_m + 0.75 * tile_m + 60.0,
           "propagation.earth": "flat", "run.seed": seed,
+          "propagation.multipath": "two-ray" if multipath and not target else "none",
           "sea.size_x_m": tile_m, "sea.nx": n,
           "sea.wind_speed_m_s": float(u19_5_from_u10(SEA_STATE_WIND[sea_state])),
           "targets": ([{"name": "calibration", "position_m": [0.0, 0.0, 0.0],
@@ -194,7 +213,7 @@ def _energy(ds) -> np.ndarray:
 
 
 def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
-               n: int = 128, seeds=PPI_SEEDS) -> dict:
+               n: int = 128, seeds=PPI_SEEDS, multipath: bool = False) -> dict:
     """Eq (V1): the PPI-calibrated NRCS, HH and VV [linear], and the run's own map,
     both averaged over the sea realisations ``seeds``."""
     import seaecho
@@ -204,8 +223,8 @@ def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 1
         warnings.simplefilter("ignore")
         for seed in seeds:
             t = time.perf_counter()
-            sea = seaecho.simulate(ppi_scene(range_m, sea_state, tile_m, n, seed=seed),
-                                   progress=False)
+            sea = seaecho.simulate(ppi_scene(range_m, sea_state, tile_m, n, seed=seed,
+                                             multipath=multipath), progress=False)
             wall += time.perf_counter() - t
             e_sea = e_sea + _energy(sea) / len(seeds)
             # (polarisation, y_cell, x_cell): sigma_mn x visibility
@@ -230,10 +249,10 @@ def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 1
 
 
 def ppi_table(ranges_m=PPI_RANGES_M, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
-              n: int = 128, seeds=PPI_SEEDS) -> list[dict]:
+              n: int = 128, seeds=PPI_SEEDS, multipath: bool = False) -> list[dict]:
     rows = []
     for r in ranges_m:
-        res = ppi_sigma0(r, sea_state, tile_m, n, seeds)
+        res = ppi_sigma0(r, sea_state, tile_m, n, seeds, multipath)
         row = {"range_m": r, "grazing_deg": round(res["grazing_deg"], 3),
                "sea_state": sea_state, "pulses": res["pulses"],
                "wall_s": round(res["wall_s"], 1)}
@@ -275,22 +294,30 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--part", choices=("nrcs", "ppi", "all"), default="all")
     ap.add_argument("--quick", action="store_true",
                     help="a 64 m tile and two sea states (a smoke run)")
+    ap.add_argument("--multipath", action="store_true",
+                    help="the sea's two-ray propagation factor (module docstring)")
+    ap.add_argument("--seeds", type=int, default=len(PPI_SEEDS),
+                    help=f"sea realisations per range of part 2 (default {len(PPI_SEEDS)})")
     a = ap.parse_args(argv)
+    tag = "_multipath" if a.multipath else ""
     out = Path(a.outdir)
     out.mkdir(parents=True, exist_ok=True)
     if a.part in ("nrcs", "all"):
         rows = facet_table(sea_states=(3,) if a.quick else SEA_STATES,
-                           grazing_deg=(0.5, 3.0) if a.quick else GRAZING_DEG)
-        write_csv(rows, out / "low_grazing_sigma0.csv")
-        plot_facet_table(rows, out / "low_grazing_sigma0.png")
+                           grazing_deg=(0.5, 3.0) if a.quick else GRAZING_DEG,
+                           multipath=a.multipath)
+        write_csv(rows, out / f"low_grazing_sigma0{tag}.csv")
+        if not a.multipath:
+            plot_facet_table(rows, out / "low_grazing_sigma0.png")
         print_facet_table(rows)
     if a.part in ("ppi", "all"):
         tile, n = (64.0, 64) if a.quick else (128.0, 128)
         ranges = (1000.0, 2000.0) if a.quick else PPI_RANGES_M
-        rows = ppi_table(ranges, tile_m=tile, n=n, seeds=(3,) if a.quick else PPI_SEEDS)
-        write_csv(rows, out / "low_grazing_ppi.csv")
+        rows = ppi_table(ranges, tile_m=tile, n=n, seeds=(3,) if a.quick else PPI_SEEDS[:a.seeds],
+                         multipath=a.multipath)
+        write_csv(rows, out / f"low_grazing_ppi{tag}.csv")
         ex = falloff_exponents(rows)
-        write_csv(ex, out / "low_grazing_falloff.csv")
+        write_csv(ex, out / f"low_grazing_falloff{tag}.csv")
         for e in ex:
             print(e)
 

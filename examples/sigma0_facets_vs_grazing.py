@@ -53,9 +53,16 @@ SIZE, N = 256.0, 256
 
 
 def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
-              grazing_deg=GRAZING, f_hz: float = F) -> np.ndarray:
+              grazing_deg=GRAZING, f_hz: float = F, radar_height_m: float | None = None
+              ) -> np.ndarray:
     """Facet-sum sigma0 (grazing, 4) averaged over the four looks [m^2/m^2] at the
-    carrier ``f_hz`` [Hz]."""
+    carrier ``f_hz`` [Hz].
+
+    With ``radar_height_m``, also the apparent sigma0 that a radar at that height (at the
+    ground distance h / tan psi from the tile's centre, flat Earth) sees through the
+    sea's two-ray factors (``[propagation] multipath = "two-ray"``,
+    :class:`seaecho.radar.propagation.TwoRay`): each facet's sigma_mn weighted by
+    |F_m F_n|^2 of its own height; returns (plain, apparent)."""
     grazing_deg = np.asarray(grazing_deg, dtype=float)
     sc = parse_scene({
         "sea": {"spectrum": spectrum, "spreading": "elfouhaily",
@@ -69,6 +76,14 @@ def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
     st = sea.state(0.0)
     acc = to_facets(sea.kinematics(0.0).acceleration[..., 2]).reshape(-1)
     out = np.zeros((grazing_deg.size, 4))
+    apparent = np.zeros((grazing_deg.size, 4))
+    two_ray = None
+    if radar_height_m is not None:
+        from seaecho.build import sea_mirror
+        from seaecho.constants import C0
+        from seaecho.radar.propagation import TwoRay
+
+        two_ray = TwoRay(C0 / f_hz, *sea_mirror(sc, f_hz))
     area_h = (SIZE * (N - 1) / N) ** 2
     for i, g in enumerate(np.radians(grazing_deg)):
         for look in np.radians(LOOKS_DEG):
@@ -81,7 +96,13 @@ def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
             s = facet_sigma(f.n_i, f.n_s, f.normal, model.facet_model, local=f,
                             breaking_fraction=q)
             out[i] += (f.area * f.visibility) @ s / area_h / len(LOOKS_DEG)
-    return out
+            if two_ray is not None:  # the radar on the look's line, h / tan psi away
+                radar = d * radar_height_m / np.sin(g)
+                fh, fv = two_ray.factors(radar, f.centroid)
+                fp = np.stack([fh, fv], axis=-1)  # (K, (h, v))
+                w = np.abs(fp[:, [0, 0, 1, 1]] * fp[:, [0, 1, 0, 1]]) ** 2  # HH HV VH VV
+                apparent[i] += (f.area * f.visibility) @ (s * w) / area_h / len(LOOKS_DEG)
+    return out if two_ray is None else (out, apparent)
 
 
 def mean_plane(model: str, u10: float) -> np.ndarray:

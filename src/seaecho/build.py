@@ -61,6 +61,7 @@ from .radar.antennas import Antenna
 from .radar.model import RadarModel, TargetSet
 from .radar.platforms import Platform, draw_perturbation
 from .radar.pointing import Pointing, Scan
+from .radar.propagation import TwoRay
 from .radar.waveform import Waveform
 from .rng import generator
 from .scattering.breaking import breaking_statistics
@@ -562,7 +563,7 @@ def build_radar(scene, *, receiver_stream: int = 1) -> RadarModel:
         taylor_nbar=r.taylor_nbar, taylor_sidelobe_db=r.taylor_sidelobe_db,
         sea_update_pulses=r.sea_update_pulses, sigma_map_pulse=r.sigma_map_pulse,
         accumulation_precision=r.accumulation_precision, earth=build_earth(scene),
-        transmit_phase=r.transmit_phase,
+        transmit_phase=r.transmit_phase, multipath=build_multipath(scene),
         sea_gain_floor=(None if r.sea_gain_floor_db == "off"
                         else 10.0 ** (r.sea_gain_floor_db / 10.0)))
 
@@ -726,11 +727,32 @@ def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | 
                                refresh_deg=cfg.signature_refresh_deg,
                                refresh_s=cfg.signature_refresh_s)
         objects.append((spec, shapes))
+    eps_sea, sigma_h = sea_mirror(scene, f)
+    return HullModel(objects=tuple(objects), sea_eps_r=eps_sea, sigma_h=sigma_h)
+
+
+def sea_mirror(scene, f: float) -> tuple[complex, float]:
+    """The sea as a mirror at carrier f [Hz]: sea water's permittivity eps_r [-]
+    (:func:`seaecho.ocean.seawater.sea_water_permittivity`) and the rms height sigma_h
+    [m] of the waves up to 2 k (the scene's spectrum; Hs / 4), for the hulls' SBR
+    multipath and the two-ray factor (``[propagation] multipath``)."""
     sea = scene.sea
     eps_sea = complex(sea_water_permittivity(f, sea.temperature_c, sea.salinity_psu))
     k = 2.0 * np.pi * f / C0
     sigma_h = float(np.sqrt(height_variance(sea_spectrum(scene), 0.0, 2.0 * k)))
-    return HullModel(objects=tuple(objects), sea_eps_r=eps_sea, sigma_h=sigma_h)
+    return eps_sea, sigma_h
+
+
+def build_multipath(scene) -> TwoRay | None:
+    """The ``[propagation] multipath`` two-ray factor (:mod:`seaecho.radar.propagation`)
+    of a scene with ``[radar]``: None for ``"none"``."""
+    if scene.propagation.multipath == "none":
+        return None
+    f = scene.radar.carrier_frequency_hz
+    eps_sea, sigma_h = sea_mirror(scene, f)
+    earth = build_earth(scene)
+    return TwoRay(wavelength=C0 / f, eps_r=eps_sea, sigma_h=sigma_h,
+                  radius=np.inf if earth is None else earth.radius)
 
 
 @dataclass(frozen=True)

@@ -494,7 +494,8 @@ class Simulation:
         else:
             pos, vel, amp = centres[visible], facets.velocity[visible], amp[visible]
         echo = self.radar.scatterer_echo(geo, pos, vel, amp.reshape(-1, 2, 2),
-                                         variant=self.variant, precision=PRECISION)
+                                         variant=self.variant, precision=PRECISION,
+                                         multipath=True)
         sig = None
         if sigma:
             sig = facet_sigma0(self.sea_model, facets, damping, held["breaking"],

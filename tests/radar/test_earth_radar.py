@@ -63,8 +63,9 @@ def test_radar_on_the_sphere_sees_the_origin_at_eq_8_7_grazing():
 
 
 def test_flat_earth_and_fixed_antenna_are_todays_path():
-    """The keys' defaults (earth 'flat', scan 'fixed', transmit_phase 'coherent') leave
-    the radar model as before them and the run's samples the same bytes (the run of
+    """The keys' defaults (earth 'flat', scan 'fixed', transmit_phase 'coherent',
+    multipath 'none') leave the radar model as before them and the run's samples the
+    same bytes (the run of
     scenes/paper_sim1 with 3 pulses had the same sha256 as before these keys existed:
     docs/scanning.md)."""
     base = _scene([{"position_m": (500.0, 300.0, 5.0), "rcs_m2": 3.0}], earth="flat")
@@ -72,6 +73,7 @@ def test_flat_earth_and_fixed_antenna_are_todays_path():
     explicit = _scene([{"position_m": (500.0, 300.0, 5.0), "rcs_m2": 3.0}], earth="flat")
     explicit["transmitter"]["antenna"]["scan"] = {"mode": "fixed"}
     explicit["radar"]["transmit_phase"] = "coherent"
+    explicit["propagation"]["multipath"] = "none"
     m = build_radar(parse_scene(base))
     assert m.earth is None and m.scan_period is None and m.transmit_phase == "coherent"
     a = seaecho.simulate(parse_scene(base), progress=False)

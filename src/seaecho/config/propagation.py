@@ -6,7 +6,9 @@ radius k a (standard refraction: k = 4/3; Skolnik, *Introduction to Radar System
 ed., 2001, section 8.2; Blake, *Radar Range-Performance Analysis*, 1986, chapter 3):
 the scene's (x, y) of platforms and targets are distances along the surface from the
 origin, z the height above it; targets beyond the radar horizon do not echo
-(``seaecho.geometry.earth``, docs/scanning.md).
+(``seaecho.geometry.earth``, docs/scanning.md). ``multipath = "two-ray"`` multiplies the
+echo of point targets and sea facets by the two-ray propagation factor of the sea
+(``seaecho.radar.propagation``).
 """
 
 from __future__ import annotations
@@ -30,6 +32,13 @@ class PropagationConfig(Section):
         4.0 / 3.0, ge=0.5, le=100.0,
         description="effective Earth radius factor k [-] (4/3: standard refraction; "
         "spherical only)",
+    )
+    multipath: Literal["none", "two-ray"] = Field(
+        "none",
+        description="sea multipath of point targets and sea facets: 'none', or 'two-ray' "
+        "(direct + sea-reflected wave: Fresnel reflection of sea water, rough-sea "
+        "specular factor from the sea's rms height, divergence of the spherical Earth; "
+        "flat or spherical Earth; ray-traced hulls get theirs from the trace)",
     )
 
 

@@ -17,6 +17,7 @@ from ..geometry.earth import SphericalEarth
 from .antennas import Antenna
 from .platforms import Platform
 from .pointing import Pointing
+from .propagation import TwoRay
 from .waveform import Waveform
 
 
@@ -140,6 +141,9 @@ class RadarModel:
     sea_gain_floor : float or None
         Two-way gain relative to the beams' peaks [-] below which, bounded over the
         whole tile, a pulse skips the sea (:mod:`seaecho.radar.coverage`); None: never.
+    multipath : TwoRay or None
+        The sea's two-ray propagation factor applied to point targets and sea facets
+        (:mod:`seaecho.radar.propagation`); None: free space.
     """
 
     carrier: float
@@ -173,6 +177,7 @@ class RadarModel:
     earth: SphericalEarth | None = None
     transmit_phase: str = "coherent"
     sea_gain_floor: float | None = None
+    multipath: TwoRay | None = None
 
     @property
     def monostatic(self) -> bool:

@@ -450,6 +450,8 @@ def resident_sea(radar: RadarSystem, tracing, sea_model) -> ResidentSea | None:
         return None
     if sea_model.dynamics is not None:  # evolving sea: the reference path
         return None
+    if radar.model.multipath is not None:  # the two-ray factors: the reference path
+        return None
     if variant.startswith("llvm") and not drjit_available():
         return None
     return ResidentSea(radar, sea_model.facet_model, variant=variant)

@@ -265,8 +265,8 @@ class RadarSystem:
     # ------------------------------------------------------------------ scatterers
     def scatterer_echo(self, geometry: PulseGeometry, positions: ArrayLike,
                        velocities: ArrayLike, s: ArrayLike, directions: bool = False, *,
-                       variant: str | None = None, precision: str = "double"
-                       ) -> ScattererEcho:
+                       variant: str | None = None, precision: str = "double",
+                       multipath: bool = False) -> ScattererEcho:
         """Delays and per-channel amplitudes of scatterers, eqs (R1) and (R3).
 
         Evaluates :func:`seaecho.radar.kernels.echo_terms` as one fused Dr.Jit kernel
@@ -297,34 +297,55 @@ class RadarSystem:
             reference path passes ``seaecho.scattering.facet.PRECISION``, as its fused
             kernel does; delays, directions, carrier phase and the amplitude's magnitude
             are float64 in either.
+        multipath : bool
+            Multiply the scattering amplitudes by the sea's two-ray propagation factors,
+            S' = diag(F_r) S diag(F_t) (:meth:`seaecho.radar.propagation.TwoRay.apply`,
+            eq P1), when the model has them (``[propagation] multipath``): point targets
+            and sea facets ask for it, ray-traced hulls (whose trace follows the sea's
+            reflections) do not.
 
         Returns
         -------
         ScattererEcho
         """
         if self.backend == "numpy" or np.size(positions) == 0:
-            return self.scatterer_echo_numpy(geometry, positions, velocities, s)
+            return self.scatterer_echo_numpy(geometry, positions, velocities, s,
+                                             multipath=multipath)
         from ..backend import drjit_namespace
         from .kernels import scatterer_echo
 
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
-        s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
+        s = self.propagated(geometry, p, np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2),
+                            multipath)
         xp = drjit_namespace(variant)
         xs = None if precision == "double" else xp.with_precision(precision)
         r = scatterer_echo(xp, self, geometry, p, v, s, directions, scattering=xs)
         return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
                              r["g_r"], r.get("n_i"), r.get("n_s"))
 
+    def propagated(self, geometry: PulseGeometry, positions: NDArray[np.float64],
+                   s: NDArray[np.complex128], multipath: bool) -> NDArray[np.complex128]:
+        """Scattering amplitudes (K, 2, 2) [m] times the sea's two-ray factors of the
+        transmit and receive legs (eq P1 of :mod:`seaecho.radar.propagation`) when
+        ``multipath`` is asked for and the model has them; ``s`` itself otherwise."""
+        two_ray = self.model.multipath
+        if not multipath or two_ray is None or len(s) == 0:
+            return s
+        return two_ray.apply(s, positions, geometry.tx.position, geometry.rx.position,
+                             self.monostatic)
+
     def scatterer_echo_numpy(self, geometry: PulseGeometry, positions: ArrayLike,
-                             velocities: ArrayLike, s: ArrayLike) -> ScattererEcho:
+                             velocities: ArrayLike, s: ArrayLike, *,
+                             multipath: bool = False) -> ScattererEcho:
         """Numpy evaluation of :meth:`scatterer_echo` (same parameters and result)."""
         from ..backend import NUMPY
         from .kernels import scatterer_echo
 
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
-        s = np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2)
+        s = self.propagated(geometry, p, np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2),
+                            multipath)
         r = scatterer_echo(NUMPY, self, geometry, p, v, s, directions=True)
         return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
                              r["g_r"], r["n_i"], r["n_s"])
@@ -397,7 +418,8 @@ class RadarSystem:
     def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None,
                     pulse: int | None = None) -> ScattererEcho | None:
         """Echo of the model's point targets at one pulse (None if there are none, or
-        all are beyond the horizon of a spherical Earth); ``variant`` as
+        all are beyond the horizon of a spherical Earth), with the sea's two-ray factors
+        when the model has them (``[propagation] multipath``); ``variant`` as
         :meth:`scatterer_echo`; ``pulse`` (default: the pulse emitted at
         ``geometry.time``) selects the fluctuating targets' draws
         (:meth:`~seaecho.radar.model.TargetSet.scattering_at`)."""
@@ -415,9 +437,10 @@ class RadarSystem:
             v = np.einsum("...ij,...j->...i", self.model.earth.tilt(
                 targets.positions + geometry.time * v), v)
         if seen.all():
-            return self.scatterer_echo(geometry, p, v, scattering, variant=variant)
+            return self.scatterer_echo(geometry, p, v, scattering, variant=variant,
+                                       multipath=True)
         return self.scatterer_echo(geometry, p[seen], v[seen], scattering[seen],
-                                   variant=variant)
+                                   variant=variant, multipath=True)
 
 
 __all__ = [
