@@ -167,34 +167,38 @@ def metrics(tracks, paths) -> dict:
 
 
 def figure(run, det, tracks, paths, out: Path, title: str) -> Path:
-    """The last sweep's PPI (dB) with the truth, the plots and the tracks."""
+    """The last sweep's PPI (dB) with the truth, the plots and the tracks: the whole
+    picture, the sea tile (the clutter's false alarms) and the pilot boat."""
     sweep = run["sweep"].values
     last = sweep == sweep.max()
     axes = run["tx_antenna_axes"].values[last]
-    az = np.arctan2(axes[:, 0, 0], axes[:, 1, 0])
+    az = np.unwrap(np.arctan2(axes[:, 0, 0], axes[:, 1, 0]))  # clockwise from north
     rng = run["range"].values
     radar = run["tx_position"].values[last][0]
     ground = np.sqrt(np.maximum(rng ** 2 - radar[2] ** 2, 0.0))
     xx = radar[0] + ground[None, :] * np.sin(az)[:, None]
     yy = radar[1] + ground[None, :] * np.cos(az)[:, None]
     p_db = 10.0 * np.log10(np.abs(run["compressed"].values[last, 0]) ** 2 + 1e-30)
-    noise_db = float(np.median(p_db))
+    p_db -= float(np.median(p_db))
 
     def xy(states):
         return (np.array([float(s.state_vector[0, 0]) for s in states]),
                 np.array([float(s.state_vector[2, 0]) for s in states]))
 
-    fig, axs = plt.subplots(1, 2, figsize=(11, 5.2), gridspec_kw={"width_ratios": [1.25, 1]})
-    zoom = next(p for p in paths if p.id == "pilot-boat")
-    zx, zy = xy(list(zoom))
-    for ax, lim in ((axs[0], None),
-                    (axs[1], (zx.mean() - 160, zx.mean() + 160, zy.mean() - 160,
-                              zy.mean() + 160))):
+    fig, axs = plt.subplots(1, 3, figsize=(15, 5.4), layout="constrained",
+                            gridspec_kw={"width_ratios": [1.3, 1, 1]})
+    pilot = next(p for p in paths if p.id == "pilot-boat")
+    zx, zy = xy(list(pilot))
+    views = ((axs[0], None, title),
+             (axs[1], (-200.0, 200.0, -200.0, 200.0), "the sea tile (2 km north)"),
+             (axs[2], (zx.mean() - 150, zx.mean() + 150, zy.mean() - 150, zy.mean() + 150),
+              "the pilot boat (7 m/s north)"))
+    fa = det.object_index.values < 0
+    for ax, lim, name in views:
         step = 2 if lim is None else 1
         m = ax.pcolormesh(xx[::step, ::step] / 1e3, yy[::step, ::step] / 1e3,
-                          p_db[::step, ::step] - noise_db, vmin=0, vmax=40, cmap="gray_r",
+                          p_db[::step, ::step], vmin=0, vmax=40, cmap="gray_r",
                           shading="auto", rasterized=True)
-        fa = det.object_index.values < 0
         ax.plot(det.x_m.values[fa] / 1e3, det.y_m.values[fa] / 1e3, "x", color="tab:red",
                 ms=4, label="false alarms (all sweeps)")
         ax.plot(det.x_m.values[~fa] / 1e3, det.y_m.values[~fa] / 1e3, ".",
@@ -210,14 +214,13 @@ def figure(run, det, tracks, paths, out: Path, title: str) -> Path:
         ax.plot(radar[0] / 1e3, radar[1] / 1e3, "k^", ms=7)
         ax.set_aspect("equal")
         ax.set(xlabel="x [km] (east)", ylabel="y [km] (north)")
+        ax.set_title(name, fontsize=9)
         if lim is not None:
-            ax.set(xlim=np.array(lim[:2]) / 1e3, ylim=np.array(lim[2:]) / 1e3,
-                   title="zoom: the pilot boat (7 m/s north)")
-    axs[0].set_title(title, fontsize=9)
+            ax.set(xlim=np.array(lim[:2]) / 1e3, ylim=np.array(lim[2:]) / 1e3)
     axs[0].legend(fontsize=7, loc="lower left")
-    fig.colorbar(m, ax=axs, shrink=0.8, label="last sweep's power over the median [dB]")
+    fig.colorbar(m, ax=axs, shrink=0.8, label="last sweep's power over its median [dB]")
     png = out / "scanning_tracking.png"
-    fig.savefig(png, dpi=110)
+    fig.savefig(png, dpi=100)
     plt.close(fig)
     return png
 
@@ -229,15 +232,23 @@ def main(argv=None) -> list[Path]:
     ap.add_argument("--quick", action="store_true", help="4 revolutions")
     ap.add_argument("--revolutions", type=int, default=None, help="revolutions (default 8)")
     ap.add_argument("--out", default="docs/figures", help="output folder")
+    ap.add_argument("--run", help="the run's netCDF file: read if it exists (same scene), "
+                    "else written")
     args = ap.parse_args(argv)
     revs = args.revolutions or (4 if args.quick else 8)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     sc, scan_s = scene(revs)
     t_cpu, t_wall = time.process_time(), time.perf_counter()
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SeaechoWarning)
-        run = seaecho.simulate(sc, progress=False)
+    if args.run and Path(args.run).is_file():
+        run = seaecho.open_dataset(args.run).drop_vars("raw").load()
+        if run.sizes["pulse"] != sc.radar.n_pulses:
+            raise SystemExit(f"{args.run}: {run.sizes['pulse']} pulses, not "
+                             f"{sc.radar.n_pulses} ({revs} revolutions)")
+    else:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", SeaechoWarning)
+            run = seaecho.simulate(sc, path=args.run, progress=False)
     cpu, wall = time.process_time() - t_cpu, time.perf_counter() - t_wall
     with tempfile.TemporaryDirectory() as tmp:
         det, truth = seaecho.detect(run, cfar="ca", pfa=1e-6, train=(4, 8), guard=(3, 2),

@@ -406,3 +406,22 @@ def test_clutter_map_refuses_one_image_and_mixed_grids():
         seaecho.detect([_image(rng), _image(rng, x0=0.0)], cfar="map")
     with pytest.raises(SceneError, match="more than 40 images"):
         seaecho.detect([_image(rng), _image(rng)], cfar="map")
+
+
+def test_cli_detect_on_a_stack_of_images(tmp_path, capsys):
+    from seaecho.cli import main
+
+    rng = np.random.default_rng(23)
+    paths = []
+    for k in range(6):  # weight 1: warm-up 5, the sixth image tested
+        paths.append(str(tmp_path / f"img{k}.nc"))
+        seaecho.save(_image(rng, ny=30, nx=40), paths[-1])
+    out = tmp_path / "d.csv"
+    assert main(["detect", *paths, "--cfar", "map", "--map-weight", "1", "--pfa", "0.01",
+                 "-o", str(out)]) == 0
+    rows, header = seaecho.io.detections.read_table(out)
+    assert header["n_looks"] == "1" and header["cells_tested"] == str(30 * 40)
+    assert main(["detect", *paths[:2], "--cfar", "map", "-o", str(tmp_path / "e.csv")]) == 2
+    err = capsys.readouterr().err
+    assert "more than 40 images" in err and "Traceback" not in err
+    assert not (tmp_path / "e.csv").exists()

@@ -51,3 +51,16 @@ def test_sar_calibration_image_targets(tmp_path):
     # not; the mover is displaced by its motion (not modelled by the association)
     assert pd["copol10"][2] == 1.0 and pd["phased"][2] == 1.0
     assert pd["crosspol"][2] == 0.0
+
+
+@pytest.mark.slow
+def test_scanning_tracking_quick(tmp_path, capsys):
+    # 4 revolutions of the coastal VTS scene at 500 Hz: every object seen in every sweep,
+    # the tracks scored by OSPA, GOSPA and SIAP at the sweep ends
+    pytest.importorskip("stonesoup")
+    paths = _run("scanning_tracking", tmp_path)
+    assert paths[0].is_file()
+    out = capsys.readouterr().out
+    assert "P_D per object (sweeps): buoy-north 4/4, fishing-boat 4/4, cargo-ship 4/4, " \
+        "pilot-boat 4/4, buoy-far 4/4" in out
+    assert "mean OSPA" in out and "SIAP completeness 1.00" in out
