@@ -1,8 +1,9 @@
 """Detection on plain arrays: CFAR detectors (CA, GO, SO, OS; 1-D and 2-D), a clutter map,
 M-of-N integration, plot extraction, the sea a range cell covers, association with the
-ground truth, scores and ROC curves (docs/detection.md). Range profiles (pulse x range), PPI sweeps (azimuth x range)
-and SAR images (y x x) in; detections out. Reading datasets and writing tables is
-:mod:`seaecho.io.detections`; :func:`seaecho.detect` and :func:`seaecho.score` join them.
+ground truth, scores and ROC curves (docs/detection.md). Range profiles (pulse x range),
+PPI sweeps (azimuth x range) and SAR images (y x x) in; detections out. Reading datasets
+and writing tables is :mod:`seaecho.io.detections`; :func:`seaecho.detect` and
+:func:`seaecho.score` join them.
 """
 
 from .association import associate, ground_point, half_path, interpolate_truth, nearest_object
