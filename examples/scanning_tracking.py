@@ -277,9 +277,9 @@ def main(argv=None) -> list[Path]:
             err_r.append(float(d.state_vector[1, 0]) - float(h[1, 0]))
             model = d.measurement_model
     err_b = (np.array(err_b) + np.pi) % (2 * np.pi) - np.pi
+    n_sweeps = int(run["sweep"].max()) + 1
     names = s["objects"]
     pd = ", ".join(f"{names[o]} {v[0]}/{v[1]}" for o, v in s["pd_object"].items())
-    n_sweeps = int(run["sweep"].max()) + 1
     title = (f"coastal_vts_xband, {revs} turns at {PRF_HZ:g} Hz: {len(tracks)} tracks, "
              f"OSPA {mt['ospa']:.1f} m")
     png = figure(run, det, tracks, paths, out, title)
@@ -289,6 +289,19 @@ def main(argv=None) -> list[Path]:
           f"{s['false_alarms_per_look']:.2f} per sweep, {s['false_alarms_per_km2']:.3f} per "
           f"km^2 and sweep, P_FA per cell {s['pfa_cell']:.2g} at design 1e-6); P_D per "
           f"object (sweeps): {pd}")
+    on = det.object_index.values >= 0
+    # the false alarms on the sea tile (|x|, |y| <= half its size): their cells over the
+    # tile's cells of every sweep
+    half = 0.5 * sc.sea.size_x_m
+    tile = ~on & (np.abs(det.x_m.values) <= half) & (np.abs(det.y_m.values) <= half)
+    n_tile_cells = tile_cells(run, half)
+    print(f"false alarms on the sea tile: {int(tile.sum())} of {int((~on).sum())} "
+          f"({int(det.n_cells.values[tile].sum())} cells of {n_tile_cells} x {n_sweeps} "
+          f"sweeps: P_FA per cell there "
+          f"{det.n_cells.values[tile].sum() / (n_tile_cells * n_sweeps):.2g})")
+    print(f"plots on objects: SNR {det.snr_db.values[on].min():.0f} to "
+          f"{det.snr_db.values[on].max():.0f} dB, {det.n_cells.values[on].min()} to "
+          f"{det.n_cells.values[on].max()} cells")
     print(f"plots on objects vs truth: bearing error {np.rad2deg(err_b.mean()):+.3f} +- "
           f"{np.rad2deg(err_b.std()):.3f} deg, range error {np.mean(err_r):+.2f} +- "
           f"{np.std(err_r):.2f} m ({err_b.size} plots); the model's sigma "
@@ -313,6 +326,20 @@ def main(argv=None) -> list[Path]:
                       f"{m_v['completeness']:.2f} | {m_v['spuriousness']:.2f} | "
                       f"{m_v['position_accuracy_m']:.2f}")
     return [png]
+
+
+def tile_cells(run, half_m: float) -> int:
+    """PPI cells of one sweep whose point of the sea lies on the tile (|x|, |y| <=
+    half_m)."""
+    sweep = run["sweep"].values
+    first = sweep == sweep.min()
+    axes = run["tx_antenna_axes"].values[first]
+    az = np.arctan2(axes[:, 0, 0], axes[:, 1, 0])
+    radar = run["tx_position"].values[first][0]
+    ground = np.sqrt(np.maximum(run["range"].values ** 2 - radar[2] ** 2, 0.0))
+    x = radar[0] + ground[None, :] * np.sin(az)[:, None]
+    y = radar[1] + ground[None, :] * np.cos(az)[:, None]
+    return int(((np.abs(x) <= half_m) & (np.abs(y) <= half_m)).sum())
 
 
 def track_and_score(run, cfar: str, min_points: int, sweep_end, scan_s: float):
