@@ -180,7 +180,10 @@ def profile_frames(run, channel: str | None = None,
     theta = antenna_beamwidth(run, "rx") if monostatic else float("nan")
     radius = earth_radius(run)
     dr_gate = float(np.median(np.diff(rng))) if rng.size > 1 else res
-    h = rx[:, 2]
+    # the antenna's height above the sea: above the sphere of radius k a whose tangent
+    # plane at the origin is the scene's frame (docs/scanning.md), or above z = 0
+    h = rx[:, 2] if not np.isfinite(radius) else \
+        np.sqrt(rx[:, 0] ** 2 + rx[:, 1] ** 2 + (rx[:, 2] + radius) ** 2) - radius
     area = clutter_cell_area(rng[None, :], dr_gate, theta,
                              grazing_angle(h[:, None], rng[None, :], radius))
 
