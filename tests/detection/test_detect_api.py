@@ -321,33 +321,45 @@ def _with_antenna(ds, width_m=1.0, scene_json=None):
     return ds, lam
 
 
-@pytest.mark.parametrize("earth", ["flat", "spherical"])
-def test_profile_false_alarms_per_km2_from_the_pulse_limited_cell(earth):
+@pytest.mark.parametrize(("earth", "y_m"), [("flat", 0.0), ("spherical", 0.0),
+                                            ("spherical", -2000.0)])
+def test_profile_false_alarms_per_km2_from_the_pulse_limited_cell(earth, y_m):
     # Each tested gate covers R theta_B dR sec psi (Skolnik 2001, section 7.1), theta_B =
     # 0.8859 lambda / L for a uniform aperture (Balanis 2016, 12.5), sin psi = h / R
-    # (flat) or h / R + h^2 / (2 k a R) - R / (2 k a) (4/3 Earth, Skolnik eq 8.7)
+    # (flat) or h / R + h^2 / (2 k a R) - R / (2 k a) (4/3 Earth, Skolnik eq 8.7), h the
+    # height above the sphere (2 km from the tangent point: 0.235 m above the frame's z)
     ds, _ = synthetic_run(n_pulses=60)
     js = '{"propagation": {"earth": "spherical", "earth_radius_factor": 1.3333333333333333}}'
     ds, lam = _with_antenna(ds, 1.0, js if earth == "spherical" else None)
+    for v in ("tx_position", "rx_position"):
+        ds[v] = ds[v] + np.array([0.0, y_m, 0.0])
     det, truth = seaecho.detect(ds, pfa=1e-2, train=8, guard=2)
     r = ds.range.values
     ka = 4.0 / 3.0 * 6371.0088e3 if earth == "spherical" else np.inf
-    theta = 2.0 * np.arcsin(0.5 * 0.8859 * lam / 1.0)
+    h = H_M if y_m == 0.0 else np.hypot(y_m, H_M + ka) - ka
+    assert h == pytest.approx(H_M + (0.235 if y_m else 0.0), abs=1e-3)
+    # the beam width measured on the pattern (tests/detection/test_footprint.py checks it
+    # against 0.8859 lambda / L), so that the height's 1e-5 on sec psi is seen
+    from seaecho.detection import half_power_width
+    from seaecho.radar.antennas import Antenna
+
+    theta = half_power_width(Antenna("rectangular", lam, 1.0, 0.2).gain_local)
+    assert theta == pytest.approx(0.8859 * lam, rel=2e-4)
 
     def area(rr, dr):
-        s = H_M / rr + (H_M**2 - rr**2) / (2 * ka * rr)
+        s = h / rr + (h**2 - rr**2) / (2 * ka * rr)
         return rr * theta * dr / np.sqrt(1.0 - s * s)
 
     tested = r[10:-10]  # train 8 + guard 2 each side
     want = area(tested, r[1] - r[0]).sum()
-    assert det.attrs["area_m2"] == pytest.approx(want, rel=2e-4)
+    assert det.attrs["area_m2"] == pytest.approx(want, rel=1e-9)
     s = seaecho.score(det, truth)
     n_fa = int((det.object_index.values < 0).sum())
     assert n_fa > 0
-    assert s["false_alarms_per_km2"] == pytest.approx(n_fa / 60 / (want * 1e-6), rel=2e-4)
+    assert s["false_alarms_per_km2"] == pytest.approx(n_fa / 60 / (want * 1e-6), rel=1e-9)
     np.testing.assert_allclose(det.cell_area_m2.values, area(det.range_m.values, C0 / 2e8),
-                               rtol=2e-4)
-    assert det.attrs["beamwidth_deg"] == pytest.approx(np.rad2deg(theta), rel=2e-4)
+                               rtol=1e-9)
+    assert det.attrs["beamwidth_deg"] == pytest.approx(np.rad2deg(theta), rel=1e-12)
 
 
 def test_profile_area_unknown_without_antenna_or_bistatic():
