@@ -49,7 +49,6 @@ doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
-import functools
 import math
 import os
 from collections.abc import Mapping
@@ -1083,6 +1082,21 @@ def _detection_frames(dataset, channel, truth, radar_position_m, azimuth_gate_de
     from .io import detections as iod
 
     source = ""
+    if isinstance(dataset, list | tuple):  # several images of one grid: a stack
+        images = []
+        for d in dataset:
+            if isinstance(d, str | os.PathLike):
+                if not Path(d).exists():
+                    raise SceneError(f"dataset {os.fspath(d)} does not exist")
+                with open_dataset(d) as ds:
+                    d = ds.load()
+            if "image" not in d:
+                raise SceneError("dataset: a list of datasets is a stack of images of "
+                                 "`seaecho image` (for the clutter map); one is not an "
+                                 "image (no 'image')")
+            images.append(d)
+        return iod.image_stack_frames(images, channel, truth), "image", ", ".join(
+            os.fspath(d) for d in dataset if isinstance(d, str | os.PathLike))
     if isinstance(dataset, str | os.PathLike):
         source = os.fspath(dataset)
         if not Path(dataset).exists():
@@ -1126,14 +1140,21 @@ def _detector(kind: str, frames, cfar: str, train, guard, rank, map_weight):
         shapes = {f.power.shape for f in frames}
         if kind == "profile":  # pulses as scans of the range cells
             return cm.noise, cm, f"clutter map w = {cm.weight:g}, warm-up {cm.warmup}"
-        if kind == "ppi" and len(shapes) == 1 and len(frames) > cm.warmup:
+        looks = "sweeps" if kind == "ppi" else "images"
+        if len(shapes) == 1 and len(frames) > cm.warmup:  # sweeps or a stack of images
             stack = np.stack([f.power for f in frames])
             est = cm.noise(stack)
             table = {id(f.power): est[i] for i, f in enumerate(frames)}
             return (lambda p: table[id(p)]), cm, f"clutter map w = {cm.weight:g}, " \
-                f"warm-up {cm.warmup} sweeps"
+                f"warm-up {cm.warmup} {looks}"
+        if kind == "image":
+            raise SceneError(
+                f"cfar = 'map': {len(frames)} image(s): a clutter map estimates each "
+                "pixel's clutter from the same pixel in earlier images, so it needs a "
+                f"stack of more than {cm.warmup} images of one grid (give a list of "
+                "images; a single SAR image has no past: use a sliding-window CFAR)")
         raise SceneError(f"cfar = 'map': needs range profiles, or more than {cm.warmup} "
-                         "PPI sweeps of one shape (not implemented yet for images)")
+                         "PPI sweeps of one shape")
     train_t = tuple(np.atleast_1d(train).tolist())
     guard_t = tuple(np.atleast_1d(guard).tolist())
     if kind == "image" and len(train_t) == 1:
@@ -1164,8 +1185,9 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
 
     Parameters
     ----------
-    dataset : xarray.Dataset or path
-        A run, a scanning run, an image, or a CfRadial 2 file.
+    dataset : xarray.Dataset or path, or a list of them
+        A run, a scanning run, an image, or a CfRadial 2 file; a list: images of one
+        grid, one look each in their order (a stack for the clutter map).
     cfar : {'ca', 'go', 'so', 'os', 'map'}
         Detector (:data:`DETECTORS`).
     pfa : float
@@ -1236,10 +1258,12 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
     name_of = np.array(list(names) + [""], dtype=object)
     columns = {"time": ("detection", dets["time_s"], {"units": "s"}),
                "look": ("detection", dets["look"])}
-    for k in ("pulse", "sweep", "azimuth_deg", "range_m", "x_m", "y_m"):
+    for k in ("pulse", "sweep", "azimuth_deg", "range_m", "x_m", "y_m", "radar_x_m",
+              "radar_y_m", "cell_area_m2"):
         if k in dets:
             columns[k] = ("detection", dets[k], {"units": "degree" if k.endswith("deg")
-                                                 else "m" if k.endswith("_m") else "1"})
+                                                 else "m" if k.endswith("_m") else
+                                                 "m2" if k.endswith("_m2") else "1"})
     power_units = "m2" if kind == "image" else "W"
     columns.update(
         power=("detection", dets["power"], {"units": power_units, "long_name": "peak"}),
@@ -1259,6 +1283,9 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
                  pfa_m_of_n(pfa, int(m_of_n[0]), int(m_of_n[1]))),
              "position_sigma_m": float(frames[0].extra.get("position_sigma_m", 1.0))
              if frames else 1.0}
+    for k in ("range_sigma_m", "azimuth_sigma_deg", "beamwidth_deg"):  # PPI, profiles
+        if frames and k in frames[0].extra:
+            attrs[k] = float(frames[0].extra[k])
     detections = xr.Dataset(columns, attrs=attrs)
     vel = _truth_velocity(frames, opps)
     t_cols = {"look": ("opportunity", opps["look"]),
@@ -1281,6 +1308,8 @@ def _object_names(dataset, truth, kind) -> tuple[str, ...]:
         return tuple(truth.names)
     from .io.detections import image_truth, run_truth
 
+    if isinstance(dataset, list | tuple):  # a stack of images: the first one's objects
+        return _object_names(dataset[0], None, kind) if dataset else ()
     if isinstance(dataset, str | os.PathLike):
         with open_dataset(dataset) as ds:
             return _object_names(ds, None, kind) if ("compressed" in ds or "image" in ds) \
@@ -1332,7 +1361,7 @@ def write_stonesoup_dir(detections: xr.Dataset, truth: xr.Dataset,
     det = {k: detections[v].values for k, v in
            (("time_s", "time"), ("x_m", "x_m"), ("y_m", "y_m"))}
     for k in ("range_m", "snr_db", "power", "object", "look", "pulse", "sweep",
-              "azimuth_deg"):
+              "azimuth_deg", "radar_x_m", "radar_y_m"):
         if k in detections:
             det[k] = detections[k].values
     tr = {k: truth[v].values for k, v in (("time_s", "time"), ("object", "object"),
@@ -1341,32 +1370,48 @@ def write_stonesoup_dir(detections: xr.Dataset, truth: xr.Dataset,
     # the plots' position error: the range resolution (range profiles; the arc of a ray
     # spacing at mid range if larger, PPI), half the image's resolution (images)
     sigma = float(detections.attrs.get("position_sigma_m", 1.0))
-    return write_stonesoup(d, det, tr, (sigma, sigma))
+    # PPI: a resolution cell's spread in bearing and range (io.detections.sweep_frames)
+    polar = (math.radians(float(detections.attrs["azimuth_sigma_deg"])),
+             float(detections.attrs["range_sigma_m"])) \
+        if "azimuth_sigma_deg" in detections.attrs else None
+    return write_stonesoup(d, det, tr, (sigma, sigma), polar)
 
 
-def stonesoup_readers(directory: PathLike) -> tuple[Any, Any]:
+def stonesoup_readers(directory: PathLike, measurement: str = "auto",
+                      noise: tuple[float, float] | None = None) -> tuple[Any, Any]:
     """Stone Soup readers of a ``seaecho detect --stonesoup DIR`` export.
+
+    Parameters
+    ----------
+    directory : path
+        The export.
+    measurement : {'auto', 'cartesian', 'bearing-range'}
+        The detections' measurement model: a
+        :class:`~stonesoup.models.measurement.linear.LinearGaussian` on (x, y), or
+        (PPI sweeps) :class:`~stonesoup.models.measurement.nonlinear.CartesianToBearingRange`
+        on (bearing counter-clockwise from east [rad], ground range [m]) from the radar's
+        position at each plot; 'auto': bearing-range where the export has it
+        (:func:`seaecho.io.detections.stonesoup_readers`).
+    noise : (float, float), optional
+        The model's standard deviations in place of the export's ((x, y) [m] or
+        (bearing [rad], range [m])).
 
     Returns
     -------
     (CSVDetectionReader, CSVGroundTruthReader)
-        Configured on ``DIR/detections.csv`` (state vector x, y [m]; every detection
-        carries a :class:`~stonesoup.models.measurement.linear.LinearGaussian` model on a
-        constant-velocity state (x, vx, y, vy) with the export's noise) and
-        ``DIR/truth.csv`` (paths by ``object``, state x, vx, y, vy); times are seconds
-        since the scene's t = 0 read as seconds since 1970-01-01 UTC.
+        Configured on ``DIR/detections.csv`` (every detection with its measurement model
+        on a constant-velocity state (x, vx, y, vy)) and ``DIR/truth.csv`` (paths by
+        ``object``, state x, vx, y, vy); times are seconds since the scene's t = 0 read
+        as seconds since 1970-01-01 UTC.
 
     Raises
     ------
     SceneError
-        No export in ``directory``; ImportError without Stone Soup
-        (``pip install seaecho[tracking]``).
+        No export in ``directory``, or a measurement it does not have; ImportError
+        without Stone Soup (``pip install seaecho[tracking]``).
     """
-    import json
-
-    import numpy as np
-
     from .io.detections import STONESOUP_FILES
+    from .io.detections import stonesoup_readers as readers
 
     d = Path(directory)
     settings_path = d / STONESOUP_FILES["settings"]
@@ -1374,49 +1419,9 @@ def stonesoup_readers(directory: PathLike) -> tuple[Any, Any]:
         raise SceneError(f"directory = {os.fspath(d)!r}: no {STONESOUP_FILES['settings']} "
                          "(write one with `seaecho detect ... --stonesoup DIR`)")
     try:
-        from stonesoup.models.measurement.linear import LinearGaussian
-        from stonesoup.reader.generic import CSVGroundTruthReader
-    except ImportError as exc:  # pragma: no cover - the tracking extra
-        raise ImportError("Stone Soup is needed: pip install 'seaecho[tracking]'") from exc
-    s = json.loads(settings_path.read_text(encoding="utf-8"))
-    sx, sy = s["measurement_noise_m"]
-    model = LinearGaussian(ndim_state=4, mapping=tuple(s["state_mapping"]),
-                           noise_covar=np.diag([sx * sx, sy * sy]))
-    det = _modelled_reader_class()(
-        path=d / s["detections"], state_vector_fields=s["detection_fields"],
-        time_field=s["time_field"], timestamp=s["timestamp"], measurement_model=model,
-        csv_options={"dialect": "excel"})
-    truth = CSVGroundTruthReader(
-        path=d / s["truth"], state_vector_fields=s["truth_fields"],
-        time_field=s["time_field"], timestamp=s["timestamp"],
-        path_id_field=s["path_id_field"])
-    return det, truth
-
-
-@functools.cache
-def _modelled_reader_class():
-    """A CSVDetectionReader whose detections carry a measurement model (built on first
-    use: Stone Soup is an optional dependency)."""
-    from stonesoup.base import Property
-    from stonesoup.buffered_generator import BufferedGenerator
-    from stonesoup.models.measurement.linear import LinearGaussian
-    from stonesoup.reader.generic import CSVDetectionReader
-
-    class SeaechoCSVDetectionReader(CSVDetectionReader):
-        """:class:`~stonesoup.reader.generic.CSVDetectionReader` that attaches
-        ``measurement_model`` to every detection (seaecho's x, y plots)."""
-
-        measurement_model: LinearGaussian = Property(
-            doc="Measurement model given to every detection")
-
-        @BufferedGenerator.generator_method
-        def detections_gen(self):
-            for time, dets in super().detections_gen():
-                for d in dets:
-                    d.measurement_model = self.measurement_model
-                yield time, dets
-
-    return SeaechoCSVDetectionReader
+        return readers(d, measurement, noise)
+    except ValueError as exc:
+        raise SceneError(str(exc)) from None
 
 
 def score(detections: xr.Dataset | PathLike, truth: xr.Dataset | PathLike | None = None,

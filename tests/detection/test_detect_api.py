@@ -13,6 +13,7 @@ import xarray as xr
 from scipy import stats
 
 import seaecho
+from seaecho.config import SceneError
 from seaecho.constants import C0
 from seaecho.detection import CFAR, ObjectTruth
 from seaecho.io.detections import sweep_frames
@@ -303,3 +304,136 @@ def test_per_pulse_truth_of_several_objects_is_used():
     assert set(tr.object.values) == {"a", "b", "ship"}
     gate = float(seaecho.io.detections.profile_frames(ds)[0].gate_m[2])
     assert gate == pytest.approx(10.0 + C0 / (2 * 100e6))
+
+
+def _with_antenna(ds, width_m=1.0, scene_json=None):
+    """The synthetic run with a rectangular receive antenna in the product (and a scene's
+    propagation, when given)."""
+    from seaecho.io.product import antenna_variables
+    from seaecho.radar.antennas import Antenna
+
+    lam = 0.03
+    ds = ds.assign({k: xr.Variable(*v[:2], v[2] if len(v) > 2 else None) for k, v in
+                    antenna_variables("rx", Antenna("rectangular", lam, width_m, 0.2)).items()})
+    ds.attrs.update(wavelength_m=lam)
+    if scene_json is not None:
+        ds.attrs["scene_json"] = scene_json
+    return ds, lam
+
+
+@pytest.mark.parametrize(("earth", "y_m"), [("flat", 0.0), ("spherical", 0.0),
+                                            ("spherical", -2000.0)])
+def test_profile_false_alarms_per_km2_from_the_pulse_limited_cell(earth, y_m):
+    # Each tested gate covers R theta_B dR sec psi (Skolnik 2001, section 7.1), theta_B =
+    # 0.8859 lambda / L for a uniform aperture (Balanis 2016, 12.5), sin psi = h / R
+    # (flat) or h / R + h^2 / (2 k a R) - R / (2 k a) (4/3 Earth, Skolnik eq 8.7), h the
+    # height above the sphere (2 km from the tangent point: 0.235 m above the frame's z)
+    ds, _ = synthetic_run(n_pulses=60)
+    js = '{"propagation": {"earth": "spherical", "earth_radius_factor": 1.3333333333333333}}'
+    ds, lam = _with_antenna(ds, 1.0, js if earth == "spherical" else None)
+    for v in ("tx_position", "rx_position"):
+        ds[v] = ds[v] + np.array([0.0, y_m, 0.0])
+    det, truth = seaecho.detect(ds, pfa=1e-2, train=8, guard=2)
+    r = ds.range.values
+    ka = 4.0 / 3.0 * 6371.0088e3 if earth == "spherical" else np.inf
+    h = H_M if y_m == 0.0 else np.hypot(y_m, H_M + ka) - ka
+    assert h == pytest.approx(H_M + (0.235 if y_m else 0.0), abs=1e-3)
+    # the beam width measured on the pattern (tests/detection/test_footprint.py checks it
+    # against 0.8859 lambda / L), so that the height's 1e-5 on sec psi is seen
+    from seaecho.detection import half_power_width
+    from seaecho.radar.antennas import Antenna
+
+    theta = half_power_width(Antenna("rectangular", lam, 1.0, 0.2).gain_local)
+    assert theta == pytest.approx(0.8859 * lam, rel=2e-4)
+
+    def area(rr, dr):
+        s = h / rr + (h**2 - rr**2) / (2 * ka * rr)
+        return rr * theta * dr / np.sqrt(1.0 - s * s)
+
+    tested = r[10:-10]  # train 8 + guard 2 each side
+    want = area(tested, r[1] - r[0]).sum()
+    assert det.attrs["area_m2"] == pytest.approx(want, rel=1e-9)
+    s = seaecho.score(det, truth)
+    n_fa = int((det.object_index.values < 0).sum())
+    assert n_fa > 0
+    assert s["false_alarms_per_km2"] == pytest.approx(n_fa / 60 / (want * 1e-6), rel=1e-9)
+    np.testing.assert_allclose(det.cell_area_m2.values, area(det.range_m.values, C0 / 2e8),
+                               rtol=1e-9)
+    assert det.attrs["beamwidth_deg"] == pytest.approx(np.rad2deg(theta), rel=1e-12)
+
+
+def test_profile_area_unknown_without_antenna_or_bistatic():
+    ds, _ = synthetic_run(n_pulses=20)
+    det, _ = seaecho.detect(ds, pfa=1e-2, train=8, guard=2)
+    assert np.isnan(det.attrs["area_m2"])
+    ds, _ = _with_antenna(ds)
+    ds["rx_position"] = ds.rx_position + np.array([50.0, 0.0, 0.0])
+    det, _ = seaecho.detect(ds, pfa=1e-2, train=8, guard=2)
+    assert np.isnan(det.attrs["area_m2"])
+
+
+def _image(power_rng, ny=60, nx=80, x0=-20.0, target=None):
+    z = (power_rng.standard_normal((1, ny, nx)) + 1j * power_rng.standard_normal((1, ny, nx))
+         ) / np.sqrt(2)
+    x = x0 + np.arange(nx) * 0.5
+    y = -15.0 + np.arange(ny) * 0.5
+    data = {"image": (("channel", "y", "x"), z),
+            "valid": (("y", "x"), np.ones((ny, nx), np.uint8))}
+    coords = {"channel": ["VV"], "x": x, "y": y}
+    if target is not None:
+        j, i = target
+        z[0, j, i] = 30.0  # 29.5 dB over the unit noise
+        data["target_position"] = (("target", "xyz"), [[x[i], y[j], 0.0]])
+        data["target_velocity"] = (("target", "xyz"), [[0.0, 0.0, 0.0]])
+        coords["target"] = ["buoy"]
+    return xr.Dataset(data, coords=coords, attrs={"pixel_m": 0.5, "n_pulses": 10,
+                                                  "prf_hz": 100.0})
+
+
+def test_clutter_map_on_a_stack_of_images_matches_nitzberg():
+    # 21 images of one grid, map weight 1/4 (warm-up 20): the last image is tested
+    # against the map of the 20 before it; exponential pixels, P_FA of Nitzberg (1986)
+    # within exact binomial bounds (one test per pixel: independent trials)
+    from seaecho.detection import theory
+
+    rng = np.random.default_rng(21)
+    stack = [_image(rng) for _ in range(20)] + [_image(rng, target=(30, 40))]
+    pfa = 1e-2
+    det, truth = seaecho.detect(stack, cfar="map", pfa=pfa, map_weight=0.25)
+    a = det.attrs
+    assert a["n_looks"] == 1 and a["cells_tested"] == 60 * 80
+    assert float(theory.pfa_clutter_map(a["alpha"], 0.25)) == pytest.approx(pfa, rel=1e-9)
+    s = seaecho.score(det, truth)
+    assert s["pd_object"] == {0: (1, 1, 1.0)}
+    fa_cells = int(det.n_cells.values[det.object_index.values < 0].sum())
+    assert _binom_ok(fa_cells, 60 * 80 - 9, pfa), fa_cells
+    assert set(det.look.values) == {20}
+
+
+def test_clutter_map_refuses_one_image_and_mixed_grids():
+    rng = np.random.default_rng(22)
+    with pytest.raises(SceneError, match="single SAR image has no past"):
+        seaecho.detect(_image(rng), cfar="map")
+    with pytest.raises(SceneError, match="same cells in every image"):
+        seaecho.detect([_image(rng), _image(rng, x0=0.0)], cfar="map")
+    with pytest.raises(SceneError, match="more than 40 images"):
+        seaecho.detect([_image(rng), _image(rng)], cfar="map")
+
+
+def test_cli_detect_on_a_stack_of_images(tmp_path, capsys):
+    from seaecho.cli import main
+
+    rng = np.random.default_rng(23)
+    paths = []
+    for k in range(6):  # weight 1: warm-up 5, the sixth image tested
+        paths.append(str(tmp_path / f"img{k}.nc"))
+        seaecho.save(_image(rng, ny=30, nx=40), paths[-1])
+    out = tmp_path / "d.csv"
+    assert main(["detect", *paths, "--cfar", "map", "--map-weight", "1", "--pfa", "0.01",
+                 "-o", str(out)]) == 0
+    rows, header = seaecho.io.detections.read_table(out)
+    assert header["n_looks"] == "1" and header["cells_tested"] == str(30 * 40)
+    assert main(["detect", *paths[:2], "--cfar", "map", "-o", str(tmp_path / "e.csv")]) == 2
+    err = capsys.readouterr().err
+    assert "more than 40 images" in err and "Traceback" not in err
+    assert not (tmp_path / "e.csv").exists()

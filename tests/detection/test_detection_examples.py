@@ -51,3 +51,45 @@ def test_sar_calibration_image_targets(tmp_path):
     # not; the mover is displaced by its motion (not modelled by the association)
     assert pd["copol10"][2] == 1.0 and pd["phased"][2] == 1.0
     assert pd["crosspol"][2] == 0.0
+
+
+@pytest.mark.slow
+def test_scanning_tracking_quick(tmp_path, capsys):
+    # 4 revolutions of the coastal VTS scene at 500 Hz: every object seen in every sweep,
+    # the tracks scored by OSPA, GOSPA and SIAP at the sweep ends
+    pytest.importorskip("stonesoup")
+    paths = _run("scanning_tracking", tmp_path)
+    assert paths[0].is_file()
+    out = capsys.readouterr().out
+    assert "P_D per object (sweeps): buoy-north 4/4, fishing-boat 4/4, cargo-ship 4/4, " \
+        "pilot-boat 4/4, buoy-far 4/4" in out
+    assert "mean OSPA" in out and "SIAP completeness 1.00" in out
+
+
+@pytest.mark.slow
+def test_clutter_map_on_simulated_sar_images_over_seeds():
+    # Six quick SAR images of Simulation 2 (16 m tile, 16 pulses) over seeds 1-6: a stack
+    # of one grid; weight 1 (warm-up 5): the sixth image is tested against the fifth, on
+    # its valid pixels only
+    import warnings
+
+    import numpy as np
+
+    from seaecho.warnings import SeaechoWarning
+
+    base = seaecho.load_scene(ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml")
+    quick = {"sea.size_x_m": 16.0, "sea.nx": 64, "radar.n_pulses": 16,
+             "radar.start_time_s": -8.0 / 222.0, "radar.sea_update_pulses": 16,
+             "radar.sigma_map_pulse": 8}
+    images = []
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", SeaechoWarning)
+        for seed in range(1, 7):
+            scene = seaecho.with_overrides(base, {**quick, "run.seed": seed})
+            images.append(seaecho.image(seaecho.simulate(scene, progress=False)))
+    det, truth = seaecho.detect(images, cfar="map", pfa=1e-3, map_weight=1.0, channel="VV")
+    assert det.attrs["detector"] == "clutter map w = 1, warm-up 5 images"
+    assert det.attrs["n_looks"] == 1
+    assert det.attrs["cells_tested"] == int((images[-1]["valid"].values > 0).sum())
+    assert set(det.look.values.tolist()) <= {5}
+    assert np.isfinite(seaecho.score(det, truth)["pfa_cell"])

@@ -15,9 +15,12 @@ def register(sub: argparse._SubParsersAction) -> None:
         "image`); join detected cells into plots and write one row per plot (time, pulse "
         "or sweep and azimuth, range, x, y, power, SNR estimate, the object it belongs to "
         "or none) to a CSV file, and the objects' opportunities (an object in a look) to "
-        "<output>_truth.csv, both atomically; `seaecho score` reads them.",
+        "<output>_truth.csv, both atomically; `seaecho score` reads them. Several images "
+        "of one grid (in time order) make a stack for the clutter map (--cfar map).",
     )
-    p.add_argument("dataset", help="run, scanning run, image (netCDF) or CfRadial 2 file")
+    p.add_argument("dataset", nargs="+",
+                   help="run, scanning run, image (netCDF) or CfRadial 2 file; or several "
+                   "images of one grid (a stack for --cfar map)")
     p.add_argument("-o", "--output", help="detections CSV (default: <dataset>_detections.csv)")
     p.add_argument("--cfar", choices=("ca", "go", "so", "os", "map"), default="ca",
                    help="cell averaging, greatest-of, smallest-of, ordered statistic, or "
@@ -43,9 +46,11 @@ def run(args: argparse.Namespace) -> int:
     from ..api import detect, write_detections
     from . import UsageError
 
-    src = Path(args.dataset)
-    if not src.exists():
-        raise UsageError(f"dataset {src} does not exist")
+    sources = [Path(d) for d in args.dataset]
+    for d in sources:
+        if not d.exists():
+            raise UsageError(f"dataset {d} does not exist")
+    src = sources[0]
     out = Path(args.output) if args.output else src.with_name(src.stem + "_detections.csv")
     if str(out.parent) and not out.parent.is_dir():
         raise UsageError(f"output directory {out.parent} does not exist")
@@ -62,7 +67,7 @@ def run(args: argparse.Namespace) -> int:
     if args.stonesoup and Path(args.stonesoup).exists() and not Path(args.stonesoup).is_dir():
         raise UsageError(f"--stonesoup {args.stonesoup}: exists and is not a directory")
     try:
-        det, truth = detect(src, cfar=args.cfar, pfa=args.pfa,
+        det, truth = detect(src if len(sources) == 1 else sources, cfar=args.cfar, pfa=args.pfa,
                             train=tuple(args.train) if len(args.train) > 1 else args.train[0],
                             guard=tuple(args.guard) if len(args.guard) > 1 else args.guard[0],
                             rank=args.rank, channel=args.channel,

@@ -97,7 +97,7 @@ class Frame:
         1: cells join along columns only (range profiles); 2: over both axes.
     cell_area_m2 : float or ndarray
         Area of each cell [m^2], broadcastable to (rows, cols) (NaN when unknown): the
-        tested cells' sum per look is the area a look covers.
+        sum over the tested cells that have one, per look, is the area a look covers.
     """
 
     kind: str
@@ -221,8 +221,11 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
         cells += int(tested.sum())
         looks += int(np.unique(fr.look[tested.any(axis=1)]).size)
         n_fr = max(int(np.unique(fr.look[tested.any(axis=1)]).size), 1)
-        areas.append(float(np.sum(np.broadcast_to(fr.cell_area_m2, tested.shape)[tested]))
-                     / n_fr)
+        # the sea a look covers: its tested cells with an area (a range profile's gates
+        # nearer than the radar's height or beyond the horizon have none)
+        cell_area = np.broadcast_to(fr.cell_area_m2, tested.shape)[tested]
+        finite = np.isfinite(cell_area)
+        areas.append(float(cell_area[finite].sum()) / n_fr if finite.any() else np.nan)
         p = extract_plots(fr.power, hits, np.where(tested, est, np.nan), ndim=fr.ndim)
         row, col = p["centroid"][:, 0], p["centroid"][:, 1]
         peak_row = p["peak_index"][:, 0]
