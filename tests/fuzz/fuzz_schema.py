@@ -33,7 +33,7 @@ from pydantic import BaseModel, TypeAdapter, ValidationError
 
 from seaecho.config import Scene, parse_scene
 from seaecho.config.consistency import allowed_channels
-from seaecho.config.radar import PlatformConfig, RadarConfig, TargetConfig
+from seaecho.config.radar import MIN_SECTOR_DEG, PlatformConfig, RadarConfig, TargetConfig
 from seaecho.config.ship import ShipConfig
 from seaecho.config.tracing import ObjectConfig
 
@@ -312,7 +312,7 @@ def _scan(draw: Draw, d: dict, get: Get) -> dict:
     d["rate_rpm"] = draw(get("rate_rpm"))
     if mode == "sector":
         d["sector_deg"] = draw(st.tuples(st.floats(-360.0, 360.0), st.floats(-360.0, 360.0))
-                               .filter(lambda a: (a[0] - a[1]) % 360.0 != 0.0))
+                               .filter(lambda a: (a[0] - a[1]) % 360.0 >= MIN_SECTOR_DEG))
     elif draw(st.booleans()):
         d["start_deg"] = draw(get("start_deg"))
     return d
