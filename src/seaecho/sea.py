@@ -53,20 +53,22 @@ class SurfaceKinematics:
         Time [s].
     displacement : ndarray (ny, nx, 2)
         Horizontal particle displacement (D_x, D_y) [m].
-    acceleration : ndarray (ny, nx, 3)
-        Particle acceleration (a_x, a_y, a_z) [m/s^2].
+    acceleration : ndarray (ny, nx, 3) or None
+        Particle acceleration (a_x, a_y, a_z) [m/s^2] (None when not asked for).
     """
 
     t: float
     displacement: NDArray[np.float64]
-    acceleration: NDArray[np.float64]
+    acceleration: NDArray[np.float64] | None
 
 
-def surface_kinematics(surface: SeaSurface, t: float) -> SurfaceKinematics:
+def surface_kinematics(surface: SeaSurface, t: float, acceleration: bool = True
+                       ) -> SurfaceKinematics:
     """:class:`SurfaceKinematics` of a :class:`~seaecho.ocean.surface.SeaSurface` at ``t``.
 
     Uses the realisation's travelling-wave amplitudes (``plus`` along +K, ``minus`` along
-    -K) and its dispersion relation, five inverse FFTs.
+    -K) and its dispersion relation, five inverse FFTs (two without ``acceleration``,
+    whose attribute is then None: the same displacement).
     """
     plus, minus = surface._travelling(t)
     z_hat = plus + minus
@@ -79,6 +81,8 @@ def surface_kinematics(surface: SeaSurface, t: float) -> SurfaceKinematics:
     w2 = -surface._omega ** 2
     irfft = surface._irfft
     disp = np.stack([irfft(dx_hat), irfft(dy_hat)], axis=-1)
+    if not acceleration:
+        return SurfaceKinematics(t=float(t), displacement=disp, acceleration=None)
     acc = np.stack([irfft(w2 * dx_hat), irfft(w2 * dy_hat), irfft(w2 * z_hat)], axis=-1)
     return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc)
 
@@ -191,10 +195,10 @@ class Sea:
     def y(self) -> NDArray[np.float64]:
         return self.surface.y
 
-    def kinematics(self, t: float = 0.0) -> SurfaceKinematics:
+    def kinematics(self, t: float = 0.0, acceleration: bool = True) -> SurfaceKinematics:
         """Particle displacement and acceleration of the wind sea at ``t`` [s]
-        (:func:`surface_kinematics`)."""
-        return surface_kinematics(self.surface, t)
+        (:func:`surface_kinematics`; the displacement alone without ``acceleration``)."""
+        return surface_kinematics(self.surface, t, acceleration)
 
     def vertical_acceleration(self, t: float = 0.0) -> NDArray[np.float64]:
         """Vertical particle acceleration of the wind sea at ``t`` [m/s^2]

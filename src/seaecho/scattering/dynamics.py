@@ -245,16 +245,42 @@ def _centro_symmetric(spectrum) -> bool:
     return True
 
 
-def extrapolate(position: ArrayLike, velocity: ArrayLike, acceleration: ArrayLike | None,
-                dt: float) -> NDArray:
-    """Eq D1 between geometry updates: ``r + v dt + a dt^2 / 2`` [m], (N, 3).
+def particle_centre(centroid: Any, displacement: Any, xp=None) -> Any:
+    """Eq D1: a facet's phase centre, its surface particle's position ``r + D`` [m].
+
+    ``centroid`` the facet's centroid ``r`` on the surface grid, ``displacement`` the
+    particle's horizontal Airy displacement ``D = (D_x, D_y)`` averaged over the facet's
+    vertices. numpy (``xp`` None): arrays (N, 3) and (N, 2); an array namespace (the
+    fused pulse kernel, :mod:`seaecho.radar.resident`): a vector and a pair of arrays.
+    """
+    if xp is None or xp.is_numpy:
+        out = np.array(centroid, dtype=float)
+        out[:, :2] += np.asarray(displacement, dtype=float)
+        return out
+    dx, dy = displacement
+    return xp.vec(centroid.x + dx, centroid.y + dy, centroid.z)
+
+
+def extrapolate(position: Any, velocity: Any, acceleration: Any | None, dt: float,
+                xp=None) -> Any:
+    """Eq D1 between geometry updates: ``r + v dt + a dt^2 / 2`` [m].
 
     The particle positions of a surface state carried ``dt`` [s] forward by their
-    velocity [m/s] and acceleration [m/s^2] (``None``: uniform motion).
+    velocity [m/s] and acceleration [m/s^2] (``None``: uniform motion). numpy (``xp``
+    None): arrays (N, 3); an array namespace (the fused pulse kernel): its vectors, ``dt``
+    entering as an opaque constant (one compiled kernel for every pulse). The same
+    operations in the same order in both.
     """
-    out = np.asarray(position, dtype=float) + np.asarray(velocity, dtype=float) * dt
+    if xp is None or xp.is_numpy:
+        const = float
+        position, velocity = (np.asarray(a, dtype=float) for a in (position, velocity))
+        if acceleration is not None:
+            acceleration = np.asarray(acceleration, dtype=float)
+    else:
+        const = xp.const
+    out = position + velocity * const(dt)
     if acceleration is not None:
-        out = out + np.asarray(acceleration, dtype=float) * (0.5 * dt * dt)
+        out = out + acceleration * const(0.5 * dt * dt)
     return out
 
 
@@ -399,4 +425,5 @@ class EvolvingSpeckle:
 
 __all__ = ["FAMILIES", "LIFETIME_MAX", "LIFETIME_MIN", "EvolvingSpeckle", "SeaDynamics",
            "bragg_frequency", "bragg_lifetime", "coherence_time", "extrapolate",
+           "particle_centre",
            "speckle_autocorrelation", "travel_fraction", "window_autocorrelation"]
