@@ -192,6 +192,8 @@ class Simulation:
         self._state_cache: tuple[float, object] | None = None
         # (time, job) of the sea state computed ahead on a thread (prefetch_surface)
         self._prefetch: tuple[float, object] | None = None
+        # (time, job) of the evolving block's kinematics computed ahead (fused kernel)
+        self._kinematics_ahead: tuple[float, object] | None = None
         # Per-sea-state quantities, computed once per block of held pulses and reused by
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
         # depends only on (scene, pulse): the cache holds what the block index determines.
@@ -310,6 +312,8 @@ class Simulation:
         from .sea import ThreadJob
 
         self._prefetch = (t, ThreadJob(self.sea.state, t))
+        if self.evolving and self._resident is not None:  # the block's kinematics too
+            self._kinematics_ahead = (t, ThreadJob(self._kinematics, t))
 
     def surface_state_at(self, t: float):
         """Sea state held at time ``t`` [s]: that of the pulse emitted at or before t
@@ -416,7 +420,11 @@ class Simulation:
         from .geometry.mesh import to_facets
 
         breaking = self.sea_model.breaking
-        kin = self.sea.kinematics(state.t, acceleration=self.block > 1 or breaking is not None)
+        ahead, self._kinematics_ahead = self._kinematics_ahead, None
+        if ahead is not None and ahead[0] == state.t:  # computed on a thread (prefetch)
+            kin = ahead[1].result()
+        else:
+            kin = self._kinematics(state.t)
         q = {"damping": wake_damping(state), "draws": None, "breaking": None,
              "t": float(state.t), "motion": {"displacement": kin.displacement,
                                              "acceleration": kin.acceleration if
@@ -426,6 +434,14 @@ class Simulation:
             acc_z = to_facets(kin.acceleration[..., 2]).reshape(-1)
             q["breaking"] = breaking_placement(-acc_z, area, breaking.q)
         return q
+
+    def _kinematics(self, t: float):
+        """The particles' kinematics of the fused kernel's evolving block at ``t`` [s]
+        (:meth:`seaecho.sea.Sea.kinematics`): the acceleration only where a pulse of a
+        block is after its surface time (``sea_update_pulses > 1``) or the breaking zones
+        are placed by it."""
+        return self.sea.kinematics(t, acceleration=self.block > 1
+                                   or self.sea_model.breaking is not None)
 
     def phase_centres(self, pulse: int, state) -> NDArray[np.float64]:
         """Phase centres of the facets at ``pulse``'s emission time [m], shape (N, 3).
