@@ -32,10 +32,13 @@ numbers are those of the reference path, bit for bit (the same operations on the
 values; tests). Eqs P1-P7, the antenna gains and the port states are evaluated in float32
 (``precision``; the delays, the carrier phase and the amplitudes' magnitude in float64),
 within 2e-6 of each channel's largest amplitude of the float64 kernel (docs/scattering.md,
-"Working precision"). The kernel holds the facets where the surface put them, which is the held
-sea (``[scattering] sea_motion = "held"``, the paper's); an evolving sea (phase centres
-carried between updates, speckle evolving at each pulse) runs the reference path
-(:func:`resident_sea` returns None; docs/dynamics.md).
+"Working precision"). A held sea (``[scattering] sea_motion = "held"``, the paper's) has its
+facets' echoes at their centroids and the block's speckle draws; an evolving sea
+(docs/dynamics.md) has them at its surface particles' positions carried from the
+surface's time to the pulse's (eq D1: the nodes' displacement and acceleration, copied
+once per surface, averaged per facet in the kernel) and the speckle of the pulse's time
+(eqs D2-D4, the anchors of :class:`seaecho.scattering.dynamics.EvolvingSpeckle` read in
+the kernel): the same functions as the reference path's, the same bytes (tests).
 
 The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
 polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
@@ -475,11 +478,11 @@ def resident_sea(radar: RadarSystem, tracing, sea_model) -> ResidentSea | None:
     """The fused sea echo of a simulation, or None where the reference path runs.
 
     The kernel covers ray-traced facets (visibility = facing and not occluded) of a held
-    sea. Analytic facets (Smith's statistical visibility) and the sub-facet shadowing are
-    evaluated by numpy functions of the geometry stage, and an evolving sea
-    (``sea_model.dynamics``: phase centres carried between updates, speckle of each
-    pulse's time) by the reference path's per-pulse stages, so those scenes keep the
-    reference path, as do machines where Dr.Jit's CPU back end does not run.
+    or an evolving sea (``sea_model.dynamics``: phase centres carried between updates,
+    speckle of each pulse's time; :meth:`ResidentSea.echo`, ``motion``). Analytic facets
+    (Smith's statistical visibility) and the sub-facet shadowing are evaluated by numpy
+    functions of the geometry stage, so those scenes keep the reference path, as do
+    machines where Dr.Jit's CPU back end does not run.
 
     Parameters
     ----------
