@@ -339,6 +339,7 @@ class EvolvingSpeckle:
         self.breaking = bool(breaking)
         self.families = [f for f in FAMILIES if f != "breaking" or self.breaking]
         self._cache: OrderedDict = OrderedDict()
+        self._device: dict[int, tuple[NDArray, Any]] = {}  # GPU copies (_wrap)
         self._cache_size = max(int(cache_size), 2 * len(self.families))
         self.tilt_phases: list[tuple[NDArray, NDArray]] = []
         if tilt_nodes:
@@ -385,10 +386,23 @@ class EvolvingSpeckle:
             total = term if total is None else total + term
         return total
 
-    @staticmethod
-    def _wrap(xp, buf: NDArray) -> Any:
-        """A cached aligned buffer as a namespace array (Dr.Jit aliases it: no copy)."""
-        return buf if xp.is_numpy else xp.Float(buf)
+    def _wrap(self, xp, buf: NDArray) -> Any:
+        """A cached aligned buffer as a namespace array: numpy's itself, Dr.Jit's CPU back
+        end aliases it (no copy); a GPU's copy is made once and kept while the anchor is
+        (not copied again at every pulse)."""
+        if xp.is_numpy:
+            return buf
+        if xp.name == "llvm":
+            return xp.Float(buf)
+        hit = self._device.get(id(buf))
+        if hit is not None and hit[0] is buf:
+            return hit[1]
+        live = {id(b) for v in self._cache.values() for b in v}
+        live |= {id(b) for v in self.tilt_phases for b in v}
+        self._device = {k: v for k, v in self._device.items() if k in live}
+        out = xp.Float(buf)
+        self._device[id(buf)] = (buf, out)
+        return out
 
     def draws(self, t: float) -> Callable:
         """The ``draws`` callable of :func:`seaecho.scattering.facet.speckled_facet_amplitudes`
