@@ -220,8 +220,8 @@ MUTATIONS = [
              "evolving speckle (11.0 Hz -> 8.6 Hz at X band, 45 deg), the Elfouhaily "
              "phase speed, KHCC03's growth rates (one formula, numpy and Dr.Jit)"),
     Mutation("bragg-line-gravity-only", S + "scattering/dynamics.py",
-             "f_b = xp.sqrt(kb * (G + SURFACE_TENSION_OVER_DENSITY * kb * kb))",
-             "f_b = xp.sqrt(kb * G)",
+             "f_b = xp.sqrt(omega_squared_deep(kb))",
+             "f_b = xp.sqrt(kb * 9.80665)",
              ("tests/scattering/test_dynamics.py",),
              "the Bragg lines of the evolving speckle without the capillary term of the "
              "dispersion relation (11.0 Hz -> 8.6 Hz at X band, 45 deg)"),
