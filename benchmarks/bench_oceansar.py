@@ -21,7 +21,10 @@ The job is the size of the paper's Simulation 2: a 128 m tile on a 512 x 512 gri
 - **seaecho**: Simulation 2 (``scenes/paper_sim2_sar_128m_wind55.toml``) with the
   shadowing ray-traced and refreshed every 0.1 s, re-traced every pulse, and with a new
   sea every pulse (with and without the ship's wake, whose synthesis OceanSAR does not
-  have); quad-pol as the scene, and co-pol (HH, VV) like OceanSAR. Per pulse: the pulse
+  have), the new sea held for its pulse (``[scattering] sea_motion = "held"``: new
+  speckle draws every pulse) or evolving (``"evolving"``, what ``"auto"`` chooses for a
+  sea renewed within the run: the speckle of the pulse's time, docs/dynamics.md);
+  quad-pol as the scene, and co-pol (HH, VV) like OceanSAR. Per pulse: the pulse
   and its range compression, as ``Simulation.run`` does.
 
 Each case runs in a subprocess of its own; the rounds alternate the two simulators so
@@ -204,7 +207,7 @@ warnings.simplefilter("ignore")
 from seaecho.config import load_scene
 from seaecho.simulation import Simulation
 
-path, pulses, skip, refresh, update, wake, channels, prefetch = sys.argv[1:9]
+path, pulses, skip, refresh, update, wake, channels, prefetch, motion = sys.argv[1:10]
 pulses, skip, update = int(pulses), int(skip), int(update)
 scene = load_scene(path)
 radar = {"sea_update_pulses": update}
@@ -212,6 +215,8 @@ if channels != "all":
     radar["channels"] = channels.split(",")
 upd = {"tracing": scene.tracing.model_copy(update={"refresh_interval_s": float(refresh)}),
        "radar": scene.radar.model_copy(update=radar)}
+if motion != "auto":
+    upd["scattering"] = scene.scattering.model_copy(update={"sea_motion": motion})
 if wake == "0":
     upd["ship"] = None
     upd["objects"] = []
@@ -233,13 +238,13 @@ print(json.dumps({"wall": wall[skip:], "cpu": cpu[skip:], "load": load,
 
 
 def run_seaecho(pulses: int, skip: int, refresh: float, update: int, wake: bool,
-                channels: str, prefetch: bool = True) -> dict:
+                channels: str, prefetch: bool = True, motion: str = "auto") -> dict:
     with tempfile.TemporaryDirectory() as d:
         child = Path(d) / "child.py"
         child.write_text(SEAECHO_CHILD)
         res = subprocess.run([sys.executable, str(child), str(SIM2), str(pulses), str(skip),
                               str(refresh), str(update), "1" if wake else "0", channels,
-                              "1" if prefetch else "0"],
+                              "1" if prefetch else "0", motion],
                              capture_output=True, text=True)
     if res.returncode != 0:
         raise RuntimeError(f"seaecho failed:\n{res.stderr[-3000:]}")
@@ -336,10 +341,16 @@ def main() -> None:
             lambda: run_seaecho(args.pulses, args.skip, 0.1, 160, True, "HH,VV", pf),
         "seaecho: held sea, shadowing re-traced every pulse, quad-pol":
             lambda: run_seaecho(args.pulses, args.skip, 0.0, 160, True, "all", pf),
-        "seaecho: new sea every pulse (+ wake), quad-pol":
-            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, True, "all", pf),
-        "seaecho: new sea every pulse, no ship, HH+VV":
-            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, False, "HH,VV", pf),
+        "seaecho: new sea every pulse, held (+ wake), quad-pol":
+            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, True, "all", pf, "held"),
+        "seaecho: new sea every pulse, held, no ship, HH+VV":
+            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, False, "HH,VV", pf, "held"),
+        "seaecho: new sea every pulse, evolving (+ wake), quad-pol":
+            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, True, "all", pf,
+                                "evolving"),
+        "seaecho: new sea every pulse, evolving, no ship, HH+VV":
+            lambda: run_seaecho(args.pulses, args.skip, 0.1, 1, False, "HH,VV", pf,
+                                "evolving"),
     }
     cases = {k: f for k, f in cases.items() if args.match in k
              and not (args.seaecho_only and k.startswith("OceanSAR"))}

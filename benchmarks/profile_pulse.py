@@ -1,6 +1,7 @@
 """Per-stage profile of a Simulation 2 pulse: wall time and CPU time of each stage.
 
-Run: ``python benchmarks/profile_pulse.py [--pulses 8] [--refresh 0.1] [--update 160]``.
+Run: ``python benchmarks/profile_pulse.py [--pulses 8] [--refresh 0.1] [--update 160]
+[--motion held|evolving]``.
 
 The stages are the functions a pulse calls, timed by wrapping them (whatever is present
 in this version of the code: the same script profiles the reference path and the fused
@@ -13,8 +14,9 @@ kernel per stage, numpy between them) instead of the fused pulse
 Stages that run on threads of their own (the ship's wake beside the ocean's synthesis in
 ``Sea.state``, the next pulse's sea computed ahead as ``Simulation.pulses`` does:
 ``--no-prefetch`` turns that off) overlap others: their CPU time counts every thread
-during their interval. ``--update 1`` draws a new sea every pulse; ``--freeze on`` replays
-the fused kernel with ``drjit.freeze``.
+during their interval. ``--update 1`` draws a new sea every pulse (which the scene's
+``sea_motion = "auto"`` evolves; ``--motion held`` holds it within each pulse);
+``--freeze on`` replays the fused kernel with ``drjit.freeze``.
 
 On a shared machine the wall time is inflated by the other processes; the CPU time is
 the steadier figure (``docs/performance.md``). The load average is printed with it.
@@ -45,6 +47,9 @@ STAGES = [
     ("seaecho.wake.kelvin", "KelvinWake.fields", "Kelvin wake", 2),
     ("seaecho.wake.turbulent", "turbulent_wake_mask", "turbulent wake mask", 2),
     ("seaecho.simulation", "Simulation._block_quantities", "speckle draws + wake mask", 1),
+    ("seaecho.sea", "Sea.kinematics", "particle kinematics (evolving)", 2),
+    ("seaecho.scattering.dynamics", "EvolvingSpeckle.anchor", "speckle anchors (evolving)",
+     2),
     ("seaecho.scattering.facet", "speckle_draws", "speckle draws (numpy)", 2),
     ("seaecho.scattering.facet", "circular_gaussians", "speckle draws, further (numpy)", 2),
     ("seaecho.rng", "facet_gaussians", "speckle draws (Philox4x32)", 2),
@@ -140,6 +145,14 @@ def main() -> None:
     ap.add_argument("--freeze", choices=["on", "off"], default=None,
                     help="replay the fused kernel with drjit.freeze (default: "
                          "seaecho.radar.resident.FREEZE)")
+    ap.add_argument("--motion", choices=["auto", "held", "evolving"], default=None,
+                    help="[scattering] sea_motion (default: the scene's; 'auto' evolves "
+                    "a sea renewed within the run, e.g. --update 1)")
+    ap.add_argument("--no-ship", action="store_true",
+                    help="without the ship (its wake and hull): OceanSAR's job")
+    ap.add_argument("--channels", default=None,
+                    help="[radar] channels, comma-separated (e.g. HH,VV; default: the "
+                    "scene's)")
     ap.add_argument("--scene", type=Path, default=None,
                     help="another scene file (default: Simulation 2)")
     ap.add_argument("--first", type=int, default=40,
@@ -157,12 +170,20 @@ def main() -> None:
     from seaecho.simulation import Simulation
 
     scene = load_scene(SIM2)
-    update = {"radar": scene.radar.model_copy(update={"sea_update_pulses": args.update})}
+    radar = {"sea_update_pulses": args.update}
+    if args.channels:
+        radar["channels"] = args.channels.split(",")
+    update = {"radar": scene.radar.model_copy(update=radar)}
+    if args.no_ship:
+        update.update(ship=None, objects=[])
     if scene.tracing is not None:
         update["tracing"] = scene.tracing.model_copy(
             update={"refresh_interval_s": args.refresh})
     if args.grid:
         update["sea"] = scene.sea.model_copy(update={"nx": args.grid})
+    if args.motion is not None:
+        update["scattering"] = scene.scattering.model_copy(
+            update={"sea_motion": args.motion})
     scene = scene.model_copy(update=update)
     timer = Timer()
     found = install(timer)
@@ -197,8 +218,12 @@ def main() -> None:
     res = sim._resident
     path = ("reference path" if res is None else
             f"fused kernel, {'frozen' if getattr(res, 'freeze', False) else 'traced'}")
+    motion = "evolving" if getattr(sim, "evolving", False) else "held"
     print(f"profile_pulse: {SIM2.stem}, {scene.sea.nx}^2 sea, refresh_interval_s = "
-          f"{args.refresh:g}, sea_update_pulses = {args.update}, {n} pulses, {path}, "
+          f"{args.refresh:g}, sea_update_pulses = {args.update}, {motion} sea, "
+          f"{'no ship, ' if args.no_ship else ''}{','.join(scene.radar.channels)}, "
+          f"{n} pulses, "
+          f"{path}, "
           f"NUFFT {args.nufft_precision}; "
           f"{os.cpu_count()} CPUs, load {load0:.2f} -> {os.getloadavg()[0]:.2f}")
     print(f"  set-up and 2 warm-up pulses: {setup[0]:.2f} s wall, {setup[1]:.2f} s CPU")

@@ -220,11 +220,26 @@ MUTATIONS = [
              "evolving speckle (11.0 Hz -> 8.6 Hz at X band, 45 deg), the Elfouhaily "
              "phase speed, KHCC03's growth rates (one formula, numpy and Dr.Jit)"),
     Mutation("bragg-line-gravity-only", S + "scattering/dynamics.py",
-             "f_b = xp.sqrt(kb * (G + SURFACE_TENSION_OVER_DENSITY * kb * kb))",
-             "f_b = xp.sqrt(kb * G)",
+             "f_b = xp.sqrt(omega_squared_deep(kb))",
+             "f_b = xp.sqrt(kb * 9.80665)",
              ("tests/scattering/test_dynamics.py",),
              "the Bragg lines of the evolving speckle without the capillary term of the "
              "dispersion relation (11.0 Hz -> 8.6 Hz at X band, 45 deg)"),
+    Mutation("fused-evolving-centre-without-displacement", S + "scattering/dynamics.py",
+             "return xp.vec(centroid.x + dx, centroid.y + dy, centroid.z)",
+             "return xp.vec(centroid.x, centroid.y + dy, centroid.z)",
+             ("tests/radar/test_resident.py",),
+             "eq D1 in the fused kernel: the phase centre without the particle's x "
+             "displacement"),
+    Mutation("fused-evolving-echo-at-centroids", S + "radar/kernels.py",
+             'facets.get("position", facets["centroid"])', 'facets["centroid"]',
+             ("tests/radar/test_resident.py",),
+             "the fused evolving pulse echoes from the centroids, not the carried particle "
+             "positions (eq D1)"),
+    Mutation("extrapolate-full-acceleration", S + "scattering/dynamics.py",
+             "acceleration * const(0.5 * dt * dt)", "acceleration * const(dt * dt)",
+             ("tests/test_simulation.py", "tests/radar/test_resident.py"),
+             "eq D1: a dt^2 instead of a dt^2 / 2 (both paths)"),
     Mutation("auto-motion-held-when-renewed", S + "build.py",
              "r.sea_update_pulses >= r.n_pulses", "r.sea_update_pulses > 1",
              ("tests/test_build.py",),

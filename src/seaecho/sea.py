@@ -8,6 +8,7 @@ stages (tracing, radar) take its :class:`SurfaceState` arrays.
 from __future__ import annotations
 
 import threading
+import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -53,34 +54,53 @@ class SurfaceKinematics:
         Time [s].
     displacement : ndarray (ny, nx, 2)
         Horizontal particle displacement (D_x, D_y) [m].
-    acceleration : ndarray (ny, nx, 3)
-        Particle acceleration (a_x, a_y, a_z) [m/s^2].
+    acceleration : ndarray (ny, nx, 3) or None
+        Particle acceleration (a_x, a_y, a_z) [m/s^2] (None when not asked for).
     """
 
     t: float
     displacement: NDArray[np.float64]
-    acceleration: NDArray[np.float64]
+    acceleration: NDArray[np.float64] | None
 
 
-def surface_kinematics(surface: SeaSurface, t: float) -> SurfaceKinematics:
+def surface_kinematics(surface: SeaSurface, t: float, acceleration: bool = True
+                       ) -> SurfaceKinematics:
     """:class:`SurfaceKinematics` of a :class:`~seaecho.ocean.surface.SeaSurface` at ``t``.
 
     Uses the realisation's travelling-wave amplitudes (``plus`` along +K, ``minus`` along
-    -K) and its dispersion relation, five inverse FFTs.
+    -K) and its dispersion relation, five inverse FFTs (two without ``acceleration``,
+    whose attribute is then None: the same displacement).
     """
     plus, minus = surface._travelling(t)
     z_hat = plus + minus
-    k = np.hypot(surface._kx, surface._ky)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        coth = 1.0 if surface.depth is None else 1.0 / np.tanh(k * surface.depth)
-        gain = np.where(k > 0, coth / np.where(k > 0, k, 1.0), 0.0)
-    dx_hat = 1j * surface._kx * gain * z_hat  # j (K_x / K) coth(K d) z
-    dy_hat = 1j * surface._ky * gain * z_hat
+    jx, jy = _displacement_factors(surface)
+    dx_hat = jx * z_hat  # j (K_x / K) coth(K d) z
+    dy_hat = jy * z_hat
     w2 = -surface._omega ** 2
     irfft = surface._irfft
-    disp = np.stack([irfft(dx_hat), irfft(dy_hat)], axis=-1)
+    disp = np.moveaxis(irfft(np.stack([dx_hat, dy_hat])), 0, -1)  # one batched FFT
+    if not acceleration:
+        return SurfaceKinematics(t=float(t), displacement=disp, acceleration=None)
     acc = np.stack([irfft(w2 * dx_hat), irfft(w2 * dy_hat), irfft(w2 * z_hat)], axis=-1)
     return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc)
+
+
+_FACTORS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def _displacement_factors(surface: SeaSurface) -> tuple[NDArray, NDArray]:
+    """``j K_x coth(K d) / K`` and ``j K_y coth(K d) / K`` of a surface's wavenumbers [-]
+    (0 at K = 0): the time-independent factors of the horizontal displacement, made once
+    per surface."""
+    out = _FACTORS.get(surface)
+    if out is None:
+        k = np.hypot(surface._kx, surface._ky)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            coth = 1.0 if surface.depth is None else 1.0 / np.tanh(k * surface.depth)
+            gain = np.where(k > 0, coth / np.where(k > 0, k, 1.0), 0.0)
+        out = (1j * surface._kx * gain, 1j * surface._ky * gain)
+        _FACTORS[surface] = out
+    return out
 
 
 def vertical_acceleration(surface: SeaSurface, t: float) -> NDArray[np.float64]:
@@ -191,10 +211,10 @@ class Sea:
     def y(self) -> NDArray[np.float64]:
         return self.surface.y
 
-    def kinematics(self, t: float = 0.0) -> SurfaceKinematics:
+    def kinematics(self, t: float = 0.0, acceleration: bool = True) -> SurfaceKinematics:
         """Particle displacement and acceleration of the wind sea at ``t`` [s]
-        (:func:`surface_kinematics`)."""
-        return surface_kinematics(self.surface, t)
+        (:func:`surface_kinematics`; the displacement alone without ``acceleration``)."""
+        return surface_kinematics(self.surface, t, acceleration)
 
     def vertical_acceleration(self, t: float = 0.0) -> NDArray[np.float64]:
         """Vertical particle acceleration of the wind sea at ``t`` [m/s^2]

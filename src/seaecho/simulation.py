@@ -192,6 +192,8 @@ class Simulation:
         self._state_cache: tuple[float, object] | None = None
         # (time, job) of the sea state computed ahead on a thread (prefetch_surface)
         self._prefetch: tuple[float, object] | None = None
+        # (time, job) of the evolving block's kinematics computed ahead (fused kernel)
+        self._kinematics_ahead: tuple[float, object] | None = None
         # Per-sea-state quantities, computed once per block of held pulses and reused by
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
         # depends only on (scene, pulse): the cache holds what the block index determines.
@@ -310,6 +312,8 @@ class Simulation:
         from .sea import ThreadJob
 
         self._prefetch = (t, ThreadJob(self.sea.state, t))
+        if self.evolving and self._resident is not None:  # the block's kinematics too
+            self._kinematics_ahead = (t, ThreadJob(self._kinematics, t))
 
     def surface_state_at(self, t: float):
         """Sea state held at time ``t`` [s]: that of the pulse emitted at or before t
@@ -383,27 +387,61 @@ class Simulation:
             held["host_draws"] = out
         return held["host_draws"]
 
-    def _evolving_block(self, state) -> dict:
+    def _evolving_block(self, state, reference: bool = False) -> dict:
         """Per-block quantities of an evolving sea: wake damping, breaking placement, and
         the facets' phase centres with their velocities and accelerations at the block's
         surface time (the particles' positions ``r + D``, eq D1), from which each pulse
         extrapolates to its own time (:meth:`phase_centres`)."""
         from .geometry.mesh import to_facets
+        from .scattering.dynamics import particle_centre
 
+        if self._resident is not None and not reference:
+            return self._evolving_block_fused(state)
         kin = self.sea.kinematics(state.t)
         centroid, area, _, velocity = self.engine.geometry(state)
         disp = np.stack([to_facets(kin.displacement[..., i]).reshape(-1) for i in range(2)],
                         axis=-1)
         acc = np.stack([to_facets(kin.acceleration[..., i]).reshape(-1) for i in range(3)],
                        axis=-1)
-        centre = centroid.copy()
-        centre[:, :2] += disp
+        centre = particle_centre(centroid, disp)
         q = {"damping": wake_damping(state), "draws": None,
              "breaking": None, "t": float(state.t), "centre": centre, "velocity": velocity,
              "acceleration": acc}
         if self.sea_model.breaking is not None:
             q["breaking"] = breaking_placement(-acc[:, 2], area, self.sea_model.breaking.q)
         return q
+
+    def _evolving_block_fused(self, state) -> dict:
+        """:meth:`_evolving_block` for the fused kernel (``radar.resident``), which
+        computes the phase centres from the nodes' displacement and acceleration (the same
+        facet means and operations): those node fields (the acceleration only where a
+        pulse of the block is after its surface time, ``sea_update_pulses > 1``, or the
+        breaking zones need it), the wake damping and the breaking placement."""
+        from .geometry.mesh import to_facets
+
+        breaking = self.sea_model.breaking
+        ahead, self._kinematics_ahead = self._kinematics_ahead, None
+        if ahead is not None and ahead[0] == state.t:  # computed on a thread (prefetch)
+            kin = ahead[1].result()
+        else:
+            kin = self._kinematics(state.t)
+        q = {"damping": wake_damping(state), "draws": None, "breaking": None,
+             "t": float(state.t), "motion": {"displacement": kin.displacement,
+                                             "acceleration": kin.acceleration if
+                                             self.block > 1 else None}}
+        if breaking is not None:
+            area = self.engine.geometry(state)[1]
+            acc_z = to_facets(kin.acceleration[..., 2]).reshape(-1)
+            q["breaking"] = breaking_placement(-acc_z, area, breaking.q)
+        return q
+
+    def _kinematics(self, t: float):
+        """The particles' kinematics of the fused kernel's evolving block at ``t`` [s]
+        (:meth:`seaecho.sea.Sea.kinematics`): the acceleration only where a pulse of a
+        block is after its surface time (``sea_update_pulses > 1``) or the breaking zones
+        are placed by it."""
+        return self.sea.kinematics(t, acceleration=self.block > 1
+                                   or self.sea_model.breaking is not None)
 
     def phase_centres(self, pulse: int, state) -> NDArray[np.float64]:
         """Phase centres of the facets at ``pulse``'s emission time [m], shape (N, 3).
@@ -420,6 +458,9 @@ class Simulation:
             return self.engine.geometry(state)[0]
         from .scattering.dynamics import extrapolate
 
+        if "centre" not in held:  # the fused kernel's block: the reference's quantities
+            held.update({k: v for k, v in self._evolving_block(state, reference=True).items()
+                         if k not in held})
         dt = float(self.radar.emission_time(pulse)) - held["t"]
         return extrapolate(held["centre"], held["velocity"], held["acceleration"], dt)
 
@@ -466,10 +507,16 @@ class Simulation:
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
         if self._resident is not None and not sigma:  # one kernel, the same numbers
-            held = self._block_quantities(pulse, st, self._resident.n_facets(st))
+            n = self._resident.n_facets(st)
+            held = self._block_quantities(pulse, st, n)
             _, *hidden = self.engine.occlusion(geo.time, st)
-            echo = self._resident.echo(geo, st, hidden, held["draws"], held["damping"],
-                                       breaking=held["breaking"])
+            draws, motion = held["draws"], None
+            if self.evolving:  # eqs D1-D4 of the pulse's time, in the kernel
+                draws = self._speckle_process(n).draws(float(geo.time))
+                motion = dict(held["motion"],
+                              dt=float(self.radar.emission_time(pulse)) - held["t"])
+            echo = self._resident.echo(geo, st, hidden, draws, held["damping"],
+                                       breaking=held["breaking"], motion=motion)
             return SeaEcho(echo, None, None)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility

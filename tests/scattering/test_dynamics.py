@@ -193,3 +193,32 @@ def test_anchors_do_not_depend_on_the_order_of_requests():
     for x, y in zip(a, b, strict=True):
         assert x.tobytes() == y.tobytes()
     assert math.isfinite(float(np.abs(a[2]).sum()))
+
+
+def test_device_copies_of_the_anchors_are_made_once():
+    # On a GPU, a numpy anchor becomes a device array by a copy: it is made once per
+    # anchor and kept while the anchor is used (not at every pulse). Emulated on the CPU
+    # back end with the namespace named as a GPU's; values as the aliased arrays'.
+    import copy
+
+    from seaecho import backend
+
+    if not backend.drjit_available():
+        pytest.skip("Dr.Jit LLVM backend unavailable")
+    llvm = backend.drjit_namespace()
+    gpu = copy.copy(llvm)
+    gpu.name = "cuda"
+    sp = EvolvingSpeckle(_dynamics(lifetime=1.0), seed=5, n_facets=64)
+    g = sp.process_values("specular", 0.10, 3.0, 0.5, gpu)  # anchors 0 and 1
+    copies = {k: v[1] for k, v in sp._device.items()}
+    assert len(copies) == 6
+    for t in (0.15, 0.20):  # the same anchors: no new copy
+        g = sp.process_values("specular", t, 3.0, 0.5, gpu)
+    assert len(sp._device) == 6
+    assert all(sp._device[k][1] is v for k, v in copies.items())
+    ref = sp.process_values("specular", 0.20, 3.0, 0.5, llvm)
+    np.testing.assert_array_equal(g.real.numpy(), ref.real.numpy())
+    np.testing.assert_array_equal(g.imag.numpy(), ref.imag.numpy())
+    sp.process_values("specular", 1.5, 3.0, 0.5, gpu)  # anchors 1 and 2: three more
+    assert len(sp._device) == 9
+    assert all(sp._device[k][1] is v for k, v in copies.items())

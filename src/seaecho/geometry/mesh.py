@@ -224,8 +224,8 @@ def facet_geometry(vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nda
     return centroid.reshape(-1, 3), 0.5 * twice_area, normal.reshape(-1, 3)
 
 
-def facet_geometry_in(xp, x: Any, y: Any, elevation: Any, velocity: Any, nx: int, ny: int
-                      ) -> dict[str, Any]:
+def facet_geometry_in(xp, x: Any, y: Any, elevation: Any, velocity: Any, nx: int, ny: int,
+                      node_fields: dict[str, Any] | None = None) -> dict[str, Any]:
     """:func:`facet_geometry` and the facets' velocities (:func:`to_facets`) in a kernel.
 
     Each facet gathers its vertices from the node arrays, so only the nodes need to be
@@ -242,12 +242,16 @@ def facet_geometry_in(xp, x: Any, y: Any, elevation: Any, velocity: Any, nx: int
         Node velocities [m/s].
     nx, ny : int
         Grid nodes per row and per column.
+    node_fields : dict, optional
+        Further node quantities (namespace arrays (ny nx,), row-major): each is returned
+        under its key as its facet mean (:func:`to_facets`, the same operations).
 
     Returns
     -------
     dict
         ``centroid`` [m], ``area`` [m^2], ``normal`` [-], ``velocity`` [m/s] of the
-        2 (nx - 1) (ny - 1) facets, in the order of the module docstring.
+        2 (nx - 1) (ny - 1) facets, in the order of the module docstring, and the facet
+        means of ``node_fields``.
     """
     j = xp.arange(facet_count(nx, ny))
     cell = j // 2
@@ -269,4 +273,8 @@ def facet_geometry_in(xp, x: Any, y: Any, elevation: Any, velocity: Any, nx: int
         return xp.vec(*(xp.gather(c, idx) for c in (v.x, v.y, v.z)))
 
     vel = vertex_mean(xp, node(velocity, v00), node(velocity, v11), node(velocity, v_other))
-    return dict(centroid=centroid, area=0.5 * twice_area, normal=normal, velocity=vel)
+    out = dict(centroid=centroid, area=0.5 * twice_area, normal=normal, velocity=vel)
+    for name, f in (node_fields or {}).items():
+        out[name] = vertex_mean(xp, xp.gather(f, v00), xp.gather(f, v11),
+                                xp.gather(f, v_other))
+    return out

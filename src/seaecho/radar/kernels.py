@@ -40,7 +40,7 @@ from ..backend import Boundary, Mat2, Rows
 from ..constants import C0
 from ..geometry.bistatic import ranges
 from ..geometry.frames import basis_change, bistatic_angles, fsa_basis
-from ..scattering.facet import speckle
+from ..scattering.facet import draw_context, speckle
 from .antennas import port_coefficients
 from .equation import amplitude_factor, carrier, flight, polarimetric_factor
 
@@ -214,8 +214,8 @@ def facet_visibility(xp, geometry, facets: dict[str, Any]) -> tuple[Any, Any, An
 
 
 def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: Any,
-                   draws: dict[str, Any], lo: float, hi: float, *,
-                   scattering: Any = None) -> dict[str, Any]:
+                   draws: Any, lo: float, hi: float, *, scattering: Any = None,
+                   wavenumber: float | None = None) -> dict[str, Any]:
     """One pulse of sea facets over a namespace: visibility, eqs P1-P4, eqs R1 and R3.
 
     Parameters
@@ -229,12 +229,20 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
     facets : dict
         Namespace values: ``centroid``, ``normal``, ``velocity`` (vectors) [m, -, m/s],
         ``area`` [m^2], ``hidden_tx``, ``hidden_rx`` (Bool: segment to the transmitter /
-        receiver blocked, ``FacetEngine.occlusion``).
+        receiver blocked, ``FacetEngine.occlusion``); optionally ``position`` (vector
+        [m]): the phase centres whose echo eqs R1 and R3 compute (the evolving sea's
+        particle positions at the pulse's time, eq D1 of
+        :mod:`seaecho.scattering.dynamics`), the centroids otherwise. The facing test and
+        the scattering use the centroids, as the facet engine does.
     mechanisms_of : callable
         ``(n_i, n_s, N) -> mechanisms`` (:func:`seaecho.scattering.facet.mechanisms` with
         the sea's values bound): the facets' mechanism matrices and weights.
-    draws : dict
-        Speckle draws per mechanism (complex namespace values, eq P4).
+    draws : dict or callable
+        Speckle draws per mechanism (complex namespace values, eq P4), or a callable
+        ``draws(xp, io, context)`` returning them (the evolving speckle, eqs D2-D4 of
+        :mod:`seaecho.scattering.dynamics`), evaluated in ``xp`` (float64) with the
+        context of :func:`seaecho.scattering.facet.draw_context`, as the reference path
+        (:func:`~seaecho.scattering.facet.speckled_facet_amplitudes`) does.
     lo, hi : float
         Delays [s] outside which an echo cannot reach the receive window
         (``ReceiveWindow.keep``).
@@ -243,6 +251,9 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
         ``xp.with_precision("single")``): the directions, normals, areas and draws are
         cast to it, and the amplitudes it gives enter eqs R1 and R3, which stay in
         ``xp``. Default ``xp``.
+    wavenumber : float, optional
+        The radar's wavenumber ``k`` [rad/m] of the sea's scattering model (the
+        ``FacetModel``'s), for callable ``draws``.
 
     Returns
     -------
@@ -255,9 +266,14 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
     # Eqs P1-P4 with the facet's area times its visibility (0 or 1)
     area = facets["area"] * xp.select(visible, xp.const(1.0), xp.const(0.0))
     mech = mechanisms_of(xs.cast(n_i), xs.cast(n_s), xs.cast(facets["normal"]))
+    if callable(draws):  # the evolving speckle of the pulse's time, in float64
+        if wavenumber is None:
+            raise ValueError("sea_echo_terms: evolving draws need the wavenumber")
+        draws = draws(xp, Boundary(xp), draw_context(xp, n_i, n_s, facets["normal"],
+                                                      wavenumber))
     s = speckle(xs, mech, {m: xs.cast(g) for m, g in draws.items()}, xs.cast(area))
     # Eqs R1, R3
-    t = echo_terms(xp, radar, geometry, facets["centroid"], facets["velocity"], s,
-                   scattering=scattering)
+    t = echo_terms(xp, radar, geometry, facets.get("position", facets["centroid"]),
+                   facets["velocity"], s, scattering=scattering)
     keep = visible & (t["tau"] > lo) & (t["tau"] < hi)
     return dict(tau=t["tau"], amplitudes=t["amplitudes"], keep=keep)

@@ -32,10 +32,13 @@ numbers are those of the reference path, bit for bit (the same operations on the
 values; tests). Eqs P1-P7, the antenna gains and the port states are evaluated in float32
 (``precision``; the delays, the carrier phase and the amplitudes' magnitude in float64),
 within 2e-6 of each channel's largest amplitude of the float64 kernel (docs/scattering.md,
-"Working precision"). The kernel holds the facets where the surface put them, which is the held
-sea (``[scattering] sea_motion = "held"``, the paper's); an evolving sea (phase centres
-carried between updates, speckle evolving at each pulse) runs the reference path
-(:func:`resident_sea` returns None; docs/dynamics.md).
+"Working precision"). A held sea (``[scattering] sea_motion = "held"``, the paper's) has its
+facets' echoes at their centroids and the block's speckle draws; an evolving sea
+(docs/dynamics.md) has them at its surface particles' positions carried from the
+surface's time to the pulse's (eq D1: the nodes' displacement and acceleration, copied
+once per surface, averaged per facet in the kernel) and the speckle of the pulse's time
+(eqs D2-D4, the anchors of :class:`seaecho.scattering.dynamics.EvolvingSpeckle` read in
+the kernel): the same functions as the reference path's, the same bytes (tests).
 
 The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
 polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
@@ -46,6 +49,7 @@ from __future__ import annotations
 
 import os
 import weakref
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -53,6 +57,7 @@ from numpy.typing import NDArray
 
 from ..backend import Boundary, drjit_namespace
 from ..geometry.mesh import facet_count, facet_geometry_in
+from ..scattering.dynamics import extrapolate, particle_centre
 from ..scattering.facet import (
     PRECISION,
     FacetModel,
@@ -162,6 +167,7 @@ class ResidentSea:
         self.tilt = facet_model.tilt
         self._lo, self._hi = radar.window.bounds(radar.waveform.n_samples)
         self._surface: tuple[weakref.ref, dict] | None = None
+        self._motion_cache: tuple[NDArray, dict] | None = None
         #: replay the recorded pulse kernel (``drjit.freeze``) instead of tracing it
         self.freeze = FREEZE if freeze is None else bool(freeze)
         self._frozen = None
@@ -202,9 +208,9 @@ class ResidentSea:
         return nodes
 
     def echo(self, geometry: PulseGeometry, surface, hidden: tuple,
-             draws: tuple[NDArray, NDArray] | dict[str, NDArray],
-             damping: NDArray | None = None, *, breaking: NDArray | None = None
-             ) -> ScattererEcho | DeviceEcho:
+             draws: tuple[NDArray, NDArray] | dict[str, NDArray] | Callable,
+             damping: NDArray | None = None, *, breaking: NDArray | None = None,
+             motion: dict | None = None) -> ScattererEcho | DeviceEcho:
         """The sea facets' echo of one pulse.
 
         Parameters
@@ -218,14 +224,27 @@ class ResidentSea:
             (:func:`seaecho.geometry.mesh.facet_geometry_in`).
         hidden : (hidden_tx, hidden_rx)
             Occlusion masks (``FacetEngine.occlusion``), device arrays or numpy.
-        draws : (g_K, g_B) or dict
+        draws : (g_K, g_B) or dict or callable
             Speckle draws of the sea state (N,) complex each (eq P4): ``(g_K, g_B)``, or
             one per mechanism (``"specular"``, ``"bragg"``, ``"bragg1"`` .. ``"bragg4"``
-            with ``tilt``, ``"breaking"`` with ``breaking``).
+            with ``tilt``, ``"breaking"`` with ``breaking``); or the evolving sea's
+            ``draws(xp, io, context)`` of the pulse's time
+            (:meth:`seaecho.scattering.dynamics.EvolvingSpeckle.draws`), evaluated in the
+            kernel.
         damping : (N,) array, optional
             Turbulent-wake damping in [0, 1].
         breaking : (N,) array, optional
             Fraction of each facet covered by breaking zones, in [0, 1] (eq P7).
+        motion : dict, optional
+            The evolving sea's phase centres (eq D1 of
+            :mod:`seaecho.scattering.dynamics`): ``"displacement"`` (ny, nx, 2) the
+            particles' horizontal displacement [m] and ``"acceleration"`` (ny, nx, 3)
+            [m/s^2] or None at the surface's nodes (copied to the device once per such
+            dict), ``"dt"`` the pulse's time after the surface's [s]. The facets' echoes
+            then come from ``r + D + v dt + a dt^2 / 2`` (facet means of the nodes'
+            values, :func:`~seaecho.scattering.dynamics.particle_centre`,
+            :func:`~seaecho.scattering.dynamics.extrapolate`) instead of the centroids.
+            An evolving pulse is traced, never frozen.
 
         Returns
         -------
@@ -245,11 +264,16 @@ class ResidentSea:
         inputs = dict(
             nodes=(nodes["x"], nodes["y"], nodes["z"], nodes["v"]),
             hidden=(self._mask(hidden[0]), self._mask(hidden[1])),
-            draws={m: io.complex(d) for m, d in self._draws(draws, n, breaking).items()},
+            draws=draws if callable(draws) else
+            {m: io.complex(d) for m, d in self._draws(draws, n, breaking).items()},
             damping=None if damping is None else io.array(damping),
             breaking=None if breaking is None else io.array(breaking),
             table=self.facet_model.spectrum._values(self.xs))
-        if self.freeze:
+        if motion is not None:
+            inputs["motion"] = dict(self._motion(motion), dt=float(motion["dt"]))
+        if callable(draws) or motion is not None:  # per-pulse anchors: traced
+            tau, keep, packed = self._terms(xp, inputs, geometry, nx, ny)
+        elif self.freeze:
             tau, keep, packed = self._frozen_terms(inputs, geometry, nx, ny)
         else:
             tau, keep, packed = self._terms(xp, inputs, geometry, nx, ny)
@@ -279,11 +303,22 @@ class ResidentSea:
         the geometry bound to inputs when frozen)."""
         n = facet_count(nx, ny)
         io = Boundary(xp, n)
-        facets = facet_geometry_in(xp, *inputs["nodes"], nx, ny)
+        motion = inputs.get("motion")
+        fields = None if motion is None else motion["nodes"]
+        facets = facet_geometry_in(xp, *inputs["nodes"], nx, ny, fields)
         facets.update(hidden_tx=inputs["hidden"][0], hidden_rx=inputs["hidden"][1])
+        if motion is not None:  # eq D1: the particles' positions at the pulse's time
+            centre = particle_centre(facets["centroid"], (facets.pop("dx"), facets.pop("dy")),
+                                     xp)
+            acc = None
+            if "ax" in fields:
+                acc = xp.vec(facets.pop("ax"), facets.pop("ay"), facets.pop("az"))
+            facets["position"] = extrapolate(centre, facets["velocity"], acc, motion["dt"],
+                                             xp)
         t = sea_echo_terms(xp, self.radar, geometry, facets,
                            self._mechanisms(io, inputs["damping"], inputs["breaking"]),
-                           inputs["draws"], self._lo, self._hi, scattering=self.xs)
+                           inputs["draws"], self._lo, self._hi, scattering=self.xs,
+                           wavenumber=float(self.facet_model.k))
         # Each channel packed as the memory of a complex (N,) array, in the kernel (one
         # buffer per channel: scatters into distinct arrays share the kernel)
         idx = xp.arange(n)
@@ -384,6 +419,26 @@ class ResidentSea:
         sigma0 = np.moveaxis(rcs.reshape(grid + (4,)).sum(axis=2), -1, 0) / (dx * dy)
         return sigma0, vis_h.reshape(grid).mean(axis=2)
 
+    def _motion(self, motion: dict) -> dict:
+        """The evolving sea's node fields on the device: ``{"nodes": {"dx", "dy"[, "ax",
+        "ay", "az"]}}`` (copied once per ``motion["displacement"]`` array)."""
+        disp = motion["displacement"]
+        if self._motion_cache is not None and self._motion_cache[0] is disp:
+            return self._motion_cache[1]
+        xp = self.xp
+        io = Boundary(xp)
+        nodes = {name: io.array(np.ascontiguousarray(disp[..., i], dtype=np.float64)
+                                .reshape(-1)) for i, name in enumerate(("dx", "dy"))}
+        acc = motion.get("acceleration")
+        if acc is not None:
+            nodes.update({name: io.array(np.ascontiguousarray(acc[..., i], dtype=np.float64)
+                                         .reshape(-1))
+                          for i, name in enumerate(("ax", "ay", "az"))})
+        xp.eval(*nodes.values())
+        out = {"nodes": nodes, "keep": io._keep}
+        self._motion_cache = (disp, out)
+        return out
+
     def _draws(self, draws: Any, n: int, breaking: Any) -> dict[str, NDArray]:
         """The draws as ``{mechanism: (N,) complex}``, one for each of the model's
         mechanisms (a clear error for a missing one or a wrong shape)."""
@@ -423,11 +478,11 @@ def resident_sea(radar: RadarSystem, tracing, sea_model) -> ResidentSea | None:
     """The fused sea echo of a simulation, or None where the reference path runs.
 
     The kernel covers ray-traced facets (visibility = facing and not occluded) of a held
-    sea. Analytic facets (Smith's statistical visibility) and the sub-facet shadowing are
-    evaluated by numpy functions of the geometry stage, and an evolving sea
-    (``sea_model.dynamics``: phase centres carried between updates, speckle of each
-    pulse's time) by the reference path's per-pulse stages, so those scenes keep the
-    reference path, as do machines where Dr.Jit's CPU back end does not run.
+    or an evolving sea (``sea_model.dynamics``: phase centres carried between updates,
+    speckle of each pulse's time; :meth:`ResidentSea.echo`, ``motion``). Analytic facets
+    (Smith's statistical visibility) and the sub-facet shadowing are evaluated by numpy
+    functions of the geometry stage, so those scenes keep the reference path, as do
+    machines where Dr.Jit's CPU back end does not run.
 
     Parameters
     ----------
@@ -447,8 +502,6 @@ def resident_sea(radar: RadarSystem, tracing, sea_model) -> ResidentSea | None:
         return None
     variant = check_variant(tracing.variant)  # a clear error now, not mid-run
     if tracing.mode != "raytraced" or tracing.subfacet is not None:
-        return None
-    if sea_model.dynamics is not None:  # evolving sea: the reference path
         return None
     if radar.model.multipath is not None:  # the two-ray factors: the reference path
         return None

@@ -245,16 +245,42 @@ def _centro_symmetric(spectrum) -> bool:
     return True
 
 
-def extrapolate(position: ArrayLike, velocity: ArrayLike, acceleration: ArrayLike | None,
-                dt: float) -> NDArray:
-    """Eq D1 between geometry updates: ``r + v dt + a dt^2 / 2`` [m], (N, 3).
+def particle_centre(centroid: Any, displacement: Any, xp=None) -> Any:
+    """Eq D1: a facet's phase centre, its surface particle's position ``r + D`` [m].
+
+    ``centroid`` the facet's centroid ``r`` on the surface grid, ``displacement`` the
+    particle's horizontal Airy displacement ``D = (D_x, D_y)`` averaged over the facet's
+    vertices. numpy (``xp`` None): arrays (N, 3) and (N, 2); an array namespace (the
+    fused pulse kernel, :mod:`seaecho.radar.resident`): a vector and a pair of arrays.
+    """
+    if xp is None or xp.is_numpy:
+        out = np.array(centroid, dtype=float)
+        out[:, :2] += np.asarray(displacement, dtype=float)
+        return out
+    dx, dy = displacement
+    return xp.vec(centroid.x + dx, centroid.y + dy, centroid.z)
+
+
+def extrapolate(position: Any, velocity: Any, acceleration: Any | None, dt: float,
+                xp=None) -> Any:
+    """Eq D1 between geometry updates: ``r + v dt + a dt^2 / 2`` [m].
 
     The particle positions of a surface state carried ``dt`` [s] forward by their
-    velocity [m/s] and acceleration [m/s^2] (``None``: uniform motion).
+    velocity [m/s] and acceleration [m/s^2] (``None``: uniform motion). numpy (``xp``
+    None): arrays (N, 3); an array namespace (the fused pulse kernel): its vectors, ``dt``
+    entering as an opaque constant (one compiled kernel for every pulse). The same
+    operations in the same order in both.
     """
-    out = np.asarray(position, dtype=float) + np.asarray(velocity, dtype=float) * dt
+    if xp is None or xp.is_numpy:
+        const = float
+        position, velocity = (np.asarray(a, dtype=float) for a in (position, velocity))
+        if acceleration is not None:
+            acceleration = np.asarray(acceleration, dtype=float)
+    else:
+        const = xp.const
+    out = position + velocity * const(dt)
     if acceleration is not None:
-        out = out + np.asarray(acceleration, dtype=float) * (0.5 * dt * dt)
+        out = out + acceleration * const(0.5 * dt * dt)
     return out
 
 
@@ -313,6 +339,7 @@ class EvolvingSpeckle:
         self.breaking = bool(breaking)
         self.families = [f for f in FAMILIES if f != "breaking" or self.breaking]
         self._cache: OrderedDict = OrderedDict()
+        self._device: dict[int, tuple[NDArray, Any]] = {}  # GPU copies (_wrap)
         self._cache_size = max(int(cache_size), 2 * len(self.families))
         self.tilt_phases: list[tuple[NDArray, NDArray]] = []
         if tilt_nodes:
@@ -359,10 +386,23 @@ class EvolvingSpeckle:
             total = term if total is None else total + term
         return total
 
-    @staticmethod
-    def _wrap(xp, buf: NDArray) -> Any:
-        """A cached aligned buffer as a namespace array (Dr.Jit aliases it: no copy)."""
-        return buf if xp.is_numpy else xp.Float(buf)
+    def _wrap(self, xp, buf: NDArray) -> Any:
+        """A cached aligned buffer as a namespace array: numpy's itself, Dr.Jit's CPU back
+        end aliases it (no copy); a GPU's copy is made once and kept while the anchor is
+        (not copied again at every pulse)."""
+        if xp.is_numpy:
+            return buf
+        if xp.name == "llvm":
+            return xp.Float(buf)
+        hit = self._device.get(id(buf))
+        if hit is not None and hit[0] is buf:
+            return hit[1]
+        live = {id(b) for v in self._cache.values() for b in v}
+        live |= {id(b) for v in self.tilt_phases for b in v}
+        self._device = {k: v for k, v in self._device.items() if k in live}
+        out = xp.Float(buf)
+        self._device[id(buf)] = (buf, out)
+        return out
 
     def draws(self, t: float) -> Callable:
         """The ``draws`` callable of :func:`seaecho.scattering.facet.speckled_facet_amplitudes`
@@ -399,4 +439,5 @@ class EvolvingSpeckle:
 
 __all__ = ["FAMILIES", "LIFETIME_MAX", "LIFETIME_MIN", "EvolvingSpeckle", "SeaDynamics",
            "bragg_frequency", "bragg_lifetime", "coherence_time", "extrapolate",
+           "particle_centre",
            "speckle_autocorrelation", "travel_fraction", "window_autocorrelation"]

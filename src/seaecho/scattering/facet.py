@@ -811,6 +811,18 @@ def speckle_amplitudes(terms: FacetTerms, area: ArrayLike,
     return speckle(NUMPY, mech, {m: np.asarray(d[m])[:, None] for m in names}, area)
 
 
+def draw_context(xp, n_i: Any, n_s: Any, normal: Any, k: float) -> dict[str, Any]:
+    """What a ``draws(xp, io, context)`` callable reads (the evolving speckle of
+    :mod:`seaecho.scattering.dynamics`), in ``xp`` (float64): the directions ``n_i``,
+    ``n_s`` [-], the wavenumber ``k`` [rad/m] and the facet's Bragg vector (eq S7,
+    :func:`seaecho.scattering.spm.bragg_vector`) [rad/m] of the facets with unit normals
+    ``normal``. The reference path (:func:`speckled_facet_amplitudes`) and the fused pulse
+    (:func:`seaecho.radar.kernels.sea_echo_terms`) both build it here.
+    """
+    kc = xp.const(float(k))
+    return dict(n_i=n_i, n_s=n_s, k=kc, bragg_vector=bragg_vector(xp, n_i, n_s, normal, kc))
+
+
 def speckled_facet_amplitudes(
     n_i: ArrayLike,
     n_s: ArrayLike,
@@ -852,10 +864,7 @@ def speckled_facet_amplitudes(
     names = list(mech)
     if callable(draws):
         # the evolving speckle's phases in float64 (io.xp), from float64 directions
-        d_i, d_s, d_n = ev.directions
-        k = io.xp.const(float(sea.k))
-        ctx.update(n_i=d_i, n_s=d_s, k=k,
-                   bragg_vector=bragg_vector(io.xp, d_i, d_s, d_n, k))
+        ctx.update(draw_context(io.xp, *ev.directions, sea.k))
         g = draws(io.xp, io, ctx)
     else:
         d = _draw_map(draws, names, n)
@@ -912,7 +921,8 @@ def hhvv_coherence(terms: FacetTerms) -> NDArray:
 
 
 __all__ = ["BACKENDS", "MECHANISMS", "MODELS", "FacetModel", "FacetTerms", "KernelSea",
-           "TiltQuadrature", "bragg_vectors", "circular_gaussians", "facet_amplitudes",
+           "TiltQuadrature", "bragg_vectors", "circular_gaussians", "draw_context",
+           "facet_amplitudes",
            "facet_arrays", "facet_sigma", "facet_terms", "hhvv_coherence", "kernel_sea",
            "mechanism_sigma", "mechanisms", "speckle", "speckle_amplitudes", "speckle_draws",
            "speckled_facet_amplitudes"]
