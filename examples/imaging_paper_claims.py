@@ -11,7 +11,8 @@ highest wake pixel, wave modulation over 8 m and 16 m blocks), and writes the fi
 ``imaging_sim{N}_sigma0.png`` and ``_pauli.png`` (``seaecho.figures``; Simulation 4 also
 its refined-Lee filtered sigma0). Simulation 2 is focused a second time with Taylor
 weighting (nbar 5, 35 dB) in range and azimuth, to measure the secondary peaks. The
-numbers are printed and, with ``--json``, written to a file:
+numbers are printed and, with ``--json``, written to a file (``--set NAME=VALUE``
+changes the scenes, e.g. to measure without the hull echo or with Michell's wake heights):
 ``tests/imaging/test_imaging_docs.py`` (slow set) reruns this script and compares them
 with the table of docs/imaging.md.
 
@@ -59,6 +60,22 @@ def _more(p) -> None:
     p.add_argument("--sims", type=int, nargs="+", default=[2, 3, 4], choices=[2, 3, 4],
                    help="which simulations (default 2 3 4)")
     p.add_argument("--json", type=Path, help="write the measures to this JSON file")
+    p.add_argument("--set", dest="overrides", action="append", default=[],
+                   metavar="NAME=VALUE", help="a scene override for every simulation (as "
+                   "`seaecho run --set`), e.g. objects.0.scatterer=false (no hull echo) or "
+                   "ship.wake_amplitude=\"michell\"; repeatable")
+
+
+def _overrides(texts: list[str]) -> dict:
+    """``["a.b=1", 'c="x"']`` -> {"a.b": 1, "c": "x"} (values as TOML/JSON literals)."""
+    out = {}
+    for text in texts:
+        name, _, value = text.partition("=")
+        try:
+            out[name.strip()] = json.loads(value)
+        except json.JSONDecodeError:
+            out[name.strip()] = value.strip()
+    return out
 
 
 def _measures(img) -> dict:
@@ -84,6 +101,8 @@ def run_simulation(n: int, args) -> tuple[dict, list[Path]]:
         (SAR_DEFAULT, SAR_DEFAULT_IMAGE, SAR_QUICK, SAR_QUICK_IMAGE) if n in (2, 3)
         else (SIM4_DEFAULT, SIM4_DEFAULT_IMAGE, SIM4_QUICK, SIM4_QUICK_IMAGE))
     scene = sized(seaecho.load_scene(SCENES / SCENE_FILES[n]), args, default, quick)
+    if args.overrides:
+        scene = seaecho.with_overrides(scene, _overrides(args.overrides))
     fields = dict({"paper": {}, "default": default_image, "quick": quick_image}[args.size])
     if n == 4:
         fields["speckle_filter"] = "refined-lee"
@@ -109,7 +128,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     if args.out == ROOT / "docs" / "gallery":
         args.out = ROOT / "docs" / "figures"
         args.out.mkdir(parents=True, exist_ok=True)
-    numbers: dict = {"size": args.size}
+    numbers: dict = {"size": args.size, "overrides": _overrides(args.overrides)}
     paths: list[Path] = []
     for n in args.sims:
         result, figs = run_simulation(n, args)
