@@ -7,7 +7,8 @@ the table and the figures of docs/imaging.md, section 7.
 For each simulation it simulates ``scenes/paper_sim{2,3,4}_*.toml``, focuses it with the
 scene's ``[image]`` section, measures the image (``seaecho.image_measures``: sea level,
 wake contrast of means and of medians, the highest pixel outside the tile below the
-highest wake pixel, wave modulation over 8 m and 16 m blocks), and writes the figures
+highest wake pixel, wave modulation over 8 m and 16 m blocks; and the facets' own sigma0
+over the same open-sea pixels, ``facets_sea_db``), and writes the figures
 ``imaging_sim{N}_sigma0.png`` and ``_pauli.png`` (``seaecho.figures``; Simulation 4 also
 its refined-Lee filtered sigma0). Simulation 2 is focused a second time with Taylor
 weighting (nbar 5, 35 dB) in range and azimuth, to measure the secondary peaks. The
@@ -90,6 +91,14 @@ def _measures(img) -> dict:
         for ch, m in paper_metrics(img, block_m=16.0).items():
             if "modulation" in m:
                 out[ch]["modulation_16m"] = round(float(m["modulation"]), 4)
+    if "sigma0_truth" in img and "open_sea" in img:  # the facets' sigma0 on the same pixels
+        import numpy as np
+
+        sea = img["valid"].values.astype(bool) & img["open_sea"].values.astype(bool)
+        for c, ch in enumerate(str(v) for v in img["channel"].values):
+            truth = img["sigma0_truth"].values[c][sea]
+            if truth.size and ch in out:
+                out[ch]["facets_sea_db"] = round(float(10 * np.log10(truth.mean())), 4)
     return out
 
 
