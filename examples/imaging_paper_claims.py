@@ -7,11 +7,13 @@ the table and the figures of docs/imaging.md, section 7.
 For each simulation it simulates ``scenes/paper_sim{2,3,4}_*.toml``, focuses it with the
 scene's ``[image]`` section, measures the image (``seaecho.image_measures``: sea level,
 wake contrast of means and of medians, the highest pixel outside the tile below the
-highest wake pixel, wave modulation over 8 m and 16 m blocks), and writes the figures
+highest wake pixel, wave modulation over 8 m and 16 m blocks; and the facets' own sigma0
+over the same open-sea pixels, ``facets_sea_db``), and writes the figures
 ``imaging_sim{N}_sigma0.png`` and ``_pauli.png`` (``seaecho.figures``; Simulation 4 also
 its refined-Lee filtered sigma0). Simulation 2 is focused a second time with Taylor
 weighting (nbar 5, 35 dB) in range and azimuth, to measure the secondary peaks. The
-numbers are printed and, with ``--json``, written to a file:
+numbers are printed and, with ``--json``, written to a file (``--set NAME=VALUE``
+changes the scenes, e.g. to measure without the hull echo or with Michell's wake heights):
 ``tests/imaging/test_imaging_docs.py`` (slow set) reruns this script and compares them
 with the table of docs/imaging.md.
 
@@ -59,6 +61,22 @@ def _more(p) -> None:
     p.add_argument("--sims", type=int, nargs="+", default=[2, 3, 4], choices=[2, 3, 4],
                    help="which simulations (default 2 3 4)")
     p.add_argument("--json", type=Path, help="write the measures to this JSON file")
+    p.add_argument("--set", dest="overrides", action="append", default=[],
+                   metavar="NAME=VALUE", help="a scene override for every simulation (as "
+                   "`seaecho run --set`), e.g. objects.0.scatterer=false (no hull echo) or "
+                   "ship.wake_amplitude=\"michell\"; repeatable")
+
+
+def _overrides(texts: list[str]) -> dict:
+    """``["a.b=1", 'c="x"']`` -> {"a.b": 1, "c": "x"} (values as TOML/JSON literals)."""
+    out = {}
+    for text in texts:
+        name, _, value = text.partition("=")
+        try:
+            out[name.strip()] = json.loads(value)
+        except json.JSONDecodeError:
+            out[name.strip()] = value.strip()
+    return out
 
 
 def _measures(img) -> dict:
@@ -73,6 +91,14 @@ def _measures(img) -> dict:
         for ch, m in paper_metrics(img, block_m=16.0).items():
             if "modulation" in m:
                 out[ch]["modulation_16m"] = round(float(m["modulation"]), 4)
+    if "sigma0_truth" in img and "open_sea" in img:  # the facets' sigma0 on the same pixels
+        import numpy as np
+
+        sea = img["valid"].values.astype(bool) & img["open_sea"].values.astype(bool)
+        for c, ch in enumerate(str(v) for v in img["channel"].values):
+            truth = img["sigma0_truth"].values[c][sea]
+            if truth.size and ch in out:
+                out[ch]["facets_sea_db"] = round(float(10 * np.log10(truth.mean())), 4)
     return out
 
 
@@ -84,6 +110,8 @@ def run_simulation(n: int, args) -> tuple[dict, list[Path]]:
         (SAR_DEFAULT, SAR_DEFAULT_IMAGE, SAR_QUICK, SAR_QUICK_IMAGE) if n in (2, 3)
         else (SIM4_DEFAULT, SIM4_DEFAULT_IMAGE, SIM4_QUICK, SIM4_QUICK_IMAGE))
     scene = sized(seaecho.load_scene(SCENES / SCENE_FILES[n]), args, default, quick)
+    if args.overrides:
+        scene = seaecho.with_overrides(scene, _overrides(args.overrides))
     fields = dict({"paper": {}, "default": default_image, "quick": quick_image}[args.size])
     if n == 4:
         fields["speckle_filter"] = "refined-lee"
@@ -109,7 +137,7 @@ def main(argv: list[str] | None = None) -> list[Path]:
     if args.out == ROOT / "docs" / "gallery":
         args.out = ROOT / "docs" / "figures"
         args.out.mkdir(parents=True, exist_ok=True)
-    numbers: dict = {"size": args.size}
+    numbers: dict = {"size": args.size, "overrides": _overrides(args.overrides)}
     paths: list[Path] = []
     for n in args.sims:
         result, figs = run_simulation(n, args)

@@ -10,6 +10,7 @@ only ``tracing`` imports mitsuba or sionna.
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
 
 import pytest
@@ -61,8 +62,10 @@ def _package(module: str) -> str:
     return parts[1] if len(parts) > 1 else parts[0]
 
 
-def _imports() -> list[tuple[str, str, int]]:
-    """(importing module, imported seaecho module, line) for every seaecho import."""
+@functools.cache
+def _imports() -> tuple[tuple[str, str, int], ...]:
+    """(importing module, imported seaecho module, line) for every seaecho import (read
+    once per session: every test of this file uses it)."""
     out = []
     for path in sorted(SRC.rglob("*.py")):
         rel = path.relative_to(SRC.parent).with_suffix("")
@@ -88,7 +91,7 @@ def _imports() -> list[tuple[str, str, int]]:
             elif isinstance(node, ast.Import):
                 out += [(module, a.name, node.lineno) for a in node.names
                         if a.name.startswith("seaecho")]
-    return out
+    return tuple(out)
 
 
 def test_every_package_has_a_layer():

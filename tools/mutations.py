@@ -525,7 +525,7 @@ MUTATIONS = [
              "occ_tx = self._lead.occlusion(t, st)[2]",
              ("tests/multistatic/test_multistatic.py",),
              "a receiver takes the first receiver's shadowing as the transmitter's"),
-    Mutation("multistatic-bistatic-angle-supplement", S + "multistatic.py",
+    Mutation("multistatic-bistatic-angle-supplement", S + "geometry/bistatic.py",
              "return np.arctan2(cross, np.sum(a * b, axis=-1))",
              "return np.arctan2(cross, -np.sum(a * b, axis=-1))",
              ("tests/multistatic/test_multistatic.py",),

@@ -8,6 +8,10 @@ are deterministic: same scene, same seed, same bytes; the rest allows for the la
 of another machine's libm). A failure names the row and the channel: rerun the script
 (``python examples/imaging_paper_claims.py --paper --sims 2 3``) and update the page, or
 find what moved the numbers.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
