@@ -375,16 +375,21 @@ class RadarSystem:
         return float(generator(self.seed, "transmit-phase", pulse).uniform(0.0, 2.0 * np.pi))
 
     def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None,
-                    pulse: int | None = None) -> ScattererEcho | None:
+                    pulse: int | None = None, hidden: ArrayLike | None = None
+                    ) -> ScattererEcho | None:
         """Echo of the model's point targets at one pulse (None if there are none, or
-        all are beyond the horizon of a spherical Earth); ``variant`` as
+        all are beyond the horizon of a spherical Earth or ``hidden``); ``variant`` as
         :meth:`scatterer_echo`; ``pulse`` (default: the pulse emitted at
         ``geometry.time``) selects the fluctuating targets' draws
-        (:meth:`~seaecho.radar.model.TargetSet.scattering_at`)."""
+        (:meth:`~seaecho.radar.model.TargetSet.scattering_at`); ``hidden`` (T,) bool:
+        targets hidden otherwise (behind the land or a wave crest:
+        ``Simulation.targets_hidden``)."""
         targets = self.model.targets
         if targets is None or not len(targets):
             return None
         p, seen = self.target_positions(geometry.time)
+        if hidden is not None:
+            seen = seen & ~np.asarray(hidden, dtype=bool)
         if not seen.any():
             return None
         if pulse is None:
