@@ -548,7 +548,11 @@ def build_radar(scene, *, receiver_stream: int = 1) -> RadarModel:
         waveform = Waveform.pulse(w.duration_s, r.sampling_rate_hz)
     rx_cfg = scene.transmitter if mono else scene.receiver
     window = None if r.window_start_m is None else (r.window_start_m, r.window_end_m)
+    land = land_window_points(scene)
+    if land is not None and build_earth(scene) is not None:
+        land = build_earth(scene).position(land)
     return RadarModel(
+        window_points=land,
         carrier=r.carrier_frequency_hz, sampling_rate=r.sampling_rate_hz, prf=r.prf_hz,
         n_pulses=r.n_pulses, start_time=r.start_time_s, transmit_power=r.transmit_power_w,
         waveform=waveform, tx=tx, rx=rx,
@@ -675,6 +679,16 @@ def scene_attrs(scene) -> dict[str, Any]:
     from .io.dataset import scene_attrs as attrs
 
     return attrs(scene)
+
+
+def land_window_points(scene) -> np.ndarray | None:
+    """The points of the echoing ``[[land]]`` that the automatic receive window covers, in
+    the scene's coordinates [m], (K, 3): each outline vertex at the sea level and at the
+    land's height (its echo lies between them); None without echoing land."""
+    pts = [np.concatenate([np.column_stack([np.asarray(g.outline_m, dtype=float),
+                                            np.full(len(g.outline_m), z)])
+                           for z in (0.0, g.height_m)]) for g in scene.land if g.echo]
+    return np.concatenate(pts) if pts else None
 
 
 def build_land(scene, *, frequency: float | None = None):

@@ -140,6 +140,9 @@ class RadarModel:
     sea_gain_floor : float or None
         Two-way gain relative to the beams' peaks [-] below which, bounded over the
         whole tile, a pulse skips the sea (:mod:`seaecho.radar.coverage`); None: never.
+    window_points : (K, 3) array or None
+        Further points the automatic receive window covers, in the simulation frame [m]
+        (the echoing land's outline at the sea level and at its height); None: none.
     """
 
     carrier: float
@@ -173,6 +176,7 @@ class RadarModel:
     earth: SphericalEarth | None = None
     transmit_phase: str = "coherent"
     sea_gain_floor: float | None = None
+    window_points: np.ndarray | None = None
 
     @property
     def monostatic(self) -> bool:

@@ -211,7 +211,8 @@ class RadarSystem:
         return p, seen
 
     def auto_window(self, margin_m: float | None = None) -> ReceiveWindow:
-        """Receive window covering the sea tile (and its waves) and the targets.
+        """Receive window covering the sea tile (and its waves), the targets and the
+        model's ``window_points`` (the land).
 
         Ranges (r_t + r_r)/2 are evaluated on the tile's boundary and centre at z = 0 and
         at every target, at the first and last pulse; the window adds ``margin_m``
@@ -235,6 +236,8 @@ class RadarSystem:
             pts = [points] if clutter else []
             if m.targets is not None and len(m.targets):
                 pts.append(self.target_positions(t)[0])
+            if m.window_points is not None:  # the land's outline
+                pts.append(m.window_points)
             if not pts:
                 continue
             p = np.vstack(pts)
