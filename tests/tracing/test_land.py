@@ -143,3 +143,20 @@ def test_check_refuses_an_antenna_under_the_ground_and_a_huge_grid():
     with pytest.raises(SceneError, match="grid cells; at most"):
         check_run(parse_scene(huge), "scene.toml", figures=False)
     check_run(parse_scene(_scene([HEADLAND])), "scene.toml", figures=False)
+
+
+@pytest.mark.filterwarnings("ignore::seaecho.scattering.validity.SPMValidityWarning")
+def test_a_target_in_the_waves_is_hidden_by_the_crests_and_its_truth_says_so():
+    # on the tile, a target 1 m below the mean sea is under the surface for the radar's
+    # line of sight (hidden by the waves); one 20 m up is seen; one off the tile's
+    # ground track is not traced against the waves
+    targets = [{"name": "sunk", "position_m": (0.0, 0.0, -1.0), "rcs_m2": 1.0},
+               {"name": "high", "position_m": (5.0, 0.0, 20.0), "rcs_m2": 1.0},
+               {"name": "off", "position_m": (500.0, -1500.0, 1.0), "rcs_m2": 1.0}]
+    sim = Simulation(parse_scene(_scene([], targets, sea_clutter=True,
+                                        tx=(0.0, -600.0, 20.0))))
+    hidden = sim.targets_hidden([0, 1])
+    assert not hidden[0].any()  # no land
+    assert hidden[1].tolist() == [[True, False, False]] * 2
+    truth = sim.truth_hidden()
+    assert truth[1].tolist() == [[True, False, False]] * 2
