@@ -717,7 +717,8 @@ def build_land(scene, *, frequency: float | None = None):
                     else terrain_gamma_db(cfg.terrain, f))
         patch = (cells[:, 0] // PATCH_CELLS) * (1 << 31) + cells[:, 1] // PATCH_CELLS
         pieces.append(LandPiece(cfg.name, v, faces, patch, float(10.0 ** (gamma_db / 10.0)),
-                                float(cfg.weibull_shape), bool(cfg.echo)))
+                                float(cfg.weibull_shape), bool(cfg.echo),
+                                np.asarray(cfg.outline_m, dtype=np.float64)))
     return LandModel(pieces=tuple(pieces), earth=earth)
 
 

@@ -585,16 +585,13 @@ class Simulation:
         floor = self.models.radar.sea_gain_floor
         if self.land is None or floor is None:
             return None
-        from .radar.coverage import one_way_bound
+        from .radar.coverage import one_way_bounds
 
         geo = self.radar.geometry(pulse)
-        keep = np.zeros(len(self.land.patch_boxes), dtype=bool)
-        for i, box in enumerate(self.land.patch_boxes):  # tens of patches, not facets
-            g = one_way_bound(self.radar.tx_antenna, geo.tx_axes, geo.tx.position, box)
-            if g >= floor:
-                g *= one_way_bound(self.radar.rx_antenna, geo.rx_axes, geo.rx.position, box)
-            keep[i] = g >= floor
-        return keep
+        boxes = self.land.patch_boxes
+        g = one_way_bounds(self.radar.tx_antenna, geo.tx_axes, geo.tx.position, boxes)
+        return g * one_way_bounds(self.radar.rx_antenna, geo.rx_axes, geo.rx.position,
+                                  boxes) >= floor
 
     def targets_hidden(self, pulses) -> NDArray[np.bool_] | None:
         """Which point targets are hidden at ``pulses`` (an int or an array), shape
@@ -615,7 +612,9 @@ class Simulation:
         earth = self.radar.model.earth
         if earth is not None:
             pos = earth.position(pos)
-        ends = [self.radar.tx.state(t).position, self.radar.rx.state(t).position]
+        ends = [self.radar.tx.state(t).position]
+        if self.radar.rx is not self.radar.tx:  # bistatic: the receiver's line too
+            ends.append(self.radar.rx.state(t).position)
         out = np.zeros((2,) + pos.shape[:2], dtype=bool)
         flat = pos.reshape(-1, 3)
         for a in ends:
@@ -757,6 +756,9 @@ class Simulation:
         objects = ground_truth(self.radar, self.models.ships, rcs, hidden=self.truth_hidden())
         if hulls is not None:
             objects = ({**hulls[0], **objects[0]}, {**hulls[1], **objects[1]})
+        if self.land is not None:  # the coastline: outlines, gamma (docs/land.md)
+            land = self.land.dataset_variables()
+            objects = ({**objects[0], **land[0]}, {**objects[1], **land[1]})
         ds = run_dataset(self.radar, self.models.attrs, truth=truth, extra=objects,
                            x=None if self.sea is None else self.sea.x,
                            y=None if self.sea is None else self.sea.y,

@@ -54,7 +54,7 @@ from .variant import set_variant
 __all__ = ["PATCH_CELLS", "LandEchoes", "LandModel", "LandPiece"]
 
 #: Side of a patch of land facets (a skip unit) [grid cells].
-PATCH_CELLS = 24
+PATCH_CELLS = 8
 #: Ray origins are lifted this far along the facet's normal (float32 at km: ~1e-3 m) [m].
 _LIFT_M = 0.05
 
@@ -78,6 +78,8 @@ class LandPiece:
         a_w [-].
     echo : bool
         Whether the land echoes.
+    outline : (N, 2) array or None
+        The shore polygon in the scene's coordinates [m] (datasets and figures).
     """
 
     name: str
@@ -87,6 +89,7 @@ class LandPiece:
     gamma: float
     weibull_shape: float
     echo: bool = True
+    outline: NDArray[np.float64] | None = None
 
     def geometry(self) -> ObjectGeometry:
         """The land as a static occluder (:class:`~seaecho.tracing.scene.ObjectGeometry`)."""
@@ -162,15 +165,41 @@ class LandEchoes:
         #: unit-mean Weibull powers w_f (eq L4) and phases phi_f [rad] of the facets
         self.power = cat(w)
         self.phase = cat(phi)
-        #: patch index of each facet, and each patch's bounding box corners (8, 3) [m]
+        #: patch index of each facet, and the patches' bounding box corners (P, 8, 3) [m]
         self.patch = cat(patch).astype(np.int64)
-        self.patch_boxes = tuple(boxes)
+        self.patch_boxes = np.array(boxes).reshape(-1, 8, 3)
+        order = np.argsort(self.patch, kind="stable")  # facets of patch i: a slice
+        self._order = order
+        self._starts = np.searchsorted(self.patch[order], np.arange(len(boxes) + 1))
         self._vis: tuple | None = None  # ((tx, rx), visibility)
 
     @property
     def n_facets(self) -> int:
         """Number of echoing land facets."""
         return int(self.area.size)
+
+    def dataset_variables(self) -> tuple[dict, dict]:
+        """The land's description for a run's dataset: outlines, gamma, Weibull shape,
+        facet counts (xarray ``(dims, values, attrs)`` tuples and coordinates)."""
+        pieces = self.model.pieces
+        outline = [np.zeros((0, 2)) if p.outline is None else p.outline for p in pieces]
+        which = np.concatenate([np.full(len(o), i, dtype=np.int16)
+                                for i, o in enumerate(outline)])
+        data = {
+            "land_outline": (("land_vertex", "xy"), np.concatenate(outline), {
+                "units": "m", "long_name": "shore polygons of the [[land]] in the scene's "
+                "coordinates (the vertices of land_outline_land's piece, in order)"}),
+            "land_outline_land": (("land_vertex",), which, {
+                "long_name": "index along the land dimension of each outline vertex"}),
+            "land_gamma": (("land",), 10.0 * np.log10([p.gamma for p in pieces]), {
+                "units": "dB", "long_name": "gamma of the constant-gamma law sigma0 = "
+                "gamma sin(psi) at the carrier (docs/land.md)"}),
+            "land_weibull_shape": (("land",), np.array([p.weibull_shape for p in pieces]),
+                                   {"units": "1", "long_name": "Billingsley's a_w"}),
+            "land_facets": (("land",), np.array([len(p.faces) for p in pieces]),
+                            {"units": "1", "long_name": "triangles of the land's mesh"}),
+        }
+        return data, {"land": ("land", np.array([p.name for p in pieces]))}
 
     # ------------------------------------------------------------------ occlusion
     def hidden(self, points: NDArray, position: NDArray) -> NDArray[np.bool_]:
@@ -210,9 +239,12 @@ class LandEchoes:
                            variant=self.variant)
 
     # ------------------------------------------------------------------- the echo
-    def rcs(self, tx: NDArray, rx: NDArray) -> NDArray[np.float64]:
-        """sigma_f of eq (L5) [m^2] of every echoing facet seen from tx and rx (3,) [m]."""
-        c, n = self.centroid, self.normal
+    def rcs(self, tx: NDArray, rx: NDArray, index: NDArray | None = None
+            ) -> NDArray[np.float64]:
+        """sigma_f of eq (L5) [m^2] of the echoing facets (all, or those of ``index``)
+        seen from tx and rx (3,) [m]."""
+        sel = slice(None) if index is None else index
+        c, n = self.centroid[sel], self.normal[sel]
         n_i = c - tx
         n_i /= np.linalg.norm(n_i, axis=-1, keepdims=True)
         n_s = rx - c
@@ -220,9 +252,9 @@ class LandEchoes:
         sin_i = -np.einsum("ij,ij->i", n_i, n)
         sin_s = np.einsum("ij,ij->i", n_s, n)
         # Eq (L5): eq L2 per facet, times area, Weibull power and visibility
-        sigma0 = (constant_gamma_sigma0(1.0, sin_i) * self.gamma if np.array_equal(tx, rx)
-                  else constant_gamma_sigma0(1.0, sin_i, sin_s) * self.gamma)
-        return sigma0 * self.area * self.power * self.visibility(tx, rx)
+        sigma0 = (constant_gamma_sigma0(1.0, sin_i) if np.array_equal(tx, rx)
+                  else constant_gamma_sigma0(1.0, sin_i, sin_s)) * self.gamma[sel]
+        return sigma0 * self.area[sel] * self.power[sel] * self.visibility(tx, rx)[sel]
 
     def echo(self, geometry, patches: NDArray[np.bool_] | None = None, *,
              variant: str | None = None):
@@ -240,17 +272,24 @@ class LandEchoes:
         """
         if self.n_facets == 0:
             return None
-        tx, rx = geometry.tx.position, geometry.rx.position
-        sigma = self.rcs(tx, rx)
-        keep = sigma > 0
+        index = None
         if patches is not None:
-            keep &= np.asarray(patches, dtype=bool)[self.patch]
-        if not keep.any():
+            keep = np.flatnonzero(np.asarray(patches, dtype=bool))
+            if keep.size == 0:
+                return None
+            if keep.size < len(self.patch_boxes):  # the kept patches' facets, in order
+                index = np.sort(np.concatenate([
+                    self._order[self._starts[i]:self._starts[i + 1]] for i in keep]))
+        tx, rx = geometry.tx.position, geometry.rx.position
+        sigma = self.rcs(tx, rx, index)
+        lit = np.flatnonzero(sigma > 0)
+        if lit.size == 0:
             return None
-        a = np.sqrt(sigma[keep]) * np.exp(1j * self.phase[keep])
+        facet = lit if index is None else index[lit]
+        a = np.sqrt(sigma[lit]) * np.exp(1j * self.phase[facet])
         s = np.zeros((a.size, 2, 2), dtype=np.complex128)
         s[:, 0, 0] = a
         s[:, 1, 1] = a
-        pos = self.centroid[keep]
+        pos = self.centroid[facet]
         return self.radar.scatterer_echo(geometry, pos, np.zeros_like(pos), s,
                                          variant=variant)
