@@ -42,15 +42,22 @@ def _scene(land, targets=(), sea_clutter=False, tx=(0.0, -2000.0, 25.0), **radar
 def test_target_behind_the_headland_is_silent_and_in_front_heard():
     targets = [{"name": "behind", "position_m": (0.0, 0.0, 2.0), "rcs_m2": 10.0},
                {"name": "front", "position_m": (300.0, -1500.0, 2.0), "rcs_m2": 10.0}]
-    sim = Simulation(parse_scene(_scene([HEADLAND], targets)))
+    sim = Simulation(parse_scene(_scene([dict(HEADLAND, echo=False)], targets)))
     hidden = sim.targets_hidden([0, 1])
     assert hidden[0].tolist() == [[True, False], [True, False]]  # behind the land
     assert not hidden[1].any()  # no wave crest in between
     echo = sim.radar.target_echo(sim.radar.geometry(0), hidden=hidden[0, 0])
     assert echo.r_t == pytest.approx([math.dist((300, -1500, 2), (0, -2000, 25))])
+    assert np.array_equal(sim.pulse(0), sim.radar.receive(0, [echo]))  # the front one
     ds = sim.static_dataset()
     assert ds["truth_hidden_reason"].values.tolist() == [[3, 0], [3, 0]]  # behind_land
     assert ds["truth_visible"].values.tolist() == [[0, 1], [0, 1]]
+    # the 40 m plateau is not seen from 25 m: its facets are silent (eq L5's V_f)
+    lan = Simulation(parse_scene(_scene([HEADLAND], targets))).land
+    tx = sim.radar.geometry(0).tx.position
+    top = np.isclose(lan.centroid[:, 2], 40.0)
+    sigma = lan.rcs(tx, tx)
+    assert top.sum() > 100 and not sigma[top].any() and sigma[~top].any()
     # without the land both are heard
     free = Simulation(parse_scene(_scene([], targets)))
     assert free.radar.target_echo(free.radar.geometry(0)).tau.size == 2
