@@ -562,8 +562,8 @@ class Simulation:
         if self.sea is not None and not self.sea_skipped(pulse):
             echoes.append(self.sea_echo(pulse, geo).echo)
         hidden = self.targets_hidden(pulse)  # behind the land or a wave crest
-        t = self.radar.target_echo(geo, variant=self.variant,
-                                   hidden=None if hidden is None else hidden.any(axis=0)[0])
+        hide = {} if hidden is None or not hidden.any() else {"hidden": hidden.any(axis=0)[0]}
+        t = self.radar.target_echo(geo, variant=self.variant, **hide)  # its pulse: geo.time
         if t is not None:
             echoes.append(t)
         if self.hulls is not None:

@@ -42,7 +42,16 @@ def _scene(land, targets=(), sea_clutter=False, tx=(0.0, -2000.0, 25.0), **radar
 def test_target_behind_the_headland_is_silent_and_in_front_heard():
     targets = [{"name": "behind", "position_m": (0.0, 0.0, 2.0), "rcs_m2": 10.0},
                {"name": "front", "position_m": (300.0, -1500.0, 2.0), "rcs_m2": 10.0}]
-    sim = Simulation(parse_scene(_scene([dict(HEADLAND, echo=False)], targets)))
+    # a field 5 m high behind the headland: its facets face the radar but are hidden
+    field = dict(HEADLAND, name="field", outline_m=[[-50, -900], [50, -900], [50, -700],
+                                                    [-50, -700]], height_m=5.0)
+    sim = Simulation(parse_scene(_scene([dict(HEADLAND, echo=False), field], targets)))
+    geo = sim.radar.geometry(0)
+    assert sim.land.n_facets > 1000 and not sim.land.rcs(geo.tx.position,
+                                                         geo.tx.position).any()
+    alone = Simulation(parse_scene(_scene([field], targets))).land
+    # without the headland it is seen (but for its far shore, which faces away)
+    assert (alone.rcs(geo.tx.position, geo.tx.position) > 0).mean() > 0.8
     hidden = sim.targets_hidden([0, 1])
     assert hidden[0].tolist() == [[True, False], [True, False]]  # behind the land
     assert not hidden[1].any()  # no wave crest in between

@@ -59,6 +59,11 @@ PATCH_CELLS = 8
 _LIFT_M = 0.05
 
 
+def _cat(arrays: list, shape: tuple = (0,)) -> NDArray:
+    """The arrays concatenated, or an empty array of ``shape`` when there are none."""
+    return np.concatenate(arrays) if arrays else np.zeros(shape)
+
+
 @dataclass(frozen=True)
 class LandPiece:
     """One ``[[land]]`` entry as plain values.
@@ -156,17 +161,16 @@ class LandEchoes:
                 lo, hi = v.min(axis=0), v.max(axis=0)
                 boxes.append(np.array([[x, y, z] for x in (lo[0], hi[0])
                                        for y in (lo[1], hi[1]) for z in (lo[2], hi[2])]))
-        cat = (lambda a, shape=(0,): np.concatenate(a) if a else np.zeros(shape))
         #: centroids (F, 3) [m], areas (F,) [m^2], unit normals (F, 3) of echoing facets
-        self.centroid = cat(cents, (0, 3))
-        self.area = cat(areas)
-        self.normal = cat(norms, (0, 3))
-        self.gamma = cat(gam)
+        self.centroid = _cat(cents, (0, 3))
+        self.area = _cat(areas)
+        self.normal = _cat(norms, (0, 3))
+        self.gamma = _cat(gam)
         #: unit-mean Weibull powers w_f (eq L4) and phases phi_f [rad] of the facets
-        self.power = cat(w)
-        self.phase = cat(phi)
+        self.power = _cat(w)
+        self.phase = _cat(phi)
         #: patch index of each facet, and the patches' bounding box corners (P, 8, 3) [m]
-        self.patch = cat(patch).astype(np.int64)
+        self.patch = _cat(patch).astype(np.int64)
         self.patch_boxes = np.array(boxes).reshape(-1, 8, 3)
         order = np.argsort(self.patch, kind="stable")  # facets of patch i: a slice
         self._order = order
