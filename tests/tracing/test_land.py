@@ -17,6 +17,7 @@ import pytest
 from seaecho.build import build_engine, build_sea
 from seaecho.config import SceneError, parse_scene
 from seaecho.constants import C0
+from seaecho.io.truth_tracks import truth_rows
 from seaecho.preflight import check_run
 from seaecho.radar.equation import bistatic_received_power
 from seaecho.simulation import Simulation
@@ -61,6 +62,7 @@ def test_target_behind_the_headland_is_silent_and_in_front_heard():
     ds = sim.static_dataset()
     assert ds["truth_hidden_reason"].values.tolist() == [[3, 0], [3, 0]]  # behind_land
     assert ds["truth_visible"].values.tolist() == [[0, 1], [0, 1]]
+    assert [r[-1] for r in truth_rows(ds)] == ["behind_land", "visible"] * 2  # the CSV
     # the 40 m plateau is not seen from 25 m: its facets are silent (eq L5's V_f)
     lan = Simulation(parse_scene(_scene([HEADLAND], targets))).land
     tx = sim.radar.geometry(0).tx.position
