@@ -178,3 +178,40 @@ def test_a_target_in_the_waves_is_hidden_by_the_crests_and_its_truth_says_so():
     assert hidden[1].tolist() == [[True, False, False]] * 2
     truth = sim.truth_hidden()
     assert truth[1].tolist() == [[True, False, False]] * 2
+
+
+@pytest.mark.slow
+def test_land_patches_outside_the_beam_are_skipped_within_the_stated_bound():
+    # a rotating 2 m Taylor (-30 dB) fan beam over a field 1 km north: the patches a
+    # pulse skips return, computed anyway, at most the floor g_f times their power at
+    # both beams' peaks (eq C3 of docs/scanning.md, applied to each patch)
+    field = dict(HEADLAND, name="field", outline_m=[[-300, -1100], [300, -1100],
+                                                    [300, -900], [-300, -900]],
+                 height_m=2.0, resolution_m=10.0)
+    scene = _scene([field], tx=(0.0, -2000.0, 35.0), n_pulses=2500)
+    scene["transmitter"]["antenna"] = {
+        "pattern": "rectangular", "width_m": 2.0, "height_m": 0.12,
+        "illumination": "taylor", "taylor_sidelobe_db": 30.0, "taylor_nbar": 4,
+        "depression_deg": 0.5, "scan": {"mode": "rotating", "rate_rpm": 24.0}}
+    sim = Simulation(parse_scene(scene))
+    floor = 1e-6  # the default -60 dB
+    g_peak = sim.radar.tx_antenna.peak_gain ** 2
+    checked = 0
+    for p in (0, 100, 625, 1250, 1875, 2450):  # north, then round clockwise
+        keep = sim.land_patches(p)
+        geo = sim.radar.geometry(p)
+        echo = sim.land.echo(geo)  # every patch
+        if p == 0:
+            assert keep.any()  # the beam is on the field
+        for i in np.flatnonzero(~keep):
+            mask = np.zeros_like(keep)
+            mask[i] = True
+            e = sim.land.echo(geo, mask)
+            if e is None:
+                continue
+            got = np.sum(np.abs(e.amplitudes[0]) ** 2)
+            at_peak = np.sum(np.abs(e.amplitudes[0]) ** 2 * g_peak / (e.g_t * e.g_r))
+            assert got <= floor * at_peak
+            checked += 1
+        assert echo is not None
+    assert checked > 10
