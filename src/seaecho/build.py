@@ -17,6 +17,8 @@ function                   reads                                gives (stage mod
 :func:`build_tracing`      ``[tracing]``, ``[[objects]]``,      ``tracing.TracingModel``
                            carrier, ``[sea]`` water
 :func:`build_engine`       the above                            ``tracing.FacetEngine``
+:func:`build_land`         ``[[land]]``, ``[propagation]``,     ``tracing.land.LandModel``
+                           carrier
 :func:`build_simulation`   everything                           :class:`SimulationModels`
 :func:`check_scene`        ``[sea]``, carrier                   ``SamplingWarning`` s
 =========================  ===================================  ==========================
@@ -547,7 +549,11 @@ def build_radar(scene, *, receiver_stream: int = 1) -> RadarModel:
         waveform = Waveform.pulse(w.duration_s, r.sampling_rate_hz)
     rx_cfg = scene.transmitter if mono else scene.receiver
     window = None if r.window_start_m is None else (r.window_start_m, r.window_end_m)
+    land = land_window_points(scene)
+    if land is not None and build_earth(scene) is not None:
+        land = build_earth(scene).position(land)
     return RadarModel(
+        window_points=land,
         carrier=r.carrier_frequency_hz, sampling_rate=r.sampling_rate_hz, prf=r.prf_hz,
         n_pulses=r.n_pulses, start_time=r.start_time_s, transmit_power=r.transmit_power_w,
         waveform=waveform, tx=tx, rx=rx,
@@ -598,6 +604,9 @@ def build_tracing(scene, base_dir: str | os.PathLike = ".", *, frequency: float 
         for o in scene.objects:
             objects += load_object(o, base_dir=str(base_dir), ship=scene.ship,
                                    variant=variant)
+        land = build_land(scene, frequency=f)  # the coastline occludes the sea too
+        if land is not None:
+            objects += [p.geometry() for p in land.pieces]
     subfacet = None
     if cfg.subfacet_shadowing:
         sm = build_sea_model(scene, f) if sea_model is None else sea_model
@@ -673,6 +682,47 @@ def scene_attrs(scene) -> dict[str, Any]:
     return attrs(scene)
 
 
+def land_window_points(scene) -> np.ndarray | None:
+    """The points of the echoing ``[[land]]`` that the automatic receive window covers, in
+    the scene's coordinates [m], (K, 3): each outline vertex at the sea level and at the
+    land's height (its echo lies between them); None without echoing land."""
+    pts = [np.concatenate([np.column_stack([np.asarray(g.outline_m, dtype=float),
+                                            np.full(len(g.outline_m), z)])
+                           for z in (0.0, g.height_m)]) for g in scene.land if g.echo]
+    return np.concatenate(pts) if pts else None
+
+
+def build_land(scene, *, frequency: float | None = None):
+    """The ``[[land]]`` of a scene (:class:`seaecho.tracing.land.LandModel`), or None.
+
+    Each entry's mesh (:func:`seaecho.geometry.land.land_mesh`, eq G1) is mapped onto
+    the spherical Earth (eq E4) where the scene has one; its gamma is the given
+    ``gamma_db`` or the terrain's at the carrier (eq L3 of
+    :mod:`seaecho.scattering.land`).
+    """
+    if not scene.land:
+        return None
+    from .geometry.land import land_mesh
+    from .scattering.land import terrain_gamma_db
+    from .tracing.land import PATCH_CELLS, LandModel, LandPiece
+
+    earth = build_earth(scene)
+    f = carrier_frequency(scene, frequency)
+    pieces = []
+    for cfg in scene.land:
+        v, faces, cells = land_mesh(cfg.outline_m, cfg.height_m, cfg.shore_width_m,
+                                    cfg.resolution_m)
+        if earth is not None:
+            v = earth.position(v)
+        gamma_db = (cfg.gamma_db if cfg.gamma_db is not None
+                    else terrain_gamma_db(cfg.terrain, f))
+        patch = (cells[:, 0] // PATCH_CELLS) * (1 << 31) + cells[:, 1] // PATCH_CELLS
+        pieces.append(LandPiece(cfg.name, v, faces, patch, float(10.0 ** (gamma_db / 10.0)),
+                                float(cfg.weibull_shape), bool(cfg.echo),
+                                np.asarray(cfg.outline_m, dtype=np.float64)))
+    return LandModel(pieces=tuple(pieces), earth=earth)
+
+
 def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | None = None,
                 variant: str | None = None):
     """The hull model of the ``[[objects]]`` with ``scatterer = true``
@@ -727,8 +777,12 @@ def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | 
                                refresh_deg=cfg.signature_refresh_deg,
                                refresh_s=cfg.signature_refresh_s)
         objects.append((spec, shapes))
+    land = build_land(scene, frequency=f)  # the coastline occludes the hulls' rays
+    if land is not None:
+        objects += [(None, [p.geometry()]) for p in land.pieces]
     eps_sea, sigma_h = sea_mirror(scene, f)
-    return HullModel(objects=tuple(objects), sea_eps_r=eps_sea, sigma_h=sigma_h)
+    return HullModel(objects=tuple(objects), sea_eps_r=eps_sea, sigma_h=sigma_h,
+                     earth=build_earth(scene))
 
 
 def sea_mirror(scene, f: float) -> tuple[complex, float]:
@@ -776,6 +830,8 @@ class SimulationModels:
         The objects that echo (``scatterer = true``), None when none does.
     ships : tuple of seaecho.wake.Ship
         The ships of ``[ship]`` / ``[[ships]]`` (ground truth; their wakes are the sea's).
+    land : seaecho.tracing.land.LandModel or None
+        The ``[[land]]`` (occluders and land clutter), None when there is none.
     """
 
     radar: RadarModel
@@ -786,6 +842,7 @@ class SimulationModels:
     variant: str | None = None
     hulls: object = None
     ships: tuple = ()
+    land: object = None
 
 
 def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationModels:
@@ -820,7 +877,7 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
     ships = sea.ships if sea is not None else build_ships(scene)
     return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
                             attrs=scene_attrs(scene), variant=variant, hulls=hulls,
-                            ships=tuple(ships))
+                            ships=tuple(ships), land=build_land(scene))
 
 
 # ------------------------------------------------------------------ several receivers

@@ -156,6 +156,24 @@ class SeaEcho:
         return np.moveaxis(rcs.reshape(f.grid_shape + (4,)).sum(axis=2), -1, 0) / cell_area
 
 
+def _crosses_rectangle(a: NDArray, b: NDArray, x: NDArray, y: NDArray) -> NDArray[np.bool_]:
+    """Whether the 2-D segments a -> b (N, 2) [m] meet the rectangle spanned by the grid
+    coordinates x, y [m] (Liang-Barsky clipping, vectorised)."""
+    d = b - a
+    lo = np.zeros(a.shape[0])
+    hi = np.ones(a.shape[0])
+    ok = np.ones(a.shape[0], dtype=bool)
+    for k, (mn, mx) in enumerate(((x.min(), x.max()), (y.min(), y.max()))):  # 2 axes
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t1 = (mn - a[:, k]) / d[:, k]
+            t2 = (mx - a[:, k]) / d[:, k]
+        flat = d[:, k] == 0
+        ok &= ~flat | ((a[:, k] >= mn) & (a[:, k] <= mx))
+        lo = np.where(flat, lo, np.maximum(lo, np.minimum(t1, t2)))
+        hi = np.where(flat, hi, np.minimum(hi, np.maximum(t1, t2)))
+    return ok & (lo <= hi)
+
+
 class Simulation:
     """A scene's radar simulation (module docstring).
 
@@ -221,6 +239,13 @@ class Simulation:
         self.hulls = HullEchoes.from_model(
             models.hulls, self.radar, variant=self.variant,
             surface=self.surface_state_at if self.sea is not None else None)
+        #: the [[land]]: occluder of targets and land clutter (docs/land.md), or None
+        self.land = None
+        if models.land is not None:
+            from .tracing.land import LandEchoes
+
+            self.land = LandEchoes(models.land, self.radar, self.radar.seed,
+                                   variant=self.variant)
 
     def share_sea(self, lead: Simulation) -> None:
         """Take the sea's per-block work from ``lead``, a simulation of the same sea
@@ -584,14 +609,114 @@ class Simulation:
         echoes = []
         if self.sea is not None and not self.sea_skipped(pulse):
             echoes.append(self.sea_echo(pulse, geo).echo)
-        t = self.radar.target_echo(geo, variant=self.variant)  # its pulse: geo.time
+        hidden = self.targets_hidden(pulse)  # behind the land or a wave crest
+        hide = {} if hidden is None or not hidden.any() else {"hidden": hidden.any(axis=0)[0]}
+        t = self.radar.target_echo(geo, variant=self.variant, **hide)  # its pulse: geo.time
         if t is not None:
             echoes.append(t)
         if self.hulls is not None:
             echoes += self.hulls.echoes(geo, pulse)
+        if self.land is not None and self.land.n_facets:
+            e = self.land.echo(geo, self.land_patches(pulse), variant=self.variant)
+            if e is not None:
+                echoes.append(e)
         raw = self.radar.receive(pulse, echoes)
         check_pulse(self, pulse, raw, echoes)  # NaN/Inf: NonFiniteEchoError (checks/guards.py)
         return raw
+
+    # ---------------------------------------------------- the land and the wave crests
+    def land_patches(self, pulse: int) -> NDArray[np.bool_] | None:
+        """Which land patches ``pulse`` computes: those whose two-way gain bound
+        (:func:`seaecho.radar.coverage.one_way_bound` over each patch's box, eq C2) is at
+        or above ``[radar] sea_gain_floor_db``; None (all) without a floor. The skipped
+        land's power obeys the sea's bound, eq C3 of docs/scanning.md."""
+        floor = self.models.radar.sea_gain_floor
+        if self.land is None or floor is None:
+            return None
+        from .radar.coverage import one_way_bounds
+
+        geo = self.radar.geometry(pulse)
+        boxes = self.land.patch_boxes
+        g = one_way_bounds(self.radar.tx_antenna, geo.tx_axes, geo.tx.position, boxes)
+        return g * one_way_bounds(self.radar.rx_antenna, geo.rx_axes, geo.rx.position,
+                                  boxes) >= floor
+
+    def targets_hidden(self, pulses) -> NDArray[np.bool_] | None:
+        """Which point targets are hidden at ``pulses`` (an int or an array), shape
+        (2, P, T): [0] behind the land (the segment from either antenna to the target
+        hits a ``[[land]]`` triangle), [1] behind a wave crest (it hits the sea surface
+        held at the pulse, ray traced on the tile: the waves outside the tile are not
+        modelled). None when the scene has no target.
+
+        Only segments whose ground track crosses the tile's rectangle are traced against
+        the waves (the sea state of their blocks is computed for them).
+        """
+        targets = self.radar.model.targets
+        if targets is None or not len(targets):
+            return None
+        pulses = np.atleast_1d(np.asarray(pulses, dtype=np.int64))
+        t = self.radar.emission_time(pulses)
+        pos = targets.positions[None] + t[:, None, None] * targets.velocities[None]
+        earth = self.radar.model.earth
+        if earth is not None:
+            pos = earth.position(pos)
+        ends = [self.radar.tx.state(t).position]
+        if self.radar.rx is not self.radar.tx:  # bistatic: the receiver's line too
+            ends.append(self.radar.rx.state(t).position)
+        out = np.zeros((2,) + pos.shape[:2], dtype=bool)
+        flat = pos.reshape(-1, 3)
+        for a in ends:
+            start = np.repeat(a, pos.shape[1], axis=0)
+            if self.land is not None:
+                out[0] |= self.land.hidden(flat, start).reshape(pos.shape[:2])
+            tr = self.models.tracing
+            if self.engine is None or tr is None or tr.mode != "raytraced":
+                continue
+            cross = _crosses_rectangle(start[:, :2], flat[:, :2], self.sea.x, self.sea.y)
+            cross = cross.reshape(pos.shape[:2])
+            if not cross.any():
+                continue
+            from .tracing.scene import segments_blocked
+
+            blocks = pulses // self.block
+            for b in np.unique(blocks[cross.any(axis=1)]):  # one sea state per block
+                rows = np.flatnonzero((blocks == b) & cross.any(axis=1))
+                st = self.surface_state(int(pulses[rows[0]]))
+                tracer = self.engine.tracer
+                tracer.set_surface(st.elevation)
+                sel = np.zeros(pos.shape[:2], dtype=bool)
+                sel[rows] = cross[rows]
+                hit = segments_blocked([tracer.sea.mi_scene], start[sel.ravel()],
+                                       flat[sel.ravel()], variant=tracer.variant)
+                out[1][sel] |= hit
+        return out
+
+    def truth_hidden(self) -> NDArray[np.bool_] | None:
+        """The objects of the ground truth (ships, then targets) hidden at every pulse,
+        (2, P, S + T): [0] behind the land, [1] behind a wave crest
+        (:meth:`targets_hidden`; a ship by its waterline point at its position, against
+        the land only: its hull's own trace sees the waves). None when nothing can hide
+        them (no land, and no target or no ray-traced sea)."""
+        ships = self.models.ships
+        n = self.radar.n_pulses
+        targets = self.targets_hidden(np.arange(n))
+        if self.land is None and (targets is None or not targets.any()):
+            return None
+        n_t = 0 if targets is None else targets.shape[2]
+        out = np.zeros((2, n, len(ships) + n_t), dtype=bool)
+        if n_t:
+            out[:, :, len(ships):] = targets
+        if ships and self.land is not None:
+            t = self.radar.emission_time(np.arange(n))
+            pos = np.zeros((n, len(ships), 3))
+            for i, ship in enumerate(ships):  # a few ships
+                pos[:, i, :2] = ship.position(t)
+            earth = self.radar.model.earth
+            flat = (pos if earth is None else earth.position(pos)).reshape(-1, 3)
+            for a in (self.radar.tx.state(t).position, self.radar.rx.state(t).position):
+                start = np.repeat(a, len(ships), axis=0)
+                out[0, :, :len(ships)] |= self.land.hidden(flat, start).reshape(n, -1)
+        return out
 
     def pulses(self, start: int, stop: int) -> tuple[NDArray[np.complex128],
                                                      NDArray[np.complex128]]:
@@ -676,9 +801,12 @@ class Simulation:
         if hulls is not None:
             names = [str(n) for n in hulls[1]["hull"][1]]
             rcs = {n: hulls[0]["hull_rcs"][1][i] for i, n in enumerate(names)}
-        objects = ground_truth(self.radar, self.models.ships, rcs)
+        objects = ground_truth(self.radar, self.models.ships, rcs, hidden=self.truth_hidden())
         if hulls is not None:
             objects = ({**hulls[0], **objects[0]}, {**hulls[1], **objects[1]})
+        if self.land is not None:  # the coastline: outlines, gamma (docs/land.md)
+            land = self.land.dataset_variables()
+            objects = ({**objects[0], **land[0]}, {**objects[1], **land[1]})
         ds = run_dataset(self.radar, self.models.attrs, truth=truth, extra=objects,
                            x=None if self.sea is None else self.sea.x,
                            y=None if self.sea is None else self.sea.y,

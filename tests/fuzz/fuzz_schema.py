@@ -543,8 +543,10 @@ CAPS = {
         st.floats(-300.0, 0.0, allow_nan=False), st.just("off")),
 }
 #: Fields left out of generated scenes: an output path would write beside the tests;
-#: [[receivers]] (multistatic; its cross-receiver rules are tested in tests/multistatic).
-SKIP = {("RunConfig", "output"), ("Scene", "receivers")}
+#: [[receivers]] (multistatic; its cross-receiver rules are tested in tests/multistatic);
+#: [[land]] (a mesh of up to 2^21 cells per entry; its rules and the check's refusals are
+#: tested in tests/tracing/test_land.py).
+SKIP = {("RunConfig", "output"), ("Scene", "receivers"), ("Scene", "land")}
 
 
 def scenes(runnable: bool = True) -> st.SearchStrategy[dict]:

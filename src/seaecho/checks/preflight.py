@@ -50,6 +50,9 @@ everything ``run`` would):
 - **The radar horizon** on a spherical Earth (``[propagation] earth = "spherical"``):
   with sea clutter, the whole tile above each antenna's horizon at the first and the
   last pulse (point targets beyond it are simply not seen, at every pulse).
+- **The land** (``[[land]]``): its grid at ``resolution_m`` at most
+  :data:`MAX_LAND_CELLS` cells, at least one cell inside its outline, and no antenna at
+  or below its ground at the first or the last pulse.
 - **The hulls' traces** (``[[objects]]`` with ``scatterer = true``): at every pulse where
   the run traces a hull's signature (its refresh schedule), each antenna is outside the
   sphere the rays are launched from (1.05 times the hull's bounding radius about its
@@ -559,10 +562,66 @@ def image_problems(scene) -> list[str]:
 def receive_problems(scene) -> list[str]:
     """Nothing to receive: no sea clutter, no target, no explicit window."""
     r = scene.radar
-    if r.sea_clutter or scene.targets or r.window_start_m is not None:
+    if (r.sea_clutter or scene.targets or r.window_start_m is not None
+            or any(g.echo for g in scene.land)):
         return []
     return ["[radar]: nothing to receive: sea_clutter is off and there are no [[targets]]; "
             "turn sea_clutter on, add a target, or give window_start_m / window_end_m"]
+
+
+#: Most grid cells of a ``[[land]]``'s bounding box (two facets each) a run accepts [-].
+MAX_LAND_CELLS = 1 << 21
+
+
+def land_problems(scene) -> list[str]:
+    """``[[land]]`` the run cannot build or would hide an antenna in: a bounding-box grid
+    of more than :data:`MAX_LAND_CELLS` cells (refused before the mesh is built), an
+    outline with no cell inside at its ``resolution_m``, and an antenna below the
+    ground of a piece of land at the first or the last pulse (eq G1 of
+    ``seaecho.geometry.land``; the antenna would see nothing)."""
+    import numpy as np
+
+    from ..geometry.land import distance_to_outline, inside_polygon, land_mesh, shore_height
+
+    if not scene.land:
+        return []
+    try:
+        platforms = _platforms(scene)
+    except ValueError:  # reported by geometry_problems
+        platforms = []
+    pulses = pulses_of(scene) if platforms else None
+    out = []
+    for i, land in enumerate(scene.land):
+        tag = f"[[land]] #{i} ({land.name})"
+        v = np.asarray(land.outline_m, dtype=float)
+        span = v.max(axis=0) - v.min(axis=0)
+        cells = float(np.prod(np.ceil(span / land.resolution_m) + 1.0))
+        if cells > MAX_LAND_CELLS:
+            out.append(f"{tag}: resolution_m = {land.resolution_m:g} over its outline's "
+                       f"{span[0]:.4g} m x {span[1]:.4g} m box makes {cells:.3g} grid cells; "
+                       f"at most {MAX_LAND_CELLS} (two facets each): coarsen resolution_m or "
+                       "split the land")
+            continue
+        try:
+            land_mesh(v, land.height_m, land.shore_width_m, land.resolution_m)
+        except ValueError as exc:
+            out.append(f"{tag}: {exc}")
+            continue
+        for name, _, platform in platforms:
+            for p in sorted({0, scene.radar.n_pulses - 1}):
+                q = platform.nominal_state(float(pulses.time(p))).position
+                if not inside_polygon(q[:2], v):
+                    continue
+                ground = float(shore_height(distance_to_outline(q[None, :2], v)[0],
+                                            land.height_m, max(land.shore_width_m,
+                                                               land.resolution_m)))
+                if q[2] <= ground:
+                    out.append(f"[{name}].position_m: at pulse {p} the antenna "
+                               f"({q[0]:.6g}, {q[1]:.6g}, {q[2]:.4g}) m is at or below the "
+                               f"ground of {tag} ({ground:.4g} m there); raise it or move "
+                               "it off the land")
+                    break
+    return out
 
 
 def horizon_problems(scene) -> list[str]:
@@ -643,7 +702,7 @@ def default_output(scene, scene_file) -> tuple[Path, str]:
 def run_problems(scene, base_dir=".") -> list[str]:
     """Every problem of this module for a scene that has [radar] and [transmitter]."""
     out = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
-           + object_problems(scene, base_dir))
+           + object_problems(scene, base_dir) + land_problems(scene))
     return (out + (hull_problems(scene, base_dir) if not out else [])
             + geometry_problems(scene) + horizon_problems(scene))
 
@@ -688,7 +747,7 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
         return _check_multistatic(scene, source, base_dir, max_memory_gb, figures,
                                   workers, block)
     problems = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
-                + object_problems(scene, base_dir))
+                + object_problems(scene, base_dir) + land_problems(scene))
     if not problems:  # (needs the objects' files and the radar's values)
         problems += hull_problems(scene, base_dir)
     if output is not None:
@@ -749,6 +808,8 @@ __all__ = [
     "exhaustive_min_distance",
     "horizon_problems",
     "geometry_problems",
+    "land_problems",
+    "MAX_LAND_CELLS",
     "image_noise_rcs",
     "image_problems",
     "min_distance",

@@ -273,9 +273,10 @@ def window_size(scene) -> tuple[int, int, int]:
         points = tile_outline(lx, ly)
         rx_cfg = scene.receiver or scene.transmitter
         slack = 0.5 * (perturbation_bound(scene.transmitter) + perturbation_bound(rx_cfg))
-        from ..build import build_earth
+        from ..build import build_earth, land_window_points
 
         earth = build_earth(scene)  # a spherical Earth: platforms and targets on it
+        land = land_window_points(scene)
         on_earth = (lambda q: q) if earth is None else earth.position
         ranges = []
         for pulse in (0, r.n_pulses - 1):
@@ -285,6 +286,8 @@ def window_size(scene) -> tuple[int, int, int]:
             pts = [points] if r.sea_clutter else []
             pts += [on_earth(np.array(g.position_m) + t * np.array(g.velocity_m_s))
                     for g in scene.targets]
+            if land is not None:  # the echoing land's outline (build.land_window_points)
+                pts.append(on_earth(land))
             if not pts:
                 continue
             p = np.vstack(pts)

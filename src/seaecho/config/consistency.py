@@ -54,6 +54,20 @@ def check_objects(scene) -> None:
                              "[ship] section")
 
 
+def check_land(scene) -> None:
+    """``[[land]]``: unique names (among themselves and the ``[[objects]]``, whose meshes
+    share the occluders' scene); the land is ray traced (``[tracing] mode``)."""
+    taken = {o.name for o in scene.objects}
+    for i, land in enumerate(scene.land):
+        if land.name in taken:
+            raise ValueError(f"[[land]] #{i}: name = {short_repr(land.name)} is used by "
+                             "another [[land]] or [[objects]] entry; names must be unique")
+        taken.add(land.name)
+    if scene.land and scene.tracing.mode != "raytraced":
+        raise ValueError(f"[tracing].mode = '{scene.tracing.mode}' with [[land]]: the land "
+                         "occludes by ray tracing; use mode = 'raytraced'")
+
+
 def check_targets(scene) -> None:
     """``[[targets]]``: a ``preset`` needs a ``[radar]`` carrier in a band it has."""
     from .radar import preset_rcs_m2
@@ -130,9 +144,11 @@ def check_scene(scene) -> None:
     if not scene.receivers:  # (each receiver's channels checked against its own antenna)
         check_channels(scene)
     check_objects(scene)
+    check_land(scene)
     check_targets(scene)
     check_ships(scene)
 
 
-__all__ = ["allowed_channels", "check_channels", "check_objects", "check_receivers",
+__all__ = ["allowed_channels", "check_channels", "check_land", "check_objects",
+           "check_receivers",
            "check_scene", "check_ships", "check_targets"]

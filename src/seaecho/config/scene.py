@@ -9,6 +9,8 @@ Sections (a TOML table each):
 - ``[[receivers]]`` several receivers of one transmitter (:class:`ReceiverConfig`),
   instead of ``[receiver]``
 
+- ``[[land]]``   coastlines (:class:`LandConfig`), optional
+
 Sections that later stages add (radar, platforms, tracing, objects, targets) are
 registered here too, each in its own module of this package.
 """
@@ -21,6 +23,7 @@ from pydantic import Field, PrivateAttr, model_serializer, model_validator
 
 from .base import Name, Section, Text
 from .image import ImageConfig
+from .land import LandConfig
 from .propagation import PropagationConfig
 from .radar import PlatformConfig, RadarConfig, TargetConfig
 from .receivers import MAX_RECEIVERS, ReceiverConfig
@@ -77,6 +80,10 @@ class Scene(Section):
     objects: tuple[ObjectConfig, ...] = Field(
         (), max_length=1000, description="meshes / XML scenes that occlude the sea [[objects]]"
     )
+    land: tuple[LandConfig, ...] = Field(
+        (), max_length=100, description="coastlines that occlude and echo [[land]] "
+        "(constant-gamma land clutter; docs/land.md)"
+    )
     image: ImageConfig | None = Field(
         None, description="SAR focusing after the raw data [image]; omit for raw data only"
     )
@@ -94,6 +101,8 @@ class Scene(Section):
         data = handler(self)
         if not self.receivers and isinstance(data, dict):
             data.pop("receivers", None)
+        if not self.land and isinstance(data, dict):  # likewise a scene without [[land]]
+            data.pop("land", None)
         return data
 
     @model_validator(mode="after")

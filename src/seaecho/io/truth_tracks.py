@@ -6,8 +6,11 @@ and writes them as CSV, the form trackers and detection scorers read (e.g. Stone
 
 Columns: ``pulse, time_s, object, kind, x_m, y_m, z_m, vx_m_s, vy_m_s, vz_m_s,
 heading_deg, rcs_hh_m2, rcs_hv_m2, rcs_vh_m2, rcs_vv_m2, rcs_known, range_m,
-range_cell, in_window, above_horizon, visible`` (heading counter-clockwise from east,
-as every angle of the scene; range_cell -1 outside the receive window).
+range_cell, in_window, above_horizon, visible, hidden_reason`` (heading
+counter-clockwise from east, as every angle of the scene; range_cell -1 outside the
+receive window; hidden_reason the name of ``truth_hidden_reason``'s flag: visible,
+outside_window, below_horizon, behind_land, behind_waves; empty for a file written
+before it).
 """
 
 from __future__ import annotations
@@ -22,7 +25,8 @@ from .dataset import atomic_path
 
 COLUMNS = ("pulse", "time_s", "object", "kind", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s",
            "vz_m_s", "heading_deg", "rcs_hh_m2", "rcs_hv_m2", "rcs_vh_m2", "rcs_vv_m2",
-           "rcs_known", "range_m", "range_cell", "in_window", "above_horizon", "visible")
+           "rcs_known", "range_m", "range_cell", "in_window", "above_horizon", "visible",
+           "hidden_reason")
 
 
 def truth_rows(ds) -> list[tuple]:
@@ -50,11 +54,17 @@ def truth_rows(ds) -> list[tuple]:
             for k in ("heading", "range", "range_cell", "in_window", "above_horizon",
                       "visible")}
     heading = np.rad2deg(flat["heading"])
+    reason = [""] * (n_p * n_o)
+    if "truth_hidden_reason" in ds:
+        meanings = str(ds["truth_hidden_reason"].attrs["flag_meanings"]).split()
+        reason = [meanings[int(r)] for r in
+                  np.asarray(ds["truth_hidden_reason"].values).reshape(-1)]
     pos = pos.reshape(-1, 3)
     return [(int(pulse[i]), float(time[i]), str(names[i]), str(kinds[i]),
              *map(float, pos[i]), *map(float, vel[i]), float(heading[i]), *map(float, rcs[i]),
              int(known[i]), float(flat["range"][i]), int(flat["range_cell"][i]),
-             int(flat["in_window"][i]), int(flat["above_horizon"][i]), int(flat["visible"][i]))
+             int(flat["in_window"][i]), int(flat["above_horizon"][i]), int(flat["visible"][i]),
+             reason[i])
             for i in range(pos.shape[0])]
 
 

@@ -20,7 +20,8 @@ def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
     and y north of the radar, x = r sin(az), y = r cos(az) with az the ray's azimuth
     clockwise from north and r its range (the slant range, as a radar's PPI draws it).
     Truth from the run: the point targets (circles, at the sweep's middle time) and the
-    ship's hull centre (triangle, ``ship_position``), relative to the radar's position.
+    ship's hull centre (triangle, ``ship_position``), relative to the radar's position;
+    the coastline of ``[[land]]`` (``land_outline``) as lines.
     """
     import matplotlib
 
@@ -72,7 +73,15 @@ def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
             sp = np.asarray(run["ship_position"].values[mid], dtype=float)
             ax.plot((sp[0] - radar[0]) / 1e3, (sp[1] - radar[1]) / 1e3, "^", ms=9,
                     mfc="none", mec="orange", mew=1.5, label="ship (truth)")
-        if "target_position" in run or "ship_position" in run:
+        if "land_outline" in run:  # the coastline ([[land]]), closed polygons
+            xy = np.asarray(run["land_outline"].values, dtype=float)
+            which = np.asarray(run["land_outline_land"].values)
+            for k, i in enumerate(np.unique(which)):
+                q = xy[which == i]
+                q = np.vstack([q, q[:1]])
+                ax.plot((q[:, 0] - radar[0]) / 1e3, (q[:, 1] - radar[1]) / 1e3, "-",
+                        color="sienna", lw=1.0, label="coastline" if k == 0 else None)
+        if "target_position" in run or "ship_position" in run or "land_outline" in run:
             ax.legend(loc="upper right", fontsize=8)
         ax.set_aspect("equal")
         ax.set_xlabel("x east of the radar [km]")

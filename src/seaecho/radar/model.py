@@ -144,6 +144,9 @@ class RadarModel:
     multipath : TwoRay or None
         The sea's two-ray propagation factor applied to point targets and sea facets
         (:mod:`seaecho.radar.propagation`); None: free space.
+    window_points : (K, 3) array or None
+        Further points the automatic receive window covers, in the simulation frame [m]
+        (the echoing land's outline at the sea level and at its height); None: none.
     """
 
     carrier: float
@@ -178,6 +181,7 @@ class RadarModel:
     transmit_phase: str = "coherent"
     sea_gain_floor: float | None = None
     multipath: TwoRay | None = None
+    window_points: np.ndarray | None = None
 
     @property
     def monostatic(self) -> bool:

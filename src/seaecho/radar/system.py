@@ -224,7 +224,8 @@ class RadarSystem:
         return p, seen
 
     def auto_window(self, margin_m: float | None = None) -> ReceiveWindow:
-        """Receive window covering the sea tile (and its waves) and the targets.
+        """Receive window covering the sea tile (and its waves), the targets and the
+        model's ``window_points`` (the land).
 
         Ranges (r_t + r_r)/2 are evaluated on the tile's boundary and centre at z = 0 and
         at every target, at the first and last pulse; the window adds ``margin_m``
@@ -248,6 +249,8 @@ class RadarSystem:
             pts = [points] if clutter else []
             if m.targets is not None and len(m.targets):
                 pts.append(self.target_positions(t)[0])
+            if m.window_points is not None:  # the land's outline
+                pts.append(m.window_points)
             if not pts:
                 continue
             p = np.vstack(pts)
@@ -416,17 +419,22 @@ class RadarSystem:
         return float(generator(self.seed, "transmit-phase", pulse).uniform(0.0, 2.0 * np.pi))
 
     def target_echo(self, geometry: PulseGeometry, *, variant: str | None = None,
-                    pulse: int | None = None) -> ScattererEcho | None:
+                    pulse: int | None = None, hidden: ArrayLike | None = None
+                    ) -> ScattererEcho | None:
         """Echo of the model's point targets at one pulse (None if there are none, or
-        all are beyond the horizon of a spherical Earth), with the sea's two-ray factors
-        when the model has them (``[propagation] multipath``); ``variant`` as
+        all are beyond the horizon of a spherical Earth or ``hidden``), with the sea's
+        two-ray factors when the model has them (``[propagation] multipath``); ``variant`` as
         :meth:`scatterer_echo`; ``pulse`` (default: the pulse emitted at
         ``geometry.time``) selects the fluctuating targets' draws
-        (:meth:`~seaecho.radar.model.TargetSet.scattering_at`)."""
+        (:meth:`~seaecho.radar.model.TargetSet.scattering_at`); ``hidden`` (T,) bool:
+        targets hidden otherwise (behind the land or a wave crest:
+        ``Simulation.targets_hidden``)."""
         targets = self.model.targets
         if targets is None or not len(targets):
             return None
         p, seen = self.target_positions(geometry.time)
+        if hidden is not None:
+            seen = seen & ~np.asarray(hidden, dtype=bool)
         if not seen.any():
             return None
         if pulse is None:

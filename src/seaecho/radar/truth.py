@@ -15,14 +15,29 @@ For each pulse p (emission time t_p) and object o (the ships of ``[ship]`` /
 - range (r_t + r_r) / 2 [m] at emission (the delay the object's echo has, neglecting
   its motion during the flight) and the range cell: the index along ``fast_time`` of
   the compressed sample nearest that delay, -1 outside the receive window;
-- visibility: inside the receive window, and above the radio horizon of both antennas
-  over a smooth Earth of effective radius k R_e (k = 4/3, standard refraction):
-  ground distance below sqrt(2 k R_e h_a) + sqrt(2 k R_e h_o) (eq T2) with h_a the
-  antenna's height and h_o the object's (a ship: its waterline, h_o = 0, so a hull
-  "below the horizon" may still show its superstructure; a target: its z). Masking by
-  wave crests (the sea surface between the radar and the object) is *not* computed
-  here; the hull echo's own trace includes it where ``[[objects]]`` are traced on the
-  held sea.
+- visibility: inside the receive window, above the radio horizon of both antennas,
+  not behind the land and not behind a wave crest. The horizon: on a spherical Earth
+  (``[propagation] earth = "spherical"``) the straight segments from both antennas to
+  the object clear the sphere (:meth:`seaecho.geometry.earth.SphericalEarth.visible`,
+  the test the targets' echo uses); on a flat Earth the smooth Earth of effective radius
+  k R_e (k = 4/3, standard refraction) still bounds it: ground distance below
+  sqrt(2 k R_e h_a) + sqrt(2 k R_e h_o) (eq T2) with h_a the antenna's height and h_o
+  the object's (a ship: its waterline, h_o = 0, so a hull "below the horizon" may still
+  show its superstructure; a target: its z). The land and the wave crests
+  (``Simulation.targets_hidden``: a target's line of sight to either antenna hits a
+  ``[[land]]`` triangle, or the sea surface held at the pulse; a ship's waterline point
+  is tested against the land only) come in as ``hidden``. ``truth_hidden_reason`` says
+  why an object is not visible (the first reason, in the order window, horizon, land,
+  waves).
+
+The frame. ``truth_position`` is in the scene's coordinates, those its ``[[targets]]``
+and ships are given in: on a spherical Earth, Earth-following (x, y the distance along
+the surface from the origin, z the height above the sphere; docs/scanning.md).
+``truth_position_cartesian`` is the same point in the simulation's Cartesian frame, the
+plane tangent to the sphere at the origin, where the platform tracks (``tx_position``)
+are (eq E4 of :mod:`seaecho.geometry.earth`; on a flat Earth the two are equal). The
+ranges, range cells and horizon are computed from the Cartesian positions, as the echo
+is.
 
 References
 ----------
@@ -51,8 +66,13 @@ def radio_horizon_m(h_a: ArrayLike, h_o: ArrayLike, radius_m: float | None = Non
                          np.maximum(np.asarray(h_o, dtype=np.float64), 0.0), radius)
 
 
-def ground_truth(radar, ships: tuple = (), hull_rcs: dict | None = None
-                 ) -> tuple[dict, dict]:
+#: ``truth_hidden_reason`` values and their meanings (CF flags).
+HIDDEN_REASONS = ("visible", "outside_window", "below_horizon", "behind_land",
+                  "behind_waves")
+
+
+def ground_truth(radar, ships: tuple = (), hull_rcs: dict | None = None,
+                 hidden: NDArray | None = None) -> tuple[dict, dict]:
     """The per-pulse ground truth of a run (module docstring) as xarray variables.
 
     Parameters
@@ -63,6 +83,9 @@ def ground_truth(radar, ships: tuple = (), hull_rcs: dict | None = None
         The scene's ships (their ``name`` labels them).
     hull_rcs : dict, optional
         ``{ship name: (P, 4) array}`` [m^2]: hull RCS of the ships whose hull echoes.
+    hidden : (2, P, O) bool array, optional
+        Objects (ships then targets) hidden behind the land [0] and behind a wave crest
+        [1] at each pulse (``Simulation.truth_hidden``); default none.
 
     Returns
     -------
@@ -107,25 +130,38 @@ def ground_truth(radar, ships: tuple = (), hull_rcs: dict | None = None
         kinds += ["target"] * n_t
     p_tx = radar.tx.state(t).position[:, None, :]
     p_rx = radar.rx.state(t).position[:, None, :]
-    r_t = np.linalg.norm(pos - p_tx, axis=-1)
-    r_r = np.linalg.norm(pos - p_rx, axis=-1)
+    earth = getattr(radar.model, "earth", None)  # the scene's sphere, else k = 4/3
+    cart = pos if earth is None else earth.position(pos)  # the echo's frame (eq E4)
+    r_t = np.linalg.norm(cart - p_tx, axis=-1)
+    r_r = np.linalg.norm(cart - p_rx, axis=-1)
     rng = 0.5 * (r_t + r_r)
     w = radar.window
     cell = np.rint((2.0 * rng / C0 - w.t0) * w.sampling_rate).astype(np.int64)
     inside = (cell >= 0) & (cell < w.n_samples)
     cell = np.where(inside, cell, -1)
-    h_o = pos[..., 2]
     above = np.ones_like(inside)
-    earth = getattr(radar.model, "earth", None)  # the scene's sphere, else k = 4/3
-    radius = None if earth is None else earth.radius
-    for p in (p_tx, p_rx):
-        ground = np.hypot(pos[..., 0] - p[..., 0], pos[..., 1] - p[..., 1])
-        above &= ground <= radio_horizon_m(p[..., 2], h_o, radius)
+    if earth is not None:  # the targets' echo test: segments clear the sphere
+        for p in (p_tx, p_rx):
+            above &= earth.visible(np.broadcast_to(p, cart.shape), cart)
+    else:
+        for p in (p_tx, p_rx):
+            ground = np.hypot(pos[..., 0] - p[..., 0], pos[..., 1] - p[..., 1])
+            above &= ground <= radio_horizon_m(p[..., 2], pos[..., 2], None)
+    if hidden is None:
+        hidden = np.zeros((2,) + inside.shape, dtype=bool)
+    land, waves = np.asarray(hidden[0], dtype=bool), np.asarray(hidden[1], dtype=bool)
+    reason = np.select([~inside, ~above, land, waves], [1, 2, 3, 4], 0).astype(np.int8)
+    frame = ("scene coordinates: on a spherical Earth x, y along the surface from the "
+             "origin and z above the sphere (docs/scanning.md)") if earth is not None else (
+             "scene coordinates (flat Earth: the Cartesian frame)")
     obj = ("pulse", "object")
     data = {
         "truth_position": (obj + ("xyz",), pos, {
             "units": "m", "long_name": "object position at emission: a ship's hull centre "
-            "on the waterline, a target's point"}),
+            "on the waterline, a target's point", "frame": frame}),
+        "truth_position_cartesian": (obj + ("xyz",), cart, {
+            "units": "m", "long_name": "truth_position in the simulation's Cartesian frame "
+            "(tangent to the Earth at the origin, that of tx_position; eq E4)"}),
         "truth_velocity": (obj + ("xyz",), vel, {"units": "m s-1"}),
         "truth_heading": (obj, heading, {
             "units": "rad", "long_name": "course over ground, counter-clockwise from +x "
@@ -143,14 +179,26 @@ def ground_truth(radar, ships: tuple = (), hull_rcs: dict | None = None
             "delay; -1 outside the receive window"}),
         "truth_in_window": (obj, inside.astype(np.int8), {"units": "1"}),
         "truth_above_horizon": (obj, above.astype(np.int8), {
-            "units": "1", "long_name": "within the 4/3-Earth radio horizon of both antennas "
-            "(a ship by its waterline); wave-crest masking not computed"}),
-        "truth_visible": (obj, (inside & above).astype(np.int8), {
-            "units": "1", "long_name": "in the receive window and above the horizon"}),
+            "units": "1", "long_name": "above the radio horizon of both antennas (a ship "
+            "by its waterline): the segments clear the scene's sphere; on a flat Earth "
+            "within the 4/3-Earth horizon"}),
+        "truth_behind_land": (obj, land.astype(np.int8), {
+            "units": "1", "long_name": "a line of sight to an antenna hits the [[land]]"}),
+        "truth_behind_waves": (obj, waves.astype(np.int8), {
+            "units": "1", "long_name": "a target's line of sight to an antenna hits the "
+            "sea surface held at the pulse (the tile's waves)"}),
+        "truth_visible": (obj, (reason == 0).astype(np.int8), {
+            "units": "1", "long_name": "in the receive window, above the horizon, not "
+            "behind the land or a wave crest"}),
+        "truth_hidden_reason": (obj, reason, {
+            "units": "1", "long_name": "why the object is not visible (the first reason)",
+            "flag_values": np.arange(len(HIDDEN_REASONS), dtype=np.int8),
+            "flag_meanings": " ".join(HIDDEN_REASONS)}),
     }
     coords = {"object": ("object", np.array(names)),
               "object_kind": ("object", np.array(kinds))}
     return data, coords
 
 
-__all__ = ["EARTH_RADIUS_M", "STANDARD_REFRACTION_K", "ground_truth", "radio_horizon_m"]
+__all__ = ["EARTH_RADIUS_M", "HIDDEN_REASONS", "STANDARD_REFRACTION_K", "ground_truth",
+           "radio_horizon_m"]

@@ -18,6 +18,15 @@ trace and of the code, written atomically; ``SEAECHO_CACHE=off`` or ``seaecho ru
 
 Each scatterer is traced alone, the other objects (scatterers or not) being occluders:
 mutual bounces between two objects are not modelled.
+
+On a spherical Earth (``[propagation] earth = "spherical"``) a hull is traced in the
+scene's frame around its own position, and its scattering centres, read as the scene's
+Earth-following coordinates like a target's, are placed on the sphere (eq E4 of
+:mod:`seaecho.geometry.earth`); a centre echoes only when its straight segments to both
+antennas clear the sphere (:func:`horizon_mask`): the part of a hull below the horizon's
+tangent ray, the hidden height h_hid = (d - sqrt(2 k a h_1))^2 / (2 k a) at ground
+distance d beyond the antenna's horizon (Skolnik 2001, section 8.2; Blake 1986, eq 3.21),
+is silent, the rest is heard; a hull wholly below returns nothing.
 """
 
 from __future__ import annotations
@@ -46,7 +55,7 @@ from .sbr import (
     trace_signature,
 )
 
-__all__ = ["SIGNATURE_NAMESPACE", "Hull", "HullEchoes"]
+__all__ = ["SIGNATURE_NAMESPACE", "Hull", "HullEchoes", "horizon_mask"]
 
 #: Sub-folder of the user cache (:mod:`seaecho.targets.cache`) holding hull signatures.
 SIGNATURE_NAMESPACE = "hull-signatures"
@@ -55,6 +64,29 @@ SIGNATURE_NAMESPACE = "hull-signatures"
 SIGNATURE_CACHE = 256
 #: The sea patch traced around a hull: its bounding radius times this, each side.
 _PATCH_MARGIN = 3.0
+
+
+def horizon_mask(earth, positions: NDArray, tx: NDArray, rx: NDArray
+                 ) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
+    """Scattering centres (K, 3) [m] in the scene's Earth-following coordinates placed on
+    the sphere (eq E4), and whether each is above both antennas' horizon.
+
+    A centre is kept when the straight segments from the transmitter and the receiver
+    (tangent frame, (3,) [m]) to it clear the sphere
+    (:meth:`seaecho.geometry.earth.SphericalEarth.visible`); a sea-bounce centre, whose
+    delay-equivalent position may lie below the mean sea, is tested at the height |z|
+    of its hull point's side.
+
+    Returns
+    -------
+    positions : (K, 3) array
+        On the sphere, tangent frame [m].
+    seen : (K,) bool array
+    """
+    p = np.asarray(positions, dtype=np.float64)
+    on = earth.position(p)
+    test = earth.position(np.concatenate([p[:, :2], np.abs(p[:, 2:])], axis=-1))
+    return on, earth.visible(tx, test) & earth.visible(rx, test)
 
 
 @dataclass(frozen=True)
@@ -172,11 +204,14 @@ class HullModel:
         Sea-water permittivity at the carrier [-].
     sigma_h : float
         Rms height of the sea [m] (rough-sea reflection factor of the multipath legs).
+    earth : seaecho.geometry.earth.SphericalEarth or None
+        The sphere that hides the hulls' parts below the horizon (None: flat Earth).
     """
 
     objects: tuple
     sea_eps_r: complex
     sigma_h: float
+    earth: object = None
 
 
 class HullEchoes:
@@ -206,7 +241,10 @@ class HullEchoes:
 
     def __init__(self, hulls: list[Hull], others: list, radar, sea_eps_r: complex,
                  sigma_h: float, surface: Callable | None = None,
-                 variant: str | None = None, disk_cache: ArrayCache | None = None) -> None:
+                 variant: str | None = None, disk_cache: ArrayCache | None = None,
+                 earth=None) -> None:
+        #: the sphere hiding the hulls' parts below the horizon (None: flat Earth)
+        self.earth = earth
         self.hulls = hulls
         self.others = others
         self.radar = radar
@@ -264,7 +302,7 @@ class HullEchoes:
             _check_window(hull, radar, (0, radar.n_pulses - 1))
         others = [o for _, shapes in model.objects for o in shapes]
         return cls(hulls, others, radar, model.sea_eps_r, model.sigma_h, surface=surface,
-                   variant=variant)
+                   variant=variant, earth=model.earth)
 
     # ---------------------------------------------------------------------- traces
     def refresh_pulse(self, hull: int, pulse: int) -> int:
@@ -348,7 +386,15 @@ class HullEchoes:
             pos = c.positions_at(geometry.time)
             if self.hulls[i].waterplane is not None:
                 pos = self.in_waves(i, pos, geometry.time)
-            out.append(self.radar.scatterer_echo(geometry, pos, vel, c.s))
+            s = c.s
+            if self.earth is not None:  # on the sphere; the part below the horizon hidden
+                pos, seen = horizon_mask(self.earth, pos, geometry.tx.position,
+                                         geometry.rx.position)
+                if not seen.any():
+                    continue
+                if not seen.all():
+                    pos, vel, s = pos[seen], vel[seen], s[seen]
+            out.append(self.radar.scatterer_echo(geometry, pos, vel, s))
         return out
 
     def attitude(self, hull: int, t: float) -> tuple[float, float, float]:

@@ -33,6 +33,7 @@ __all__ = [
     "load_mesh_file",
     "load_object",
     "rotation_matrix",
+    "segments_blocked",
     "shadow_rays",
     "shadow_test",
 ]
@@ -386,6 +387,24 @@ def shadow_rays(mi_scenes: Sequence, origins: np.ndarray, directions: np.ndarray
                           mi.Float(t), variant=variant)
     hit[:] = np.asarray(blocked.numpy(), dtype=bool)
     return hit
+
+
+def segments_blocked(mi_scenes: Sequence, start: np.ndarray, end: np.ndarray, *,
+                     variant: str | None = None) -> np.ndarray:
+    """Whether the straight segments from ``start`` to ``end`` (N, 3) [m] (either may be
+    (3,), broadcast) hit any of the scenes: the line of sight between two points, e.g. an
+    antenna and a target behind a wave crest or a headland (:func:`shadow_rays`; a
+    segment of zero length is not blocked)."""
+    start, end = np.broadcast_arrays(np.asarray(start, dtype=np.float64).reshape(-1, 3),
+                                     np.asarray(end, dtype=np.float64).reshape(-1, 3))
+    d = end - start
+    r = np.linalg.norm(d, axis=-1)
+    out = np.zeros(r.size, dtype=bool)
+    ok = r > 0
+    if ok.any() and mi_scenes:
+        out[ok] = shadow_rays(mi_scenes, np.ascontiguousarray(start[ok]), d[ok] / r[ok, None],
+                              r[ok] * (1.0 - 1e-6), variant=variant)
+    return out
 
 
 def shadow_test(mi_scenes: Sequence, origins: Sequence, directions: Sequence, maxt: Any, *,
