@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 import pytest
-from seaecho.preflight import check_run
+from seaecho.checks.preflight import check_run
 
 from seaecho.build import build_engine, build_sea
 from seaecho.config import SceneError, parse_scene
