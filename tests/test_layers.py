@@ -35,7 +35,7 @@ LAYERS = [
     {"io"},
     {"imaging"},
     {"build"},
-    {"simulation", "multistatic", "guards", "preflight", "resources"},
+    {"simulation", "coverage", "multistatic", "guards", "preflight", "resources"},
     {"distributed"},
     {"api"},
     {"cli"},

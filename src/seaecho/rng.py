@@ -49,6 +49,9 @@ STREAMS: dict[str, int] = {
     "transmit-phase": 8,
     # fluctuating point targets (Swerling cases): counter (target, dwell or pulse index)
     "target-fluctuation": 9,
+    # the seed of each tile of a radar-wide sea ([sea] coverage = "radar"): index (level,
+    # zigzag(ix), zigzag(iy)) of the tile in its level's lattice
+    "sea-tile": 10,
 }
 
 #: Philox4x32 constants (Salmon et al. 2011, table 2 and section 5.1): round multipliers

@@ -171,14 +171,20 @@ class Simulation:
         self._setup(build_simulation(scene, base_dir))
 
     @classmethod
-    def from_models(cls, models: SimulationModels) -> Simulation:
-        """A simulation of prebuilt stage models (:func:`seaecho.build.build_simulation`)."""
+    def from_models(cls, models: SimulationModels, facet_weight=None) -> Simulation:
+        """A simulation of prebuilt stage models (:func:`seaecho.build.build_simulation`).
+
+        ``facet_weight(sim, state, geometry)``, if given, weights each facet's visibility
+        ((N,) [-]; a tile of a radar-wide sea, :mod:`seaecho.coverage`: the facets it owns
+        and that are above the horizon); the sea then takes the reference path."""
         sim = cls.__new__(cls)
-        sim._setup(models)
+        sim._setup(models, facet_weight)
         return sim
 
-    def _setup(self, models: SimulationModels) -> None:
+    def _setup(self, models: SimulationModels, facet_weight=None) -> None:
         self.models = models
+        #: per-facet weight of the visibility (a radar-wide sea's tile), or None
+        self.facet_weight = facet_weight
         #: Mitsuba variant of the Dr.Jit kernels (``[tracing] variant``, checked by the builder)
         self.variant = models.variant
         self.radar = RadarSystem(models.radar)
@@ -212,7 +218,14 @@ class Simulation:
                                                  lambda t: tx.state(t).position, rx_fn)
             from .radar.resident import resident_sea  # the fused pulse, where it applies
 
-            self._resident = resident_sea(self.radar, models.tracing, self.sea_model)
+            if facet_weight is None:
+                self._resident = resident_sea(self.radar, models.tracing, self.sea_model)
+        #: the radar-wide sea ([sea] coverage = "radar"), None for the single tile
+        self.coverage = None
+        if getattr(models, "coverage", None) is not None:
+            from .coverage import CoverageSea
+
+            self.coverage = CoverageSea(models, self.radar, type(self).from_models)
         # Echoes of the [[objects]] with scatterer = true (docs/ship.md), or None
         from .tracing.hull_echo import HullEchoes
 
@@ -473,6 +486,8 @@ class Simulation:
             return SeaEcho(echo, None, None)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility
+        if self.facet_weight is not None:  # a tile of a radar-wide sea (seaecho.coverage)
+            vis = vis * self.facet_weight(self, st, geo)
         held = self._block_quantities(pulse, st, vis.size)
         damping = held["damping"]
         # All facets, so that facet j always gets the j-th speckle draw of its block
@@ -542,6 +557,10 @@ class Simulation:
         if self.hulls is not None:
             echoes += self.hulls.echoes(geo, pulse)
         raw = self.radar.receive(pulse, echoes)
+        if self.coverage is not None:  # the radar-wide sea, accumulated tile by tile
+            sea = self.coverage.raw(pulse)
+            if sea is not None:
+                raw += sea
         check_pulse(self, pulse, raw, echoes)  # NaN/Inf: NonFiniteEchoError (guards.py)
         return raw
 
@@ -669,6 +688,12 @@ class Simulation:
                                   else self.models.radar.sea_gain_floor),
                "subfacet_mss_upwind": m.mss_upwind,
                "subfacet_mss_crosswind": m.mss_crosswind}
+        if self.coverage is not None:  # [sea] coverage = "radar" (docs/scanning.md)
+            pw = self.coverage.patchwork
+            out.update({"sea_coverage": "radar", "sea_tiles": len(pw),
+                        "sea_level_spacing_m": [lv.spacing[0] for lv in pw.levels],
+                        "sea_level_band_edges_m": [float(e) for e in pw.edges],
+                        "subfacet_mss_note": "of the finest level; each level has its own"})
         if m.breaking is not None:
             out["breaking_fraction"] = m.breaking.q
         if self.evolving:

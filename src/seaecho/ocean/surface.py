@@ -162,11 +162,13 @@ class SeaSurface:
     precision : {"single", "double"}
         Floating-point type in which the slopes and velocities are synthesised (the
         elevation is always float64; see the module docstring).
+    centre : (float, float)
+        Coordinates (x, y) of the grid's node (nx/2, ny/2) [m] (default the origin).
 
     Notes
     -----
     Arrays are shaped (ny, nx): axis 0 is y (north), axis 1 is x (east). Coordinates are
-    ``x = (arange(nx) - nx/2) dx``; the tile is periodic.
+    ``x = centre_x + (arange(nx) - nx/2) dx``; the tile is periodic.
     """
 
     def __init__(
@@ -178,6 +180,7 @@ class SeaSurface:
         depth: float | None = None,
         surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
         precision: str = "single",
+        centre: tuple[float, float] = (0.0, 0.0),
     ) -> None:
         if precision not in PRECISIONS:
             raise ValueError(f"precision = {precision!r}: allowed {PRECISIONS}")
@@ -193,8 +196,11 @@ class SeaSurface:
         self.shape = (ny, nx)
         self.depth = depth
         self.dx, self.dy = lx / nx, ly / ny
-        self.x = grid_coordinates(lx, nx)
-        self.y = grid_coordinates(ly, ny)
+        #: the grid's centre node (index n / 2) [m]: a tile of a radar-wide sea lies
+        #: away from the origin (seaecho.geometry.patchwork); only the coordinates move
+        self.centre = (float(centre[0]), float(centre[1]))
+        self.x = self.centre[0] + grid_coordinates(lx, nx)
+        self.y = self.centre[1] + grid_coordinates(ly, ny)
         self.dkx, self.dky = 2 * np.pi / lx, 2 * np.pi / ly
 
         # full-plane wavenumber grid in FFT order, (ny, nx)

@@ -1,0 +1,206 @@
+"""The radar-wide sea at each pulse: the tiles the beam reaches, each in its own frame.
+
+``[sea] coverage = "radar"`` lays a patchwork of tiles around a fixed monostatic radar
+out to its window's end (:mod:`seaecho.geometry.patchwork`, eqs T1-T5; built by
+:func:`seaecho.build.build_coverage`). At pulse p, :class:`CoverageSea`:
+
+1. bounds the two-way gain over every tile's box at once
+   (:func:`seaecho.radar.coverage.two_way_bounds`, eqs C1-C2) and keeps the tiles whose
+   bound reaches ``[radar] sea_gain_floor_db``: the beam's main lobe and the sidelobes
+   above the floor;
+2. computes each kept tile's echo with the single tile's whole pipeline
+   (:meth:`seaecho.simulation.Simulation.sea_echo`: facets, ray-traced occlusion by the
+   waves of the tile, two-scale facet model, speckle, radar equation), in the tile's own
+   flat frame (eq T5): the radar's states and antenna axes are carried into that frame
+   (:class:`TilePlatform`), so delays, gains and angles are those of the tile on the
+   Earth (its drop and local vertical); the tile's own sea (its seed, ``"sea-tile"``
+   stream) with the ships' wakes where its grid lies;
+3. weights each facet by whether its tile owns it (eq T4: no facet counted twice) and,
+   on a spherical Earth, whether its centroid is above the radar's horizon (the straight
+   ray of :meth:`~seaecho.geometry.earth.SphericalEarth.visible`): the horizon cuts tiles
+   facet by facet;
+4. accumulates each tile's echo into the pulse's samples before the next tile
+   (:meth:`seaecho.radar.system.RadarSystem.receive` is linear in its echoes), in the
+   tiles' fixed order.
+
+Memory. At most :data:`CACHE_TILES` tiles are held between pulses (their surface, its
+per-block speckle draws and traced occlusion: the tiles of the beam, reused by the next
+pulses while the beam crosses them) and one tile's facets are worked on at a time, so a
+pulse's memory is that of a bounded number of tiles of ``nx x ny`` nodes whatever the
+window's range. Which tiles are held changes nothing: each tile's echo is a pure function
+of (scene, tile, pulse) (its held surface and speckle are those of the pulse's block), so
+pulses stay computable in any order and a Dask run writes the serial bytes.
+
+Truncation. A skipped tile's echo power is at most g_f times its power with every facet
+at both beams' peaks (eq C3 per tile), so the skipped sea of a pulse is at most
+
+    P_skipped(p) <= g_f sum_(skipped tiles i) P_peak,i                               (C4)
+
+with P_peak,i = sum over tile i's facets of |a_f|^2 at unit gains.
+
+Neglected: shadowing of a tile's facets by the waves of the tiles in front of it (each
+tile is traced alone: the waves shadow along the beam within a tile); the tile's own
+curvature (eq T5); ``[[objects]]`` occluders are placed in each tile's frame without the
+tile's tilt (an error of its angle rho / (k a) about the scene's origin).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections import OrderedDict
+from collections.abc import Callable
+
+import numpy as np
+from numpy.typing import NDArray
+
+#: Tiles held between pulses [-] (the memory of a pulse: :class:`CoverageSea`).
+CACHE_TILES = 64
+#: Margin of a tile's box in the beam's bound [m] (as the single tile's, sea elevations
+#: and the facets' horizontal displacements stay below it).
+TILE_MARGIN_M = 30.0
+
+
+class TilePlatform:
+    """A platform seen from a tile's frame (eq T5 of :mod:`seaecho.geometry.patchwork`):
+    its states' positions, velocities and body-to-world rotations carried into the
+    tile's frame; everything else is the platform's."""
+
+    def __init__(self, platform, frame) -> None:
+        self._platform = platform
+        self.frame = frame
+
+    def _carry(self, st):
+        f = self.frame
+        return dataclasses.replace(st, position=f.to_tile(st.position),
+                                   velocity=f.vector_to_tile(st.velocity),
+                                   rotation=f.matrix_to_tile(st.rotation))
+
+    def state(self, t):
+        """The platform's true state at ``t`` in the tile's frame."""
+        return self._carry(self._platform.state(t))
+
+    def nominal_state(self, t):
+        """The platform's nominal state at ``t`` in the tile's frame."""
+        return self._carry(self._platform.nominal_state(t))
+
+    def __getattr__(self, name):
+        return getattr(self._platform, name)
+
+
+def tile_radar(radar_model, frame, seed: int):
+    """The radar model seen from a tile's frame: its platforms carried by
+    :class:`TilePlatform`, a look-at point moved into the frame, the tile's seed, no
+    targets, noise or sea skip (the patchwork selects the tiles)."""
+    tx = TilePlatform(radar_model.tx, frame)
+    rx = tx if radar_model.rx is radar_model.tx else TilePlatform(radar_model.rx, frame)
+
+    def pointing(p):
+        if p.look_at is None:
+            return p
+        return dataclasses.replace(p, look_at=frame.to_tile(p.look_at))
+
+    return dataclasses.replace(
+        radar_model, tx=tx, rx=rx, tx_pointing=pointing(radar_model.tx_pointing),
+        rx_pointing=pointing(radar_model.rx_pointing), targets=None, thermal_noise=False,
+        seed=int(seed), sea_gain_floor=None, earth=None)
+
+
+class CoverageSea:
+    """The sea echo of a radar-wide sea, pulse by pulse (module docstring).
+
+    Parameters
+    ----------
+    models : seaecho.build.SimulationModels
+        The scene's models, with ``coverage`` (:class:`seaecho.build.CoverageModel`).
+    radar : seaecho.radar.system.RadarSystem
+        The scene's radar (its window, transmit phase and tile selection).
+    factory : callable
+        ``factory(models, facet_weight)`` -> a simulation of one tile's models
+        (:meth:`seaecho.simulation.Simulation.from_models`).
+    cache_tiles : int
+        Tiles held between pulses.
+    """
+
+    def __init__(self, models, radar, factory: Callable, cache_tiles: int = CACHE_TILES
+                 ) -> None:
+        self.models = models
+        self.model = models.coverage
+        self.patchwork = self.model.patchwork
+        self.radar = radar
+        self.floor = models.radar.sea_gain_floor
+        self._factory = factory
+        self.cache_tiles = int(cache_tiles)
+        self._boxes = self.patchwork.boxes(TILE_MARGIN_M)
+        self._tiles: OrderedDict[int, object] = OrderedDict()
+        #: tiles computed so far (new simulations made), for the benchmarks [-]
+        self.tiles_made = 0
+
+    def __len__(self) -> int:
+        return len(self.patchwork)
+
+    def gain_bounds(self, pulse: int) -> NDArray[np.float64]:
+        """Two-way gain bound over each tile's box at ``pulse`` (eq C2), (T,) [-]."""
+        from .radar.coverage import two_way_bounds
+
+        return two_way_bounds(self.radar, pulse, self._boxes)
+
+    def selected(self, pulse: int) -> NDArray[np.int64]:
+        """Tiles computed at ``pulse``: bound at or above the floor, in the patchwork's
+        order [-]."""
+        return np.flatnonzero(self.gain_bounds(pulse) >= self.floor)
+
+    def tile(self, i: int):
+        """The simulation of tile ``i`` (held, or made)."""
+        i = int(i)
+        if i in self._tiles:
+            self._tiles.move_to_end(i)
+            return self._tiles[i]
+        pw = self.patchwork
+        sea_model, tracing = self.model.levels[int(pw.level[i])]
+        frame = pw.frame(i)
+        models = dataclasses.replace(
+            self.models, radar=tile_radar(self.models.radar, frame, pw.seed(i, self.model.seed)),
+            sea=self.model.sea(i), sea_model=sea_model, tracing=tracing, hulls=None,
+            coverage=None)
+        owned = np.repeat(pw.cell_owned(i).reshape(-1), 2).astype(np.float64)
+        earth = self.models.radar.earth
+
+        def facet_weight(sim, state, geo) -> NDArray[np.float64]:
+            if earth is None:
+                return owned
+            # eq T5: the facets and the antennas in the simulation frame; the straight
+            # ray from each antenna must clear the sphere
+            c = frame.to_world(sim.engine.geometry(state)[0])
+            seen = (earth.visible(frame.to_world(geo.tx.position), c)
+                    & earth.visible(frame.to_world(geo.rx.position), c))
+            return owned * seen
+
+        sim = self._factory(models, facet_weight)
+        self.tiles_made += 1
+        self._tiles[i] = sim
+        while len(self._tiles) > self.cache_tiles:
+            self._tiles.popitem(last=False)
+        return sim
+
+    def raw(self, pulse: int) -> NDArray[np.complex128] | None:
+        """The sea's samples of ``pulse``, (channels, samples) [sqrt(W)], the transmit
+        phase included and no noise; None when no tile reaches the floor."""
+        keep = self.selected(pulse)
+        for i in list(self._tiles):  # the tiles the beam left
+            if i not in set(keep.tolist()):
+                del self._tiles[i]
+        out = None
+        for i in keep:  # a tile at a time: its facets are vectorised
+            echo = self.tile(i).sea_echo(pulse).echo
+            r = self.radar.receive(pulse, [echo], noise=False)
+            out = r if out is None else out + r
+        return out
+
+    def facet_count(self, pulse: int) -> int:
+        """Facets computed at ``pulse`` (all facets of the selected tiles) [-]."""
+        levels = self.patchwork.levels
+        n = [levels[int(j)].shape for j in self.patchwork.level[self.selected(pulse)]]
+        return int(sum(2 * (ny - 1) * (nx - 1) for ny, nx in n))
+
+
+__all__ = ["CACHE_TILES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform", "tile_radar"]
