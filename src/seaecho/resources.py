@@ -517,6 +517,9 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     mode = scene.tracing.mode
     ny, nx = scene.sea.shape
     cells = nx * ny if sea else 0
+    held = cells  # the sea's cells held in memory
+    if sea and scene.sea.coverage == "radar":  # the tiles of each pulse (seaecho.coverage)
+        cells, held = coverage_cells(scene)
     n_s, n_fft, _ = window_size(scene)
     c = len(r.channels)
     n_p = r.n_pulses
@@ -529,8 +532,8 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     terms = {
         "process": (M0_SEA["raytraced" if raytracing else mode] if sea or hulls
                     else M0_TARGETS),
-        "sea grid": M_CELL[mode] * cells,
-        "evolving sea": M_EVOLVING_CELL * cells if sea and sea_motion(scene) == "evolving"
+        "sea grid": M_CELL[mode] * held,
+        "evolving sea": M_EVOLVING_CELL * held if sea and sea_motion(scene) == "evolving"
         else 0.0,
         "receive window": M_FFT * c * n_fft + M_WRITE * c * chunk * n_s,
         "pulses": M_PULSE * n_p,
@@ -582,7 +585,7 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     if sea:
         per_pulse += T_CELL[mode] * cells
     per_pulse += sum(T_TARGET * h.centres for h in hulls)
-    start = T_START[mode] + T_CELL_SETUP[mode] * cells if sea else T_START["targets"]
+    start = T_START[mode] + T_CELL_SETUP[mode] * held if sea else T_START["targets"]
     rays = sum(h.grid * h.launches * h.sources * h.traces for h in hulls)
     pulses = n_p * per_pulse + T_RAY * rays
     if workers:
@@ -592,6 +595,30 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
         for n_u, n_phi in antenna_quadratures(scene))
     time_s += T_BACKPROJECTION * pixels * n_p * c
     return Estimate(peak, time_s, terms, drivers, n_s, n_fft, n_p, c, cells, pixels, rays)
+
+
+def coverage_cells(scene, samples: int = 16) -> tuple[int, int]:
+    """A radar-wide sea's (``[sea] coverage = "radar"``) grid nodes computed per pulse
+    (the mean over ``samples`` pulses spread over the run of the tiles the beam's bound
+    keeps, :class:`seaecho.coverage.CoverageSea`) and held at most (the
+    :data:`~seaecho.coverage.CACHE_TILES` largest tiles, or all the tiles of the pulse
+    that keeps most) [-]."""
+    from .build import build_radar, coverage_layout, sea_spectrum
+    from .coverage import CACHE_TILES, TILE_MARGIN_M
+    from .radar.coverage import two_way_bounds
+    from .radar.system import RadarSystem
+
+    model = build_radar(scene)
+    pw = coverage_layout(scene, model, sea_spectrum(scene))
+    radar = RadarSystem(model)
+    boxes = pw.boxes(TILE_MARGIN_M)
+    nodes = np.array([np.prod(lv.shape) for lv in pw.levels])[pw.level]
+    counts, most = [], 0
+    for p in np.unique(np.linspace(0, model.n_pulses - 1, samples).astype(int)):
+        keep = two_way_bounds(radar, int(p), boxes) >= model.sea_gain_floor
+        counts.append(int(nodes[keep].sum()))
+        most = max(most, int(keep.sum()))
+    return int(np.mean(counts)), int(nodes.max()) * min(CACHE_TILES, max(most, 1))
 
 
 # --------------------------------------------------------------------------- limits

@@ -1,0 +1,169 @@
+"""The radar-wide sea ([sea] coverage = "radar"): patchwork, per-pulse tiles, preflight.
+
+The layout's laws are eqs T1-T5 of seaecho.geometry.patchwork (docs/scanning.md, "The
+sea over the whole coverage"); the tile selection reuses the beam's bound (eqs C1-C2).
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+from seaecho.config import SceneError, load_scene
+from seaecho.geometry.earth import SphericalEarth, effective_radius
+from seaecho.geometry.patchwork import (
+    FACETS_PER_BEAM,
+    Patchwork,
+    band_edges,
+    level_spacings,
+    max_spacing,
+)
+
+SCENE = "scenes/coastal_vts_xband.toml"
+
+
+def _scene(window=(150.0, 400.0), size=32.0, nx=32, **radar):
+    sc = load_scene(SCENE)
+    return sc.model_copy(update={
+        "sea": sc.sea.model_copy(update={"coverage": "radar", "size_x_m": size, "nx": nx}),
+        "radar": sc.radar.model_copy(update={"window_start_m": window[0],
+                                             "window_end_m": window[1], "n_pulses": 8,
+                                             **radar}),
+        "targets": ()})
+
+
+def _patchwork(r_max=3000.0, earth=None):
+    # the coastal radar's beam: 2 m at 9.41 GHz, theta = lambda / W
+    return Patchwork.around((0.0, -2000.0), (1.0, 1.0), (64, 64), (250.0, r_max),
+                            0.0319 / 2.0, 7.5, earth)
+
+
+def test_tile_is_the_default():
+    sc = load_scene(SCENE)
+    assert sc.sea.coverage == "tile"
+
+
+def test_levels_and_bands_closed_form():
+    # eq T1: spacings double up to the largest allowed; eq T3: min(lambda_p/8, dr/2)
+    assert level_spacings(1.0, 7.5) == [1.0, 2.0, 4.0]
+    assert level_spacings(1.0, 7.5, nodes=32) == [1.0, 2.0]  # n_J >= 16
+    assert max_spacing(73.0, 15.0) == pytest.approx(7.5)
+    assert max_spacing(40.0, 15.0) == pytest.approx(5.0)
+    # eq T2: R_j = 8 Delta_j / theta
+    e = band_edges([1.0, 2.0, 4.0], 0.01, 100.0, 10000.0)
+    np.testing.assert_allclose(e, [100.0, FACETS_PER_BEAM * 2 / 0.01,
+                                   FACETS_PER_BEAM * 4 / 0.01, 10000.0])
+    pw = _patchwork()
+    assert [lv.shape for lv in pw.levels] == [(64, 64), (32, 32), (16, 16)]
+    assert all(lv.size == (64.0, 64.0) for lv in pw.levels)  # one extent at every level
+
+
+@pytest.mark.parametrize("earth", [None, SphericalEarth(effective_radius())])
+def test_tiles_partition_the_window(earth):
+    """Every point of the annulus has exactly one owner, inside that tile's cells and in
+    its level's band; nothing outside the bands is owned."""
+    pw = _patchwork(earth=earth)
+    rng = np.random.default_rng(0)
+    r = np.sqrt(rng.uniform(0.0, 3200.0 ** 2, 20000))
+    a = rng.uniform(0, 2 * np.pi, r.size)
+    q = np.stack([r * np.cos(a), -2000.0 + r * np.sin(a)], axis=-1)
+    own = pw.owner(q)
+    inside = (r >= 250.0) & (r < 3000.0)
+    assert np.all(own[inside] >= 0) and np.all(own[~inside] == -1)
+    for k in np.flatnonzero(inside)[:2000]:
+        x0, x1, y0, y1 = pw.span(own[k])
+        assert x0 <= q[k, 0] < x1 and y0 <= q[k, 1] < y1
+        lo, hi = pw.levels[pw.level[own[k]]].band
+        assert lo <= r[k] < hi
+
+
+def test_owned_cells_cover_the_annulus_once():
+    """The cells the tiles keep (each cell's centre owned by its tile) add up to the
+    annulus's area within the staircase along its circles (half a cell of each level
+    along each band edge)."""
+    pw = _patchwork(r_max=900.0)
+    area = 0.0
+    for i in range(len(pw)):
+        lv = pw.levels[pw.level[i]]
+        area += pw.cell_owned(i).sum() * lv.spacing[0] * lv.spacing[1]
+    exact = np.pi * (900.0 ** 2 - 250.0 ** 2)
+    edges = pw.edges
+    stair = sum(2 * np.pi * e * lv.spacing[0] for e, lv in zip(edges[1:], pw.levels,
+                                                               strict=True))
+    stair += 2 * np.pi * edges[0] * pw.levels[0].spacing[0]
+    assert abs(area - exact) < stair * 0.1
+
+
+def test_tile_nodes_do_not_grow_with_the_window():
+    """The largest tile (the memory of one tile's facets) and the levels near the radar
+    are the same for windows of 3, 6 and 12 km (closed form: (n_0 / 2^j)^2 nodes)."""
+    pws = [_patchwork(r_max=r) for r in (3000.0, 6000.0, 12000.0)]
+    shapes = {tuple(lv.shape for lv in pw.levels) for pw in pws}
+    assert shapes == {((64, 64), (32, 32), (16, 16))}
+    # the tiles of a band below 3 km are the same tiles (and seeds) in each
+    for pw in pws[1:]:
+        a = pws[0]
+        near = a.level < 2
+        keys = set(zip(a.level[near], a.ix[near], a.iy[near], strict=True))
+        keys_b = {k for k in zip(pw.level, pw.ix, pw.iy, strict=True) if k[0] < 2}
+        assert keys == keys_b
+        assert a.seed(0, 3) == pw.seed(0, 3)
+
+
+def test_tile_frame_grazing_on_the_earth():
+    """Eq T5: seen from its tile's frame, the radar's depression at the tile centre is
+    the grazing angle of eq E1 (Skolnik 2001 eq 8.7)."""
+    from seaecho.geometry.earth import grazing_angle
+
+    earth = SphericalEarth(effective_radius())
+    pw = _patchwork(r_max=12000.0, earth=earth)
+    radar = earth.position(np.array([0.0, -2000.0, 35.0]))
+    i = int(np.argmax(np.hypot(*(np.array([pw.tile_centre(k) for k in range(len(pw))])
+                                 - [0.0, -2000.0]).T)))
+    f = pw.frame(i)
+    p = f.to_tile(radar) - f.centre
+    r = np.linalg.norm(p)
+    psi = np.arcsin(p[2] / r)
+    assert psi == pytest.approx(float(grazing_angle(35.0, r, earth.radius)), rel=1e-6)
+
+
+@pytest.mark.slow  # ~60 s: a tracer per tile, a few dozen tiles
+def test_a_pulse_does_not_depend_on_the_tiles_computed_before():
+    """Pulse 5 computed first, or after pulses 0-4 (other tiles held), or with a cache
+    of one tile: the same bytes."""
+    from seaecho.simulation import Simulation
+
+    sc = _scene()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        a = Simulation(sc)
+        first = a.pulse(5)
+        b = Simulation(sc)
+        for p in range(5):
+            b.pulse(p)
+        after = b.pulse(5)
+        c = Simulation(sc)
+        c.coverage.cache_tiles = 1
+        one = c.pulse(5)
+    assert len(a.coverage.selected(5)) >= 2
+    np.testing.assert_array_equal(first, after)
+    np.testing.assert_array_equal(first, one)
+    assert np.abs(first).max() > 0
+
+
+@pytest.mark.parametrize("update, field", [
+    ({"radar": {"window_start_m": None, "window_end_m": None}}, "window_start_m"),
+    ({"radar": {"sea_gain_floor_db": "off"}}, "sea_gain_floor_db"),
+    ({"transmitter": {"motion": "linear", "velocity_m_s": (1.0, 0.0, 0.0)}}, "motion"),
+])
+def test_check_refuses_what_the_radar_wide_sea_cannot_run(update, field):
+    from seaecho.preflight import check_run
+
+    sc = _scene()
+    for sec, vals in update.items():
+        sc = sc.model_copy(update={sec: getattr(sc, sec).model_copy(update=vals)})
+    with pytest.raises(SceneError) as exc:
+        check_run(sc, "x.toml")
+    assert "[sea].coverage = 'radar'" in str(exc.value) and field in str(exc.value)
