@@ -131,8 +131,8 @@ def test_tile_frame_grazing_on_the_earth():
 
 @pytest.mark.slow  # ~60 s: a tracer per tile, a few dozen tiles
 def test_a_pulse_does_not_depend_on_the_tiles_computed_before():
-    """Pulse 5 computed first, or after pulses 0-4 (other tiles held), or with a cache
-    of one tile: the same bytes."""
+    """Pulse 5 computed first, or after pulses 0-4 (other tiles held), or holding no
+    tile: the same bytes."""
     from seaecho.simulation import Simulation
 
     sc = _scene()
@@ -145,7 +145,7 @@ def test_a_pulse_does_not_depend_on_the_tiles_computed_before():
             b.pulse(p)
         after = b.pulse(5)
         c = Simulation(sc)
-        c.coverage.cache_tiles = 1
+        c.coverage.cache_nodes = 0
         one = c.pulse(5)
     assert len(a.coverage.selected(5)) >= 2
     np.testing.assert_array_equal(first, after)

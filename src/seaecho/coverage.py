@@ -23,11 +23,13 @@ out to its window's end (:mod:`seaecho.geometry.patchwork`, eqs T1-T5; built by
    (:meth:`seaecho.radar.system.RadarSystem.receive` is linear in its echoes), in the
    tiles' fixed order.
 
-Memory. At most :data:`CACHE_TILES` tiles are held between pulses (their surface, its
-per-block speckle draws and traced occlusion: the tiles of the beam, reused by the next
-pulses while the beam crosses them) and one tile's facets are worked on at a time, so a
-pulse's memory is that of a bounded number of tiles of ``nx x ny`` nodes whatever the
-window's range. Which tiles are held changes nothing: each tile's echo is a pure function
+Memory. Tiles of at most :data:`CACHE_NODES` grid nodes in all are held between pulses
+(their surface, its per-block speckle draws and traced occlusion: the tiles of the beam,
+reused by the next pulses while the beam crosses them); a tile the beam leaves is
+dropped, and a tile that would exceed the budget is computed and dropped at once. One
+tile's facets are worked on at a time, so a pulse's memory is at most the budget plus
+one tile of ``nx x ny`` nodes, whatever the window's range (the time grows with the
+tiles the beam crosses). Which tiles are held changes nothing: each tile's echo is a pure function
 of (scene, tile, pulse) (its held surface and speckle are those of the pulse's block), so
 pulses stay computable in any order and a Dask run writes the serial bytes.
 
@@ -53,8 +55,9 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-#: Tiles held between pulses [-] (the memory of a pulse: :class:`CoverageSea`).
-CACHE_TILES = 64
+#: Grid nodes of the tiles held between pulses [-] (the memory of a pulse:
+#: :class:`CoverageSea`): 2^19, eight tiles of 256 x 256.
+CACHE_NODES = 1 << 19
 #: Margin of a tile's box in the beam's bound [m] (as the single tile's, sea elevations
 #: and the facets' horizontal displacements stay below it).
 TILE_MARGIN_M = 30.0
@@ -105,6 +108,23 @@ def tile_radar(radar_model, frame, seed: int):
         seed=int(seed), sea_gain_floor=None, earth=None)
 
 
+def point_bounds(radar, geo, frame, points) -> NDArray[np.float64]:
+    """The two-way bound of eq C1-C2 in the direction of each point (N, 3) of a tile's
+    frame at the pulse of ``geo`` (the tile's geometry) [-]: the width envelope's at the
+    point's direction cosine, the obliquity bounded by 1."""
+    from .radar.coverage import width_envelope
+
+    out = np.ones(len(points))
+    for ant, pos, axes in ((radar.tx_antenna, geo.tx.position, geo.tx_axes),
+                           (radar.rx_antenna, geo.rx.position, geo.rx_axes)):
+        if ant.pattern != "rectangular":
+            continue
+        d = points - pos
+        u = d @ axes[:, 1] / np.linalg.norm(d, axis=-1)
+        out *= width_envelope(ant, ant.width * u / ant.wavelength) ** 2
+    return out
+
+
 class CoverageSea:
     """The sea echo of a radar-wide sea, pulse by pulse (module docstring).
 
@@ -117,11 +137,11 @@ class CoverageSea:
     factory : callable
         ``factory(models, facet_weight)`` -> a simulation of one tile's models
         (:meth:`seaecho.simulation.Simulation.from_models`).
-    cache_tiles : int
-        Tiles held between pulses.
+    cache_nodes : int
+        Grid nodes of the tiles held between pulses.
     """
 
-    def __init__(self, models, radar, factory: Callable, cache_tiles: int = CACHE_TILES
+    def __init__(self, models, radar, factory: Callable, cache_nodes: int = CACHE_NODES
                  ) -> None:
         self.models = models
         self.model = models.coverage
@@ -129,9 +149,25 @@ class CoverageSea:
         self.radar = radar
         self.floor = models.radar.sea_gain_floor
         self._factory = factory
-        self.cache_tiles = int(cache_tiles)
+        self.cache_nodes = int(cache_nodes)
+        self._nodes = np.array([np.prod(lv.shape) for lv in self.patchwork.levels]
+                               )[self.patchwork.level]
         self._boxes = self.patchwork.boxes(TILE_MARGIN_M)
         self._tiles: OrderedDict[int, object] = OrderedDict()
+        # tiles reaching beyond 0.99 of the horizon to the sea level (eq E2): only their
+        # facets are tested against the Earth
+        self._beyond = np.zeros(len(self.patchwork), dtype=bool)
+        earth = models.radar.earth
+        if earth is not None:
+            from .geometry.earth import horizon_range
+
+            h = float(models.radar.tx.nominal_state(models.radar.start_time).position[2])
+            o = np.asarray(self.patchwork.centre)
+            spans = np.array([self.patchwork.span(i) for i in range(len(self))])
+            far = np.hypot(np.maximum(abs(spans[:, 0] - o[0]), abs(spans[:, 1] - o[0])),
+                           np.maximum(abs(spans[:, 2] - o[1]), abs(spans[:, 3] - o[1])))
+            self._beyond = far + TILE_MARGIN_M >= 0.99 * float(horizon_range(
+                max(h, 0.0), 0.0, earth.radius))
         #: tiles computed so far (new simulations made), for the benchmarks [-]
         self.tiles_made = 0
 
@@ -163,31 +199,38 @@ class CoverageSea:
             sea=self.model.sea(i), sea_model=sea_model, tracing=tracing, hulls=None,
             coverage=None)
         owned = np.repeat(pw.cell_owned(i).reshape(-1), 2).astype(np.float64)
-        earth = self.models.radar.earth
+        earth = self.models.radar.earth if self._beyond[i] else None
+        floor, radar = self.floor, self.radar
 
         def facet_weight(sim, state, geo) -> NDArray[np.float64]:
+            c = sim.engine.geometry(state)[0]
+            # eq C1 at each facet (the beams' bound in its direction): below the floor,
+            # its echo is left out as the tiles' (eq C4)
+            w = owned * (point_bounds(radar, geo, frame, c) >= floor)
             if earth is None:
-                return owned
+                return w
             # eq T5: the facets and the antennas in the simulation frame; the straight
-            # ray from each antenna must clear the sphere
-            c = frame.to_world(sim.engine.geometry(state)[0])
+            # ray from each antenna to the facet, or to the sea level under a trough,
+            # must clear the sphere (the tile's plane is the sphere at its centre)
+            c = frame.to_world(np.concatenate([c[:, :2], np.maximum(c[:, 2:], 0.0)], axis=1))
             seen = (earth.visible(frame.to_world(geo.tx.position), c)
                     & earth.visible(frame.to_world(geo.rx.position), c))
-            return owned * seen
+            return w * seen
 
         sim = self._factory(models, facet_weight)
         self.tiles_made += 1
-        self._tiles[i] = sim
-        while len(self._tiles) > self.cache_tiles:
-            self._tiles.popitem(last=False)
+        held = sum(int(self._nodes[k]) for k in self._tiles)
+        if held + int(self._nodes[i]) <= self.cache_nodes:  # else used once and dropped
+            self._tiles[i] = sim
         return sim
 
     def raw(self, pulse: int) -> NDArray[np.complex128] | None:
         """The sea's samples of ``pulse``, (channels, samples) [sqrt(W)], the transmit
         phase included and no noise; None when no tile reaches the floor."""
         keep = self.selected(pulse)
+        kept = set(keep.tolist())
         for i in list(self._tiles):  # the tiles the beam left
-            if i not in set(keep.tolist()):
+            if i not in kept:
                 del self._tiles[i]
         out = None
         for i in keep:  # a tile at a time: its facets are vectorised
@@ -203,4 +246,5 @@ class CoverageSea:
         return int(sum(2 * (ny - 1) * (nx - 1) for ny, nx in n))
 
 
-__all__ = ["CACHE_TILES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform", "tile_radar"]
+__all__ = ["CACHE_NODES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform", "point_bounds",
+           "tile_radar"]

@@ -600,11 +600,11 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
 def coverage_cells(scene, samples: int = 16) -> tuple[int, int]:
     """A radar-wide sea's (``[sea] coverage = "radar"``) grid nodes computed per pulse
     (the mean over ``samples`` pulses spread over the run of the tiles the beam's bound
-    keeps, :class:`seaecho.coverage.CoverageSea`) and held at most (the
-    :data:`~seaecho.coverage.CACHE_TILES` largest tiles, or all the tiles of the pulse
-    that keeps most) [-]."""
+    keeps, :class:`seaecho.coverage.CoverageSea`) and held at most (the budget
+    :data:`~seaecho.coverage.CACHE_NODES`, or the nodes of the pulse that keeps most,
+    plus one tile in work) [-]."""
     from .build import build_radar, coverage_layout, sea_spectrum
-    from .coverage import CACHE_TILES, TILE_MARGIN_M
+    from .coverage import CACHE_NODES, TILE_MARGIN_M
     from .radar.coverage import two_way_bounds
     from .radar.system import RadarSystem
 
@@ -617,8 +617,8 @@ def coverage_cells(scene, samples: int = 16) -> tuple[int, int]:
     for p in np.unique(np.linspace(0, model.n_pulses - 1, samples).astype(int)):
         keep = two_way_bounds(radar, int(p), boxes) >= model.sea_gain_floor
         counts.append(int(nodes[keep].sum()))
-        most = max(most, int(keep.sum()))
-    return int(np.mean(counts)), int(nodes.max()) * min(CACHE_TILES, max(most, 1))
+        most = max(most, int(nodes[keep].sum()))
+    return int(np.mean(counts)), min(CACHE_NODES, most) + int(nodes.max())
 
 
 # --------------------------------------------------------------------------- limits
