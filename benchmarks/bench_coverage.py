@@ -39,6 +39,7 @@ def coverage_scene(path: Path, grid: int, end_m: float, pulses: int, start_m: fl
 
     sc = load_scene(path)
     return sc.model_copy(update={
+        "tracing": sc.tracing.model_copy(update={"subfacet_shadowing": True}),
         "sea": sc.sea.model_copy(update={"coverage": "radar", "size_x_m": float(grid),
                                          "size_y_m": None, "nx": grid, "ny": None}),
         "radar": sc.radar.model_copy(update={"window_start_m": start_m,

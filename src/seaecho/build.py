@@ -910,6 +910,11 @@ def coverage_refusal(scene) -> str | None:
     if r.sea_gain_floor_db == "off":
         return (f"{where}: needs [radar].sea_gain_floor_db as a number (got 'off'): every "
                 "tile of the coverage would be computed at every pulse")
+    if not scene.tracing.subfacet_shadowing:
+        return (f"{where}: needs [tracing].subfacet_shadowing = true (got false): the "
+                "coarser levels' facets leave the shadowing by the waves they do not "
+                "resolve to it (docs/scanning.md: 4 m facets 0.6 dB above 1 m ones at "
+                "1 deg grazing without it)")
     if t.position_m[2] <= 0.0:
         return (f"{where}: needs the antenna above the sea ([transmitter].position_m z = "
                 f"{t.position_m[2]:g} m)")
