@@ -199,3 +199,21 @@ def test_sigma0_of_the_levels_is_grid_independent_at_low_grazing():
         means.append(10 * np.log10(np.mean(vals)))
     assert means[0] == pytest.approx(-39.05, abs=0.05)  # the measurement above
     assert abs(means[1] - means[0]) < 0.7 and abs(means[2] - means[0]) < 0.7
+
+
+def test_shared_cell_spectrum_and_centre_keep_the_surface():
+    """A tile's surface with its level's shared cell spectrum and its centre is the
+    surface of the same seed at the origin, moved: the same heights bit for bit."""
+    from seaecho.build import sea_spectrum
+    from seaecho.ocean.surface import SeaSurface, cell_averaged_spectrum
+    from seaecho.rng import generator
+
+    sp = sea_spectrum(load_scene(SCENE))
+    a = SeaSurface(sp, (64.0, 64.0), (32, 32), generator(1, "surface"))
+    k = 2 * np.pi * np.fft.fftfreq(32, 2.0)
+    psi = cell_averaged_spectrum(sp, k[None, :], k[:, None], 2 * np.pi / 64, 2 * np.pi / 64)
+    b = SeaSurface(sp, (64.0, 64.0), (32, 32), generator(1, "surface"), centre=(5.0, 6.0),
+                   cell_spectrum=psi)
+    np.testing.assert_array_equal(a.fields(0.3).elevation, b.fields(0.3).elevation)
+    np.testing.assert_array_equal(b.x, a.x + 5.0)
+    np.testing.assert_array_equal(b.y, a.y + 6.0)

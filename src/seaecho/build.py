@@ -844,6 +844,22 @@ class CoverageModel:
     seed: int
     window_m: tuple[float, float]
 
+    def cell_spectrum(self, level: int) -> np.ndarray:
+        """The spectrum averaged over the wavenumber cells of ``level``'s grid (FFT
+        order), computed once per level and shared by its tiles [m^4]."""
+        from .ocean.surface import cell_averaged_spectrum
+
+        cache = self.__dict__.setdefault("_psi", {})
+        if level not in cache:
+            lev = self.patchwork.levels[level]
+            (ny, nx), (lx, ly) = lev.shape, lev.size
+            kx = 2 * np.pi * np.fft.fftfreq(nx, lx / nx)
+            ky = 2 * np.pi * np.fft.fftfreq(ny, ly / ny)
+            cache[level] = cell_averaged_spectrum(self.spectrum, kx[None, :], ky[:, None],
+                                                  2 * np.pi / lx, 2 * np.pi / ly)
+            cache[level].setflags(write=False)
+        return cache[level]
+
     def sea(self, i: int) -> Sea:
         """The sea of tile ``i``: its own realisation (``"surface"`` stream of the tile's
         seed) on its grid in the scene's coordinates, plus the ships' wakes there."""
@@ -851,7 +867,8 @@ class CoverageModel:
         lev = pw.levels[int(pw.level[i])]
         surface = SeaSurface(self.spectrum, size=lev.size, shape=lev.shape,
                              rng=generator(pw.seed(i, self.seed), "surface"),
-                             depth=self.depth, centre=pw.tile_centre(i))
+                             depth=self.depth, centre=pw.tile_centre(i),
+                             cell_spectrum=self.cell_spectrum(int(pw.level[i])))
         return Sea(surface, list(self.ships) or None, kelvin_wake=list(self.kelvin_wake),
                    narrow_v=list(self.narrow_v),
                    narrow_v_bragg_vector=self.narrow_v_bragg_vector)

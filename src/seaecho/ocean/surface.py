@@ -164,6 +164,9 @@ class SeaSurface:
         elevation is always float64; see the module docstring).
     centre : (float, float)
         Coordinates (x, y) of the grid's node (nx/2, ny/2) [m] (default the origin).
+    cell_spectrum : ndarray (ny, nx), optional
+        :func:`cell_averaged_spectrum` of this spectrum on this grid in FFT order [m^4],
+        if already computed (the tiles of a radar-wide sea share their level's).
 
     Notes
     -----
@@ -181,6 +184,7 @@ class SeaSurface:
         surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
         precision: str = "single",
         centre: tuple[float, float] = (0.0, 0.0),
+        cell_spectrum: NDArray[np.float64] | None = None,
     ) -> None:
         if precision not in PRECISIONS:
             raise ValueError(f"precision = {precision!r}: allowed {PRECISIONS}")
@@ -207,7 +211,10 @@ class SeaSurface:
         kx = 2 * np.pi * np.fft.fftfreq(nx, self.dx)
         ky = 2 * np.pi * np.fft.fftfreq(ny, self.dy)
         kxg, kyg = kx[None, :], ky[:, None]
-        psi = cell_averaged_spectrum(spectrum, kxg, kyg, self.dkx, self.dky)
+        psi = (cell_averaged_spectrum(spectrum, kxg, kyg, self.dkx, self.dky)
+               if cell_spectrum is None else np.array(cell_spectrum, dtype=np.float64))
+        if psi.shape != (ny, nx):
+            raise ValueError(f"cell_spectrum: shape {psi.shape}, the grid's is {(ny, nx)}")
         psi[0, 0] = 0.0  # zero mean
         psi[ny // 2, :] = 0.0  # Nyquist row and column: no travelling direction
         psi[:, nx // 2] = 0.0
