@@ -217,3 +217,23 @@ def test_shared_cell_spectrum_and_centre_keep_the_surface():
     np.testing.assert_array_equal(a.fields(0.3).elevation, b.fields(0.3).elevation)
     np.testing.assert_array_equal(b.x, a.x + 5.0)
     np.testing.assert_array_equal(b.y, a.y + 6.0)
+
+
+@pytest.mark.slow  # ~7 s: two simulations (JIT, tracer)
+def test_tile_coverage_is_todays_path():
+    """coverage = 'tile' (the default, or given) is the single tile as before the key:
+    no patchwork, the same bytes (the 4 pulses of the coastal scene on a 64 m tile of
+    32 x 32 had the sha256 ccd16907... before and after the radar-wide sea landed:
+    docs/scanning.md)."""
+    from seaecho.simulation import Simulation
+
+    sc = load_scene(SCENE)
+    sc = sc.model_copy(update={"sea": sc.sea.model_copy(update={"size_x_m": 64.0,
+                                                                "nx": 16}),
+                               "radar": sc.radar.model_copy(update={"n_pulses": 2})})
+    given = sc.model_copy(update={"sea": sc.sea.model_copy(update={"coverage": "tile"})})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        a, b = Simulation(sc), Simulation(given)
+        assert a.coverage is None and a.sea is not None
+        np.testing.assert_array_equal(a.pulse(1), b.pulse(1))
