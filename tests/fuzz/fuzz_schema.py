@@ -543,8 +543,11 @@ CAPS = {
         st.floats(-300.0, 0.0, allow_nan=False), st.just("off")),
 }
 #: Fields left out of generated scenes: an output path would write beside the tests;
-#: [[receivers]] (multistatic; its cross-receiver rules are tested in tests/multistatic).
-SKIP = {("RunConfig", "output"), ("Scene", "receivers")}
+#: [[receivers]] (multistatic; its cross-receiver rules are tested in tests/multistatic);
+#: [sea] coverage = "radar" (it needs a window, a fixed monostatic fan beam and the
+#: sub-facet shadowing, and a run computes hundreds of tiles: its refusals are tested in
+#: tests/test_coverage_sea.py).
+SKIP = {("RunConfig", "output"), ("Scene", "receivers"), ("SeaConfig", "coverage")}
 
 
 def scenes(runnable: bool = True) -> st.SearchStrategy[dict]:
