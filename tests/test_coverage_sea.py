@@ -130,13 +130,16 @@ def test_tile_frame_grazing_on_the_earth():
     assert psi == pytest.approx(float(grazing_angle(35.0, r, earth.radius)), rel=1e-6)
 
 
-@pytest.mark.slow  # ~60 s: a tracer per tile, a few dozen tiles
-def test_a_pulse_does_not_depend_on_the_tiles_computed_before():
+@pytest.mark.slow  # ~60 s each: a tracer per tile, a few dozen tiles
+@pytest.mark.parametrize("update", [250, 2])  # held, evolving (renewed within the run)
+def test_a_pulse_does_not_depend_on_the_tiles_computed_before(update):
     """Pulse 5 computed first, or after pulses 0-4 (other tiles held), or holding no
     tile: the same bytes."""
+    from seaecho.build import sea_motion
     from seaecho.simulation import Simulation
 
-    sc = _scene()
+    sc = _scene(sea_update_pulses=update)
+    assert sea_motion(sc) == ("held" if update == 250 else "evolving")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         a = Simulation(sc)
