@@ -240,3 +240,27 @@ def test_tile_coverage_is_todays_path():
         a, b = Simulation(sc), Simulation(given)
         assert a.coverage is None and a.sea is not None
         np.testing.assert_array_equal(a.pulse(1), b.pulse(1))
+
+
+def test_tiles_of_a_pulse_are_those_the_beams_bound_keeps():
+    """The tiles' bounds at once (two_way_bounds) are the single box's bound (eqs C1-C2)
+    of each; the beam at bearing 43 deg keeps the tile under its boresight 2 km out and
+    not the one opposite."""
+    from seaecho.build import build_radar, coverage_layout, sea_spectrum
+    from seaecho.coverage import TILE_MARGIN_M
+    from seaecho.radar.coverage import two_way_bound, two_way_bounds
+    from seaecho.radar.system import RadarSystem
+
+    sc = _scene(window=(300.0, 2500.0), size=128.0, nx=128, n_pulses=400)
+    model = build_radar(sc)
+    pw = coverage_layout(sc, model, sea_spectrum(sc))
+    radar = RadarSystem(model)
+    boxes = pw.boxes(TILE_MARGIN_M)
+    b = two_way_bounds(radar, 300, boxes)
+    some = np.linspace(0, len(pw) - 1, 40).astype(int)
+    np.testing.assert_array_equal(b[some], [two_way_bound(radar, 300, boxes[i])
+                                            for i in some])
+    bearing = np.radians(300 * 360.0 / 2500)  # 24 rpm at 1 kHz, clockwise from north
+    ahead = pw.owner(np.array([[2000 * np.sin(bearing), -2000 + 2000 * np.cos(bearing)]]))
+    behind = pw.owner(np.array([[-2000 * np.sin(bearing), -2000 - 2000 * np.cos(bearing)]]))
+    assert b[ahead[0]] >= model.sea_gain_floor > b[behind[0]]
