@@ -121,6 +121,29 @@ def facet_sigma0(sea_model, facets, damping: NDArray | None, breaking: NDArray |
     return terms.sigma() * facets.visibility[:, None]
 
 
+def _take(facets, keep: NDArray[np.int64]):
+    """The facets ``keep`` of a :class:`~seaecho.geometry.facets.Facets` (every per-facet
+    array, ``extra`` included)."""
+    n = facets.visibility.size
+    upd = {f.name: getattr(facets, f.name)[keep] for f in dataclasses.fields(facets)
+           if isinstance(getattr(facets, f.name), np.ndarray)
+           and getattr(facets, f.name).shape[:1] == (n,)}
+    upd["extra"] = {k: (v[keep] if isinstance(v, np.ndarray) and v.shape[:1] == (n,) else v)
+                    for k, v in facets.extra.items()}
+    return dataclasses.replace(facets, **upd)
+
+
+def _take_held(held: dict, keep: NDArray[np.int64], draws: dict) -> dict:
+    """A held block's quantities (:meth:`Simulation._block_quantities`) of the facets
+    ``keep``: wake damping, breaking placement and the host speckle draws."""
+    out = dict(held)
+    for name in ("damping", "breaking"):
+        if out.get(name) is not None:
+            out[name] = out[name][keep]
+    out["host_draws"] = {m: g[keep] for m, g in draws.items()}
+    return out
+
+
 @dataclass(frozen=True)
 class SeaEcho:
     """The sea's contribution to one pulse.
@@ -185,6 +208,8 @@ class Simulation:
         self.models = models
         #: per-facet weight of the visibility (a radar-wide sea's tile), or None
         self.facet_weight = facet_weight
+        #: held sea with a facet weight: only the weighted facets through the facet model
+        self.cull = True
         #: Mitsuba variant of the Dr.Jit kernels (``[tracing] variant``, checked by the builder)
         self.variant = models.variant
         self.radar = RadarSystem(models.radar)
@@ -486,9 +511,18 @@ class Simulation:
             return SeaEcho(echo, None, None)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility
+        keep = None
+        held = self._block_quantities(pulse, st, vis.size)
         if self.facet_weight is not None:  # a tile of a radar-wide sea (seaecho.coverage)
             vis = vis * self.facet_weight(self, st, geo)
-        held = self._block_quantities(pulse, st, vis.size)
+            if not self.evolving and self.cull:  # only its weighted facets, each with
+                keep = np.flatnonzero(vis > 0)  # its own draws: the same numbers
+                facets, vis, held = _take(facets, keep), vis[keep], _take_held(
+                    held, keep, self._host_draws(held))
+                if keep.size == 0:  # none in the beam, the horizon or the tile
+                    none = np.zeros((0, 3))
+                    return SeaEcho(self.radar.scatterer_echo(
+                        geo, none, none, np.zeros((0, 2, 2), complex)), None, facets)
         damping = held["damping"]
         # All facets, so that facet j always gets the j-th speckle draw of its block
         # (visibility may change from pulse to pulse within a block). Eq P4 of
@@ -503,6 +537,8 @@ class Simulation:
                                         breaking_fraction=held["breaking"], local=facets,
                                         variant=self.variant, precision=PRECISION)
         centres = self.phase_centres(pulse, st)
+        if keep is not None:
+            centres = centres[keep]
         visible = vis > 0
         if visible.all():  # the usual case: no copies
             pos, vel = centres, facets.velocity
