@@ -134,7 +134,7 @@ def test_tile_frame_grazing_on_the_earth():
 @pytest.mark.parametrize("update", [250, 2])  # held, evolving (renewed within the run)
 def test_a_pulse_does_not_depend_on_the_tiles_computed_before(update):
     """Pulse 5 computed first, or after pulses 0-4 (other tiles held), or holding no
-    tile: the same bytes."""
+    tile, or with every facet of the tiles through the facet model: the same bytes."""
     from seaecho.build import sea_motion
     from seaecho.simulation import Simulation
 
@@ -151,9 +151,20 @@ def test_a_pulse_does_not_depend_on_the_tiles_computed_before(update):
         c = Simulation(sc)
         c.coverage.cache_nodes = 0
         one = c.pulse(5)
+        d = Simulation(sc)  # every facet through the facet model (held sea: the same)
+        make = d.coverage._factory
+
+        def whole(models, weight):
+            sim = make(models, weight)
+            sim.cull = False
+            return sim
+
+        d.coverage._factory = whole
+        uncut = d.pulse(5)
     assert len(a.coverage.selected(5)) >= 2
     np.testing.assert_array_equal(first, after)
     np.testing.assert_array_equal(first, one)
+    np.testing.assert_array_equal(first, uncut)
     assert np.abs(first).max() > 0
 
 
