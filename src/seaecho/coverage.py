@@ -15,10 +15,12 @@ out to its window's end (:mod:`seaecho.geometry.patchwork`, eqs T1-T5; built by
    (:class:`TilePlatform`), so delays, gains and angles are those of the tile on the
    Earth (its drop and local vertical); the tile's own sea (its seed, ``"sea-tile"``
    stream) with the ships' wakes where its grid lies;
-3. weights each facet by whether its tile owns it (eq T4: no facet counted twice) and,
-   on a spherical Earth, whether its centroid is above the radar's horizon (the straight
-   ray of :meth:`~seaecho.geometry.earth.SphericalEarth.visible`): the horizon cuts tiles
-   facet by facet;
+3. weights each facet by whether its tile owns it (eq T4: no facet counted twice),
+   whether the beams' bound in its own direction reaches the floor (:func:`point_bounds`)
+   and, on a spherical Earth, whether its centroid is above the radar's horizon (the
+   straight ray of :meth:`~seaecho.geometry.earth.SphericalEarth.visible`): the horizon
+   cuts tiles facet by facet (a held sea sends only the weighted facets through the
+   facet model, the same numbers);
 4. accumulates each tile's echo into the pulse's samples before the next tile
    (:meth:`seaecho.radar.system.RadarSystem.receive` is linear in its echoes), in the
    tiles' fixed order.
@@ -33,12 +35,12 @@ tiles the beam crosses). Which tiles are held changes nothing: each tile's echo 
 of (scene, tile, pulse) (its held surface and speckle are those of the pulse's block), so
 pulses stay computable in any order and a Dask run writes the serial bytes.
 
-Truncation. A skipped tile's echo power is at most g_f times its power with every facet
-at both beams' peaks (eq C3 per tile), so the skipped sea of a pulse is at most
+Truncation. A skipped tile's or facet's echo power is at most g_f times its power at
+both beams' peaks (eq C3), so the skipped sea of a pulse is at most
 
-    P_skipped(p) <= g_f sum_(skipped tiles i) P_peak,i                               (C4)
+    P_skipped(p) <= g_f sum_(skipped facets f) |a_f|^2 (unit gains)                  (C4)
 
-with P_peak,i = sum over tile i's facets of |a_f|^2 at unit gains.
+over the facets of the skipped tiles and those left out of the kept ones.
 
 Neglected: shadowing of a tile's facets by the waves of the tiles in front of it (each
 tile is traced alone: the waves shadow along the beam within a tile); the tile's own
