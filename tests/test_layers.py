@@ -38,7 +38,7 @@ LAYERS = [
     {"plotting"},
     {"build"},
     {"checks", "summary"},
-    {"simulation", "multistatic"},
+    {"simulation", "coverage", "multistatic"},
     {"distributed"},
     {"api"},
     {"cli"},

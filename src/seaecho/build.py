@@ -843,6 +843,9 @@ class SimulationModels:
     hulls: object = None
     ships: tuple = ()
     land: object = None
+    #: the radar-wide sea (:class:`CoverageModel`) of ``[sea] coverage = "radar"``, else
+    #: None (then ``sea`` is the one tile)
+    coverage: object = None
 
 
 def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationModels:
@@ -866,18 +869,183 @@ def build_simulation(scene, base_dir: str | os.PathLike = ".") -> SimulationMode
     except ValueError as exc:
         raise ValueError(f"[tracing].variant: {exc}") from None
     radar = build_radar(scene)
-    sea = sea_model = tracing = None
-    if radar.sea_clutter:
+    sea = sea_model = tracing = coverage = None
+    if radar.sea_clutter and scene.sea.coverage == "radar":
+        coverage = build_coverage(scene, radar, base_dir)
+        sea_model = coverage.levels[0][0]
+    elif radar.sea_clutter:
         spectrum = sea_spectrum(scene)
         sea = build_sea(scene, spectrum)
         sea_model = build_sea_model(scene, spectrum=spectrum)
         check_spm_validity(sea_model.k, sea_model.roughness_height_variance)
         tracing = build_tracing(scene, base_dir, sea_model=sea_model)
     hulls = build_hulls(scene, base_dir, variant=variant)
-    ships = sea.ships if sea is not None else build_ships(scene)
+    ships = (sea.ships if sea is not None else coverage.ships if coverage is not None
+             else build_ships(scene))
     return SimulationModels(radar=radar, sea=sea, sea_model=sea_model, tracing=tracing,
                             attrs=scene_attrs(scene), variant=variant, hulls=hulls,
-                            ships=tuple(ships), land=build_land(scene))
+                            ships=tuple(ships), land=build_land(scene),
+                            coverage=coverage)
+
+
+# ----------------------------------------------------------------- the radar-wide sea
+@dataclass(frozen=True)
+class CoverageModel:
+    """The sea of ``[sea] coverage = "radar"``: the patchwork of tiles around a fixed
+    monostatic radar (:mod:`seaecho.geometry.patchwork`) and what makes each tile's sea.
+
+    Attributes
+    ----------
+    patchwork : seaecho.geometry.patchwork.Patchwork
+    levels : tuple of (SeaModel, TracingModel)
+        The sea as the facet model sees it at each level's spacing (its own sub-facet
+        statistics: the two-scale split at every spacing) and its facet engine's model.
+    spectrum : DirectionalSpectrum
+    depth : float or None
+        Water depth [m].
+    ships : tuple of seaecho.wake.Ship
+    kelvin_wake, narrow_v : tuple of bool
+        Per ship.
+    narrow_v_bragg_vector : (float, float) or None
+    seed : int
+        The scene's seed (each tile's: :meth:`Patchwork.seed`).
+    window_m : (float, float)
+        The receive window [m].
+    """
+
+    patchwork: object
+    levels: tuple
+    spectrum: DirectionalSpectrum
+    depth: float | None
+    ships: tuple
+    kelvin_wake: tuple
+    narrow_v: tuple
+    narrow_v_bragg_vector: tuple[float, float] | None
+    seed: int
+    window_m: tuple[float, float]
+
+    def cell_spectrum(self, level: int) -> np.ndarray:
+        """The spectrum averaged over the wavenumber cells of ``level``'s grid (FFT
+        order), computed once per level and shared by its tiles [m^4]."""
+        from .ocean.surface import cell_averaged_spectrum
+
+        cache = self.__dict__.setdefault("_psi", {})
+        if level not in cache:
+            lev = self.patchwork.levels[level]
+            (ny, nx), (lx, ly) = lev.shape, lev.size
+            kx = 2 * np.pi * np.fft.fftfreq(nx, lx / nx)
+            ky = 2 * np.pi * np.fft.fftfreq(ny, ly / ny)
+            cache[level] = cell_averaged_spectrum(self.spectrum, kx[None, :], ky[:, None],
+                                                  2 * np.pi / lx, 2 * np.pi / ly)
+            cache[level].setflags(write=False)
+        return cache[level]
+
+    def sea(self, i: int) -> Sea:
+        """The sea of tile ``i``: its own realisation (``"surface"`` stream of the tile's
+        seed) on its grid in the scene's coordinates, plus the ships' wakes there."""
+        pw = self.patchwork
+        lev = pw.levels[int(pw.level[i])]
+        surface = SeaSurface(self.spectrum, size=lev.size, shape=lev.shape,
+                             rng=generator(pw.seed(i, self.seed), "surface"),
+                             depth=self.depth, centre=pw.tile_centre(i),
+                             cell_spectrum=self.cell_spectrum(int(pw.level[i])))
+        return Sea(surface, list(self.ships) or None, kelvin_wake=list(self.kelvin_wake),
+                   narrow_v=list(self.narrow_v),
+                   narrow_v_bragg_vector=self.narrow_v_bragg_vector)
+
+
+def coverage_layout(scene, radar: RadarModel, spectrum: DirectionalSpectrum):
+    """The patchwork of a ``coverage = "radar"`` scene (eqs T1-T4 of
+    :mod:`seaecho.geometry.patchwork`): centred on the transmitter's ground point, from
+    the window's nearest to its farthest ground range (cut at the horizon), facets from
+    ``[sea]``'s spacing up to Delta_max = min(lambda_p / 8, delta_r / 2).
+
+    Raises
+    ------
+    ValueError
+        The scene is not one the radar-wide sea takes (:func:`coverage_refusal`).
+    """
+    from .geometry.patchwork import Patchwork, ground_range_window, max_spacing
+
+    why = coverage_refusal(scene)
+    if why:
+        raise ValueError(why)
+    cfg = scene.sea
+    (lx, ly), (ny, nx) = cfg.size_m, cfg.shape
+    pos = scene.transmitter.position_m
+    earth = radar.earth
+    ground = ground_range_window(radar.window_m, float(pos[2]), 30.0, earth)
+    beam = radar.tx_antenna.wavelength / radar.tx_antenna.width
+    d_max = max_spacing(2.0 * np.pi / spectrum.peak_wavenumber(),
+                        C0 / (2.0 * radar.waveform.bandwidth))
+    return Patchwork.around((float(pos[0]), float(pos[1])), (lx / nx, ly / ny), (ny, nx),
+                            ground, beam, d_max, earth)
+
+
+def coverage_refusal(scene) -> str | None:
+    """Why a scene with ``[sea] coverage = "radar"`` cannot run (one message naming the
+    field), or None. The radar-wide sea is built around one fixed monostatic radar whose
+    rectangular (fan-beam) antenna selects the tiles at each pulse."""
+    if scene.sea.coverage != "radar" or scene.radar is None or not scene.radar.sea_clutter:
+        return None
+    where = "[sea].coverage = 'radar'"
+    if scene.receivers or scene.receiver is not None:
+        return (f"{where}: not implemented yet for a bistatic or multistatic radar; "
+                "a monostatic radar (no [receiver], no [[receivers]]) or coverage = 'tile'")
+    t = scene.transmitter
+    if t is None or t.motion != "fixed" or t.perturbation is not None:
+        return (f"{where}: needs [transmitter].motion = 'fixed' without a perturbation "
+                f"(got {None if t is None else t.motion!r}): the patchwork is laid around "
+                "one ground point; a moving radar is not implemented yet")
+    if t.antenna.pattern != "rectangular":
+        return (f"{where}: needs [transmitter.antenna].pattern = 'rectangular' (got "
+                f"{t.antenna.pattern!r}): its beam's bound selects the tiles of each pulse")
+    r = scene.radar
+    if r.window_start_m is None:
+        return (f"{where}: needs [radar].window_start_m and window_end_m: the window is "
+                "where the sea is")
+    if r.sea_gain_floor_db == "off":
+        return (f"{where}: needs [radar].sea_gain_floor_db as a number (got 'off'): every "
+                "tile of the coverage would be computed at every pulse")
+    if not scene.tracing.subfacet_shadowing:
+        return (f"{where}: needs [tracing].subfacet_shadowing = true (got false): the "
+                "coarser levels' facets leave the shadowing by the waves they do not "
+                "resolve to it (docs/scanning.md: 4 m facets 0.6 dB above 1 m ones at "
+                "1 deg grazing without it)")
+    if t.position_m[2] <= 0.0:
+        return (f"{where}: needs the antenna above the sea ([transmitter].position_m z = "
+                f"{t.position_m[2]:g} m)")
+    return None
+
+
+def build_coverage(scene, radar: RadarModel, base_dir: str | os.PathLike = "."
+                   ) -> CoverageModel:
+    """The radar-wide sea of a ``coverage = "radar"`` scene (:class:`CoverageModel`):
+    its patchwork, and per level the sea model and the tracing of ``[sea]`` at that
+    level's spacing (the same tile extent)."""
+    from .scattering.twoscale import check_spm_validity
+
+    spectrum = sea_spectrum(scene)
+    pw = coverage_layout(scene, radar, spectrum)
+    levels = []
+    for lev in pw.levels:
+        sub = scene.model_copy(update={"sea": scene.sea.model_copy(update={
+            "size_x_m": lev.size[0], "size_y_m": lev.size[1], "nx": lev.shape[1],
+            "ny": lev.shape[0]})})
+        sm = build_sea_model(sub, spectrum=spectrum)
+        if lev.index == 0:
+            check_spm_validity(sm.k, sm.roughness_height_variance)
+        levels.append((sm, build_tracing(sub, base_dir, sea_model=sm)))
+    ships = build_ships(scene)
+    narrow = tuple(bool(c.narrow_v) for c in scene.all_ships)
+    k_b = None
+    if any(narrow):
+        k_b = _scene_bragg_vector(scene, 2.0 * np.pi * carrier_frequency(scene) / C0)
+    return CoverageModel(patchwork=pw, levels=tuple(levels), spectrum=spectrum,
+                         depth=scene.sea.depth_m, ships=tuple(ships),
+                         kelvin_wake=tuple(bool(c.kelvin_wake) for c in scene.all_ships),
+                         narrow_v=narrow, narrow_v_bragg_vector=k_b, seed=scene.run.seed,
+                         window_m=tuple(radar.window_m))
 
 
 # ------------------------------------------------------------------ several receivers

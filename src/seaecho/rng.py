@@ -52,6 +52,9 @@ STREAMS: dict[str, int] = {
     # land clutter (docs/land.md): per-facet Weibull power and phase, index the
     # [[land]] entry
     "land": 10,
+    # the seed of each tile of a radar-wide sea ([sea] coverage = "radar"): index (level,
+    # zigzag(ix), zigzag(iy)) of the tile in its level's lattice
+    "sea-tile": 11,
 }
 
 #: Philox4x32 constants (Salmon et al. 2011, table 2 and section 5.1): round multipliers

@@ -121,6 +121,29 @@ def facet_sigma0(sea_model, facets, damping: NDArray | None, breaking: NDArray |
     return terms.sigma() * facets.visibility[:, None]
 
 
+def _take(facets, keep: NDArray[np.int64]):
+    """The facets ``keep`` of a :class:`~seaecho.geometry.facets.Facets` (every per-facet
+    array, ``extra`` included)."""
+    n = facets.visibility.size
+    upd = {f.name: getattr(facets, f.name)[keep] for f in dataclasses.fields(facets)
+           if isinstance(getattr(facets, f.name), np.ndarray)
+           and getattr(facets, f.name).shape[:1] == (n,)}
+    upd["extra"] = {k: (v[keep] if isinstance(v, np.ndarray) and v.shape[:1] == (n,) else v)
+                    for k, v in facets.extra.items()}
+    return dataclasses.replace(facets, **upd)
+
+
+def _take_held(held: dict, keep: NDArray[np.int64], draws: dict) -> dict:
+    """A held block's quantities (:meth:`Simulation._block_quantities`) of the facets
+    ``keep``: wake damping, breaking placement and the host speckle draws."""
+    out = dict(held)
+    for name in ("damping", "breaking"):
+        if out.get(name) is not None:
+            out[name] = out[name][keep]
+    out["host_draws"] = {m: g[keep] for m, g in draws.items()}
+    return out
+
+
 @dataclass(frozen=True)
 class SeaEcho:
     """The sea's contribution to one pulse.
@@ -189,14 +212,22 @@ class Simulation:
         self._setup(build_simulation(scene, base_dir))
 
     @classmethod
-    def from_models(cls, models: SimulationModels) -> Simulation:
-        """A simulation of prebuilt stage models (:func:`seaecho.build.build_simulation`)."""
+    def from_models(cls, models: SimulationModels, facet_weight=None) -> Simulation:
+        """A simulation of prebuilt stage models (:func:`seaecho.build.build_simulation`).
+
+        ``facet_weight(sim, state, geometry)``, if given, weights each facet's visibility
+        ((N,) [-]; a tile of a radar-wide sea, :mod:`seaecho.coverage`: the facets it owns
+        and that are above the horizon); the sea then takes the reference path."""
         sim = cls.__new__(cls)
-        sim._setup(models)
+        sim._setup(models, facet_weight)
         return sim
 
-    def _setup(self, models: SimulationModels) -> None:
+    def _setup(self, models: SimulationModels, facet_weight=None) -> None:
         self.models = models
+        #: per-facet weight of the visibility (a radar-wide sea's tile), or None
+        self.facet_weight = facet_weight
+        #: held sea with a facet weight: only the weighted facets through the facet model
+        self.cull = True
         #: Mitsuba variant of the Dr.Jit kernels (``[tracing] variant``, checked by the builder)
         self.variant = models.variant
         self.radar = RadarSystem(models.radar)
@@ -232,7 +263,14 @@ class Simulation:
                                                  lambda t: tx.state(t).position, rx_fn)
             from .radar.resident import resident_sea  # the fused pulse, where it applies
 
-            self._resident = resident_sea(self.radar, models.tracing, self.sea_model)
+            if facet_weight is None:
+                self._resident = resident_sea(self.radar, models.tracing, self.sea_model)
+        #: the radar-wide sea ([sea] coverage = "radar"), None for the single tile
+        self.coverage = None
+        if getattr(models, "coverage", None) is not None:
+            from .coverage import CoverageSea
+
+            self.coverage = CoverageSea(models, self.radar, type(self).from_models)
         # Echoes of the [[objects]] with scatterer = true (docs/ship.md), or None
         from .tracing.hull_echo import HullEchoes
 
@@ -545,7 +583,18 @@ class Simulation:
             return SeaEcho(echo, None, None)
         facets = self.engine.facets(geo.time, state=st)
         vis = facets.visibility
+        keep = None
         held = self._block_quantities(pulse, st, vis.size)
+        if self.facet_weight is not None:  # a tile of a radar-wide sea (seaecho.coverage)
+            vis = vis * self.facet_weight(self, st, geo)
+            if not self.evolving and self.cull:  # only its weighted facets, each with
+                keep = np.flatnonzero(vis > 0)  # its own draws: the same numbers
+                facets, vis, held = _take(facets, keep), vis[keep], _take_held(
+                    held, keep, self._host_draws(held))
+                if keep.size == 0:  # none in the beam, the horizon or the tile
+                    none = np.zeros((0, 3))
+                    return SeaEcho(self.radar.scatterer_echo(
+                        geo, none, none, np.zeros((0, 2, 2), complex)), None, facets)
         damping = held["damping"]
         # All facets, so that facet j always gets the j-th speckle draw of its block
         # (visibility may change from pulse to pulse within a block). Eq P4 of
@@ -560,6 +609,8 @@ class Simulation:
                                         breaking_fraction=held["breaking"], local=facets,
                                         variant=self.variant, precision=PRECISION)
         centres = self.phase_centres(pulse, st)
+        if keep is not None:
+            centres = centres[keep]
         visible = vis > 0
         if visible.all():  # the usual case: no copies
             pos, vel = centres, facets.velocity
@@ -621,6 +672,10 @@ class Simulation:
             if e is not None:
                 echoes.append(e)
         raw = self.radar.receive(pulse, echoes)
+        if self.coverage is not None:  # the radar-wide sea, accumulated tile by tile
+            sea = self.coverage.raw(pulse)
+            if sea is not None:
+                raw += sea
         check_pulse(self, pulse, raw, echoes)  # NaN/Inf: NonFiniteEchoError (checks/guards.py)
         return raw
 
@@ -845,6 +900,12 @@ class Simulation:
                                   else self.models.radar.sea_gain_floor),
                "subfacet_mss_upwind": m.mss_upwind,
                "subfacet_mss_crosswind": m.mss_crosswind}
+        if self.coverage is not None:  # [sea] coverage = "radar" (docs/scanning.md)
+            pw = self.coverage.patchwork
+            out.update({"sea_coverage": "radar", "sea_tiles": len(pw),
+                        "sea_level_spacing_m": [lv.spacing[0] for lv in pw.levels],
+                        "sea_level_band_edges_m": [float(e) for e in pw.edges],
+                        "subfacet_mss_note": "of the finest level; each level has its own"})
         if m.breaking is not None:
             out["breaking_fraction"] = m.breaking.q
         if self.evolving:

@@ -545,8 +545,11 @@ CAPS = {
 #: Fields left out of generated scenes: an output path would write beside the tests;
 #: [[receivers]] (multistatic; its cross-receiver rules are tested in tests/multistatic);
 #: [[land]] (a mesh of up to 2^21 cells per entry; its rules and the check's refusals are
-#: tested in tests/tracing/test_land.py).
-SKIP = {("RunConfig", "output"), ("Scene", "receivers"), ("Scene", "land")}
+#: tested in tests/tracing/test_land.py); [sea] coverage = "radar" (it needs a window, a
+#: fixed monostatic fan beam and the sub-facet shadowing, and a run computes hundreds of
+#: tiles: its refusals are tested in tests/test_coverage_sea.py).
+SKIP = {("RunConfig", "output"), ("Scene", "receivers"), ("Scene", "land"),
+        ("SeaConfig", "coverage")}
 
 
 def scenes(runnable: bool = True) -> st.SearchStrategy[dict]:

@@ -13,9 +13,9 @@ import math
 
 import numpy as np
 import pytest
-from seaecho.checks.preflight import check_run
 
 from seaecho.build import build_engine, build_sea
+from seaecho.checks.preflight import check_run
 from seaecho.config import SceneError, parse_scene
 from seaecho.constants import C0
 from seaecho.io.truth_tracks import truth_rows

@@ -634,8 +634,8 @@ def horizon_problems(scene) -> list[str]:
     from ..geometry.frames import tile_outline
 
     earth = build_earth(scene)
-    if earth is None or not scene.radar.sea_clutter:
-        return []
+    if earth is None or not scene.radar.sea_clutter or scene.sea.coverage == "radar":
+        return []  # a radar-wide sea is cut by the horizon facet by facet
     try:
         platforms = _platforms(scene)
     except ValueError:  # reported by geometry_problems
@@ -699,10 +699,19 @@ def default_output(scene, scene_file) -> tuple[Path, str]:
     return Path(Path(scene_file).stem + ".nc"), "the default output"
 
 
+def coverage_problems(scene) -> list[str]:
+    """``[sea] coverage = "radar"`` on a scene it does not take
+    (:func:`seaecho.build.coverage_refusal`)."""
+    from .build import coverage_refusal
+
+    why = coverage_refusal(scene)
+    return [why] if why else []
+
+
 def run_problems(scene, base_dir=".") -> list[str]:
     """Every problem of this module for a scene that has [radar] and [transmitter]."""
-    out = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
-           + object_problems(scene, base_dir) + land_problems(scene))
+    out = (coverage_problems(scene) + two_scale_problems(scene) + receive_problems(scene)
+           + image_problems(scene) + object_problems(scene, base_dir) + land_problems(scene))
     return (out + (hull_problems(scene, base_dir) if not out else [])
             + geometry_problems(scene) + horizon_problems(scene))
 
@@ -746,6 +755,9 @@ def check_run(scene, source: str, base_dir=".", max_memory_gb: float | None = No
     if scene.receivers:  # [[receivers]]: each receiver's bistatic scene (docs/multistatic.md)
         return _check_multistatic(scene, source, base_dir, max_memory_gb, figures,
                                   workers, block)
+    problems = coverage_problems(scene)
+    if problems:  # the estimate below needs the patchwork
+        raise SceneError(f"{source}: cannot be simulated\n" + "\n".join(problems))
     problems = (two_scale_problems(scene) + receive_problems(scene) + image_problems(scene)
                 + object_problems(scene, base_dir) + land_problems(scene))
     if not problems:  # (needs the objects' files and the radar's values)

@@ -108,6 +108,9 @@ T_CELL = {"analytic": 2.0e-6, "raytraced": 3.0e-6}  #: per sea grid point and pu
 T_CELL_SETUP = {"analytic": 1.0e-5, "raytraced": 1.5e-5}  #: per grid point, once (surface,
 #: wake, the sigma-map pulse)
 T_FFT = 4.0e-9
+#: per tile of a radar-wide sea made (its surface, wake, facet engine and tracer): the
+#: first pulse of scenes/sband_longrange.toml made 562 tiles in 69 s at a load of ~10
+T_TILE = 0.1
 T_TARGET = 2.0e-6
 T_PULSE = 2.0e-2
 T_FIGURE = 4.0e-6  #: per pulse, channel and sample drawn
@@ -520,6 +523,10 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     mode = scene.tracing.mode
     ny, nx = scene.sea.shape
     cells = nx * ny if sea else 0
+    held = cells  # the sea's cells held in memory
+    tiles_first = tiles_remade = 0.0  # tiles made at the first pulse and at every pulse
+    if sea and scene.sea.coverage == "radar":  # the tiles of each pulse (seaecho.coverage)
+        cells, held, tiles_first, tiles_remade = coverage_cells(scene)
     n_s, n_fft, _ = window_size(scene)
     c = len(r.channels)
     n_p = r.n_pulses
@@ -532,8 +539,8 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     terms = {
         "process": (M0_SEA["raytraced" if raytracing else mode] if sea or hulls
                     else M0_TARGETS),
-        "sea grid": M_CELL[mode] * cells,
-        "evolving sea": M_EVOLVING_CELL * cells if sea and sea_motion(scene) == "evolving"
+        "sea grid": M_CELL[mode] * held,
+        "evolving sea": M_EVOLVING_CELL * held if sea and sea_motion(scene) == "evolving"
         else 0.0,
         "receive window": M_FFT * c * n_fft + M_WRITE * c * chunk * n_s,
         "pulses": M_PULSE * n_p,
@@ -583,9 +590,10 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     peak = SAFETY * max(stages, terms["process"] + antenna)
     per_pulse = T_PULSE + T_TARGET * k + T_FFT * c * n_fft * math.log2(max(n_fft, 2))
     if sea:
-        per_pulse += T_CELL[mode] * cells
+        per_pulse += T_CELL[mode] * cells + T_TILE * tiles_remade
     per_pulse += sum(T_TARGET * h.centres for h in hulls)
-    start = T_START[mode] + T_CELL_SETUP[mode] * cells if sea else T_START["targets"]
+    start = T_START[mode] + T_CELL_SETUP[mode] * held if sea else T_START["targets"]
+    start += T_TILE * tiles_first
     rays = sum(h.grid * h.launches * h.sources * h.traces for h in hulls)
     pulses = n_p * per_pulse + T_RAY * rays
     if workers:
@@ -595,6 +603,36 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
         for n_u, n_phi in antenna_quadratures(scene))
     time_s += T_BACKPROJECTION * pixels * n_p * c
     return Estimate(peak, time_s, terms, drivers, n_s, n_fft, n_p, c, cells, pixels, rays)
+
+
+def coverage_cells(scene, samples: int = 16) -> tuple[int, int, float, float]:
+    """A radar-wide sea's (``[sea] coverage = "radar"``) grid nodes computed per pulse
+    (the mean over ``samples`` pulses spread over the run of the tiles the beam's bound
+    keeps, :class:`seaecho.coverage.CoverageSea`), held at most (the budget
+    :data:`~seaecho.coverage.CACHE_NODES`, or the nodes of the pulse that keeps most,
+    plus one tile in work) [-], the tiles made at the first pulse and those made again
+    at every pulse (the mean fraction of the kept tiles beyond the budget; the tiles the
+    turning beam meets anew are left out) [-]."""
+    from .build import build_radar, coverage_layout, sea_spectrum
+    from .coverage import CACHE_NODES, TILE_MARGIN_M
+    from .radar.coverage import two_way_bounds
+    from .radar.system import RadarSystem
+
+    model = build_radar(scene)
+    pw = coverage_layout(scene, model, sea_spectrum(scene))
+    radar = RadarSystem(model)
+    boxes = pw.boxes(TILE_MARGIN_M)
+    nodes = np.array([np.prod(lv.shape) for lv in pw.levels])[pw.level]
+    counts, most, tiles, remade = [], 0, [], []
+    for p in np.unique(np.linspace(0, model.n_pulses - 1, samples).astype(int)):
+        keep = two_way_bounds(radar, int(p), boxes) >= model.sea_gain_floor
+        n = int(nodes[keep].sum())
+        counts.append(n)
+        most = max(most, n)
+        tiles.append(int(keep.sum()))
+        remade.append(keep.sum() * max(n - CACHE_NODES, 0) / max(n, 1))
+    return (int(np.mean(counts)), min(CACHE_NODES, most) + int(nodes.max()),
+            float(tiles[0]), float(np.mean(remade)))
 
 
 # --------------------------------------------------------------------------- limits

@@ -92,6 +92,14 @@ class SeaConfig(Section):
         20.0, ge=-2.0, le=40.0, description="sea surface temperature [degC]"
     )
     salinity_psu: float = Field(35.0, ge=0.0, le=45.0, description="salinity [psu]")
+    coverage: Literal["tile", "radar"] = Field(
+        "tile",
+        description="where the sea is: 'tile' (one tile of size_x_m x size_y_m around "
+        "the origin) or 'radar' (everywhere the range window of a fixed monostatic radar "
+        "reaches: a patchwork of tiles whose facets grow with range, each its own "
+        "realisation, evaluated only where the beam reaches at each pulse; size_x_m / nx "
+        "is the finest facet; docs/scanning.md)",
+    )
 
     @model_validator(mode="after")
     def _check(self) -> SeaConfig:

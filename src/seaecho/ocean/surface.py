@@ -162,11 +162,16 @@ class SeaSurface:
     precision : {"single", "double"}
         Floating-point type in which the slopes and velocities are synthesised (the
         elevation is always float64; see the module docstring).
+    centre : (float, float)
+        Coordinates (x, y) of the grid's node (nx/2, ny/2) [m] (default the origin).
+    cell_spectrum : ndarray (ny, nx), optional
+        :func:`cell_averaged_spectrum` of this spectrum on this grid in FFT order [m^4],
+        if already computed (the tiles of a radar-wide sea share their level's).
 
     Notes
     -----
     Arrays are shaped (ny, nx): axis 0 is y (north), axis 1 is x (east). Coordinates are
-    ``x = (arange(nx) - nx/2) dx``; the tile is periodic.
+    ``x = centre_x + (arange(nx) - nx/2) dx``; the tile is periodic.
     """
 
     def __init__(
@@ -178,6 +183,8 @@ class SeaSurface:
         depth: float | None = None,
         surface_tension: float = SURFACE_TENSION_OVER_DENSITY,
         precision: str = "single",
+        centre: tuple[float, float] = (0.0, 0.0),
+        cell_spectrum: NDArray[np.float64] | None = None,
     ) -> None:
         if precision not in PRECISIONS:
             raise ValueError(f"precision = {precision!r}: allowed {PRECISIONS}")
@@ -193,15 +200,21 @@ class SeaSurface:
         self.shape = (ny, nx)
         self.depth = depth
         self.dx, self.dy = lx / nx, ly / ny
-        self.x = grid_coordinates(lx, nx)
-        self.y = grid_coordinates(ly, ny)
+        #: the grid's centre node (index n / 2) [m]: a tile of a radar-wide sea lies
+        #: away from the origin (seaecho.geometry.patchwork); only the coordinates move
+        self.centre = (float(centre[0]), float(centre[1]))
+        self.x = self.centre[0] + grid_coordinates(lx, nx)
+        self.y = self.centre[1] + grid_coordinates(ly, ny)
         self.dkx, self.dky = 2 * np.pi / lx, 2 * np.pi / ly
 
         # full-plane wavenumber grid in FFT order, (ny, nx)
         kx = 2 * np.pi * np.fft.fftfreq(nx, self.dx)
         ky = 2 * np.pi * np.fft.fftfreq(ny, self.dy)
         kxg, kyg = kx[None, :], ky[:, None]
-        psi = cell_averaged_spectrum(spectrum, kxg, kyg, self.dkx, self.dky)
+        psi = (cell_averaged_spectrum(spectrum, kxg, kyg, self.dkx, self.dky)
+               if cell_spectrum is None else np.array(cell_spectrum, dtype=np.float64))
+        if psi.shape != (ny, nx):
+            raise ValueError(f"cell_spectrum: shape {psi.shape}, the grid's is {(ny, nx)}")
         psi[0, 0] = 0.0  # zero mean
         psi[ny // 2, :] = 0.0  # Nyquist row and column: no travelling direction
         psi[:, nx // 2] = 0.0

@@ -108,19 +108,19 @@ def one_way_bound(antenna: Antenna, axes: ArrayLike, origin: ArrayLike,
 
 def one_way_bounds(antenna: Antenna, axes: ArrayLike, origin: ArrayLike,
                    corners: ArrayLike) -> NDArray[np.float64]:
-    """:func:`one_way_bound` of several convex sets at once: ``corners`` (B, K, 3) [m]
-    gives (B,) bounds [-] (eq C1 per set)."""
-    c3 = np.asarray(corners, dtype=float)
+    """:func:`one_way_bound` of several convex sets at once, ``corners`` (S, K, 3) [m]:
+    the bound of each, (S,) [-] (eq C1; the tiles of a radar-wide sea)."""
+    corners = np.asarray(corners, dtype=float)
     if antenna.pattern != "rectangular":
-        return np.ones(c3.shape[0])
-    d = c3 - np.asarray(origin, dtype=float)
+        return np.ones(corners.shape[0])
+    d = corners - np.asarray(origin, dtype=float)
     norm = np.linalg.norm(d, axis=-1)
     u = d @ np.asarray(axes, dtype=float)[:, 1] / norm
     c = (d @ np.asarray(axes, dtype=float)[:, 0] / norm).max(axis=-1)
     # Obliquity (1 + cos theta) / 2: cos theta is quasi-convex where negative, so behind
     # the aperture's plane its maximum over the set is at a corner; else bounded by 1
     ob = np.where(c <= 0.0, 0.5 * (1.0 + c), 1.0)
-    crossed = (u.min(axis=-1) <= 0.0) & (0.0 <= u.max(axis=-1))  # the beam's plane u = 0
+    crossed = (u.min(axis=-1) <= 0.0) & (u.max(axis=-1) >= 0.0)  # the beam's plane u = 0
     e = width_envelope(antenna, antenna.width * np.abs(u).min(axis=-1) / antenna.wavelength)
     return np.where(crossed, ob * ob, (ob * e) ** 2)
 
@@ -140,12 +140,18 @@ def two_way_bound(radar, pulse: int, corners: ArrayLike) -> float:
     corners : array_like (K, 3)
         Corners of a convex set of points [m] (the sea tile's box) in the simulation frame.
     """
+    return float(two_way_bounds(radar, pulse, np.asarray(corners)[None])[0])
+
+
+def two_way_bounds(radar, pulse: int, corners: ArrayLike) -> NDArray[np.float64]:
+    """:func:`two_way_bound` of several convex sets at once, ``corners`` (S, K, 3) [m]:
+    (S,) [-] (eq C2)."""
     geo = radar.geometry(pulse)
     # Eq C2: two-way = transmit x receive
-    g = one_way_bound(radar.tx_antenna, geo.tx_axes, geo.tx.position, corners)
-    if g == 0.0:
-        return 0.0
-    return g * one_way_bound(radar.rx_antenna, geo.rx_axes, geo.rx.position, corners)
+    g = one_way_bounds(radar.tx_antenna, geo.tx_axes, geo.tx.position, corners)
+    if not g.any():
+        return g
+    return g * one_way_bounds(radar.rx_antenna, geo.rx_axes, geo.rx.position, corners)
 
 
 def tile_box(x: ArrayLike, y: ArrayLike, margin_m: float) -> NDArray[np.float64]:
@@ -160,5 +166,5 @@ def tile_box(x: ArrayLike, y: ArrayLike, margin_m: float) -> NDArray[np.float64]
     return np.array([[a, b, c] for a in xs for b in ys for c in zs])
 
 
-__all__ = ["ENVELOPE_MARGIN", "ENVELOPE_STEPS", "one_way_bound", "one_way_bounds", "tile_box",
-           "two_way_bound", "width_envelope"]
+__all__ = ["ENVELOPE_MARGIN", "ENVELOPE_STEPS", "one_way_bound", "one_way_bounds",
+           "tile_box", "two_way_bound", "two_way_bounds", "width_envelope"]

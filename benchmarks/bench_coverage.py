@@ -1,0 +1,110 @@
+"""Benchmark of the radar-wide sea (``[sea] coverage = "radar"``) against the window's
+range: run as ``python benchmarks/bench_coverage.py``.
+
+The coastal VTS scene (``scenes/coastal_vts_xband.toml``: 1.0 deg Taylor fan beam 35 m
+up, 24 rpm, PRF 1 kHz, 2500 pulses per revolution) with its sea laid around the radar
+(finest tiles of ``--grid`` x ``--grid`` nodes at 1 m) and a window from 300 m to 3, 6
+and 12 km (``--ranges``), without targets. For each range, in a process of its own, it
+times ``--pulses`` consecutive pulses (the beam turning 0.144 deg per pulse: the tiles it
+crosses are held from pulse to pulse) after one warm-up pulse, raw samples and range
+compression, and prints the seconds per pulse, a revolution extrapolated to the scene's
+2500 pulses and to 1000 pulses (said so), the tiles and facets per pulse, the tiles made,
+the process's peak resident memory (``ru_maxrss``) and the load average (the machine is
+shared: ``uptime``'s first number). Run it niced: ``nice -n 10 python
+benchmarks/bench_coverage.py``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import subprocess
+import sys
+import time
+import warnings
+from pathlib import Path
+
+from _smoke import add_option
+
+ROOT = Path(__file__).resolve().parents[1]
+SCENE = ROOT / "scenes" / "coastal_vts_xband.toml"
+
+
+def coverage_scene(path: Path, grid: int, end_m: float, pulses: int, start_m: float = 300.0):
+    """The scene file ``path`` with its sea around the radar: finest tiles ``grid`` m of
+    ``grid`` nodes, the window [start_m, end_m], ``pulses`` pulses, no targets."""
+    from seaecho.config import load_scene
+
+    sc = load_scene(path)
+    return sc.model_copy(update={
+        "tracing": sc.tracing.model_copy(update={"subfacet_shadowing": True}),
+        "sea": sc.sea.model_copy(update={"coverage": "radar", "size_x_m": float(grid),
+                                         "size_y_m": None, "nx": grid, "ny": None}),
+        "radar": sc.radar.model_copy(update={"window_start_m": start_m,
+                                             "window_end_m": end_m, "n_pulses": pulses}),
+        "targets": ()})
+
+
+def measure(grid: int, end_m: float, pulses: int) -> dict:
+    """Time ``pulses`` consecutive pulses after a warm-up one (this process)."""
+    from seaecho.simulation import Simulation
+
+    warnings.simplefilter("ignore")
+    sc = coverage_scene(SCENE, grid, end_m, pulses + 1)
+    t0 = time.perf_counter()
+    sim = Simulation(sc)
+    cov = sim.coverage
+    setup = time.perf_counter() - t0
+    sim.compress(sim.pulse(0)[None])
+    tiles = [len(cov.selected(p)) for p in range(1, pulses + 1)]
+    facets = [cov.facet_count(p) for p in range(1, pulses + 1)]
+    made = cov.tiles_made
+    t0, c0 = time.perf_counter(), time.process_time()
+    for p in range(1, pulses + 1):
+        sim.compress(sim.pulse(p)[None])
+    wall, cpu = time.perf_counter() - t0, time.process_time() - c0
+    return {"end_m": end_m, "setup_s": setup, "wall_s_per_pulse": wall / pulses,
+            "cpu_s_per_pulse": cpu / pulses, "tiles": len(cov), "tiles_per_pulse":
+            sum(tiles) / pulses, "facets_per_pulse": sum(facets) / pulses,
+            "tiles_made": cov.tiles_made - made,
+            "levels_m": [lv.spacing[0] for lv in cov.patchwork.levels],
+            "peak_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+            "load": os.getloadavg()[0]}
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--grid", type=int, default=128, help="finest tile nodes (at 1 m)")
+    ap.add_argument("--pulses", type=int, default=10, help="consecutive pulses timed")
+    ap.add_argument("--ranges", type=float, nargs="+", default=[3000.0, 6000.0, 12000.0],
+                    help="window ends [m]")
+    ap.add_argument("--one", action="store_true", help=argparse.SUPPRESS)
+    add_option(ap)
+    a = ap.parse_args()
+    if a.smoke:
+        a.grid, a.pulses, a.ranges = 32, 1, [600.0]
+    if a.one:  # a child: one range
+        print(json.dumps(measure(a.grid, a.ranges[0], a.pulses)))
+        return
+    print(f"finest tiles {a.grid} m x {a.grid} nodes, window from 300 m, {a.pulses} "
+          "consecutive pulses after a warm-up, each range in its own process")
+    for end in a.ranges:
+        out = subprocess.run([sys.executable, __file__, "--one", "--grid", str(a.grid),
+                              "--pulses", str(a.pulses), "--ranges", str(end)],
+                             capture_output=True, text=True, check=True)
+        r = json.loads(out.stdout.strip().splitlines()[-1])
+        print(f"window to {end / 1e3:g} km: levels {r['levels_m']} m, {r['tiles']} tiles, "
+              f"{r['tiles_per_pulse']:.1f} tiles and {r['facets_per_pulse']:.0f} facets per "
+              f"pulse, {r['tiles_made']} tiles made over the timed pulses; "
+              f"{r['wall_s_per_pulse'] * 1e3:.0f} ms wall / "
+              f"{r['cpu_s_per_pulse'] * 1e3:.0f} ms CPU per pulse -> extrapolated "
+              f"revolution {2500 * r['wall_s_per_pulse']:.0f} s (2500 pulses), "
+              f"{1000 * r['wall_s_per_pulse']:.0f} s (1000 pulses); set-up "
+              f"{r['setup_s']:.1f} s; peak RSS {r['peak_rss_mb']:.0f} MB; load "
+              f"{r['load']:.1f}")
+
+
+if __name__ == "__main__":
+    main()
