@@ -57,12 +57,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-#: Grid nodes of the tiles held between pulses [-] (the memory of a pulse:
-#: :class:`CoverageSea`): 2^19, eight tiles of 256 x 256.
-CACHE_NODES = 1 << 19
-#: Margin of a tile's box in the beam's bound [m] (as the single tile's, sea elevations
-#: and the facets' horizontal displacements stay below it).
-TILE_MARGIN_M = 30.0
+from .geometry.patchwork import CACHE_NODES, TILE_MARGIN_M
 
 
 class TilePlatform:

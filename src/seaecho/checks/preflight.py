@@ -702,7 +702,7 @@ def default_output(scene, scene_file) -> tuple[Path, str]:
 def coverage_problems(scene) -> list[str]:
     """``[sea] coverage = "radar"`` on a scene it does not take
     (:func:`seaecho.build.coverage_refusal`)."""
-    from .build import coverage_refusal
+    from ..build import coverage_refusal
 
     why = coverage_refusal(scene)
     return [why] if why else []

@@ -613,10 +613,10 @@ def coverage_cells(scene, samples: int = 16) -> tuple[int, int, float, float]:
     plus one tile in work) [-], the tiles made at the first pulse and those made again
     at every pulse (the mean fraction of the kept tiles beyond the budget; the tiles the
     turning beam meets anew are left out) [-]."""
-    from .build import build_radar, coverage_layout, sea_spectrum
-    from .coverage import CACHE_NODES, TILE_MARGIN_M
-    from .radar.coverage import two_way_bounds
-    from .radar.system import RadarSystem
+    from ..build import build_radar, coverage_layout, sea_spectrum
+    from ..geometry.patchwork import CACHE_NODES, TILE_MARGIN_M
+    from ..radar.coverage import two_way_bounds
+    from ..radar.system import RadarSystem
 
     model = build_radar(scene)
     pw = coverage_layout(scene, model, sea_spectrum(scene))
