@@ -114,8 +114,8 @@ class ShipConfig(Section):
     )
     hull_echo: bool = Field(
         False, description="add the hull's own echo (shooting and bouncing rays, sea "
-        "multipath; docs/ship.md) with the [[objects]] scatterer defaults; a straight "
-        "course only (not implemented yet on waypoints)",
+        "multipath; docs/ship.md) with the [[objects]] scatterer defaults; on waypoints_m "
+        "the hull follows the route and turns with it",
     )
     wave_motion: bool = Field(
         False, description="hull_echo: the hull heaves, pitches and rolls with the sea under "
@@ -140,9 +140,6 @@ class ShipConfig(Section):
                                  "extensions .ply, .obj, .stl")
         if self.wave_motion and not self.hull_echo:
             raise ValueError("wave_motion moves the hull echo: it needs hull_echo = true")
-        if self.hull_echo and self.waypoints_m is not None:
-            raise ValueError("hull_echo = true on waypoints_m: not implemented yet (a hull "
-                             "echo follows a straight course only)")
         turn = self.turn_rate_deg_s is not None or self.turn_radius_m is not None
         if self.waypoints_m is None:
             if turn:

@@ -80,6 +80,14 @@ class Hull:
     waterplane : (float, float) or None
         (length, beam) [m] of the waterplane whose sea the hull follows (heave, pitch,
         roll of :mod:`seaecho.targets.motion`); None: no motion in the waves.
+    track : seaecho.wake.Ship or None
+        A ship on waypoints (:class:`seaecho.wake.ship.Route`) that carries the hull: its
+        origin is the ship's midship position at each time and it turns with the
+        route's heading (:meth:`pose`); None: the shapes' constant velocity and
+        orientation.
+    motion : seaecho.targets.motion.BoxHullMotion or None
+        The hull's dynamic response to the waves (heave, pitch, roll as damped
+        oscillators); None with a waterplane: the quasi-static plane fit (eq S1).
     """
 
     name: str
@@ -91,21 +99,86 @@ class Hull:
     refresh_s: float
     schedule: NDArray[np.intp]
     waterplane: tuple | None = None
+    track: object = None
+    motion: object = None
 
     @property
     def velocity(self) -> NDArray[np.float64]:
-        """Rigid velocity [m/s] (all shapes of an object share it)."""
-        return np.asarray(self.shapes[0].velocity, dtype=np.float64)
+        """Rigid velocity [m/s] at time 0 (all shapes of an object share it)."""
+        return self.velocity_at(0.0)
+
+    def velocity_at(self, t: float | NDArray) -> NDArray[np.float64]:
+        """Velocity of the origin at time(s) t [m/s], shape t.shape + (3,)."""
+        t = np.asarray(t, dtype=np.float64)
+        if self.track is None:
+            v = np.asarray(self.shapes[0].velocity, dtype=np.float64)
+            return np.broadcast_to(v, t.shape + (3,)).copy()
+        v = self.track.velocity_at(t)
+        return np.concatenate([v, np.zeros(t.shape + (1,))], axis=-1)
+
+    def heading(self, t: float | NDArray) -> NDArray[np.float64]:
+        """Heading of the object's +x axis, counter-clockwise from +x, at time(s) t [rad]."""
+        t = np.asarray(t, dtype=np.float64)
+        if self.track is None:
+            rot = self.shapes[0].rotation
+            return np.full(t.shape, float(np.arctan2(rot[1, 0], rot[0, 0])))
+        return self.track.heading_at(t)
+
+    def turn_rate(self, t: float | NDArray) -> NDArray[np.float64]:
+        """Yaw rate at time(s) t [rad/s] (0 but on a route's turns)."""
+        t = np.asarray(t, dtype=np.float64)
+        return np.zeros(t.shape) if self.track is None else self.track.turn_rate_at(t)
 
     def origin(self, t: float | NDArray) -> NDArray[np.float64]:
         """The object's origin (its ``position_m``, on the ship track) at time(s) t [m]."""
         o = self.shapes[0]
-        return np.asarray(o.position) + np.multiply.outer(np.asarray(t, float), o.velocity)
+        t = np.asarray(t, dtype=np.float64)
+        if self.track is None:
+            return np.asarray(o.position) + np.multiply.outer(t, o.velocity)
+        p = self.track.position(t)
+        return np.concatenate([p, np.full(t.shape + (1,), float(o.position[2]))], axis=-1)
+
+    def pose(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """(R, o): the rotation (3, 3) taking the shapes' time-0 orientation to the one at
+        time ``t`` [s] (a yaw by h(t) - h(0)) and the origin (3,) at ``t`` [m]."""
+        dh = float(self.heading(t) - self.heading(0.0))
+        c, s = np.cos(dh), np.sin(dh)
+        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]), self.origin(t)
 
     def mesh(self, t: float) -> TraceMesh:
         """The object's meshes at time ``t`` in the world frame [m]."""
-        return TraceMesh.merge([TraceMesh.single(o.world_vertices(t), o.faces, e)
+        if self.track is None:
+            return TraceMesh.merge([TraceMesh.single(o.world_vertices(t), o.faces, e)
+                                    for o, e in zip(self.shapes, self.eps_r, strict=True)])
+        r, c = self.pose(t)
+        o0 = self.origin(0.0)
+        return TraceMesh.merge([TraceMesh.single((o.world_vertices(0.0) - o0) @ r.T + c,
+                                                 o.faces, e)
                                 for o, e in zip(self.shapes, self.eps_r, strict=True)])
+
+    def carry(self, positions: NDArray, time: float, t: float
+              ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Points (K, 3) [m] fixed on the hull at ``time`` [s], carried to time ``t`` [s]:
+        their positions [m] and velocities [m/s] (K, 3), v = V(t) + omega z x (p - o)
+        on a turn of rate omega."""
+        p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
+        if self.track is None:
+            v = np.asarray(self.shapes[0].velocity, dtype=np.float64)
+            return p + v * (t - time), np.broadcast_to(v, p.shape)
+        r0, o0 = self.pose(time)
+        r1, o1 = self.pose(t)
+        q = o1 + (p - o0) @ (r1 @ r0.T).T
+        w = float(self.turn_rate(t))
+        d = q - o1
+        v = self.velocity_at(t) + w * np.stack([-d[:, 1], d[:, 0], np.zeros(len(d))], -1)
+        return q, v
+
+
+def _yaw(u: NDArray, angle: NDArray) -> NDArray[np.float64]:
+    """Vectors u (..., 3) turned about +z by ``angle`` (...) [rad]."""
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([c * u[..., 0] - s * u[..., 1], s * u[..., 0] + c * u[..., 1],
+                     u[..., 2]], axis=-1)
 
 
 def _check_window(hull: Hull, radar, pulses) -> None:
@@ -148,6 +221,10 @@ class HullOptions:
     waterplane : (float, float) or None
         (length, beam) [m]: the hull heaves, pitches and rolls with the sea under this
         waterplane (:attr:`Hull.waterplane`); None: it does not.
+    track : seaecho.wake.Ship or None
+        The ship on waypoints that carries the hull (:attr:`Hull.track`).
+    motion : seaecho.targets.motion.BoxHullMotion or None
+        Dynamic response to the waves (:attr:`Hull.motion`).
     """
 
     name: str
@@ -158,6 +235,8 @@ class HullOptions:
     refresh_deg: float
     refresh_s: float
     waterplane: tuple | None = None
+    track: object = None
+    motion: object = None
 
 
 @dataclass(frozen=True)
@@ -254,11 +333,14 @@ class HullEchoes:
                                  max_bounces=spec.max_bounces, cell=spec.cell_m)
             hull = Hull(spec.name, shapes, eps, options, spec.sea_multipath,
                         spec.refresh_deg, spec.refresh_s, np.zeros(1, dtype=np.intp),
-                        spec.waterplane)
-            # Aspect of the transmitter and the receiver from the hull at every pulse
+                        spec.waterplane, spec.track, spec.motion)
+            # Aspect of the transmitter and the receiver from the hull at every pulse, in
+            # the hull's own (yawing) frame: a turn changes the aspect as a radar would
             c = hull.origin(t)
-            ut = (tx - c) / np.linalg.norm(tx - c, axis=-1, keepdims=True)
-            ur = (rx - c) / np.linalg.norm(rx - c, axis=-1, keepdims=True)
+            ut = _yaw((tx - c) / np.linalg.norm(tx - c, axis=-1, keepdims=True),
+                      -hull.heading(t))
+            ur = _yaw((rx - c) / np.linalg.norm(rx - c, axis=-1, keepdims=True),
+                      -hull.heading(t))
             sched = refresh_schedule(ut, ur, t, np.deg2rad(spec.refresh_deg), spec.refresh_s)
             hulls.append(dataclasses.replace(hull, schedule=sched))
             _check_window(hull, radar, (0, radar.n_pulses - 1))
@@ -291,8 +373,12 @@ class HullEchoes:
         geo = self.radar.geometry(pulse)
         mesh = h.mesh(t)
         own = {id(o) for o in h.shapes}
+        # the other hulls where their tracks put them, the other objects on their own
+        carried = {id(o): g for g in self.hulls if g is not h for o in g.shapes}
         occluders = [TraceMesh.single(o.world_vertices(t), o.faces)
-                     for o in self.others if id(o) not in own]
+                     for o in self.others if id(o) not in own and id(o) not in carried]
+        occluders += [TraceMesh.single(g.mesh(t).vertices, g.mesh(t).faces)
+                      for g in {id(g): g for g in carried.values()}.values()]
         patch = None
         if self.surface is not None:
             patch = self._patch(mesh, self.surface(t))
@@ -300,7 +386,7 @@ class HullEchoes:
                        sigma_h=self.sigma_h, roughness=self.roughness, patch=patch)
         args = (mesh, geo.tx.position, geo.rx.position, self.radar.carrier)
         kw = {"options": h.options, "sea": sea, "occluders": occluders,
-              "reference": h.origin(t), "time": t, "velocity": h.velocity,
+              "reference": h.origin(t), "time": t, "velocity": h.velocity_at(t),
               "variant": self.variant}
         if not self.disk_cache.enabled:
             return trace_signature(*args, **kw)
@@ -344,8 +430,7 @@ class HullEchoes:
             c = self.signature(i, pulse).centres
             if len(c) == 0:
                 continue
-            vel = np.broadcast_to(c.velocity, c.position.shape)
-            pos = c.positions_at(geometry.time)
+            pos, vel = self.hulls[i].carry(c.position, c.time, geometry.time)
             if self.hulls[i].waterplane is not None:
                 pos = self.in_waves(i, pos, geometry.time)
             out.append(self.radar.scatterer_echo(geometry, pos, vel, c.s))
@@ -361,8 +446,7 @@ class HullEchoes:
         if h.waterplane is None or self.surface is None:
             return 0.0, 0.0, 0.0
         st = self.surface(t)
-        rot = h.shapes[0].rotation
-        heading = float(np.arctan2(rot[1, 0], rot[0, 0]))
+        heading = float(h.heading(t))
         return waterplane_motion(st.x, st.y, st.elevation, h.origin(t)[:2], heading,
                                  *h.waterplane)
 
@@ -378,8 +462,7 @@ class HullEchoes:
         heave, pitch, roll = self.attitude(hull, t)
         if heave == 0.0 and pitch == 0.0 and roll == 0.0:
             return positions
-        rot = self.hulls[hull].shapes[0].rotation
-        r = hull_rotation(float(np.arctan2(rot[1, 0], rot[0, 0])), pitch, roll)
+        r = hull_rotation(float(self.hulls[hull].heading(t)), pitch, roll)
         o = self.hulls[hull].origin(t)
         return o + (np.asarray(positions) - o) @ r.T + np.array([0.0, 0.0, heave])
 
@@ -409,14 +492,14 @@ class HullEchoes:
             for p in range(n):  # per pulse: one coherent sum over the centres (eq C3)
                 c = self.signature(i, p).centres
                 served[i, p] = self.refresh_pulse(i, p)
-                x = c.positions_at(t[p])
+                x = h.carry(c.position, c.time, t[p])[0]
                 tot = coherent_total(x, c.s, tx[p], rx[p], k, origin[i, p])
                 direct = c.path == 0
                 free = coherent_total(x[direct], c.s[direct], tx[p], rx[p], k, origin[i, p])
                 rcs[i, p] = np.abs(tot.reshape(4)) ** 2
                 rcs_free[i, p] = np.abs(free.reshape(4)) ** 2
             c = self.signature(i, pulse).centres
-            pos.append(c.positions_at(float(t[pulse])))
+            pos.append(h.carry(c.position, c.time, float(t[pulse]))[0])
             s.append(c.s.reshape(-1, 4))
             path.append(c.path)
             which.append(np.full(len(c), i, dtype=np.int16))
