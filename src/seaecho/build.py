@@ -672,6 +672,17 @@ def scene_attrs(scene) -> dict[str, Any]:
     return attrs(scene)
 
 
+def _box_motion(cfg):
+    """The dynamic wave response of a ``[[ships]]`` hull (None unless wave_motion with
+    wave_response = "dynamic"; :class:`seaecho.targets.motion.BoxHullMotion`)."""
+    if not (cfg.wave_motion and cfg.wave_response == "dynamic"):
+        return None
+    from .targets.motion import BoxHullMotion
+
+    return BoxHullMotion(float(cfg.length_m), float(cfg.beam_m), float(cfg.draft_m),
+                         cfg.metacentric_height)
+
+
 def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | None = None,
                 variant: str | None = None):
     """The hull model of the ``[[objects]]`` with ``scatterer = true``
@@ -718,7 +729,7 @@ def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | 
                            refresh_s=defaults["signature_refresh_s"].default,
                            waterplane=((float(cfg.length_m), float(cfg.beam_m))
                                        if cfg.wave_motion else None),
-                           track=track)
+                           track=track, motion=_box_motion(cfg))
         objects.append((spec, [shape]))
     for cfg in scene.objects:
         shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship, variant=variant)

@@ -218,7 +218,8 @@ class Simulation:
 
         self.hulls = HullEchoes.from_model(
             models.hulls, self.radar, variant=self.variant,
-            surface=self.surface_state_at if self.sea is not None else None)
+            surface=self.surface_state_at if self.sea is not None else None,
+            sea_surface=self.sea.surface if self.sea is not None else None)
 
     def share_sea(self, lead: Simulation) -> None:
         """Take the sea's per-block work from ``lead``, a simulation of the same sea

@@ -285,7 +285,8 @@ class HullEchoes:
 
     def __init__(self, hulls: list[Hull], others: list, radar, sea_eps_r: complex,
                  sigma_h: float, surface: Callable | None = None,
-                 variant: str | None = None, disk_cache: ArrayCache | None = None) -> None:
+                 variant: str | None = None, disk_cache: ArrayCache | None = None,
+                 waves=None) -> None:
         self.hulls = hulls
         self.others = others
         self.radar = radar
@@ -297,11 +298,14 @@ class HullEchoes:
         self._cache: OrderedDict[tuple[int, int], Signature] = OrderedDict()
         self.disk_cache = (ArrayCache(namespace=SIGNATURE_NAMESPACE) if disk_cache is None
                            else disk_cache)
+        #: the random sea as wave components (seaecho.targets.motion.WaveComponents) that
+        #: drive the hulls' dynamic motion, or None
+        self.waves = waves
 
     # ------------------------------------------------------------------ construction
     @classmethod
     def from_model(cls, model: HullModel | None, radar, surface: Callable | None = None,
-                   variant: str | None = None) -> HullEchoes | None:
+                   variant: str | None = None, sea_surface=None) -> HullEchoes | None:
         """The hull echoes of a :class:`HullModel` (``seaecho.build.build_hulls``), or
         None when it has no scatterer.
 
@@ -315,6 +319,9 @@ class HullEchoes:
             The held sea surface at a time (:attr:`surface`).
         variant : str, optional
             Mitsuba variant.
+        sea_surface : seaecho.ocean.surface.SeaSurface, optional
+            The random sea whose wave components drive the hulls' dynamic motion
+            (:class:`seaecho.targets.motion.BoxHullMotion`).
         """
         if model is None or not any(spec is not None for spec, _ in model.objects):
             return None
@@ -345,8 +352,13 @@ class HullEchoes:
             hulls.append(dataclasses.replace(hull, schedule=sched))
             _check_window(hull, radar, (0, radar.n_pulses - 1))
         others = [o for _, shapes in model.objects for o in shapes]
+        waves = None
+        if sea_surface is not None and any(h.motion is not None for h in hulls):
+            from ..targets.motion import WaveComponents
+
+            waves = WaveComponents(*sea_surface.components())
         return cls(hulls, others, radar, model.sea_eps_r, model.sigma_h, surface=surface,
-                   variant=variant)
+                   variant=variant, waves=waves)
 
     # ---------------------------------------------------------------------- traces
     def refresh_pulse(self, hull: int, pulse: int) -> int:
@@ -438,11 +450,18 @@ class HullEchoes:
 
     def attitude(self, hull: int, t: float) -> tuple[float, float, float]:
         """(heave [m], pitch [rad], roll [rad]) of hull number ``hull`` at time ``t``
-        [s] on the held sea (:func:`seaecho.targets.motion.waterplane_motion`); zeros
-        without a sea or a waterplane."""
+        [s]: its dynamic response to the random sea
+        (:class:`seaecho.targets.motion.BoxHullMotion`) or the plane fitted to the held sea
+        (:func:`seaecho.targets.motion.waterplane_motion`); zeros without a sea or a
+        waterplane."""
         from ..targets.motion import waterplane_motion
 
         h = self.hulls[hull]
+        if h.motion is not None:  # the dynamic response to the random sea (eq S3)
+            if self.waves is None:
+                return 0.0, 0.0, 0.0
+            return h.motion.attitude(self.waves, h.origin(t)[:2], float(h.heading(t)),
+                                     h.velocity_at(t)[:2], t)
         if h.waterplane is None or self.surface is None:
             return 0.0, 0.0, 0.0
         st = self.surface(t)
