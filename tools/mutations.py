@@ -515,6 +515,11 @@ MUTATIONS = [
              "w * np.stack([d[:, 1], -d[:, 0], np.zeros(len(d))], -1)",
              ("tests/ship/test_hull_route.py",),
              "a turning hull's points swing the wrong way (Doppler)"),
+    Mutation("hull-shared-trace-turned-back", S + "tracing/hull_echo.py",
+             "dh = float(hi.heading(ti) - hj.heading(tj))",
+             "dh = float(hj.heading(tj) - hi.heading(ti))",
+             ("tests/ship/test_hull_sharing.py",),
+             "an identical hull's trace turned the wrong way onto the other hull"),
     # --- several receivers (docs/multistatic.md)
     Mutation("multistatic-tx-occlusion-of-lead-receiver", S + "tracing/engine.py",
              "occ_tx = self._lead.occlusion(t, st)[1]",

@@ -18,11 +18,23 @@ trace and of the code, written atomically; ``SEAECHO_CACHE=off`` or ``seaecho ru
 
 Each scatterer is traced alone, the other objects (scatterers or not) being occluders:
 mutual bounces between two objects are not modelled.
+
+Identical hulls share traces. Two hulls of the same mesh, material and options whose
+directions to the transmitter and the receiver, in each hull's own frame, agree within the
+refresh step see the same signature up to a yaw and a shift: the later one (in a fixed
+order, hull by hull and refresh by refresh, so the plan is a function of the tracks only)
+takes the earlier one's centres turned and moved onto itself (:meth:`HullEchoes.
+share_plan`), the approximation a hull already makes between two of its own refreshes. A
+trace is shared only where neither hull has the held sea under it (the sea patch of its
+trace) and no other object comes near the legs from either hull to the transmitter or the
+receiver, or to their images in the sea (bounding spheres): there the trace would have
+been the same but for those.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import warnings
 from collections import OrderedDict
 from collections.abc import Callable
@@ -33,7 +45,12 @@ from numpy.typing import NDArray
 
 from ..constants import C0
 from ..targets.cache import ArrayCache
-from ..targets.centres import PATH_NAMES, coherent_total, refresh_schedule
+from ..targets.centres import (
+    PATH_NAMES,
+    ScatteringCentres,
+    coherent_total,
+    refresh_schedule,
+)
 from .sbr import (
     SBROptions,
     SeaPlane,
@@ -301,6 +318,11 @@ class HullEchoes:
         #: the random sea as wave components (seaecho.targets.motion.WaveComponents) that
         #: drive the hulls' dynamic motion, or None
         self.waves = waves
+        #: (hull, refresh pulse) -> (hull, refresh pulse) whose trace it takes
+        #: (:meth:`share_plan`); absent: its own trace
+        self.donors: dict[tuple[int, int], tuple[int, int]] = {}
+        #: grid nodes (x, y) [m] of the held sea, whose patch a trace near it takes
+        self.tile: tuple | None = None
 
     # ------------------------------------------------------------------ construction
     @classmethod
@@ -357,8 +379,129 @@ class HullEchoes:
             from ..targets.motion import WaveComponents
 
             waves = WaveComponents(*sea_surface.components())
-        return cls(hulls, others, radar, model.sea_eps_r, model.sigma_h, surface=surface,
-                   variant=variant, waves=waves)
+        out = cls(hulls, others, radar, model.sea_eps_r, model.sigma_h, surface=surface,
+                  variant=variant, waves=waves)
+        if surface is not None:
+            out.tile = ((np.asarray(sea_surface.x), np.asarray(sea_surface.y))
+                        if sea_surface is not None else None)
+        if surface is None or out.tile is not None:
+            out.donors = out.share_plan()
+        return out
+
+    # ------------------------------------------------------------------ sharing
+    @staticmethod
+    def _shape_key(hull: Hull) -> str | None:
+        """A digest of what a trace depends on besides the geometry (the mesh in its own
+        frame, materials, options, multipath, refresh step), or None when the hull cannot
+        share (several shapes, or an orientation other than a yaw)."""
+        if len(hull.shapes) != 1:
+            return None
+        o = hull.shapes[0]
+        rot = np.asarray(o.rotation, dtype=np.float64)
+        if not np.allclose(rot[2], [0.0, 0.0, 1.0], atol=1e-12):
+            return None
+        d = hashlib.sha256()
+        for a in (np.asarray(o.vertices, dtype=np.float64), np.asarray(o.faces)):
+            d.update(np.ascontiguousarray(a).tobytes())
+        d.update(repr((hull.eps_r, hull.options, hull.multipath, hull.refresh_deg,
+                       hull.refresh_s, float(o.position[2]))).encode())
+        return d.hexdigest()
+
+    def _free(self, index: int, pulse: int) -> bool:
+        """Whether the trace of hull ``index`` at ``pulse`` would see neither the held sea
+        (no sea patch) nor another object near its legs to T and R or their sea images."""
+        h = self.hulls[index]
+        t = float(self.radar.emission_time(pulse))
+        v = h.mesh(t).vertices
+        lo, hi = v.min(axis=0), v.max(axis=0)
+        c, r = 0.5 * (lo + hi), 0.5 * float(np.linalg.norm(hi - lo))
+        if self.tile is not None:  # as _patch: a patch where nodes fall near the hull
+            x, y = self.tile
+            if (np.count_nonzero(np.abs(x - c[0]) <= _PATCH_MARGIN * r) >= 2
+                    and np.count_nonzero(np.abs(y - c[1]) <= _PATCH_MARGIN * r) >= 2):
+                return False
+        geo = self.radar.geometry(pulse)
+        ends = [geo.tx.position, geo.rx.position]
+        ends += [e * np.array([1.0, 1.0, -1.0]) for e in ends]
+        own = {id(o) for o in h.shapes}
+        carried = {id(o): g for g in self.hulls if g is not h for o in g.shapes}
+        for o in self.others:
+            if id(o) in own:
+                continue
+            w = (carried[id(o)].mesh(t).vertices if id(o) in carried
+                 else o.world_vertices(t))
+            lo2, hi2 = w.min(axis=0), w.max(axis=0)
+            c2, r2 = 0.5 * (lo2 + hi2), 0.5 * float(np.linalg.norm(hi2 - lo2))
+            for e in ends:  # distance from c2 to the segment c-e
+                d = e - c
+                u = float(np.clip((c2 - c) @ d / (d @ d), 0.0, 1.0))
+                if np.linalg.norm(c + u * d - c2) <= r + r2:
+                    return False
+        return True
+
+    def _aspect(self, index: int, pulse: int) -> tuple[NDArray, NDArray]:
+        """Unit directions to T and R in hull ``index``'s frame at ``pulse`` [-]."""
+        h = self.hulls[index]
+        t = float(self.radar.emission_time(pulse))
+        geo = self.radar.geometry(pulse)
+        c = h.origin(t)
+        out = []
+        for e in (geo.tx.position, geo.rx.position):
+            u = (e - c) / np.linalg.norm(e - c)
+            out.append(_yaw(u, -h.heading(t)))
+        return out[0], out[1]
+
+    def share_plan(self) -> dict[tuple[int, int], tuple[int, int]]:
+        """Which (hull, refresh pulse) takes which earlier one's trace (module docstring).
+
+        Hulls in index order, each one's refresh pulses in order: a free refresh
+        (:meth:`_free`) of a shareable hull takes the first free trace of the same
+        :meth:`_shape_key` whose directions to T and R, each in its hull's frame, are
+        within the refresh step of its own; else it is traced and may serve later ones.
+        """
+        keys = [self._shape_key(h) for h in self.hulls]
+        counts: dict[str, int] = {}
+        for k in keys:
+            if k is not None:
+                counts[k] = counts.get(k, 0) + 1
+        donors: dict[str, list] = {}
+        plan: dict[tuple[int, int], tuple[int, int]] = {}
+        for i, h in enumerate(self.hulls):
+            k = keys[i]
+            if k is None or counts[k] < 2:
+                continue
+            cos_step = np.cos(np.deg2rad(h.refresh_deg))
+            for ref in h.schedule.tolist():
+                if not self._free(i, ref):
+                    continue
+                ut, ur = self._aspect(i, ref)
+                pool = donors.setdefault(k, [])
+                for j, rj, vt, vr in pool:
+                    if j != i and ut @ vt >= cos_step and ur @ vr >= cos_step:
+                        plan[(i, ref)] = (j, rj)
+                        break
+                else:
+                    pool.append((i, ref, ut, ur))
+        return plan
+
+    def _moved(self, sig: Signature, donor: tuple[int, int], index: int,
+               pulse: int) -> Signature:
+        """The donor's signature turned and moved onto hull ``index`` at ``pulse``."""
+        j, rj = donor
+        tj = float(self.radar.emission_time(rj))
+        ti = float(self.radar.emission_time(pulse))
+        hj, hi = self.hulls[j], self.hulls[index]
+        dh = float(hi.heading(ti) - hj.heading(tj))
+        c, s = np.cos(dh), np.sin(dh)
+        rot = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+        oj, oi = hj.origin(tj), hi.origin(ti)
+        cj = sig.centres
+        centres = ScatteringCentres(oi + (cj.position - oj) @ rot.T, cj.s, cj.path, ti,
+                                    hi.velocity_at(ti))
+        geo = self.radar.geometry(pulse)
+        return dataclasses.replace(sig, centres=centres,
+                                   reference=oi + rot @ (sig.reference - oj),
+                                   tx=geo.tx.position, rx=geo.rx.position)
 
     # ---------------------------------------------------------------------- traces
     def refresh_pulse(self, hull: int, pulse: int) -> int:
@@ -367,13 +510,18 @@ class HullEchoes:
         return int(sched[np.searchsorted(sched, pulse, side="right") - 1])
 
     def signature(self, hull: int, pulse: int) -> Signature:
-        """The trace serving ``pulse`` (computed at its refresh pulse, cached)."""
+        """The trace serving ``pulse`` (computed at its refresh pulse, or another
+        identical hull's moved onto this one (:meth:`share_plan`), cached)."""
         ref = self.refresh_pulse(hull, pulse)
         key = (hull, ref)
         if key in self._cache:
             self._cache.move_to_end(key)
             return self._cache[key]
-        sig = self._trace(hull, ref)
+        donor = self.donors.get(key)
+        if donor is None:
+            sig = self._trace(hull, ref)
+        else:
+            sig = self._moved(self.signature(*donor), donor, hull, ref)
         self._cache[key] = sig
         if len(self._cache) > SIGNATURE_CACHE:
             self._cache.popitem(last=False)
@@ -505,12 +653,17 @@ class HullEchoes:
         rcs_free = np.zeros((nh, n, 4))
         origin = np.zeros((nh, n, 3))
         served = np.zeros((nh, n), dtype=np.int64)
+        served_by = np.zeros((nh, n), dtype=np.int64)
         pos, s, path, which = [], [], [], []
         for i, h in enumerate(self.hulls):
             origin[i] = h.origin(t)
             for p in range(n):  # per pulse: one coherent sum over the centres (eq C3)
                 c = self.signature(i, p).centres
                 served[i, p] = self.refresh_pulse(i, p)
+                d = self.donors.get((i, int(served[i, p])))
+                if d is not None:
+                    served[i, p] = d[1]
+                served_by[i, p] = i if d is None else d[0]
                 x = h.carry(c.position, c.time, t[p])[0]
                 tot = coherent_total(x, c.s, tx[p], rx[p], k, origin[i, p])
                 direct = c.path == 0
@@ -534,6 +687,10 @@ class HullEchoes:
             "hull_trace_pulse": (("hull", "pulse"), served, {
                 "long_name": "pulse whose ray trace (signature) serves this pulse; "
                 "centres move rigidly with the hull in between"}),
+            "hull_trace_hull": (("hull", "pulse"), served_by, {
+                "long_name": "index of the hull whose trace serves this pulse (another "
+                "than its own: an identical hull's trace at the same aspect, turned and "
+                "moved onto it; docs/ship.md)"}),
             "hull_centre_position": (("centre", "xyz"), np.concatenate(pos), {
                 "units": "m", "long_name": f"scattering centres at pulse {pulse} "
                 "(delay-equivalent positions)"}),
