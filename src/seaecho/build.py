@@ -721,7 +721,10 @@ def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | 
             np.array([p0[0], p0[1], 0.0]), rotation_matrix(h, 0.0, 0.0),
             cfg.speed * np.array([np.cos(h), np.sin(h), 0.0]))
         spec = HullOptions(name=name,
-                           rays_per_wavelength=defaults["rays_per_wavelength"].default,
+                           rays_per_wavelength=(
+                               defaults["rays_per_wavelength"].default
+                               if cfg.hull_rays_per_wavelength is None
+                               else float(cfg.hull_rays_per_wavelength)),
                            max_bounces=defaults["max_bounces"].default,
                            cell_m=defaults["signature_cell_m"].default,
                            sea_multipath=defaults["sea_multipath"].default,

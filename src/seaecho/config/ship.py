@@ -136,6 +136,11 @@ class ShipConfig(Section):
         "sets the natural roll period 2 pi k_xx / sqrt(g GM) with k_xx = 0.35 beam_m; "
         "default 0.05 beam_m (a modelling choice: roll periods of ~5 s for a 10 m boat, "
         "~11 s for an 80 m ship)")
+    hull_rays_per_wavelength: float | None = Field(
+        None, ge=1.0, le=32.0,
+        description="hull_echo: launch density of the shooting-and-bouncing rays [rays "
+        "per wavelength along each axis]; default the [[objects]] default, 4 (the "
+        "trace's cost goes with its square: docs/ship.md)")
     hull_mesh: str | None = Field(
         None, min_length=1, max_length=4096,
         description="hull_echo: mesh file (.ply, .obj, .stl; x forward, y to port, z up, "
@@ -157,6 +162,8 @@ class ShipConfig(Section):
                                      or self.metacentric_height_m is not None):
             raise ValueError("wave_response / metacentric_height_m are for wave_motion = "
                              "true")
+        if self.hull_rays_per_wavelength is not None and not self.hull_echo:
+            raise ValueError("hull_rays_per_wavelength is only used with hull_echo = true")
         if self.wave_motion and not self.hull_echo:
             raise ValueError("wave_motion moves the hull echo: it needs hull_echo = true")
         turn = self.turn_rate_deg_s is not None or self.turn_radius_m is not None
