@@ -256,5 +256,5 @@ class ShipConfig(Section):
         return self.speed_m_s if self.speed_m_s is not None else self.speed_kn * KNOT
 
 
-__all__ = ["DEFAULT_GM_OVER_BEAM", "MAX_TURN_RATE_DEG_S", "MIN_BEAM_RATIO", "MIN_LENGTH_M", "MIN_WAVE_SPEED_M_S",
-           "ShipConfig"]
+__all__ = ["DEFAULT_GM_OVER_BEAM", "MAX_TURN_RATE_DEG_S", "MIN_BEAM_RATIO", "MIN_LENGTH_M",
+           "MIN_WAVE_SPEED_M_S", "ShipConfig"]
