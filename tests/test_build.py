@@ -241,6 +241,7 @@ def test_bundled_scenes_resolve_auto_as_documented():
                 "calibration_sar_point_targets": "held", "calibration_trihedral": "held",
                 # the scanning radars renew their sea every 0.25 s of a 2.5 s revolution
                 "coastal_vts_xband": "evolving", "shipborne_navigation_xband": "evolving",
+                "coastal_traffic_xband": "evolving",
                 # several receivers: held (their evolving sea is not implemented yet)
                 "multistatic_ship_3rx": "held", "narrow_v_20m_16kn_along_track": "held"}
     assert {p.stem for p in scenes.glob("*.toml")} == set(expected)
