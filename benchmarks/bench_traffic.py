@@ -41,7 +41,7 @@ MORE = [
     {"name": "fishing-2", "length_m": 15.0, "beam_m": 5.0, "draft_m": 1.5, "speed_kn": 8.0,
      "heading_deg": 45.0, "position_m": (1800.0, 300.0)},
     {"name": "fishing-3", "length_m": 15.0, "beam_m": 5.0, "draft_m": 1.5, "speed_kn": 8.0,
-     "heading_deg": 45.0, "position_m": (1840.0, 330.0)},
+     "heading_deg": 45.0, "position_m": (1830.0, 280.0)},
     {"name": "pilot-3", "length_m": 12.0, "beam_m": 3.5, "draft_m": 1.0, "speed_kn": 15.0,
      "heading_deg": 150.0, "position_m": (2290.0, -740.0)},
     {"name": "pilot-4", "length_m": 12.0, "beam_m": 3.5, "draft_m": 1.0, "speed_kn": 15.0,

@@ -127,3 +127,20 @@ def test_turning_boat_echo_delay_and_doppler(t0):
     f_d = -2.0 * (u[:2] @ (V * np.array([np.cos(h), np.sin(h)]))) / radar.wavelength
     step = np.angle(np.sum(y[1:, i] * np.conj(y[:-1, i])))
     assert step * radar.prf / (2 * np.pi) == pytest.approx(f_d, rel=0.05)
+
+
+def test_check_refuses_a_route_through_the_antenna(tmp_path, capsys):
+    # the hull's launch sphere must not hold the antenna at a pulse where the run traces
+    # it: a route that sails the hull onto the radar is refused by check (and run)
+    from seaecho.cli import main
+    from seaecho.config.loading import scene_to_toml_dict
+    from seaecho.config.toml_writer import dumps
+
+    data = scene_to_toml_dict(_turning_scene(0.0, n_pulses=2))
+    data["ships"][0]["waypoints_m"] = [[-300.0, 0.0], [-280.0, 0.0]]
+    data["ships"][0].pop("turn_rate_deg_s")
+    data["transmitter"]["position_m"] = [-300.0, 0.0, 3.0]
+    path = tmp_path / "s.toml"
+    path.write_text(dumps(data))
+    assert main(["check", str(path)]) == 2
+    assert "[[ships]] 'turner' (hull_echo)" in capsys.readouterr().err
