@@ -129,6 +129,7 @@ def test_turning_boat_echo_delay_and_doppler(t0):
     assert step * radar.prf / (2 * np.pi) == pytest.approx(f_d, rel=0.05)
 
 
+@pytest.mark.slow
 def test_check_refuses_a_route_through_the_antenna(tmp_path, capsys):
     # the hull's launch sphere must not hold the antenna at a pulse where the run traces
     # it: a route that sails the hull onto the radar is refused by check (and run)
