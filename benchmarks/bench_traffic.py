@@ -69,7 +69,7 @@ def scene(rays: float | None = None, ships: int = 10):
     if rays is not None:
         for s in data["ships"]:
             s["hull_rays_per_wavelength"] = rays
-    return parse_scene(data, base_dir=SCENE.parent)
+    return parse_scene(data)
 
 
 def main() -> None:

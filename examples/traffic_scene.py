@@ -108,8 +108,8 @@ def ppi_figure(run: Path, det: Path, outdir: Path) -> Path:
     y = np.abs(ds["compressed"].isel(channel=0).values) ** 2
     r = np.asarray(ds["range"].values, dtype=float)
     az = np.radians(boresight_angles(ds["tx_antenna_axes"].values)[0])  # clockwise, north
-    with open(det, newline="") as f:
-        rows = list(csv.DictReader(f))
+    with open(det, newline="") as f:  # the table after its '#' header lines
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
     fig, ax = plt.subplots(figsize=(7.0, 6.2), constrained_layout=True)
     a = np.unwrap(az)
     x = r[None, :] * np.sin(a)[:, None]
@@ -128,8 +128,8 @@ def ppi_figure(run: Path, det: Path, outdir: Path) -> Path:
         ax.annotate(n, ((q[0] - radar[0]) / 1e3, (q[1] - radar[1]) / 1e3), xytext=(6, 4),
                     textcoords="offset points", fontsize=7, color="w")
     if rows:
-        dx = np.array([float(row["x"]) for row in rows]) - radar[0]
-        dy = np.array([float(row["y"]) for row in rows]) - radar[1]
+        dx = np.array([float(row["x_m"]) for row in rows]) - radar[0]
+        dy = np.array([float(row["y_m"]) for row in rows]) - radar[1]
         ax.plot(dx / 1e3, dy / 1e3, "x", color="w", ms=5, mew=1.0, label="detections")
     found = sorted({row["object"] for row in rows if row.get("object") not in ("", None)})
     false = sum(1 for row in rows if row.get("object") in ("", None))
@@ -154,13 +154,18 @@ def main(argv: list[str] | None = None) -> list[Path]:
     ap.add_argument("--pulses", type=int, default=540)
     ap.add_argument("--work", default=None, help="folder of the run's files (default "
                     "OUTDIR)")
+    ap.add_argument("--reuse", action="store_true",
+                    help="draw from the run and detections already in the work folder")
     args = ap.parse_args(argv)
     outdir = Path(args.outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     work = Path(args.work) if args.work else outdir
     work.mkdir(parents=True, exist_ok=True)
     out = [rao_figure(outdir)]
-    run, det = run_scene(work, args.pulses)
+    if args.reuse:
+        run, det = work / "traffic_run.nc", work / "traffic_run_detections.csv"
+    else:
+        run, det = run_scene(work, args.pulses)
     out.append(ppi_figure(run, det, outdir))
     return out
 
