@@ -83,3 +83,22 @@ def test_a_hull_in_the_way_keeps_its_own_trace(no_disk_cache):
     sim = Simulation(_scene(ships))
     assert not sim.hulls._free(1, 0)
     assert sim.hulls.donors == {}
+
+
+@pytest.mark.slow
+def test_a_hull_outside_the_beams_is_skipped(no_disk_cache):
+    # [radar] sea_gain_floor_db applies to each hull: a boat behind a 2 m antenna looking
+    # the other way has no echo; with the floor off it has one
+    def scene(floor):
+        d = _scene([_boat("a", (300.0, 0.0), 90.0)]).model_dump(exclude_unset=True)
+        d["radar"]["sea_gain_floor_db"] = floor
+        d["transmitter"]["antenna"] = {"pattern": "rectangular", "width_m": 2.0,
+                                       "height_m": 0.5, "look_at_m": (-300.0, 0.0, 0.0)}
+        return parse_scene(d)
+
+    on, off = Simulation(scene(-60.0)), Simulation(scene("off"))
+    geo = on.radar.geometry(0)
+    assert on.hulls.echoes(geo, 0, seen=on._hull_seen(0)) == []
+    assert off._hull_seen(0) is None
+    assert len(off.hulls.echoes(geo, 0)) == 1
+    assert np.abs(on.pulse(0)).max() == 0.0  # no noise, nothing else in the scene

@@ -392,7 +392,9 @@ class RadarConfig(Section):
         "bounded over the whole tile, stays below this level relative to the beams' "
         "peaks [dB]: the skipped clutter power is at most this gain times the tile's "
         "clutter power at the peak (docs/scanning.md), in [-300, 0]; 'off' computes it "
-        "at every pulse",
+        "at every pulse; the same floor skips a hull's echo ([[ships]] hull_echo, "
+        "[[objects]] scatterer) at a pulse where the bound over the box of its "
+        "scattering centres stays below it",
     )
 
     @field_validator("sea_gain_floor_db")

@@ -575,7 +575,7 @@ class HullEchoes:
         return x[sl[1]], y[sl[0]], np.asarray(state.elevation)[sl]
 
     # ---------------------------------------------------------------------- pulses
-    def echoes(self, geometry, pulse: int) -> list:
+    def echoes(self, geometry, pulse: int, seen: Callable | None = None) -> list:
         """Echoes of every hull for one pulse (a ``ScattererEcho`` each).
 
         Parameters
@@ -584,12 +584,27 @@ class HullEchoes:
             ``radar.geometry(pulse)``.
         pulse : int
             Pulse index.
+        seen : callable, optional
+            ``corners (8, 3) [m] -> bool``: False skips a hull whose scattering centres
+            at this pulse lie in the convex hull of these corners (the beams do not
+            reach it; ``seaecho.simulation``). The corners are those of the box of the
+            trace's centres, carried with the hull and its motion in the waves (rigid
+            motions keep a point of the box inside the carried corners' hull).
         """
         out = []
         for i in range(len(self.hulls)):
             c = self.signature(i, pulse).centres
             if len(c) == 0:
                 continue
+            if seen is not None:
+                lo, hi = c.position.min(axis=0), c.position.max(axis=0)
+                box = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                                for z in (lo[2], hi[2])])
+                box = self.hulls[i].carry(box, c.time, geometry.time)[0]
+                if self.hulls[i].waterplane is not None:
+                    box = self.in_waves(i, box, geometry.time)
+                if not seen(box):
+                    continue
             pos, vel = self.hulls[i].carry(c.position, c.time, geometry.time)
             if self.hulls[i].waterplane is not None:
                 pos = self.in_waves(i, pos, geometry.time)
