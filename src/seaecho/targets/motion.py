@@ -304,6 +304,22 @@ class BoxHullMotion:
         t : float
             Time [s].
         """
+        ga, gb = self._gains(waves, float(heading), float(velocity[0]), float(velocity[1]))
+        ph = np.exp(-1j * waves.omega * t)
+        e = np.exp(1j * (waves.kx * float(centre[0]) + waves.ky * float(centre[1])))
+        # Eq. S3 (the time-independent factors in ga, gb)
+        x = np.real((ga * ph + gb * np.conj(ph)) @ e)
+        return float(x[0]), float(np.arctan(x[1])), float(np.arctan(x[2]))
+
+    def _gains(self, waves: WaveComponents, heading: float, vx: float, vy: float
+               ) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+        """(3, N) factors w W_x a H(omega - K.V) and w W_x b H(-omega - K.V) of eq S3 for
+        heave, pitch slope, roll slope; the last heading and velocity's are kept (a
+        straight course reuses them at every pulse)."""
+        key = (id(waves), heading, vx, vy)
+        memo = self.__dict__.get("_memo")
+        if memo is not None and memo[0] == key:
+            return memo[1]
         c, s = np.cos(heading), np.sin(heading)
         kxi = waves.kx * c + waves.ky * s
         keta = -waves.kx * s + waves.ky * c
@@ -311,20 +327,18 @@ class BoxHullMotion:
         # Eq. S4: the waterplane weights
         sl, sb = _sinc(kxi * half_l), _sinc(keta * half_b)
         weights = (sl * sb, _slope_weight(kxi, half_l) * sb, sl * _slope_weight(keta, half_b))
-        kv = waves.kx * float(velocity[0]) + waves.ky * float(velocity[1])
-        ph = np.exp(-1j * waves.omega * t)
-        e = waves.weight * np.exp(1j * (waves.kx * float(centre[0])
-                                        + waves.ky * float(centre[1])))
-        out = []
+        kv = waves.kx * vx + waves.ky * vy
+        ga, gb = [], []
         for w, wn, zeta in zip(weights, (self.heave_frequency, self.pitch_frequency,
                                           self.roll_frequency), self.damping, strict=True):
-            # Eq. S3: each travelling component through the oscillator at its encounter
-            # frequency
-            resp = (waves.a * oscillator_response(waves.omega - kv, wn, zeta) * ph
-                    + waves.b * oscillator_response(-waves.omega - kv, wn, zeta)
-                    * np.conj(ph))
-            out.append(float(np.sum(np.real(w * e * resp))))
-        return out[0], float(np.arctan(out[1])), float(np.arctan(out[2]))
+            # each travelling component through the oscillator at its encounter frequency
+            ga.append(waves.weight * w * waves.a
+                      * oscillator_response(waves.omega - kv, wn, zeta))
+            gb.append(waves.weight * w * waves.b
+                      * oscillator_response(-waves.omega - kv, wn, zeta))
+        out = (np.array(ga), np.array(gb))
+        object.__setattr__(self, "_memo", (key, out))
+        return out
 
 
 __all__ = ["DEFAULT_DAMPING", "ROLL_GYRADIUS_OVER_BEAM", "BoxHullMotion", "WaveComponents",

@@ -323,6 +323,8 @@ class HullEchoes:
         self.donors: dict[tuple[int, int], tuple[int, int]] = {}
         #: grid nodes (x, y) [m] of the held sea, whose patch a trace near it takes
         self.tile: tuple | None = None
+        #: (centres, corners (8, 3) [m] of their box) of the traces used, by id
+        self._boxes: dict[int, tuple] = {}
 
     # ------------------------------------------------------------------ construction
     @classmethod
@@ -597,9 +599,16 @@ class HullEchoes:
             if len(c) == 0:
                 continue
             if seen is not None:
-                lo, hi = c.position.min(axis=0), c.position.max(axis=0)
-                box = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
-                                for z in (lo[2], hi[2])])
+                kept = self._boxes.get(id(c))
+                if kept is not None and kept[0] is c:
+                    box = kept[1]
+                else:  # the corners of the trace's centres, kept with them
+                    lo, hi = c.position.min(axis=0), c.position.max(axis=0)
+                    box = np.array([[x, y, z] for x in (lo[0], hi[0])
+                                    for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+                    if len(self._boxes) > 4 * SIGNATURE_CACHE:
+                        self._boxes.clear()
+                    self._boxes[id(c)] = (c, box)
                 box = self.hulls[i].carry(box, c.time, geometry.time)[0]
                 if self.hulls[i].waterplane is not None:
                     box = self.in_waves(i, box, geometry.time)
