@@ -143,7 +143,7 @@ def ppi_figure(run: Path, det: Path, outdir: Path) -> Path:
     ax.set_title(f"coastal-traffic-xband, {ds.sizes['pulse']} pulses from north "
                  "(clockwise)", fontsize=9)
     path = outdir / "traffic_ppi.png"
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=80)
     plt.close(fig)
     return path
 
