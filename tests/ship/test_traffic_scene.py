@@ -31,12 +31,17 @@ def test_traffic_scene_runs_end_to_end(tmp_path, monkeypatch):
         # pilot-2 takes pilot-1's trace (the same hull at the same aspect)
         assert (ds["hull_trace_hull"].values[2] == 1).all()
         assert (ds["hull_trace_hull"].values[[0, 1, 3]] == np.array([[0], [1], [3]])).all()
-        # the fishing boat starts its turn at its first waypoint: 8 kn, 2 deg/s to port
+        # the fishing boat: 8 kn east from (60, -100), turning 90 deg to port at 2 deg/s
+        # (radius r = V / omega) round the corner at (178, -100): the turn starts r
+        # before the corner (the tangent distance r tan 45 deg), d = 118 - r after t = 0
         t = ds["time"].values
         v, omega = 8 * 1852 / 3600, np.radians(2.0)
         r = v / omega
-        expected = np.stack([60.0 + r * np.sin(omega * t),
-                             -100.0 + r * (1 - np.cos(omega * t))], -1)
+        d = 118.0 - r
+        s = v * t
+        u = np.maximum(s - d, 0.0) / r  # the angle turned
+        expected = np.stack([60.0 + np.minimum(s, d) + r * np.sin(u),
+                             -100.0 + r * (1 - np.cos(u))], -1)
         np.testing.assert_allclose(ds["truth_position"].values[:, 3, :2], expected,
                                    atol=1e-6)
         assert np.isfinite(ds["compressed"].values).all()
