@@ -242,6 +242,7 @@ def test_bundled_scenes_resolve_auto_as_documented():
                 # the scanning radars renew their sea every 0.25 s of a 2.5 s revolution
                 "coastal_vts_xband": "evolving", "shipborne_navigation_xband": "evolving",
                 "sband_longrange": "evolving",
+                "coastal_traffic_xband": "evolving",
                 # several receivers: held (their evolving sea is not implemented yet)
                 "multistatic_ship_3rx": "held", "narrow_v_20m_16kn_along_track": "held"}
     assert {p.stem for p in scenes.glob("*.toml")} == set(expected)

@@ -723,6 +723,17 @@ def build_land(scene, *, frequency: float | None = None):
     return LandModel(pieces=tuple(pieces), earth=earth)
 
 
+def _box_motion(cfg):
+    """The dynamic wave response of a ``[[ships]]`` hull (None unless wave_motion with
+    wave_response = "dynamic"; :class:`seaecho.targets.motion.BoxHullMotion`)."""
+    if not (cfg.wave_motion and cfg.wave_response == "dynamic"):
+        return None
+    from .targets.motion import BoxHullMotion
+
+    return BoxHullMotion(float(cfg.length_m), float(cfg.beam_m), float(cfg.draft_m),
+                         cfg.metacentric_height)
+
+
 def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | None = None,
                 variant: str | None = None):
     """The hull model of the ``[[objects]]`` with ``scatterer = true``
@@ -743,6 +754,7 @@ def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | 
     f = carrier_frequency(scene, frequency)
     objects = []
     defaults = ObjectConfig.model_fields
+    tracks = {s.name: s for s in build_ships(scene) if s.route is not None}
     for cfg, name in ship_hulls:  # [[ships]] hull_echo: the ship's own (or generic) hull
         if cfg.hull_mesh is not None:
             path = cfg.hull_mesh if os.path.isabs(cfg.hull_mesh) else os.path.join(
@@ -752,20 +764,26 @@ def build_hulls(scene, base_dir: str | os.PathLike = ".", *, frequency: float | 
             from .geometry.vessel import vessel_mesh
 
             v, fc = vessel_mesh(cfg.length_m, cfg.beam_m, cfg.draft_m)
-        h = float(np.deg2rad(cfg.heading_deg))
+        track = tracks.get(name)  # on waypoints: the route carries and turns the hull
+        h = float(np.deg2rad(cfg.heading_deg)) if track is None else float(track.heading)
+        p0 = cfg.position_m if track is None else track.position0
         shape = ObjectGeometry(
             name, np.asarray(v, dtype=np.float64), np.asarray(fc, dtype=np.uint32),
-            np.array([cfg.position_m[0], cfg.position_m[1], 0.0]), rotation_matrix(h, 0.0, 0.0),
+            np.array([p0[0], p0[1], 0.0]), rotation_matrix(h, 0.0, 0.0),
             cfg.speed * np.array([np.cos(h), np.sin(h), 0.0]))
         spec = HullOptions(name=name,
-                           rays_per_wavelength=defaults["rays_per_wavelength"].default,
+                           rays_per_wavelength=(
+                               defaults["rays_per_wavelength"].default
+                               if cfg.hull_rays_per_wavelength is None
+                               else float(cfg.hull_rays_per_wavelength)),
                            max_bounces=defaults["max_bounces"].default,
                            cell_m=defaults["signature_cell_m"].default,
                            sea_multipath=defaults["sea_multipath"].default,
                            refresh_deg=defaults["signature_refresh_deg"].default,
                            refresh_s=defaults["signature_refresh_s"].default,
                            waterplane=((float(cfg.length_m), float(cfg.beam_m))
-                                       if cfg.wave_motion else None))
+                                       if cfg.wave_motion else None),
+                           track=track, motion=_box_motion(cfg))
         objects.append((spec, [shape]))
     for cfg in scene.objects:
         shapes = load_object(cfg, base_dir=str(base_dir), ship=scene.ship, variant=variant)

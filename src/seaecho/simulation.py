@@ -276,7 +276,8 @@ class Simulation:
 
         self.hulls = HullEchoes.from_model(
             models.hulls, self.radar, variant=self.variant,
-            surface=self.surface_state_at if self.sea is not None else None)
+            surface=self.surface_state_at if self.sea is not None else None,
+            sea_surface=self.sea.surface if self.sea is not None else None)
         #: the [[land]]: occluder of targets and land clutter (docs/land.md), or None
         self.land = None
         if models.land is not None:
@@ -638,6 +639,18 @@ class Simulation:
             self._tile_box = tile_box(self.sea.x, self.sea.y, SEA_MARGIN_M)
         return two_way_bound(self.radar, pulse, self._tile_box)
 
+    def _hull_seen(self, pulse: int):
+        """``corners -> bool``: whether the two-way gain bound over a hull's box at
+        ``pulse`` reaches ``[radar] sea_gain_floor_db`` (the floor the sea's skip uses,
+        applied to each hull; :func:`seaecho.radar.coverage.two_way_bound`); None when
+        the floor is off."""
+        floor = self.models.radar.sea_gain_floor
+        if floor is None:
+            return None
+        from .radar.coverage import two_way_bound
+
+        return lambda corners: two_way_bound(self.radar, pulse, corners) >= floor
+
     def sea_skipped(self, pulse: int) -> bool:
         """True when ``pulse`` skips the sea: ``[radar] sea_gain_floor_db`` is set and
         :meth:`sea_gain_bound` is below it. A pure function of (scene, pulse), so the
@@ -666,7 +679,7 @@ class Simulation:
         if t is not None:
             echoes.append(t)
         if self.hulls is not None:
-            echoes += self.hulls.echoes(geo, pulse)
+            echoes += self.hulls.echoes(geo, pulse, seen=self._hull_seen(pulse))
         if self.land is not None and self.land.n_facets:
             e = self.land.echo(geo, self.land_patches(pulse), variant=self.variant)
             if e is not None:

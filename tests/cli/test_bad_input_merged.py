@@ -125,8 +125,8 @@ def test_non_finite_hull_echo_is_named(tmp_path, monkeypatch):
 
     real = HullEchoes.echoes
 
-    def echoes(self, geometry, pulse):
-        out = real(self, geometry, pulse)
+    def echoes(self, geometry, pulse, seen=None):
+        out = real(self, geometry, pulse, seen)
         out[0].amplitudes[:, :3] = np.nan
         return out
 

@@ -343,6 +343,7 @@ def _geometry(draw, data: dict) -> Mutation:
     if choice == "tx_at_sea":
         plat["antenna"].pop("azimuth_deg", None)
         plat["antenna"].pop("depression_deg", None)
+        plat["antenna"].pop("scan", None)  # a scanning antenna takes depression_deg
         plat["antenna"]["look_at_m"] = [pos[0], pos[1], z]
     return Mutation("geometry", data, None, ("position_m",))
 

@@ -256,7 +256,8 @@ def _ship(draw: Draw, d: dict, get: Get) -> dict:
         d["beam_m"] = min(d["length_m"] * draw(st.floats(0.02, 0.5)), 80.0)
     # no hull echo (a ray trace per ship); a route of two legs that its turn fits, or none
     d = _only(d, drop=("waypoints_m", "turn_rate_deg_s", "turn_radius_m", "hull_echo",
-                       "hull_mesh", "wave_motion"))
+                       "hull_mesh", "wave_motion", "wave_response", "metacentric_height_m",
+                       "hull_rays_per_wavelength"))
     if d[speed] > 0.0 and draw(st.booleans()):
         d = _only(d, drop=("heading_deg", "position_m"))
         x0, y0, a, b = draw(st.tuples(_near, _near, st.floats(50.0, 500.0),

@@ -29,7 +29,7 @@ def _text(m) -> str:
 #: added far away, an optional name removed) may push the run or its image over the
 #: memory or pixel limits; such a refusal names the fields that set the size, not the
 #: mutated one.
-RESOURCE_REFUSALS = ("does not fit in memory", "pixels, more than")
+RESOURCE_REFUSALS = ("does not fit in memory", "pixels, more than", "the image can hold")
 
 
 def _names_the_field(m, err: str) -> bool:

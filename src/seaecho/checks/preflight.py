@@ -433,7 +433,8 @@ def hull_problems(scene, base_dir=".") -> list[str]:
     the hull (module docstring): the run's own hull echoes and schedule
     (:meth:`seaecho.tracing.hull_echo.HullEchoes.from_model`) on the run's radar, the
     tracer's sphere (:func:`seaecho.tracing.sbr.bounding_sphere`)."""
-    if not any(o.scatterer for o in scene.objects):
+    if not (any(o.scatterer for o in scene.objects)
+            or any(s.hull_echo for s in scene.all_ships)):
         return []
     import warnings
 
@@ -447,7 +448,10 @@ def hull_problems(scene, base_dir=".") -> list[str]:
         radar = RadarSystem(build_radar(scene))
         hulls = HullEchoes.from_model(build_hulls(scene, base_dir=base_dir), radar)
     out = []
+    ships = set(scene.ship_names()) if scene.all_ships else set()
     for h in hulls.hulls if hulls is not None else ():
+        what = (f"[[ships]] '{h.name}' (hull_echo)" if h.name in ships
+                else f"[[objects]] '{h.name}' (scatterer)")
         for p in h.schedule:
             geo = radar.geometry(int(p))
             centre, radius = bounding_sphere(h.mesh(geo.time).vertices)
@@ -457,7 +461,7 @@ def hull_problems(scene, base_dir=".") -> list[str]:
                 d = float(np.linalg.norm(state.position - centre))
                 if d < BOUNDING_MARGIN * radius:
                     out.append(f"[{name}].position_m: the {name}'s antenna is {d:.3g} m "
-                               f"from the centre of [[objects]] '{h.name}' (scatterer) at "
+                               f"from the centre of {what} at "
                                f"pulse {int(p)} (t = {geo.time:.6g} s), where the run traces "
                                f"it; the ray tracer launches its rays from a sphere of "
                                f"{BOUNDING_MARGIN:g} x its bounding radius "

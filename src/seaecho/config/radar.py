@@ -392,7 +392,9 @@ class RadarConfig(Section):
         "bounded over the whole tile, stays below this level relative to the beams' "
         "peaks [dB]: the skipped clutter power is at most this gain times the tile's "
         "clutter power at the peak (docs/scanning.md), in [-300, 0]; 'off' computes it "
-        "at every pulse",
+        "at every pulse; the same floor skips a hull's echo ([[ships]] hull_echo, "
+        "[[objects]] scatterer) at a pulse where the bound over the box of its "
+        "scattering centres stays below it",
     )
 
     @field_validator("sea_gain_floor_db")
@@ -471,21 +473,34 @@ class RadarConfig(Section):
 
 
 #: Mean RCS [m^2] of the named targets of the IMO radar performance standard, at X band
-#: (9.41 GHz, 8-12 GHz here) and S band (3.05 GHz, 2-4 GHz here), and the Swerling case
-#: a preset takes unless given. RCS: IMO resolution MSC.192(79) (2004), Annex, table 2
-#: and its notes 1-4 ("small vessel of length 10 m with no radar reflector" 2.5 / 1.4 m^2,
-#: "taken as a complex target"; "typical navigation buoy" 5.0 / 0.5 m^2; "navigation buoy
-#: with corner reflector" 10 / 1.0 m^2; "small vessel with radar reflector meeting IMO
-#: performance standards", MSC.164(78): 7.5 / 0.5 m^2). Swerling cases: a modelling
-#: choice (docs/targets.md): the many-scatterer boat case 1, a buoy (one dominant
-#: reflector plus small ones) case 3. There is no swimmer: no published RCS of a person
-#: in the water was found (a standing man: 0.5 to 1.2 m^2 at 9.4 GHz, Schultz, Burgener
-#: & King, Proc. IRE 46(2), 476-481, 1958, is not a swimmer's).
+#: (9.2-9.5 GHz in the standard, 8-12 GHz here) and S band (2.9-3.1 GHz, 2-4 GHz here),
+#: the Swerling case a preset takes unless given, and the target's height above the sea
+#: [m] in the standard's table. Source: IMO resolution MSC.192(79) (adopted 6 December
+#: 2004), Annex, section 5.3.1.1, table 2 "Minimum detection ranges in clutter-free
+#: conditions" (antenna 15 m above the sea; detection in 8 of 10 scans at a false-alarm
+#: probability of 1e-4), whose rows are, target (note): height [m], X / S band range
+#: [NM]: small vessel with a radar reflector meeting the IMO performance standards (1):
+#: 4.0, 5.0 / 3.7; navigation buoy with corner reflector (2): 3.5, 4.9 / 3.6; typical
+#: navigation buoy (3): 3.5, 4.6 / 3.0; small vessel of length 10 m with no radar
+#: reflector (4): 2.0, 3.4 / 3.0 (checked against the published text, MSC 79/23/Add.2,
+#: annex 34, page 6). The RCS of note 1 is the reflector's "stated performance level" of
+#: resolution MSC.164(78), annex, para 3.1: at least 7.5 m^2 (X) and 0.5 m^2 (S) mounted
+#: at least 4 m above the water (checked). The RCS of notes 2-4 (10 / 1.0, 5.0 / 0.5 and
+#: 2.5 / 1.4 m^2, the 10 m boat "taken as a complex target") are the notes' values as
+#: an earlier revision quoted them; the copies of the resolution searched here did not
+#: reproduce the notes' text, so they are not checked against it (docs/targets.md).
+#: Swerling cases: a modelling choice (docs/targets.md): the many-scatterer boat case 1,
+#: a buoy (one dominant reflector plus small ones) case 3. There is no swimmer: no
+#: published RCS of a person in the water was found (a standing man: 0.5 to 1.2 m^2 at
+#: 9.4 GHz, Schultz, Burgener & King, Proc. IRE 46(2), 476-481, 1958, is not a
+#: swimmer's).
 TARGET_PRESETS: dict[str, dict] = {
-    "small-boat": {"x_band_m2": 2.5, "s_band_m2": 1.4, "swerling": 1},
-    "small-boat-reflector": {"x_band_m2": 7.5, "s_band_m2": 0.5, "swerling": 1},
-    "navigation-buoy": {"x_band_m2": 5.0, "s_band_m2": 0.5, "swerling": 3},
-    "navigation-buoy-reflector": {"x_band_m2": 10.0, "s_band_m2": 1.0, "swerling": 3},
+    "small-boat": {"x_band_m2": 2.5, "s_band_m2": 1.4, "swerling": 1, "height_m": 2.0},
+    "small-boat-reflector": {"x_band_m2": 7.5, "s_band_m2": 0.5, "swerling": 1,
+                             "height_m": 4.0},
+    "navigation-buoy": {"x_band_m2": 5.0, "s_band_m2": 0.5, "swerling": 3, "height_m": 3.5},
+    "navigation-buoy-reflector": {"x_band_m2": 10.0, "s_band_m2": 1.0, "swerling": 3,
+                                  "height_m": 3.5},
 }
 #: Carrier bands of the presets [Hz] (IEEE Std 521-2002 letter bands).
 PRESET_BANDS: dict[str, tuple[float, float]] = {"x_band_m2": (8.0e9, 12.0e9),

@@ -31,6 +31,9 @@ MIN_LENGTH_M = 0.1
 MIN_BEAM_RATIO = 0.01
 
 
+#: Metacentric height over beam, GM / B, by default [-] (a modelling choice; docs/targets.md).
+DEFAULT_GM_OVER_BEAM = 0.05
+
 #: Fastest turn [deg/s]: small fast craft turn at up to ~10 deg/s; 30 bounds any hull.
 MAX_TURN_RATE_DEG_S = 30.0
 
@@ -114,14 +117,30 @@ class ShipConfig(Section):
     )
     hull_echo: bool = Field(
         False, description="add the hull's own echo (shooting and bouncing rays, sea "
-        "multipath; docs/ship.md) with the [[objects]] scatterer defaults; a straight "
-        "course only (not implemented yet on waypoints)",
+        "multipath; docs/ship.md) with the [[objects]] scatterer defaults; on waypoints_m "
+        "the hull follows the route and turns with it",
     )
     wave_motion: bool = Field(
         False, description="hull_echo: the hull heaves, pitches and rolls with the sea under "
         "its waterplane (quasi-static wave following; docs/targets.md); needs the sea "
         "([radar] sea_clutter = true)",
     )
+    wave_response: Literal["dynamic", "quasi-static"] = Field(
+        "dynamic", description="wave_motion: 'dynamic', heave, pitch and roll of a box "
+        "hull L x B x T as damped oscillators at their natural periods driven by the "
+        "random sea (docs/targets.md); 'quasi-static', the plane fitted to the held sea "
+        "under the waterplane (no resonance, wakes included)")
+    metacentric_height_m: float | None = Field(
+        None, gt=0.0, le=20.0,
+        description="wave_motion 'dynamic': transverse metacentric height GM [m], which "
+        "sets the natural roll period 2 pi k_xx / sqrt(g GM) with k_xx = 0.35 beam_m; "
+        "default 0.05 beam_m (a modelling choice: roll periods of ~5 s for a 10 m boat, "
+        "~11 s for an 80 m ship)")
+    hull_rays_per_wavelength: float | None = Field(
+        None, ge=1.0, le=32.0,
+        description="hull_echo: launch density of the shooting-and-bouncing rays [rays "
+        "per wavelength along each axis]; default the [[objects]] default, 4 (the "
+        "trace's cost goes with its square: docs/ship.md)")
     hull_mesh: str | None = Field(
         None, min_length=1, max_length=4096,
         description="hull_echo: mesh file (.ply, .obj, .stl; x forward, y to port, z up, "
@@ -138,11 +157,15 @@ class ShipConfig(Section):
             if suffix not in ("ply", "obj", "stl"):
                 raise ValueError(f"hull_mesh = {short_repr(self.hull_mesh)}: allowed "
                                  "extensions .ply, .obj, .stl")
+        if not self.wave_motion and ("wave_response" in self.model_fields_set
+                                     and self.wave_response != "dynamic"
+                                     or self.metacentric_height_m is not None):
+            raise ValueError("wave_response / metacentric_height_m are for wave_motion = "
+                             "true")
+        if self.hull_rays_per_wavelength is not None and not self.hull_echo:
+            raise ValueError("hull_rays_per_wavelength is only used with hull_echo = true")
         if self.wave_motion and not self.hull_echo:
             raise ValueError("wave_motion moves the hull echo: it needs hull_echo = true")
-        if self.hull_echo and self.waypoints_m is not None:
-            raise ValueError("hull_echo = true on waypoints_m: not implemented yet (a hull "
-                             "echo follows a straight course only)")
         turn = self.turn_rate_deg_s is not None or self.turn_radius_m is not None
         if self.waypoints_m is None:
             if turn:
@@ -221,10 +244,17 @@ class ShipConfig(Section):
         return self
 
     @property
+    def metacentric_height(self) -> float:
+        """GM [m]: metacentric_height_m, default 0.05 beam_m."""
+        if self.metacentric_height_m is not None:
+            return float(self.metacentric_height_m)
+        return DEFAULT_GM_OVER_BEAM * float(self.beam_m)
+
+    @property
     def speed(self) -> float:
         """Speed [m/s]."""
         return self.speed_m_s if self.speed_m_s is not None else self.speed_kn * KNOT
 
 
-__all__ = ["MAX_TURN_RATE_DEG_S", "MIN_BEAM_RATIO", "MIN_LENGTH_M", "MIN_WAVE_SPEED_M_S",
-           "ShipConfig"]
+__all__ = ["DEFAULT_GM_OVER_BEAM", "MAX_TURN_RATE_DEG_S", "MIN_BEAM_RATIO", "MIN_LENGTH_M",
+           "MIN_WAVE_SPEED_M_S", "ShipConfig"]

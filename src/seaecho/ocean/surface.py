@@ -262,6 +262,45 @@ class SeaSurface:
         phase = np.exp(-1j * self._omega * t)  # Eq. 15 evolution, exp(-j omega t)
         return self._a * phase, self._b * np.conj(phase)
 
+    def components(self, slope_fraction: float = 1e-3, height_fraction: float = 1e-4,
+                   limit: int = 20000) -> tuple[NDArray, ...]:
+        """The realisation as travelling waves, the strongest first:
+        z(r, t) = sum w Re[(a e^{-j omega t} + b e^{+j omega t}) e^{j K.r}] (eq 12').
+
+        Keeps the fewest components that carry all but ``height_fraction`` of the
+        height variance and all but ``slope_fraction`` of the slope variance, at most
+        ``limit`` of them.
+
+        Returns
+        -------
+        kx, ky, omega, a, b, weight : (N,) arrays
+            [rad/m], [rad/m], [rad/s], [m], [m], [-] (weight 2 on the half plane's
+            columns kx > 0, 1 on kx = 0, as the inverse real FFT counts them).
+        """
+        ny, nx = self.shape
+        w = np.full(self._a.shape, 2.0)
+        w[:, 0] = 1.0
+        w[:, -1] = 1.0 if nx % 2 == 0 else 2.0
+        kx = np.broadcast_to(self._kx, w.shape)
+        ky = np.broadcast_to(self._ky, w.shape)
+        e = (w * (np.abs(self._a) ** 2 + np.abs(self._b) ** 2)).ravel()
+        keep = np.zeros(e.size, dtype=bool)
+        for energy, frac in ((e, height_fraction), (e * (kx * kx + ky * ky).ravel(),
+                                                    slope_fraction)):
+            order = np.argsort(-energy, kind="stable")
+            cum = np.cumsum(energy[order])
+            if cum[-1] <= 0.0:
+                continue
+            n = int(np.searchsorted(cum, (1.0 - frac) * cum[-1])) + 1
+            keep[order[:n]] = True
+        idx = np.flatnonzero(keep)
+        idx = idx[np.argsort(-e[idx], kind="stable")][:limit]
+        kx, ky = kx.ravel()[idx].copy(), ky.ravel()[idx].copy()
+        # the grid's first node (x[0], y[0]) is the transform's origin
+        shift = np.exp(-1j * (kx * self.x[0] + ky * self.y[0]))
+        return (kx, ky, np.broadcast_to(self._omega, w.shape).ravel()[idx].copy(),
+                self._a.ravel()[idx] * shift, self._b.ravel()[idx] * shift, w.ravel()[idx])
+
     def elevation(self, t: float = 0.0) -> NDArray[np.float64]:
         """z(x, y, t) [m], shape (ny, nx)."""
         plus, minus = self._travelling(t)

@@ -19,9 +19,10 @@ def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
     Range-compressed power [dB] of the run's first channel, drawn on the plane: x east
     and y north of the radar, x = r sin(az), y = r cos(az) with az the ray's azimuth
     clockwise from north and r its range (the slant range, as a radar's PPI draws it).
-    Truth from the run: the point targets (circles, at the sweep's middle time) and the
-    ship's hull centre (triangle, ``ship_position``), relative to the radar's position;
-    the coastline of ``[[land]]`` (``land_outline``) as lines.
+    Truth from the run at the sweep's middle time, relative to the radar's position:
+    every ship (triangle) and target (circle) of ``truth_position`` with its name, or,
+    in a file without it, the point targets and the ship's hull centre; the coastline
+    of ``[[land]]`` (``land_outline``) as lines.
     """
     import matplotlib
 
@@ -65,11 +66,25 @@ def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
         scanner = run["sweep"].attrs.get("scan_antenna", "tx")
         radar = np.asarray(run[f"{scanner}_position"].values[mid], dtype=float)
         t_mid = t_run[mid]
-        if "target_position" in run:
+        if "truth_position" in run:  # every ship and target of the run, named
+            tp = np.asarray(run["truth_position"].values[mid], dtype=float)
+            kinds = np.asarray(run["object_kind"].values).astype(str)
+            names = np.asarray(run["object"].values).astype(str)
+            for kind, mark, colour in (("ship", "^", "orange"), ("target", "o", "r")):
+                sel = kinds == kind
+                if np.any(sel):
+                    ax.plot((tp[sel, 0] - radar[0]) / 1e3, (tp[sel, 1] - radar[1]) / 1e3,
+                            mark, ms=9, mfc="none", mec=colour, mew=1.3,
+                            label=f"{kind}s (truth)")
+            for n, q in zip(names, tp, strict=True):
+                ax.annotate(n, ((q[0] - radar[0]) / 1e3, (q[1] - radar[1]) / 1e3),
+                            xytext=(5, 4), textcoords="offset points", fontsize=6,
+                            color="w")
+        elif "target_position" in run:
             tp = (run["target_position"].values + t_mid * run["target_velocity"].values)
             ax.plot((tp[:, 0] - radar[0]) / 1e3, (tp[:, 1] - radar[1]) / 1e3, "o", ms=9,
                     mfc="none", mec="r", mew=1.2, label="targets (truth)")
-        if "ship_position" in run:
+        if "ship_position" in run and "truth_position" not in run:
             sp = np.asarray(run["ship_position"].values[mid], dtype=float)
             ax.plot((sp[0] - radar[0]) / 1e3, (sp[1] - radar[1]) / 1e3, "^", ms=9,
                     mfc="none", mec="orange", mew=1.5, label="ship (truth)")
@@ -81,7 +96,8 @@ def ppi_figures(run, stem: str | os.PathLike, dynamic_range_db: float = 60.0,
                 q = np.vstack([q, q[:1]])
                 ax.plot((q[:, 0] - radar[0]) / 1e3, (q[:, 1] - radar[1]) / 1e3, "-",
                         color="sienna", lw=1.0, label="coastline" if k == 0 else None)
-        if "target_position" in run or "ship_position" in run or "land_outline" in run:
+        if any(v in run for v in ("truth_position", "target_position", "ship_position",
+                                  "land_outline")):
             ax.legend(loc="upper right", fontsize=8)
         ax.set_aspect("equal")
         ax.set_xlabel("x east of the radar [km]")

@@ -27,11 +27,23 @@ antennas clear the sphere (:func:`horizon_mask`): the part of a hull below the h
 tangent ray, the hidden height h_hid = (d - sqrt(2 k a h_1))^2 / (2 k a) at ground
 distance d beyond the antenna's horizon (Skolnik 2001, section 8.2; Blake 1986, eq 3.21),
 is silent, the rest is heard; a hull wholly below returns nothing.
+
+Identical hulls share traces. Two hulls of the same mesh, material and options whose
+directions to the transmitter and the receiver, in each hull's own frame, agree within the
+refresh step see the same signature up to a yaw and a shift: the later one (in a fixed
+order, hull by hull and refresh by refresh, so the plan is a function of the tracks only)
+takes the earlier one's centres turned and moved onto itself (:meth:`HullEchoes.
+share_plan`), the approximation a hull already makes between two of its own refreshes. A
+trace is shared only where neither hull has the held sea under it (the sea patch of its
+trace) and no other object comes near the legs from either hull to the transmitter or the
+receiver, or to their images in the sea (bounding spheres): there the trace would have
+been the same but for those.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import warnings
 from collections import OrderedDict
 from collections.abc import Callable
@@ -42,7 +54,12 @@ from numpy.typing import NDArray
 
 from ..constants import C0
 from ..targets.cache import ArrayCache
-from ..targets.centres import PATH_NAMES, coherent_total, refresh_schedule
+from ..targets.centres import (
+    PATH_NAMES,
+    ScatteringCentres,
+    coherent_total,
+    refresh_schedule,
+)
 from .sbr import (
     SBROptions,
     SeaPlane,
@@ -112,6 +129,14 @@ class Hull:
     waterplane : (float, float) or None
         (length, beam) [m] of the waterplane whose sea the hull follows (heave, pitch,
         roll of :mod:`seaecho.targets.motion`); None: no motion in the waves.
+    track : seaecho.wake.Ship or None
+        A ship on waypoints (:class:`seaecho.wake.ship.Route`) that carries the hull: its
+        origin is the ship's midship position at each time and it turns with the
+        route's heading (:meth:`pose`); None: the shapes' constant velocity and
+        orientation.
+    motion : seaecho.targets.motion.BoxHullMotion or None
+        The hull's dynamic response to the waves (heave, pitch, roll as damped
+        oscillators); None with a waterplane: the quasi-static plane fit (eq S1).
     """
 
     name: str
@@ -123,21 +148,86 @@ class Hull:
     refresh_s: float
     schedule: NDArray[np.intp]
     waterplane: tuple | None = None
+    track: object = None
+    motion: object = None
 
     @property
     def velocity(self) -> NDArray[np.float64]:
-        """Rigid velocity [m/s] (all shapes of an object share it)."""
-        return np.asarray(self.shapes[0].velocity, dtype=np.float64)
+        """Rigid velocity [m/s] at time 0 (all shapes of an object share it)."""
+        return self.velocity_at(0.0)
+
+    def velocity_at(self, t: float | NDArray) -> NDArray[np.float64]:
+        """Velocity of the origin at time(s) t [m/s], shape t.shape + (3,)."""
+        t = np.asarray(t, dtype=np.float64)
+        if self.track is None:
+            v = np.asarray(self.shapes[0].velocity, dtype=np.float64)
+            return np.broadcast_to(v, t.shape + (3,)).copy()
+        v = self.track.velocity_at(t)
+        return np.concatenate([v, np.zeros(t.shape + (1,))], axis=-1)
+
+    def heading(self, t: float | NDArray) -> NDArray[np.float64]:
+        """Heading of the object's +x axis, counter-clockwise from +x, at time(s) t [rad]."""
+        t = np.asarray(t, dtype=np.float64)
+        if self.track is None:
+            rot = self.shapes[0].rotation
+            return np.full(t.shape, float(np.arctan2(rot[1, 0], rot[0, 0])))
+        return self.track.heading_at(t)
+
+    def turn_rate(self, t: float | NDArray) -> NDArray[np.float64]:
+        """Yaw rate at time(s) t [rad/s] (0 but on a route's turns)."""
+        t = np.asarray(t, dtype=np.float64)
+        return np.zeros(t.shape) if self.track is None else self.track.turn_rate_at(t)
 
     def origin(self, t: float | NDArray) -> NDArray[np.float64]:
         """The object's origin (its ``position_m``, on the ship track) at time(s) t [m]."""
         o = self.shapes[0]
-        return np.asarray(o.position) + np.multiply.outer(np.asarray(t, float), o.velocity)
+        t = np.asarray(t, dtype=np.float64)
+        if self.track is None:
+            return np.asarray(o.position) + np.multiply.outer(t, o.velocity)
+        p = self.track.position(t)
+        return np.concatenate([p, np.full(t.shape + (1,), float(o.position[2]))], axis=-1)
+
+    def pose(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """(R, o): the rotation (3, 3) taking the shapes' time-0 orientation to the one at
+        time ``t`` [s] (a yaw by h(t) - h(0)) and the origin (3,) at ``t`` [m]."""
+        dh = float(self.heading(t) - self.heading(0.0))
+        c, s = np.cos(dh), np.sin(dh)
+        return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]]), self.origin(t)
 
     def mesh(self, t: float) -> TraceMesh:
         """The object's meshes at time ``t`` in the world frame [m]."""
-        return TraceMesh.merge([TraceMesh.single(o.world_vertices(t), o.faces, e)
+        if self.track is None:
+            return TraceMesh.merge([TraceMesh.single(o.world_vertices(t), o.faces, e)
+                                    for o, e in zip(self.shapes, self.eps_r, strict=True)])
+        r, c = self.pose(t)
+        o0 = self.origin(0.0)
+        return TraceMesh.merge([TraceMesh.single((o.world_vertices(0.0) - o0) @ r.T + c,
+                                                 o.faces, e)
                                 for o, e in zip(self.shapes, self.eps_r, strict=True)])
+
+    def carry(self, positions: NDArray, time: float, t: float
+              ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Points (K, 3) [m] fixed on the hull at ``time`` [s], carried to time ``t`` [s]:
+        their positions [m] and velocities [m/s] (K, 3), v = V(t) + omega z x (p - o)
+        on a turn of rate omega."""
+        p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
+        if self.track is None:
+            v = np.asarray(self.shapes[0].velocity, dtype=np.float64)
+            return p + v * (t - time), np.broadcast_to(v, p.shape)
+        r0, o0 = self.pose(time)
+        r1, o1 = self.pose(t)
+        q = o1 + (p - o0) @ (r1 @ r0.T).T
+        w = float(self.turn_rate(t))
+        d = q - o1
+        v = self.velocity_at(t) + w * np.stack([-d[:, 1], d[:, 0], np.zeros(len(d))], -1)
+        return q, v
+
+
+def _yaw(u: NDArray, angle: NDArray) -> NDArray[np.float64]:
+    """Vectors u (..., 3) turned about +z by ``angle`` (...) [rad]."""
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack([c * u[..., 0] - s * u[..., 1], s * u[..., 0] + c * u[..., 1],
+                     u[..., 2]], axis=-1)
 
 
 def _check_window(hull: Hull, radar, pulses) -> None:
@@ -180,6 +270,10 @@ class HullOptions:
     waterplane : (float, float) or None
         (length, beam) [m]: the hull heaves, pitches and rolls with the sea under this
         waterplane (:attr:`Hull.waterplane`); None: it does not.
+    track : seaecho.wake.Ship or None
+        The ship on waypoints that carries the hull (:attr:`Hull.track`).
+    motion : seaecho.targets.motion.BoxHullMotion or None
+        Dynamic response to the waves (:attr:`Hull.motion`).
     """
 
     name: str
@@ -190,6 +284,8 @@ class HullOptions:
     refresh_deg: float
     refresh_s: float
     waterplane: tuple | None = None
+    track: object = None
+    motion: object = None
 
 
 @dataclass(frozen=True)
@@ -242,7 +338,7 @@ class HullEchoes:
     def __init__(self, hulls: list[Hull], others: list, radar, sea_eps_r: complex,
                  sigma_h: float, surface: Callable | None = None,
                  variant: str | None = None, disk_cache: ArrayCache | None = None,
-                 earth=None) -> None:
+                 earth=None, waves=None) -> None:
         #: the sphere hiding the hulls' parts below the horizon (None: flat Earth)
         self.earth = earth
         self.hulls = hulls
@@ -256,11 +352,21 @@ class HullEchoes:
         self._cache: OrderedDict[tuple[int, int], Signature] = OrderedDict()
         self.disk_cache = (ArrayCache(namespace=SIGNATURE_NAMESPACE) if disk_cache is None
                            else disk_cache)
+        #: the random sea as wave components (seaecho.targets.motion.WaveComponents) that
+        #: drive the hulls' dynamic motion, or None
+        self.waves = waves
+        #: (hull, refresh pulse) -> (hull, refresh pulse) whose trace it takes
+        #: (:meth:`share_plan`); absent: its own trace
+        self.donors: dict[tuple[int, int], tuple[int, int]] = {}
+        #: grid nodes (x, y) [m] of the held sea, whose patch a trace near it takes
+        self.tile: tuple | None = None
+        #: (centres, corners (8, 3) [m] of their box) of the traces used, by id
+        self._boxes: dict[int, tuple] = {}
 
     # ------------------------------------------------------------------ construction
     @classmethod
     def from_model(cls, model: HullModel | None, radar, surface: Callable | None = None,
-                   variant: str | None = None) -> HullEchoes | None:
+                   variant: str | None = None, sea_surface=None) -> HullEchoes | None:
         """The hull echoes of a :class:`HullModel` (``seaecho.build.build_hulls``), or
         None when it has no scatterer.
 
@@ -274,6 +380,9 @@ class HullEchoes:
             The held sea surface at a time (:attr:`surface`).
         variant : str, optional
             Mitsuba variant.
+        sea_surface : seaecho.ocean.surface.SeaSurface, optional
+            The random sea whose wave components drive the hulls' dynamic motion
+            (:class:`seaecho.targets.motion.BoxHullMotion`).
         """
         if model is None or not any(spec is not None for spec, _ in model.objects):
             return None
@@ -292,17 +401,146 @@ class HullEchoes:
                                  max_bounces=spec.max_bounces, cell=spec.cell_m)
             hull = Hull(spec.name, shapes, eps, options, spec.sea_multipath,
                         spec.refresh_deg, spec.refresh_s, np.zeros(1, dtype=np.intp),
-                        spec.waterplane)
-            # Aspect of the transmitter and the receiver from the hull at every pulse
+                        spec.waterplane, spec.track, spec.motion)
+            # Aspect of the transmitter and the receiver from the hull at every pulse, in
+            # the hull's own (yawing) frame: a turn changes the aspect as a radar would
             c = hull.origin(t)
-            ut = (tx - c) / np.linalg.norm(tx - c, axis=-1, keepdims=True)
-            ur = (rx - c) / np.linalg.norm(rx - c, axis=-1, keepdims=True)
+            ut = _yaw((tx - c) / np.linalg.norm(tx - c, axis=-1, keepdims=True),
+                      -hull.heading(t))
+            ur = _yaw((rx - c) / np.linalg.norm(rx - c, axis=-1, keepdims=True),
+                      -hull.heading(t))
             sched = refresh_schedule(ut, ur, t, np.deg2rad(spec.refresh_deg), spec.refresh_s)
             hulls.append(dataclasses.replace(hull, schedule=sched))
             _check_window(hull, radar, (0, radar.n_pulses - 1))
         others = [o for _, shapes in model.objects for o in shapes]
-        return cls(hulls, others, radar, model.sea_eps_r, model.sigma_h, surface=surface,
-                   variant=variant, earth=model.earth)
+        waves = None
+        if sea_surface is not None and any(h.motion is not None for h in hulls):
+            from ..targets.motion import WaveComponents
+
+            waves = WaveComponents(*sea_surface.components())
+        out = cls(hulls, others, radar, model.sea_eps_r, model.sigma_h, surface=surface,
+                  variant=variant, earth=model.earth, waves=waves)
+        if surface is not None:
+            out.tile = ((np.asarray(sea_surface.x), np.asarray(sea_surface.y))
+                        if sea_surface is not None else None)
+        if surface is None or out.tile is not None:
+            out.donors = out.share_plan()
+        return out
+
+    # ------------------------------------------------------------------ sharing
+    @staticmethod
+    def _shape_key(hull: Hull) -> str | None:
+        """A digest of what a trace depends on besides the geometry (the mesh in its own
+        frame, materials, options, multipath, refresh step), or None when the hull cannot
+        share (several shapes, or an orientation other than a yaw)."""
+        if len(hull.shapes) != 1:
+            return None
+        o = hull.shapes[0]
+        rot = np.asarray(o.rotation, dtype=np.float64)
+        if not np.allclose(rot[2], [0.0, 0.0, 1.0], atol=1e-12):
+            return None
+        d = hashlib.sha256()
+        for a in (np.asarray(o.vertices, dtype=np.float64), np.asarray(o.faces)):
+            d.update(np.ascontiguousarray(a).tobytes())
+        d.update(repr((hull.eps_r, hull.options, hull.multipath, hull.refresh_deg,
+                       hull.refresh_s, float(o.position[2]))).encode())
+        return d.hexdigest()
+
+    def _free(self, index: int, pulse: int) -> bool:
+        """Whether the trace of hull ``index`` at ``pulse`` would see neither the held sea
+        (no sea patch) nor another object near its legs to T and R or their sea images."""
+        h = self.hulls[index]
+        t = float(self.radar.emission_time(pulse))
+        v = h.mesh(t).vertices
+        lo, hi = v.min(axis=0), v.max(axis=0)
+        c, r = 0.5 * (lo + hi), 0.5 * float(np.linalg.norm(hi - lo))
+        if self.tile is not None:  # as _patch: a patch where nodes fall near the hull
+            x, y = self.tile
+            if (np.count_nonzero(np.abs(x - c[0]) <= _PATCH_MARGIN * r) >= 2
+                    and np.count_nonzero(np.abs(y - c[1]) <= _PATCH_MARGIN * r) >= 2):
+                return False
+        geo = self.radar.geometry(pulse)
+        ends = [geo.tx.position, geo.rx.position]
+        ends += [e * np.array([1.0, 1.0, -1.0]) for e in ends]
+        own = {id(o) for o in h.shapes}
+        carried = {id(o): g for g in self.hulls if g is not h for o in g.shapes}
+        for o in self.others:
+            if id(o) in own:
+                continue
+            w = (carried[id(o)].mesh(t).vertices if id(o) in carried
+                 else o.world_vertices(t))
+            lo2, hi2 = w.min(axis=0), w.max(axis=0)
+            c2, r2 = 0.5 * (lo2 + hi2), 0.5 * float(np.linalg.norm(hi2 - lo2))
+            for e in ends:  # distance from c2 to the segment c-e
+                d = e - c
+                u = float(np.clip((c2 - c) @ d / (d @ d), 0.0, 1.0))
+                if np.linalg.norm(c + u * d - c2) <= r + r2:
+                    return False
+        return True
+
+    def _aspect(self, index: int, pulse: int) -> tuple[NDArray, NDArray]:
+        """Unit directions to T and R in hull ``index``'s frame at ``pulse`` [-]."""
+        h = self.hulls[index]
+        t = float(self.radar.emission_time(pulse))
+        geo = self.radar.geometry(pulse)
+        c = h.origin(t)
+        out = []
+        for e in (geo.tx.position, geo.rx.position):
+            u = (e - c) / np.linalg.norm(e - c)
+            out.append(_yaw(u, -h.heading(t)))
+        return out[0], out[1]
+
+    def share_plan(self) -> dict[tuple[int, int], tuple[int, int]]:
+        """Which (hull, refresh pulse) takes which earlier one's trace (module docstring).
+
+        Hulls in index order, each one's refresh pulses in order: a free refresh
+        (:meth:`_free`) of a shareable hull takes the first free trace of the same
+        :meth:`_shape_key` whose directions to T and R, each in its hull's frame, are
+        within the refresh step of its own; else it is traced and may serve later ones.
+        """
+        keys = [self._shape_key(h) for h in self.hulls]
+        counts: dict[str, int] = {}
+        for k in keys:
+            if k is not None:
+                counts[k] = counts.get(k, 0) + 1
+        donors: dict[str, list] = {}
+        plan: dict[tuple[int, int], tuple[int, int]] = {}
+        for i, h in enumerate(self.hulls):
+            k = keys[i]
+            if k is None or counts[k] < 2:
+                continue
+            cos_step = np.cos(np.deg2rad(h.refresh_deg))
+            for ref in h.schedule.tolist():
+                if not self._free(i, ref):
+                    continue
+                ut, ur = self._aspect(i, ref)
+                pool = donors.setdefault(k, [])
+                for j, rj, vt, vr in pool:
+                    if j != i and ut @ vt >= cos_step and ur @ vr >= cos_step:
+                        plan[(i, ref)] = (j, rj)
+                        break
+                else:
+                    pool.append((i, ref, ut, ur))
+        return plan
+
+    def _moved(self, sig: Signature, donor: tuple[int, int], index: int,
+               pulse: int) -> Signature:
+        """The donor's signature turned and moved onto hull ``index`` at ``pulse``."""
+        j, rj = donor
+        tj = float(self.radar.emission_time(rj))
+        ti = float(self.radar.emission_time(pulse))
+        hj, hi = self.hulls[j], self.hulls[index]
+        dh = float(hi.heading(ti) - hj.heading(tj))
+        c, s = np.cos(dh), np.sin(dh)
+        rot = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+        oj, oi = hj.origin(tj), hi.origin(ti)
+        cj = sig.centres
+        centres = ScatteringCentres(oi + (cj.position - oj) @ rot.T, cj.s, cj.path, ti,
+                                    hi.velocity_at(ti))
+        geo = self.radar.geometry(pulse)
+        return dataclasses.replace(sig, centres=centres,
+                                   reference=oi + rot @ (sig.reference - oj),
+                                   tx=geo.tx.position, rx=geo.rx.position)
 
     # ---------------------------------------------------------------------- traces
     def refresh_pulse(self, hull: int, pulse: int) -> int:
@@ -311,13 +549,18 @@ class HullEchoes:
         return int(sched[np.searchsorted(sched, pulse, side="right") - 1])
 
     def signature(self, hull: int, pulse: int) -> Signature:
-        """The trace serving ``pulse`` (computed at its refresh pulse, cached)."""
+        """The trace serving ``pulse`` (computed at its refresh pulse, or another
+        identical hull's moved onto this one (:meth:`share_plan`), cached)."""
         ref = self.refresh_pulse(hull, pulse)
         key = (hull, ref)
         if key in self._cache:
             self._cache.move_to_end(key)
             return self._cache[key]
-        sig = self._trace(hull, ref)
+        donor = self.donors.get(key)
+        if donor is None:
+            sig = self._trace(hull, ref)
+        else:
+            sig = self._moved(self.signature(*donor), donor, hull, ref)
         self._cache[key] = sig
         if len(self._cache) > SIGNATURE_CACHE:
             self._cache.popitem(last=False)
@@ -329,8 +572,12 @@ class HullEchoes:
         geo = self.radar.geometry(pulse)
         mesh = h.mesh(t)
         own = {id(o) for o in h.shapes}
+        # the other hulls where their tracks put them, the other objects on their own
+        carried = {id(o): g for g in self.hulls if g is not h for o in g.shapes}
         occluders = [TraceMesh.single(o.world_vertices(t), o.faces)
-                     for o in self.others if id(o) not in own]
+                     for o in self.others if id(o) not in own and id(o) not in carried]
+        occluders += [TraceMesh.single(g.mesh(t).vertices, g.mesh(t).faces)
+                      for g in {id(g): g for g in carried.values()}.values()]
         patch = None
         if self.surface is not None:
             patch = self._patch(mesh, self.surface(t))
@@ -338,7 +585,7 @@ class HullEchoes:
                        sigma_h=self.sigma_h, roughness=self.roughness, patch=patch)
         args = (mesh, geo.tx.position, geo.rx.position, self.radar.carrier)
         kw = {"options": h.options, "sea": sea, "occluders": occluders,
-              "reference": h.origin(t), "time": t, "velocity": h.velocity,
+              "reference": h.origin(t), "time": t, "velocity": h.velocity_at(t),
               "variant": self.variant}
         if not self.disk_cache.enabled:
             return trace_signature(*args, **kw)
@@ -367,7 +614,7 @@ class HullEchoes:
         return x[sl[1]], y[sl[0]], np.asarray(state.elevation)[sl]
 
     # ---------------------------------------------------------------------- pulses
-    def echoes(self, geometry, pulse: int) -> list:
+    def echoes(self, geometry, pulse: int, seen: Callable | None = None) -> list:
         """Echoes of every hull for one pulse (a ``ScattererEcho`` each).
 
         Parameters
@@ -376,14 +623,35 @@ class HullEchoes:
             ``radar.geometry(pulse)``.
         pulse : int
             Pulse index.
+        seen : callable, optional
+            ``corners (8, 3) [m] -> bool``: False skips a hull whose scattering centres
+            at this pulse lie in the convex hull of these corners (the beams do not
+            reach it; ``seaecho.simulation``). The corners are those of the box of the
+            trace's centres, carried with the hull and its motion in the waves (rigid
+            motions keep a point of the box inside the carried corners' hull).
         """
         out = []
         for i in range(len(self.hulls)):
             c = self.signature(i, pulse).centres
             if len(c) == 0:
                 continue
-            vel = np.broadcast_to(c.velocity, c.position.shape)
-            pos = c.positions_at(geometry.time)
+            if seen is not None:
+                kept = self._boxes.get(id(c))
+                if kept is not None and kept[0] is c:
+                    box = kept[1]
+                else:  # the corners of the trace's centres, kept with them
+                    lo, hi = c.position.min(axis=0), c.position.max(axis=0)
+                    box = np.array([[x, y, z] for x in (lo[0], hi[0])
+                                    for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+                    if len(self._boxes) > 4 * SIGNATURE_CACHE:
+                        self._boxes.clear()
+                    self._boxes[id(c)] = (c, box)
+                box = self.hulls[i].carry(box, c.time, geometry.time)[0]
+                if self.hulls[i].waterplane is not None:
+                    box = self.in_waves(i, box, geometry.time)
+                if not seen(box):
+                    continue
+            pos, vel = self.hulls[i].carry(c.position, c.time, geometry.time)
             if self.hulls[i].waterplane is not None:
                 pos = self.in_waves(i, pos, geometry.time)
             s = c.s
@@ -399,16 +667,22 @@ class HullEchoes:
 
     def attitude(self, hull: int, t: float) -> tuple[float, float, float]:
         """(heave [m], pitch [rad], roll [rad]) of hull number ``hull`` at time ``t``
-        [s] on the held sea (:func:`seaecho.targets.motion.waterplane_motion`); zeros
-        without a sea or a waterplane."""
+        [s]: its dynamic response to the random sea
+        (:class:`seaecho.targets.motion.BoxHullMotion`) or the plane fitted to the held sea
+        (:func:`seaecho.targets.motion.waterplane_motion`); zeros without a sea or a
+        waterplane."""
         from ..targets.motion import waterplane_motion
 
         h = self.hulls[hull]
+        if h.motion is not None:  # the dynamic response to the random sea (eq S3)
+            if self.waves is None:
+                return 0.0, 0.0, 0.0
+            return h.motion.attitude(self.waves, h.origin(t)[:2], float(h.heading(t)),
+                                     h.velocity_at(t)[:2], t)
         if h.waterplane is None or self.surface is None:
             return 0.0, 0.0, 0.0
         st = self.surface(t)
-        rot = h.shapes[0].rotation
-        heading = float(np.arctan2(rot[1, 0], rot[0, 0]))
+        heading = float(h.heading(t))
         return waterplane_motion(st.x, st.y, st.elevation, h.origin(t)[:2], heading,
                                  *h.waterplane)
 
@@ -424,8 +698,7 @@ class HullEchoes:
         heave, pitch, roll = self.attitude(hull, t)
         if heave == 0.0 and pitch == 0.0 and roll == 0.0:
             return positions
-        rot = self.hulls[hull].shapes[0].rotation
-        r = hull_rotation(float(np.arctan2(rot[1, 0], rot[0, 0])), pitch, roll)
+        r = hull_rotation(float(self.hulls[hull].heading(t)), pitch, roll)
         o = self.hulls[hull].origin(t)
         return o + (np.asarray(positions) - o) @ r.T + np.array([0.0, 0.0, heave])
 
@@ -449,20 +722,25 @@ class HullEchoes:
         rcs_free = np.zeros((nh, n, 4))
         origin = np.zeros((nh, n, 3))
         served = np.zeros((nh, n), dtype=np.int64)
+        served_by = np.zeros((nh, n), dtype=np.int64)
         pos, s, path, which = [], [], [], []
         for i, h in enumerate(self.hulls):
             origin[i] = h.origin(t)
             for p in range(n):  # per pulse: one coherent sum over the centres (eq C3)
                 c = self.signature(i, p).centres
                 served[i, p] = self.refresh_pulse(i, p)
-                x = c.positions_at(t[p])
+                d = self.donors.get((i, int(served[i, p])))
+                if d is not None:
+                    served[i, p] = d[1]
+                served_by[i, p] = i if d is None else d[0]
+                x = h.carry(c.position, c.time, t[p])[0]
                 tot = coherent_total(x, c.s, tx[p], rx[p], k, origin[i, p])
                 direct = c.path == 0
                 free = coherent_total(x[direct], c.s[direct], tx[p], rx[p], k, origin[i, p])
                 rcs[i, p] = np.abs(tot.reshape(4)) ** 2
                 rcs_free[i, p] = np.abs(free.reshape(4)) ** 2
             c = self.signature(i, pulse).centres
-            pos.append(c.positions_at(float(t[pulse])))
+            pos.append(h.carry(c.position, c.time, float(t[pulse]))[0])
             s.append(c.s.reshape(-1, 4))
             path.append(c.path)
             which.append(np.full(len(c), i, dtype=np.int16))
@@ -478,6 +756,10 @@ class HullEchoes:
             "hull_trace_pulse": (("hull", "pulse"), served, {
                 "long_name": "pulse whose ray trace (signature) serves this pulse; "
                 "centres move rigidly with the hull in between"}),
+            "hull_trace_hull": (("hull", "pulse"), served_by, {
+                "long_name": "index of the hull whose trace serves this pulse (another "
+                "than its own: an identical hull's trace at the same aspect, turned and "
+                "moved onto it; docs/ship.md)"}),
             "hull_centre_position": (("centre", "xyz"), np.concatenate(pos), {
                 "units": "m", "long_name": f"scattering centres at pulse {pulse} "
                 "(delay-equivalent positions)"}),

@@ -326,6 +326,15 @@ class Ship:
             return _wrap(self.route.point(self.speed * t)[1])
         return np.full(t.shape, float(_wrap(self.heading)))
 
+    def turn_rate_at(self, t: ArrayLike) -> NDArray[np.float64]:
+        """Rate of turn dh/dt at time(s) ``t`` [s] [rad/s]: V kappa on a route's turn
+        (+ counter-clockwise, eq W18), 0 on a leg and on a straight course."""
+        t = np.asarray(t, dtype=np.float64)
+        if self.route is None:
+            return np.zeros(t.shape)
+        s = self.speed * t
+        return self.speed * self.route.kappa[self.route._segment(s)]
+
     def velocity_at(self, t: ArrayLike) -> NDArray[np.float64]:
         """Velocity over ground at time(s) ``t`` [m/s], shape t.shape + (2,)."""
         h = self.heading_at(t)
