@@ -141,6 +141,7 @@ WRAPPER = ("import json, resource, subprocess, sys\n"
            ".ru_maxrss, r.stdout, r.stderr]))\n")
 
 
+@pytest.mark.slow  # a run in its own process, 3-4 s
 def test_measured_peak_of_a_small_run_is_below_the_estimate(tmp_path):
     """The estimate is an upper bound: `seaecho run` of the calibration scene (4 pulses,
     figures drawn) in its own process peaks below what `check` announces."""

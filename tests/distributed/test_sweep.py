@@ -69,6 +69,7 @@ def test_integer_range_runs_its_cases_and_a_float_one_names_the_syntax(tmp_path,
     assert "Traceback" not in err and not out.exists()
 
 
+@pytest.mark.slow  # 5-6 s; the sweep's other tests stay in the default set
 def test_sweep_of_2x2_cases_equals_the_4_runs(tmp_path, client):
     scene = tiny_scene(n_pulses=3)
     grid = {"run.seed": [3, 4], "sea.wind_speed_m_s": [3.0, 3.5]}

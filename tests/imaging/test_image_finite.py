@@ -145,7 +145,7 @@ def test_an_image_with_inf_stops_the_run_and_leaves_no_file(tmp_path, capsys, mo
     assert sorted(p.name for p in tmp_path.iterdir()) == ["raw.nc", "s.toml"]
 
 
-@pytest.mark.parametrize("power_w", [5e-324, 1e-200])
+@pytest.mark.parametrize("power_w", [5e-324, pytest.param(1e-200, marks=pytest.mark.slow)])
 def test_image_does_not_depend_on_the_transmit_power(tmp_path, power_w):
     # s = I / K (eqs B2, K2): I and K are both proportional to sqrt(P_t), so the
     # calibrated image of a point target is its scattering amplitude whatever P_t. Found
