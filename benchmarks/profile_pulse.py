@@ -144,7 +144,7 @@ def main() -> None:
                          "accumulate; the simulation's default is double)")
     ap.add_argument("--freeze", choices=["on", "off"], default=None,
                     help="replay the fused kernel with drjit.freeze (default: "
-                         "seaecho.radar.resident.FREEZE)")
+                         "seaecho.radar.resident.FREEZE, else on for CUDA only)")
     ap.add_argument("--motion", choices=["auto", "held", "evolving"], default=None,
                     help="[scattering] sea_motion (default: the scene's; 'auto' evolves "
                     "a sea renewed within the run, e.g. --update 1)")

@@ -73,8 +73,11 @@ from .system import DeviceEcho, PulseGeometry, RadarSystem, ScattererEcho
 __all__ = ["FREEZE", "ResidentSea", "resident_sea"]
 
 #: Default of ``ResidentSea(freeze=...)``: the environment variable ``SEAECHO_FREEZE``
-#: ("1" on, "0" off), else off (docs/performance.md gives the measurements).
-FREEZE = os.environ.get("SEAECHO_FREEZE", "0") == "1"
+#: ("1" on, "0" off), else None: on for the CUDA back end (an H100's held pulse 7.0 ms
+#: frozen against 14-15 ms traced), off on the CPU (1-3 % of a pulse for tens of MiB;
+#: docs/performance.md gives the measurements).
+FREEZE: bool | None = ({"1": True, "0": False}.get(os.environ["SEAECHO_FREEZE"])
+                       if "SEAECHO_FREEZE" in os.environ else None)
 #: Recordings of the frozen kernel after which Dr.Jit warns (a scene whose pulses keep
 #: changing its structure would re-record at every pulse).
 FREEZE_WARN_AFTER = 10
@@ -133,7 +136,7 @@ class ResidentSea:
     freeze : bool, optional
         Record the pulse's kernel once with ``drjit.freeze`` and replay it at the next
         pulses instead of tracing it in Python at each (the same bytes; tests). None
-        takes :data:`FREEZE`.
+        takes :data:`FREEZE`, and where that is None too, freezes on ``drjit.cuda`` only.
     precision : {"single", "double"}, optional
         Working precision of the scattering formulas (eqs P1-P7) in the kernel; None
         takes :data:`seaecho.scattering.facet.PRECISION`. The geometry, the delays, the
@@ -169,7 +172,9 @@ class ResidentSea:
         self._surface: tuple[weakref.ref, dict] | None = None
         self._motion_cache: tuple[NDArray, dict] | None = None
         #: replay the recorded pulse kernel (``drjit.freeze``) instead of tracing it
-        self.freeze = FREEZE if freeze is None else bool(freeze)
+        if freeze is None:
+            freeze = self.xp.name == "cuda" if FREEZE is None else FREEZE
+        self.freeze = bool(freeze)
         self._frozen = None
         self._bound = None
         #: why freezing was given up (a recording Dr.Jit refused), or None
