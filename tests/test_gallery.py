@@ -27,7 +27,7 @@ EXAMPLES = ROOT / "examples"
 FAST = ["fig3_bistatic_sigma", "fig4_bistatic_map", "fig5_pm_spectra",
         "bistatic_angle_sweep"]
 SLOW = ["fig6_simulation1", "fig7_simulation2", "fig8_simulation3", "fig9_simulation4",
-        "hull_echo", "bistatic_sar_ship", "multistatic_ship"]
+        "hull_echo", "bistatic_sar_ship", "multistatic_ship", "scanning_ppi"]
 #: The gallery's scripts, as examples/README.md lists them
 GALLERY = FAST + SLOW
 #: What a gallery script may import from seaecho besides the package itself
