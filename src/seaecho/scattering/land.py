@@ -68,7 +68,10 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-#: gamma [dB] at 10 GHz by terrain (Barton 1985, table 1; Barton 2013, chapter 9).
+#: gamma [dB] at 10 GHz by terrain (Barton 1985, table 1; Barton 2013, chapter 9; the
+#: table was not read here: farmland, wooded hills and flatland are checked against
+#: Nathanson et al. 1999 as restated by MATLAB's ``surfacegamma``, the other four are
+#: not, docs/land.md).
 GAMMA_DB: dict[str, float] = {
     "mountains": -5.0,
     "urban": -5.0,
