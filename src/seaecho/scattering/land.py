@@ -32,9 +32,11 @@ scale with frequency as
 
 Amplitude statistics. Low-angle land clutter is far from Rayleigh: Billingsley (2002,
 chapter 2) fits the spatial distribution of the clutter of cells over a patch of terrain
-with Weibull distributions whose shape parameter a_w goes from 1 (Rayleigh) to 4 and
-more, growing with the terrain's relief and falling with the grazing angle. In
-Billingsley's parametrisation the clutter power w = sigma / <sigma> has
+with Weibull distributions of shape parameter a_w (1: Rayleigh); his interim model
+(chapter 4, p. 295, as restated by J. Champagne's open radar-clutter-simulator, 2019)
+gives a_w = 2.0 to 5.4 by terrain class and depression angle, larger at the smaller
+depression angles (general rural terrain: 2.6 above 4 deg, 3.8 between 0 and 0.25
+deg). In Billingsley's parametrisation the clutter power w = sigma / <sigma> has
 
 .. math::
 
