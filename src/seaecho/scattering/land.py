@@ -12,7 +12,8 @@ frequency (Barton 1985; Nathanson et al. 1999, section 7.3; Long 2001, chapter 2
 holds over the "plateau" of grazing angles, between the near-grazing interference
 region and the near-vertical specular one. Its bistatic form, used when the
 transmitter and the receiver are apart, takes the geometric mean of the two grazing
-angles (Willis 2005, section 9.2, the bistatic extension of the constant-gamma model):
+angles (the bistatic extension of the constant-gamma model; Willis 2005, section 9.2,
+a section number and attribution not checked against the book here):
 
 .. math::
 
@@ -60,7 +61,7 @@ References
    chapter 2.
 .. [5] J. B. Billingsley, *Low-Angle Radar Land Clutter: Measurements and Empirical
    Models*, William Andrew / SciTech (2002), chapters 2 (Weibull statistics, a_w) and 4.
-.. [6] N. J. Willis, *Bistatic Radar*, SciTech (2005), section 9.2.
+.. [6] N. J. Willis, *Bistatic Radar*, SciTech (2005), section 9.2 (not checked here).
 """
 
 from __future__ import annotations
