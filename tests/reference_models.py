@@ -24,7 +24,8 @@ itself: they are what its physics is compared against.
   1.09, 1.27, 9.70 above 3 GHz and 1.73, 3.76, 2.46, 22.2 below). They differ twice:
   NRL takes ``|cos phi|`` in the wind factor (downwind as upwind), Pinel ``cos phi``
   (used here); and the interference factor's argument is divided by ``lambda + 0.015``
-  in NRL's code (used here) but by ``lambda`` in Pinel's, which raises GIT at 9.3 GHz
+  in NRL's code (used here) but by ``lambda`` in Pinel's (and in a third, student
+  implementation found with it), which raises GIT at 9.3 GHz
   by up to 6.6 dB below 1 deg grazing in light winds (0.3 deg: +5.9 dB at U = 7.7 m/s,
   +2.5 dB at 10 m/s; < 0.5 dB above 3 deg). Horst et al.'s own text was not read.
 * :func:`nrl_sigma0` - the NRL model of Gregers-Hansen & Mital (2012), a five-parameter
