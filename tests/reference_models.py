@@ -15,7 +15,19 @@ itself: they are what its physics is compared against.
   crosswind and downwind looks (theta in degrees), with their coefficients.
 * :func:`git_sigma0` - the Georgia Tech low-grazing-angle model (Horst, Dyer & Tuley
   1978), in the form coded by Gregers-Hansen & Mital (NRL) for their 2012 comparison
-  (NRL/MR/5310--12-9346), frequencies up to 12 GHz.
+  (NRL/MR/5310--12-9346), frequencies up to 12 GHz. Checked coefficient by coefficient
+  against that code as published with the report (``GTI_SigmaSea.m``, whose header says it
+  implements Horst, Dyer & Tuley's model) and against an independent implementation
+  (N. Pinel 2015, citing Horst et al. 1978 and DSTO restatements): the same constants
+  (4.52e-3 U^2.5; 14.4 lambda + 5.5; 0.2, 2.8, 0.015 and -0.4 in the wind factor; 1.1,
+  1.94 and 15.4 in the wind-speed factor; 3.9e-6 and psi^0.4; the VV corrections 1.05,
+  1.09, 1.27, 9.70 above 3 GHz and 1.73, 3.76, 2.46, 22.2 below). They differ twice:
+  NRL takes ``|cos phi|`` in the wind factor (downwind as upwind), Pinel ``cos phi``
+  (used here); and the interference factor's argument is divided by ``lambda + 0.015``
+  in NRL's code (used here) but by ``lambda`` in Pinel's (and in a third, student
+  implementation found with it), which raises GIT at 9.3 GHz
+  by up to 6.6 dB below 1 deg grazing in light winds (0.3 deg: +5.9 dB at U = 7.7 m/s,
+  +2.5 dB at 10 m/s; < 0.5 dB above 3 deg). Horst et al.'s own text was not read.
 * :func:`nrl_sigma0` - the NRL model of Gregers-Hansen & Mital (2012), a five-parameter
   fit to Nathanson's tables (0.1-60 deg grazing, 0.5-35 GHz, sea states 0-6).
 * :data:`NATHANSON_XBAND` - Nathanson's tables (Radar Design Principles, 2nd ed., 1991)

@@ -39,10 +39,14 @@ def test_sigma0_is_gamma_sin_psi_at_a_known_grazing(psi_deg):
 
 
 def test_gamma_table_and_its_frequency_law():
-    # Barton (1985) at 10 GHz; gamma grows as f^(1/2): +5 log10(f / 10 GHz) dB
+    # at 10 GHz: farmland -15, wooded hills -10, flatland -20 dB (Nathanson, Reilly &
+    # Cohen 1999, as restated by MATLAB's surfacegamma; Barton 1985 not read), mountains
+    # -5 dB (Barton 1985, not checked); gamma grows as f^(1/2): +5 log10(f / 10 GHz) dB
+    # (the same surfacegamma, citing Barton 1985)
     assert terrain_gamma_db("farmland", 10e9) == GAMMA_DB["farmland"] == -15.0
     assert terrain_gamma_db("mountains", 10e9) == -5.0
     assert terrain_gamma_db("flatland", 10e9) == -20.0
+    assert terrain_gamma_db("wooded-hills", 10e9) == -10.0
     assert terrain_gamma_db("wooded-hills", 40e9) == pytest.approx(-10.0 + 3.0103, abs=1e-4)
     assert terrain_gamma_db("urban", 3e9) == pytest.approx(-5.0 - 2.6144, abs=1e-4)
     with pytest.raises(ValueError, match="terrain"):

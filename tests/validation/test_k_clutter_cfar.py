@@ -10,11 +10,13 @@ References:
 
 * the empirical K-shape law (eq ST6, ``processing.statistics.k_shape_empirical``) of
   Watts & Wicks (1990) as restated by Ward, Tough & Watts (2013), log10 nu = 2/3 log10
-  psi_deg + 5/8 log10 A_c - k_pol (k_pol = 1.39 VV, 2.09 HH; no swell), quoted from
-  memory and not checked against the book here. Tolerance: half a decade (a factor
-  3.16), the scatter of measured nu about such laws (nu varies by a factor of about 2
-  with the look direction to the wind alone: Crisp, Rosenberg & Stacy 2009; from
-  memory).
+  psi_deg + 5/8 log10 A_c - k_pol (k_pol = 1.39 VV, 2.09 HH; no swell). The book was
+  not read here; the exponents and k_pol are as restated by M. Farshchian's NRL
+  sea-clutter generator (2010, ``shapefactor`` in ``gammageneratortime.m``, which cites
+  Ward, Tough & Watts 2006, p. 237). Tolerance: half a decade (a factor 3.16), the
+  scatter of measured nu about such laws; nu also varies sinusoidally with the look
+  direction to the wind waves (Crisp, Rosenberg, Stacy & Dong 2009, abstract read; the
+  size of that variation, about a factor of 2, is not checked against their text).
 * CA-CFAR in K clutter (``detection.theory.pfa_ca_k``, eqs D1 and D8): the texture
   constant over the window keeps the design P_FA; independent textures (Armstrong &
   Griffiths 1991's worst case) raise it.

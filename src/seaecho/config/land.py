@@ -54,7 +54,8 @@ class LandConfig(Section):
     weibull_shape: float = Field(
         2.0, ge=1.0, le=10.0,
         description="Billingsley's Weibull shape a_w of the clutter amplitudes (1: "
-        "Rayleigh; low-angle land clutter 1-4 and more) [-]")
+        "Rayleigh; Billingsley's interim model: 2.0-5.4 by terrain and depression "
+        "angle) [-]")
     echo: bool = Field(True, description="the land echoes (false: it only occludes)")
 
     @model_validator(mode="after")

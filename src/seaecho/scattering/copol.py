@@ -14,7 +14,10 @@ model (two-scale Bragg: a function of the incidence, the permittivity and the ti
 one pair of measured co-polarised values gives both parts: the decomposition of
 Kudryavtsev, Chapron, Myasoedov, Collard & Johannessen (2013) into a polarised and a
 non-polarised part (used again by Kudryavtsev et al. 2019); CP2-CP3 are the algebra of
-CP1 (the article itself was not accessible here to quote its equation numbers):
+CP1 (only the article's abstract and bibliographic record were read here, Ifremer
+Archimer 00149/26042: they name its three quantities, the polarisation difference, the
+polarisation ratio and the non-polarised component; its equation numbers are not
+quoted):
 
 .. math::
     PD = \\sigma_{vv} - \\sigma_{hh} = \\sigma^{R}_{vv}\\,(1 - p)                  (CP2)
@@ -36,7 +39,7 @@ References
 ----------
 .. [1] Kudryavtsev, V. N., Chapron, B., Myasoedov, A. G., Collard, F. and Johannessen,
    J. A. (2013). On dual co-polarized SAR measurements of the ocean surface. *IEEE
-   Geosci. Remote Sens. Lett.* 10(4), 761-765.
+   Geosci. Remote Sens. Lett.* 10(4), 761-765, doi:10.1109/LGRS.2012.2222341.
 .. [2] Kudryavtsev, V., Hauser, D., Caudal, G. and Chapron, B. (2003). A semiempirical
    model of the normalized radar cross-section of the sea surface, 1. Background model.
    *J. Geophys. Res.* 108(C3), 8054 (eq 1: the split of eq CP1).

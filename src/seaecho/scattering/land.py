@@ -12,7 +12,8 @@ frequency (Barton 1985; Nathanson et al. 1999, section 7.3; Long 2001, chapter 2
 holds over the "plateau" of grazing angles, between the near-grazing interference
 region and the near-vertical specular one. Its bistatic form, used when the
 transmitter and the receiver are apart, takes the geometric mean of the two grazing
-angles (Willis 2005, section 9.2, the bistatic extension of the constant-gamma model):
+angles (the bistatic extension of the constant-gamma model; Willis 2005, section 9.2,
+a section number and attribution not checked against the book here):
 
 .. math::
 
@@ -32,9 +33,11 @@ scale with frequency as
 
 Amplitude statistics. Low-angle land clutter is far from Rayleigh: Billingsley (2002,
 chapter 2) fits the spatial distribution of the clutter of cells over a patch of terrain
-with Weibull distributions whose shape parameter a_w goes from 1 (Rayleigh) to 4 and
-more, growing with the terrain's relief and falling with the grazing angle. In
-Billingsley's parametrisation the clutter power w = sigma / <sigma> has
+with Weibull distributions of shape parameter a_w (1: Rayleigh); his interim model
+(chapter 4, p. 295, as restated by J. Champagne's open radar-clutter-simulator, 2019)
+gives a_w = 2.0 to 5.4 by terrain class and depression angle, larger at the smaller
+depression angles (general rural terrain: 2.6 above 4 deg, 3.8 between 0 and 0.25
+deg). In Billingsley's parametrisation the clutter power w = sigma / <sigma> has
 
 .. math::
 
@@ -58,7 +61,7 @@ References
    chapter 2.
 .. [5] J. B. Billingsley, *Low-Angle Radar Land Clutter: Measurements and Empirical
    Models*, William Andrew / SciTech (2002), chapters 2 (Weibull statistics, a_w) and 4.
-.. [6] N. J. Willis, *Bistatic Radar*, SciTech (2005), section 9.2.
+.. [6] N. J. Willis, *Bistatic Radar*, SciTech (2005), section 9.2 (not checked here).
 """
 
 from __future__ import annotations
@@ -68,7 +71,10 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-#: gamma [dB] at 10 GHz by terrain (Barton 1985, table 1; Barton 2013, chapter 9).
+#: gamma [dB] at 10 GHz by terrain (Barton 1985, table 1; Barton 2013, chapter 9; the
+#: table was not read here: farmland, wooded hills and flatland are checked against
+#: Nathanson et al. 1999 as restated by MATLAB's ``surfacegamma``, the other four are
+#: not, docs/land.md).
 GAMMA_DB: dict[str, float] = {
     "mountains": -5.0,
     "urban": -5.0,
