@@ -15,7 +15,10 @@ water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py`
   al. (2005), for both spectra;
 * the non-polarised part that the published X-band models imply (eq CP3,
   ``seaecho.scattering.copol``, with seaecho's two-scale Bragg ratio HH/VV) against
-  KHCC03's ``q sigma_wb``: where the remaining VV/HH excess at 20-30 deg lies.
+  KHCC03's ``q sigma_wb``: where the remaining VV/HH excess at 20-30 deg lies;
+* that non-polarised part divided by KHCC03's breaking fraction ``q``: the breaking-zone
+  NRCS each model implies, against KHCC03's ``sigma_0wb`` (what a missing non-polarised
+  term would have to supply, and whether it scales with ``q``).
 
 About 5 s of CPU; ``--simulate`` adds the facet sums of one simulated surface (the
 simulation's own sigma0, ``examples/sigma0_facets_vs_grazing.py``) at sea state 3 for both
@@ -215,6 +218,61 @@ def np_markdown(rows: list[dict]) -> str:
     return "\n".join(lines)
 
 
+def implied_breaking_nrcs(rows: list[dict]) -> dict[str, dict[tuple[int, float], float]]:
+    """Breaking-zone NRCS [dB] each published model implies, ``NP / q`` (eqs CP1, CP3 with
+    KHCC03's fraction ``q`` of eq BR3), and KHCC03's own ``sigma_0wb`` (eq BR2), keyed by
+    (sea state, grazing [deg]); from :func:`np_rows`.
+
+    If a missing non-polarised term scaled with the breaking fraction (a property of the
+    breaking zones, ``sigma_wb(theta)``), the implied values would agree across sea
+    states at each angle; their rise with grazing is what such a term must supply."""
+    from seaecho.constants import C0
+    from seaecho.scattering.breaking import breaking_statistics
+
+    k_r = 2.0 * np.pi * X_GHZ * 1e9 / C0
+    q_db = {ss: float(db(breaking_statistics(SEA_STATE_WIND[ss], k_r).q)) for ss in SEA_STATES}
+    out: dict[str, dict[tuple[int, float], float]] = {}
+    for r in rows:
+        key = (r["sea_state"], r["grazing_deg"])
+        for name in ("KHCC03", "Nathanson", "GIT", "NRL"):
+            value = r.get(f"{name} NP")
+            if value is not None and np.isfinite(value):
+                out.setdefault(name, {})[key] = value - q_db[r["sea_state"]]
+    return out
+
+
+def implied_breaking_markdown(rows: list[dict]) -> str:
+    """Markdown: the implied breaking-zone NRCS per sea state and grazing angle, then per
+    model its spread over sea states at each angle and its rise from 5 to 30 deg."""
+    wb = implied_breaking_nrcs(rows)
+    q = {r["sea_state"]: r["KHCC03 NP"] - wb["KHCC03"][(r["sea_state"], r["grazing_deg"])]
+         for r in rows}
+    lines = ["Breaking-zone NRCS sigma_wb [dB] implied by each published model, NP / q "
+             "(q of eq BR3; KHCC03's sigma_0wb of eq BR2 beside it):", "",
+             "| SS (U10) | q [dB] | grazing | KHCC03 sigma_0wb | Nathanson | GIT | NRL |",
+             "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        key = (r["sea_state"], r["grazing_deg"])
+        lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | {q[r['sea_state']]:.1f} "
+                     f"| {r['grazing_deg']:.0f} | {wb['KHCC03'][key]:.1f} "
+                     f"| {_fmt(wb['Nathanson'].get(key))} | {_fmt(wb['GIT'][key])} "
+                     f"| {_fmt(wb['NRL'][key])} |")
+    lines += ["", "Per model: spread over sea states 2-5 at each grazing angle (max - min) "
+              "and rise from 5 to 30 deg grazing (85 to 60 deg incidence) per sea state [dB]:",
+              "", "| model | spread 5 / 10 / 20 / 30 deg | rise 5 -> 30 deg, SS2 / SS3 / SS4 "
+              "/ SS5 |", "|---|---|---|"]
+    for name in ("GIT", "NRL"):
+        spread = [np.ptp([wb[name][(ss, g)] for ss in SEA_STATES]) for g in GRAZING_DEG]
+        rise = [wb[name][(ss, 30.0)] - wb[name][(ss, 5.0)] for ss in SEA_STATES]
+        lines.append(f"| {name} | " + " / ".join(f"{x:.1f}" for x in spread) + " | "
+                     + " / ".join(f"{x:+.1f}" for x in rise) + " |")
+    spread = [np.ptp([wb["Nathanson"][(ss, g)] for ss in SEA_STATES]) for g in (10.0, 30.0)]
+    rise = [wb["Nathanson"][(ss, 30.0)] - wb["Nathanson"][(ss, 10.0)] for ss in SEA_STATES]
+    lines.append("| Nathanson (10, 30 deg only) | - / " + f"{spread[0]:.1f} / - / {spread[1]:.1f}"
+                 + " | 10 -> 30 deg: " + " / ".join(f"{x:+.1f}" for x in rise) + " |")
+    return "\n".join(lines)
+
+
 def _fmt(x: float) -> str:
     return "-" if x is None or not np.isfinite(x) else f"{x:.1f}"
 
@@ -300,7 +358,10 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
     print()
     print(span_summary(xrows))
     print()
-    print(np_markdown(np_rows()))
+    nrows = np_rows()
+    print(np_markdown(nrows))
+    print()
+    print(implied_breaking_markdown(nrows))
     if "--simulate" in flags:
         print(simulated_rows())
     return path
