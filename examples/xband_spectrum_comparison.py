@@ -178,10 +178,10 @@ def span_summary(xrows: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def np_rows() -> list[dict]:
+def np_rows(ratio_spectrum: str = "RAW97") -> list[dict]:
     """Non-polarised part [dB] implied by each published model (eq CP3 with seaecho's
-    look-averaged two-scale Bragg ratio HH/VV, RAW97) beside KHCC03's ``q sigma_wb``, and
-    the Bragg ratio with both spectra."""
+    look-averaged two-scale Bragg ratio HH/VV of ``ratio_spectrum``, RAW97 by default)
+    beside KHCC03's ``q sigma_wb``, and the Bragg ratio with both spectra."""
     rows = []
     inc = 90.0 - np.array(GRAZING_DEG)
     for ss in SEA_STATES:
@@ -196,7 +196,7 @@ def np_rows() -> list[dict]:
                    **{f"{n} Bragg HH/VV": round(float(db(r[j])), 2) for n, r in ratio.items()}}
             for name, (hh, vv) in references(ss, g).items():
                 npc, _ = non_polarised_component(10 ** (vv / 10), 10 ** (hh / 10),
-                                                 ratio["RAW97"][j])
+                                                 ratio[ratio_spectrum][j])
                 row[f"{name} NP"] = round(float(db(npc)), 2)
             rows.append(row)
     return rows
@@ -241,10 +241,12 @@ def implied_breaking_nrcs(rows: list[dict]) -> dict[str, dict[tuple[int, float],
     return out
 
 
-def implied_breaking_markdown(rows: list[dict]) -> str:
+def implied_breaking_markdown(rows: list[dict], rows_e97: list[dict]) -> str:
     """Markdown: the implied breaking-zone NRCS per sea state and grazing angle, then per
-    model its spread over sea states at each angle and its rise from 5 to 30 deg."""
+    model its spread over sea states at each angle and its rise from 5 to 30 deg, with
+    the RAW97 Bragg ratio (``rows``) and, for GIT and NRL, with E97's (``rows_e97``)."""
     wb = implied_breaking_nrcs(rows)
+    wb_e97 = implied_breaking_nrcs(rows_e97)
     q = {r["sea_state"]: r["KHCC03 NP"] - wb["KHCC03"][(r["sea_state"], r["grazing_deg"])]
          for r in rows}
     lines = ["Breaking-zone NRCS sigma_wb [dB] implied by each published model, NP / q "
@@ -261,11 +263,12 @@ def implied_breaking_markdown(rows: list[dict]) -> str:
               "and rise from 5 to 30 deg grazing (85 to 60 deg incidence) per sea state [dB]:",
               "", "| model | spread 5 / 10 / 20 / 30 deg | rise 5 -> 30 deg, SS2 / SS3 / SS4 "
               "/ SS5 |", "|---|---|---|"]
-    for name in ("GIT", "NRL"):
-        spread = [np.ptp([wb[name][(ss, g)] for ss in SEA_STATES]) for g in GRAZING_DEG]
-        rise = [wb[name][(ss, 30.0)] - wb[name][(ss, 5.0)] for ss in SEA_STATES]
-        lines.append(f"| {name} | " + " / ".join(f"{x:.1f}" for x in spread) + " | "
-                     + " / ".join(f"{x:+.1f}" for x in rise) + " |")
+    for label, table in (("", wb), (" (E97 Bragg ratio)", wb_e97)):
+        for name in ("GIT", "NRL"):
+            spread = [np.ptp([table[name][(ss, g)] for ss in SEA_STATES]) for g in GRAZING_DEG]
+            rise = [table[name][(ss, 30.0)] - table[name][(ss, 5.0)] for ss in SEA_STATES]
+            lines.append(f"| {name}{label} | " + " / ".join(f"{x:.1f}" for x in spread)
+                         + " | " + " / ".join(f"{x:+.1f}" for x in rise) + " |")
     spread = [np.ptp([wb["Nathanson"][(ss, g)] for ss in SEA_STATES]) for g in (10.0, 30.0)]
     rise = [wb["Nathanson"][(ss, 30.0)] - wb["Nathanson"][(ss, 10.0)] for ss in SEA_STATES]
     lines.append("| Nathanson (10, 30 deg only) | - / " + f"{spread[0]:.1f} / - / {spread[1]:.1f}"
@@ -361,7 +364,7 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
     nrows = np_rows()
     print(np_markdown(nrows))
     print()
-    print(implied_breaking_markdown(nrows))
+    print(implied_breaking_markdown(nrows, np_rows("E97")))
     if "--simulate" in flags:
         print(simulated_rows())
     return path
