@@ -19,6 +19,8 @@ water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py`
 * that non-polarised part divided by KHCC03's breaking fraction ``q``: the breaking-zone
   NRCS each model implies, against KHCC03's ``sigma_0wb`` (what a missing non-polarised
   term would have to supply, and whether it scales with ``q``).
+* C band against X band at 58 deg incidence (CMOD5.N's edge): how each reference and
+  each spectrum moves from one band to the other.
 
 About 5 s of CPU; ``--simulate`` adds the facet sums of one simulated surface (the
 simulation's own sigma0, ``examples/sigma0_facets_vs_grazing.py``) at sea state 3 for both
@@ -276,6 +278,53 @@ def implied_breaking_markdown(rows: list[dict], rows_e97: list[dict]) -> str:
     return "\n".join(lines)
 
 
+#: Incidence [deg] of the band comparison: CMOD5.N's upper edge (grazing 32 deg).
+BAND_INCIDENCE_DEG = 58.0
+
+
+def band_rows() -> list[dict]:
+    """VV and HH [dB] at 58 deg incidence (32 deg grazing), C band (5.3 GHz) and X band
+    (9.3 GHz), sea states 2-5: seaecho (two-scale + breaking, E97 and RAW97), GIT, NRL and,
+    at C band, CMOD5.N (VV). The X - C step of each says how its level moves with the
+    band, which the X-band targets and the C-band one must share to be met together."""
+    rows = []
+    grazing = 90.0 - BAND_INCIDENCE_DEG
+    for ss in SEA_STATES:
+        u10 = SEA_STATE_WIND[ss]
+        row = {"sea_state": ss, "u10_m_s": u10,
+               "CMOD5.N C VV": float(db(np.mean([cmod5n(u10, p, BAND_INCIDENCE_DEG)
+                                                 for p in LOOKS_DEG])))}
+        for band, f_ghz in (("C", C_GHZ), ("X", X_GHZ)):
+            for name, sp in SPECTRA:
+                s = db(look_averaged("two-scale+breaking", f_ghz * 1e9, u10,
+                                     [BAND_INCIDENCE_DEG], sp))[0]
+                row[f"{name} {band} HH"], row[f"{name} {band} VV"] = float(s[0]), float(s[3])
+            for pol in ("H", "V"):
+                row[f"GIT {band} {pol}{pol}"] = float(np.mean(
+                    [git_sigma0(f_ghz, u10, grazing, pol, a) for a in LOOKS_DEG]))
+                row[f"NRL {band} {pol}{pol}"] = float(nrl_sigma0(f_ghz, ss, grazing, pol))
+        rows.append(row)
+    return rows
+
+
+def band_markdown(rows: list[dict]) -> str:
+    lines = [f"C band (5.3 GHz) and X band (9.3 GHz) at {BAND_INCIDENCE_DEG:.0f} deg incidence "
+             f"({90.0 - BAND_INCIDENCE_DEG:.0f} deg grazing), VV [dB] (C / X, X - C):", "",
+             "| SS (U10) | CMOD5.N C | E97 | RAW97 | GIT | NRL |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        cells = [f"{r[f'{n} C VV']:.1f} / {r[f'{n} X VV']:.1f}, "
+                 f"{r[f'{n} X VV'] - r[f'{n} C VV']:+.1f}" for n in ("E97", "RAW97", "GIT", "NRL")]
+        lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | {r['CMOD5.N C VV']:.1f} | "
+                     + " | ".join(cells) + " |")
+    lines += ["", "HH [dB] (C / X, X - C):", "", "| SS (U10) | E97 | RAW97 | GIT | NRL |",
+              "|---|---|---|---|---|"]
+    for r in rows:
+        cells = [f"{r[f'{n} C HH']:.1f} / {r[f'{n} X HH']:.1f}, "
+                 f"{r[f'{n} X HH'] - r[f'{n} C HH']:+.1f}" for n in ("E97", "RAW97", "GIT", "NRL")]
+        lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
 def _fmt(x: float) -> str:
     return "-" if x is None or not np.isfinite(x) else f"{x:.1f}"
 
@@ -365,6 +414,8 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
     print(np_markdown(nrows))
     print()
     print(implied_breaking_markdown(nrows, np_rows("E97")))
+    print()
+    print(band_markdown(band_rows()))
     if "--simulate" in flags:
         print(simulated_rows())
     return path

@@ -371,3 +371,31 @@ def test_xband_breaking_nrcs_implied_by_the_published_models():
     assert np.all((git[:, 3] - git[:, 0] > 1.5) & (git[:, 3] - git[:, 0] < 3.5))
     assert nrl[0, 3] - nrl[0, 0] > 6.0
     assert nrl[3, 3] - nrl[3, 0] < 5.0
+
+
+def test_band_steps_of_the_references_and_of_raw97():
+    """C band (5.3 GHz) against X band (9.3 GHz) at 58 deg incidence, CMOD5.N's upper
+    edge (docs/scattering.md, "C band against X band"), sea states 2-5, look-averaged:
+
+    * the X-band references lie below CMOD5.N at C band in VV (GIT by 7.7-9.8 dB, NRL by
+      1.3-6.2 dB), while seaecho (two-scale + breaking, RAW97) is within 2 dB of it
+      (measured 0.0-1.4 dB);
+    * the references rise from C to X band (VV: GIT +1.7 to +3.4 dB, NRL +0.4 dB; HH:
+      GIT +2.3 to +4.0, NRL +2.0 dB); RAW97 falls (VV -3.5 to -3.8 dB, HH -0.6 to
+      -2.1 dB): a model meeting CMOD5.N at C band must fall to meet them at X band."""
+    inc, grazing = 58.0, 32.0
+    for ss in (2, 3, 4, 5):
+        u10 = SEA_STATE_WIND[ss]
+        cmod = _db(np.mean([cmod5n(u10, p, inc) for p in LOOKS_DEG]))
+        ours = {f: _db(_seaecho("two-scale+breaking", f * 1e9, u10, [inc],
+                                spectrum="romeiser")[0]) for f in (5.3, 9.3)}
+        refs = {f: {pol: (np.mean([git_sigma0(f, u10, grazing, pol, a) for a in LOOKS_DEG]),
+                          float(nrl_sigma0(f, ss, grazing, pol))) for pol in "HV"}
+                for f in (5.3, 9.3)}
+        assert cmod - refs[5.3]["V"][0] > 7.0
+        assert cmod - refs[5.3]["V"][1] > 1.0
+        assert abs(ours[5.3][3] - cmod) < 2.0
+        for pol, idx in (("H", 0), ("V", 3)):
+            for j in (0, 1):
+                assert refs[9.3][pol][j] - refs[5.3][pol][j] > 0.2
+            assert ours[9.3][idx] - ours[5.3][idx] < -0.3
