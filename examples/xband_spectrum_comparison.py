@@ -15,7 +15,12 @@ water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py`
   al. (2005), for both spectra;
 * the non-polarised part that the published X-band models imply (eq CP3,
   ``seaecho.scattering.copol``, with seaecho's two-scale Bragg ratio HH/VV) against
-  KHCC03's ``q sigma_wb``: where the remaining VV/HH excess at 20-30 deg lies.
+  KHCC03's ``q sigma_wb``: where the remaining VV/HH excess at 20-30 deg lies;
+* that non-polarised part divided by KHCC03's breaking fraction ``q``: the breaking-zone
+  NRCS each model implies, against KHCC03's ``sigma_0wb`` (what a missing non-polarised
+  term would have to supply, and whether it scales with ``q``).
+* C band against X band at 58 deg incidence (CMOD5.N's edge): how each reference and
+  each spectrum moves from one band to the other.
 
 About 5 s of CPU; ``--simulate`` adds the facet sums of one simulated surface (the
 simulation's own sigma0, ``examples/sigma0_facets_vs_grazing.py``) at sea state 3 for both
@@ -175,10 +180,10 @@ def span_summary(xrows: list[dict]) -> str:
     return "\n".join(lines)
 
 
-def np_rows() -> list[dict]:
+def np_rows(ratio_spectrum: str = "RAW97") -> list[dict]:
     """Non-polarised part [dB] implied by each published model (eq CP3 with seaecho's
-    look-averaged two-scale Bragg ratio HH/VV, RAW97) beside KHCC03's ``q sigma_wb``, and
-    the Bragg ratio with both spectra."""
+    look-averaged two-scale Bragg ratio HH/VV of ``ratio_spectrum``, RAW97 by default)
+    beside KHCC03's ``q sigma_wb``, and the Bragg ratio with both spectra."""
     rows = []
     inc = 90.0 - np.array(GRAZING_DEG)
     for ss in SEA_STATES:
@@ -193,7 +198,7 @@ def np_rows() -> list[dict]:
                    **{f"{n} Bragg HH/VV": round(float(db(r[j])), 2) for n, r in ratio.items()}}
             for name, (hh, vv) in references(ss, g).items():
                 npc, _ = non_polarised_component(10 ** (vv / 10), 10 ** (hh / 10),
-                                                 ratio["RAW97"][j])
+                                                 ratio[ratio_spectrum][j])
                 row[f"{name} NP"] = round(float(db(npc)), 2)
             rows.append(row)
     return rows
@@ -212,6 +217,111 @@ def np_markdown(rows: list[dict]) -> str:
             f"| {r['E97 Bragg HH/VV']:.1f} / {r['RAW97 Bragg HH/VV']:.1f} "
             f"| {r['KHCC03 NP']:.1f} | {_fmt(r.get('Nathanson NP'))} | {_fmt(r['GIT NP'])} "
             f"| {_fmt(r['NRL NP'])} | {min(gap):+.1f}..{max(gap):+.1f} |")
+    return "\n".join(lines)
+
+
+def implied_breaking_nrcs(rows: list[dict]) -> dict[str, dict[tuple[int, float], float]]:
+    """Breaking-zone NRCS [dB] each published model implies, ``NP / q`` (eqs CP1, CP3 with
+    KHCC03's fraction ``q`` of eq BR3), and KHCC03's own ``sigma_0wb`` (eq BR2), keyed by
+    (sea state, grazing [deg]); from :func:`np_rows`.
+
+    If a missing non-polarised term scaled with the breaking fraction (a property of the
+    breaking zones, ``sigma_wb(theta)``), the implied values would agree across sea
+    states at each angle; their rise with grazing is what such a term must supply."""
+    from seaecho.constants import C0
+    from seaecho.scattering.breaking import breaking_statistics
+
+    k_r = 2.0 * np.pi * X_GHZ * 1e9 / C0
+    q_db = {ss: float(db(breaking_statistics(SEA_STATE_WIND[ss], k_r).q)) for ss in SEA_STATES}
+    out: dict[str, dict[tuple[int, float], float]] = {}
+    for r in rows:
+        key = (r["sea_state"], r["grazing_deg"])
+        for name in ("KHCC03", "Nathanson", "GIT", "NRL"):
+            value = r.get(f"{name} NP")
+            if value is not None and np.isfinite(value):
+                out.setdefault(name, {})[key] = value - q_db[r["sea_state"]]
+    return out
+
+
+def implied_breaking_markdown(rows: list[dict], rows_e97: list[dict]) -> str:
+    """Markdown: the implied breaking-zone NRCS per sea state and grazing angle, then per
+    model its spread over sea states at each angle and its rise from 5 to 30 deg, with
+    the RAW97 Bragg ratio (``rows``) and, for GIT and NRL, with E97's (``rows_e97``)."""
+    wb = implied_breaking_nrcs(rows)
+    wb_e97 = implied_breaking_nrcs(rows_e97)
+    q = {r["sea_state"]: r["KHCC03 NP"] - wb["KHCC03"][(r["sea_state"], r["grazing_deg"])]
+         for r in rows}
+    lines = ["Breaking-zone NRCS sigma_wb [dB] implied by each published model, NP / q "
+             "(q of eq BR3; KHCC03's sigma_0wb of eq BR2 beside it):", "",
+             "| SS (U10) | q [dB] | grazing | KHCC03 sigma_0wb | Nathanson | GIT | NRL |",
+             "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        key = (r["sea_state"], r["grazing_deg"])
+        lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | {q[r['sea_state']]:.1f} "
+                     f"| {r['grazing_deg']:.0f} | {wb['KHCC03'][key]:.1f} "
+                     f"| {_fmt(wb['Nathanson'].get(key))} | {_fmt(wb['GIT'][key])} "
+                     f"| {_fmt(wb['NRL'][key])} |")
+    lines += ["", "Per model: spread over sea states 2-5 at each grazing angle (max - min) "
+              "and rise from 5 to 30 deg grazing (85 to 60 deg incidence) per sea state [dB]:",
+              "", "| model | spread 5 / 10 / 20 / 30 deg | rise 5 -> 30 deg, SS2 / SS3 / SS4 "
+              "/ SS5 |", "|---|---|---|"]
+    for label, table in (("", wb), (" (E97 Bragg ratio)", wb_e97)):
+        for name in ("GIT", "NRL"):
+            spread = [np.ptp([table[name][(ss, g)] for ss in SEA_STATES]) for g in GRAZING_DEG]
+            rise = [table[name][(ss, 30.0)] - table[name][(ss, 5.0)] for ss in SEA_STATES]
+            lines.append(f"| {name}{label} | " + " / ".join(f"{x:.1f}" for x in spread)
+                         + " | " + " / ".join(f"{x:+.1f}" for x in rise) + " |")
+    spread = [np.ptp([wb["Nathanson"][(ss, g)] for ss in SEA_STATES]) for g in (10.0, 30.0)]
+    rise = [wb["Nathanson"][(ss, 30.0)] - wb["Nathanson"][(ss, 10.0)] for ss in SEA_STATES]
+    lines.append("| Nathanson (10, 30 deg only) | - / " + f"{spread[0]:.1f} / - / {spread[1]:.1f}"
+                 + " | 10 -> 30 deg: " + " / ".join(f"{x:+.1f}" for x in rise) + " |")
+    return "\n".join(lines)
+
+
+#: Incidence [deg] of the band comparison: CMOD5.N's upper edge (grazing 32 deg).
+BAND_INCIDENCE_DEG = 58.0
+
+
+def band_rows() -> list[dict]:
+    """VV and HH [dB] at 58 deg incidence (32 deg grazing), C band (5.3 GHz) and X band
+    (9.3 GHz), sea states 2-5: seaecho (two-scale + breaking, E97 and RAW97), GIT, NRL and,
+    at C band, CMOD5.N (VV). The X - C step of each says how its level moves with the
+    band, which the X-band targets and the C-band one must share to be met together."""
+    rows = []
+    grazing = 90.0 - BAND_INCIDENCE_DEG
+    for ss in SEA_STATES:
+        u10 = SEA_STATE_WIND[ss]
+        row = {"sea_state": ss, "u10_m_s": u10,
+               "CMOD5.N C VV": float(db(np.mean([cmod5n(u10, p, BAND_INCIDENCE_DEG)
+                                                 for p in LOOKS_DEG])))}
+        for band, f_ghz in (("C", C_GHZ), ("X", X_GHZ)):
+            for name, sp in SPECTRA:
+                s = db(look_averaged("two-scale+breaking", f_ghz * 1e9, u10,
+                                     [BAND_INCIDENCE_DEG], sp))[0]
+                row[f"{name} {band} HH"], row[f"{name} {band} VV"] = float(s[0]), float(s[3])
+            for pol in ("H", "V"):
+                row[f"GIT {band} {pol}{pol}"] = float(np.mean(
+                    [git_sigma0(f_ghz, u10, grazing, pol, a) for a in LOOKS_DEG]))
+                row[f"NRL {band} {pol}{pol}"] = float(nrl_sigma0(f_ghz, ss, grazing, pol))
+        rows.append(row)
+    return rows
+
+
+def band_markdown(rows: list[dict]) -> str:
+    lines = [f"C band (5.3 GHz) and X band (9.3 GHz) at {BAND_INCIDENCE_DEG:.0f} deg incidence "
+             f"({90.0 - BAND_INCIDENCE_DEG:.0f} deg grazing), VV [dB] (C / X, X - C):", "",
+             "| SS (U10) | CMOD5.N C | E97 | RAW97 | GIT | NRL |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        cells = [f"{r[f'{n} C VV']:.1f} / {r[f'{n} X VV']:.1f}, "
+                 f"{r[f'{n} X VV'] - r[f'{n} C VV']:+.1f}" for n in ("E97", "RAW97", "GIT", "NRL")]
+        lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | {r['CMOD5.N C VV']:.1f} | "
+                     + " | ".join(cells) + " |")
+    lines += ["", "HH [dB] (C / X, X - C):", "", "| SS (U10) | E97 | RAW97 | GIT | NRL |",
+              "|---|---|---|---|---|"]
+    for r in rows:
+        cells = [f"{r[f'{n} C HH']:.1f} / {r[f'{n} X HH']:.1f}, "
+                 f"{r[f'{n} X HH'] - r[f'{n} C HH']:+.1f}" for n in ("E97", "RAW97", "GIT", "NRL")]
+        lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | " + " | ".join(cells) + " |")
     return "\n".join(lines)
 
 
@@ -300,7 +410,12 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
     print()
     print(span_summary(xrows))
     print()
-    print(np_markdown(np_rows()))
+    nrows = np_rows()
+    print(np_markdown(nrows))
+    print()
+    print(implied_breaking_markdown(nrows, np_rows("E97")))
+    print()
+    print(band_markdown(band_rows()))
     if "--simulate" in flags:
         print(simulated_rows())
     return path
