@@ -84,7 +84,7 @@ def references(u19_5: float, grazing_deg: float = GRAZING_DEG) -> dict[str, floa
 def simulate(u19_5: float, grazing_deg: float = GRAZING_DEG, n_pulses: int = N_PULSES,
              size: float = 128.0, n: int = 128, look_deg: float = 0.0, seed: int = 1,
              freq_hz: float = F, model: str = "blend+breaking",
-             spreading: str | None = "elfouhaily") -> dict[str, float]:
+             spreading: str | None = None) -> dict[str, float]:
     """Centroid and rms width [Hz] of the HH and VV clutter Doppler spectra, and the
     composite model's Bragg centroid ``(2 p+ - 1) f_B`` [Hz] (``sea_doppler.py``);
     ``look_deg`` 0: the radar looks upwind; ``spreading`` None: the default

@@ -115,3 +115,114 @@ def test_composite_bragg_centroid_within_published_spread_of_cdop_upwind():
     u10 = float(u10_from_u19_5(u19_5))
     up = _bragg_centroid_hz(CDOP_FREQUENCY_HZ, INC_DEG, 0.0, u19_5)
     assert abs(up - float(cdop_hz(INC_DEG, u10, 0.0, "VV"))) < _tol_hz(CDOP_FREQUENCY_HZ)
+
+
+# --- fast: the full simulation, one small case ------------------------------------------
+
+#: allowance for one realisation of a 64 m tile over 48 pulses [Hz]: two standard
+#: deviations of the HH centroid over seeds 1-4 (40.2-48.0 Hz, sd 3.2 Hz)
+SMALL_TILE_ALLOWANCE_HZ = 6.5
+
+
+def test_xband_upwind_centroids_against_tandem_x_quick():
+    from xband_doppler_measured import F, published_centroids_hz, simulate
+
+    u19_5 = 8.0
+    u10 = float(u10_from_u19_5(u19_5))
+    sim = simulate(u19_5, 90.0 - INC_DEG, 48, 64.0, 64, 0.0, 1, F)
+    ref = published_centroids_hz("X", u10, 0.0, INC_DEG)[0]  # 43.4 Hz (1.13 m/s)
+    vv, hh = sim["centroid_vv_hz"], sim["centroid_hh_hz"]
+    # HH within the published spread (0.2 m/s: 7.7 Hz) and the realisation allowance
+    assert abs(hh - ref) < _tol_hz(F) + SMALL_TILE_ALLOWANCE_HZ
+    # |DC_VV| < |DC_HH| (Elyouncha et al.: the polarisation difference is negative)
+    assert hh > vv
+    # VV: the known shortfall (docs/dynamics.md), above the Bragg line and below the
+    # published value
+    assert sim["bragg_centroid_hz"] < vv < ref
+
+
+# --- slow: the comparison of docs/dynamics.md --------------------------------------------
+
+@pytest.fixture(scope="module")
+def gmf_rows(tmp_path_factory):
+    import csv
+
+    from xband_doppler_measured import GMF_CASES, gmf_comparison
+
+    path = gmf_comparison(str(tmp_path_factory.mktemp("gmf")), cases=GMF_CASES[:5])
+    with open(path) as fh:
+        rows = list(csv.DictReader(fh))
+    for r in rows:
+        for k, v in r.items():
+            if k not in ("band", "spreading"):
+                r[k] = float(v)
+    return rows
+
+
+#: (band, U19.5, look, channel) where the simulated centroid falls short of the published
+#: one by more than the tolerance (docs/dynamics.md): VV upwind at low and moderate winds,
+#: VV downwind at X band, and HH at C band and 5 m/s
+SHORT = {("C", 5.0, 0.0, "vv"), ("C", 8.0, 0.0, "vv"), ("C", 5.0, 0.0, "hh"),
+         ("X", 8.0, 0.0, "vv"), ("X", 12.0, 0.0, "vv"), ("X", 8.0, 180.0, "vv")}
+
+
+def _allowed_hz(r, ch):
+    return _tol_hz(r["frequency_hz"], r["incidence_deg"]) + 2.0 * r[f"centroid_{ch}_std_hz"]
+
+
+@pytest.mark.slow
+def test_moderate_incidence_centroids_against_cdop_and_tandem_x(gmf_rows):
+    for r in gmf_rows:
+        key = (r["band"], r["u19_5_m_s"], r["look_deg"])
+        for ch in ("vv", "hh"):
+            sim, ref = r[f"centroid_{ch}_hz"], r[f"published_{ch}_hz"]
+            if key + (ch,) in SHORT:
+                # the known shortfall: between the Bragg line and the published value,
+                # at least a third of the latter
+                assert abs(r["bragg_centroid_hz"]) < abs(sim) < abs(ref)
+                assert abs(sim) > abs(ref) / 3.0
+            else:
+                assert abs(sim - ref) < _allowed_hz(r, ch), (key, ch, sim, ref)
+        if r["look_deg"] != 90.0:
+            # |DC_VV| < |DC_HH| (CDOP; Elyouncha et al.)
+            assert abs(r["centroid_hh_hz"]) > abs(r["centroid_vv_hz"])
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="no wind drift, no hydrodynamic modulation: VV upwind "
+                   "is 0.55-0.7 of the published wave Doppler (docs/dynamics.md)")
+def test_moderate_incidence_centroids_all_within_published_spread(gmf_rows):
+    for r in gmf_rows:
+        for ch in ("vv", "hh"):
+            assert abs(r[f"centroid_{ch}_hz"] - r[f"published_{ch}_hz"]) < _allowed_hz(r, ch)
+
+
+@pytest.fixture(scope="module")
+def breaking_rows(tmp_path_factory):
+    import csv
+
+    from xband_doppler_measured import breaking_comparison
+
+    path = breaking_comparison(str(tmp_path_factory.mktemp("breaking")))
+    with open(path) as fh:
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(fh)]
+
+
+@pytest.mark.slow
+def test_breaking_speeds_up_both_polarisations_at_low_grazing(breaking_rows):
+    # Hwang et al. (2008): breaking increases "significantly the Doppler velocity of both
+    # polarizations"
+    for r in breaking_rows:
+        assert r["ratio_vv"] > 1.2 and r["ratio_hh"] > 1.2
+        assert r["centroid_hh_breaking_hz"] > r["centroid_vv_breaking_hz"]
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="breaking zones move at the breakers' phase speed: the "
+                   "centroid grows 2.1x (VV) and 5-6x (HH) for the measured ~1.5x "
+                   "(docs/dynamics.md)")
+def test_breaking_speed_up_about_fifty_percent(breaking_rows):
+    # "about 50% faster": read here as 1.25-1.75 (the abstract gives no scatter)
+    for r in breaking_rows:
+        for ch in ("vv", "hh"):
+            assert 1.25 < r[f"ratio_{ch}"] < 1.75
