@@ -1,10 +1,11 @@
-"""X-band sea-clutter Doppler centroid and width at low grazing, upwind, against what
-measurements show.
+"""Sea-clutter Doppler centroid and width against what measurements show: X band at low
+grazing, and C and X band at moderate incidence against published Doppler model functions.
 
-Run: ``python examples/xband_doppler_measured.py [OUTDIR] [--grazing DEG]`` (default
-``docs/figures``, 10 deg).
-Monostatic 10 GHz radar 1 km from the tile, looking upwind at 10 deg grazing, Elfouhaily
-sea on a 128 m tile with a 1 m grid, the default scattering model (``blend+breaking``) and
+Run: ``python examples/xband_doppler_measured.py [OUTDIR] [--grazing DEG | --gmf |
+--breaking]`` (default ``docs/figures``, 10 deg).
+Monostatic 10 GHz radar 1 km from the tile, looking upwind at 10 deg grazing, the default
+sea (Elfouhaily spectrum, Longuet-Higgins spreading with s = 1: the waves travel with the
+wind) on a 128 m tile with a 1 m grid, the default scattering model (``blend+breaking``) and
 the default sea motion (``"auto"``: the sea is renewed within the run, so it evolves),
 geometry every 8 pulses, PRF 500 Hz, 96 pulses, wind U19.5 = 5, 8 and 12 m/s. Prints, per
 wind and channel, the clutter Doppler centroid and rms width (eq DP2 of docs/dynamics.md),
@@ -15,9 +16,9 @@ in Hz and as line-of-sight velocity ``lambda f / 2``, beside the references:
 * the VV peak of the low-grazing Doppler model of Trizna (1985), fitted to measured VV
   spectra: the Bragg phase speed plus the orbital velocity of the long waves plus the
   wind drift of the surface. The drift is 3 % of U10 (Wu 1975, 1983) along the wind; the
-  simulation carries the Bragg waves and the orbital motion but no drift current, so its
-  VV centroid is expected to fall short of measurements by the drift's Doppler
-  ``2 (0.03 U10) cos(psi) / lambda`` (printed),
+  simulation carries the Bragg waves and the orbital motion but no drift current; the
+  Bragg line plus the drift's Doppler ``2 (0.03 U10) cos(psi) / lambda`` is printed (the
+  orbital term is not tabulated by these references),
 * the measured orderings: HH centroids above VV at low grazing (Trizna 1985; Lee et al.
   1995), the speed of the "faster-than-Bragg" scatterers increasing with the wind (Lee et
   al. 1996, data at winds of 3.8-10.3 m/s), widths growing with the wind (the orbital
@@ -28,7 +29,8 @@ Writes ``dynamics_doppler_measured.csv``.
 ``--gmf``: the moderate-incidence comparison with the published Doppler model functions
 (``tests/validation/doppler_references.py``): the same sea and radar at 35 deg incidence
 (the middle of both GMFs' domains), U19.5 = 5, 8, 12 m/s upwind and 8 m/s crosswind and
-downwind, three seeds each, at 5.5 GHz against CDOP (Mouche et al. 2012, C band, VV and
+downwind, and 8 m/s upwind with the centro-symmetric Elfouhaily spreading, three seeds
+each, at 5.5 GHz against CDOP (Mouche et al. 2012, C band, VV and
 HH, Hz) and at 10 GHz against the TanDEM-X finding of Elyouncha et al. (2021) that the
 wind sea's Doppler velocity is about 0.15 U10 cos(phi) (horizontal). Writes
 ``dynamics_doppler_gmf.csv``; about 3 minutes of CPU.

@@ -11,7 +11,7 @@ published form with the published coefficients; none is used by seaecho itself.
   anomaly [Hz] at 5.5 GHz of ENVISAT ASAR wide-swath data against ECMWF winds, VV and HH,
   fitted by a neural network with one hidden layer of ten sigmoids over incidence
   (17-42 deg), wind speed U10 (1-17 m/s) and the wind direction relative to the look
-  (0 upwind, 90 crosswind, 180 downwind). The weights and biases are those of the paper
+  (0 upwind, 90 crosswind, 180 downwind). The weights and biases are those of the article
   (named lambda, omega, gamma, alpha, beta there) as distributed with Ifremer's CDOP code
   and reproduced identically in open implementations (e.g. the ``mouche12`` function of
   the seastar project, University of Southampton / NOC). Positive: towards the radar.
