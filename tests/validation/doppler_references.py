@@ -19,9 +19,11 @@ published form with the published coefficients; none is used by seaecho itself.
   :data:`XBAND_BRAGG_SPEED_M_S` - the X-band findings of the TanDEM-X along-track InSAR
   study of Elyouncha, A., Eriksson, L. E. B. et al. (2021). Empirical relationship between
   the Doppler centroid derived from X-band spaceborne InSAR data and wind vectors. *IEEE
-  Trans. Geosci. Remote Sens.* (over 300 image pairs; abstract, Chalmers research record
-  523374; the full text was not available here): "the wind-induced Doppler velocity
-  contributes to the total Doppler velocity with about 15% of the radial wind speed",
+  Trans. Geosci. Remote Sens.* (over 300 image pairs; Chalmers research record 523374,
+  which shows the title, year and abstract but not the authors, named here as the
+  Chalmers group's TanDEM-X Doppler work; the full text was not available here): "the
+  wind-induced Doppler velocity contributes to the total Doppler velocity with about 15%
+  of the radial wind speed",
   "much larger than the sum of the contributions from the Bragg waves (~0.2 m/s) and the
   wind-induced drift current (~3% of wind speed)"; their GMF agrees "within 0.2 m/s" with
   other models and data sets; the polarisation difference ``|DC_VV| - |DC_HH|`` is
