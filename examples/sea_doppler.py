@@ -58,20 +58,22 @@ N_PULSES = 128
 
 
 def scene(u, look_deg, inc_deg, model, size=128.0, n=128, seed=1, update=8,
-          n_pulses=N_PULSES, prf=PRF, motion="evolving"):
-    """Monostatic X-band radar 1 km from the tile centre; wind towards +x; look 0: the
-    radar east of the tile looking west (upwind); ``motion`` None: the default
-    ``[scattering] sea_motion``."""
+          n_pulses=N_PULSES, prf=PRF, motion="evolving", freq_hz=F,
+          spreading="elfouhaily"):
+    """Monostatic radar (X band, ``freq_hz`` [Hz], by default) 1 km from the tile centre;
+    wind towards +x; look 0: the radar east of the tile looking west (upwind); ``motion``
+    None: the default ``[scattering] sea_motion``; ``spreading`` None: the default
+    ``[sea] spreading`` (Longuet-Higgins, s = 1)."""
     th, az = np.radians(inc_deg), np.radians(look_deg)
     r = 1000.0
     pos = (r * np.sin(th) * np.cos(az), r * np.sin(th) * np.sin(az), r * np.cos(th))
     return parse_scene({
-        "sea": {"spectrum": "elfouhaily", "spreading": "elfouhaily", "wind_speed_m_s": u,
-                "size_x_m": size, "nx": n},
+        "sea": {"spectrum": "elfouhaily", "wind_speed_m_s": u, "size_x_m": size, "nx": n,
+                **({"spreading": spreading} if spreading else {})},
         "run": {"seed": seed},
         "scattering": {"model": model, **({"sea_motion": motion} if motion else {})},
         "tracing": {"mode": "analytic", "shadowing": "smith"},
-        "radar": {"carrier_frequency_hz": F, "sampling_rate_hz": 240e6, "prf_hz": prf,
+        "radar": {"carrier_frequency_hz": freq_hz, "sampling_rate_hz": 240e6, "prf_hz": prf,
                   "n_pulses": n_pulses, "sea_update_pulses": update,
                   "channels": ["HH", "VV"],
                   "waveform": {"kind": "lfm", "bandwidth_hz": 200e6, "duration_s": 1e-6}},

@@ -22,11 +22,15 @@ The default scene's sea (``sea_motion = "auto"``, evolving here) seen by a monos
   Navig.* 148(2), 73-80: Bragg component at the Bragg speed plus drift, widths growing
   with the wind.
 
-Known disagreement, kept visible: the simulation has no wind-drift current, so its VV
-centroid falls short of the Bragg + drift value measurements follow by up to the drift's
-Doppler ``2 (0.03 U10) cos(psi) / lambda`` (9-22 Hz at U10 = 4.7-11.3 m/s); the test
-bounds that shortfall by the drift (plus the tolerance of one 0.19 s realisation), it does
-not hide it.
+Trizna's measured VV peak is the Bragg speed plus the long waves' orbital velocity plus
+the drift; none of these papers tabulates the orbital part, so the tests bound the VV
+centroid from below by the Bragg line only. (An earlier version also bounded it from above
+by Bragg + drift: that held for the centro-symmetric Elfouhaily spreading, whose waves run
+both ways and carry no tilt-orbital Doppler; with the default Longuet-Higgins spreading
+the simulated VV at 10 deg lies within 1-4 Hz of Bragg + drift without any drift in the
+model, and above it at 3 deg: docs/dynamics.md.) The moderate-incidence centroids are
+compared value by value with published Doppler model functions in
+``tests/validation/test_doppler_gmf.py``.
 """
 
 from __future__ import annotations
@@ -50,13 +54,11 @@ def _case(u, **kw):
 
 
 def _check_against_measurements(ref, sim):
-    f_b, f_drift = ref["f_bragg_hz"], ref["f_drift_hz"]
+    f_b = ref["f_bragg_hz"]
     vv, hh = sim["centroid_vv_hz"], sim["centroid_hh_hz"]
-    # VV: at least the Bragg line of the waves travelling towards the radar (upwind)...
+    # VV: at least the Bragg line of the waves travelling towards the radar (upwind), the
+    # first term of Trizna's Bragg + orbital + drift (the simulation has no drift)
     assert vv > f_b - CENTROID_TOL_HZ
-    # ... and not above the measured Bragg + drift (+ orbital, >= 0 upwind): short of it by
-    # at most the drift it lacks
-    assert vv < f_b + f_drift + CENTROID_TOL_HZ
     # HH above VV at low grazing (Trizna 1985; Lee et al. 1995)
     assert hh > vv + 15.0
     # a Bragg-shifted spectrum tens of hertz wide, not white (rms width of a white

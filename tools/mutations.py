@@ -119,6 +119,12 @@ MUTATIONS = [
              "phase = np.exp(-1j * self._omega * t)",
              "phase = np.exp(1j * self._omega * t)",
              ("tests/ocean/test_surface.py",), "time evolution of eq 15 with the wrong sign"),
+    Mutation("longuet-higgins-centro-symmetric", S + "ocean/spectra.py",
+             "np.abs(np.cos(0.5 * psi)) ** (2.0 * s)  # Eq. 6",
+             "np.abs(np.cos(psi)) ** (2.0 * s)  # Eq. 6",
+             ("tests/validation/test_doppler_gmf.py",),
+             "cos^2s(psi) for cos^2s(psi / 2): the same variance, but the waves run both ways "
+             "and the wave Doppler of the default sea is lost (docs/dynamics.md)"),
     Mutation("wind-profile-1.026", S + "ocean/wind.py",
              "DRAG_COEFFICIENT_10M = 1.3e-3", "DRAG_COEFFICIENT_10M = 2.4e-4",
              ("tests/ocean",), "U19.5 = 1.026 U10 again (a drag coefficient that fits it)"),
