@@ -645,6 +645,11 @@ MUTATIONS = [
              "    return wavelength * slant_range / aperture",
              ("tests/radar/test_resolution.py",),
              "lambda R / L: the two-way phase of a synthetic aperture forgotten (eq R3)"),
+    Mutation("summary-tile-band-from-half-the-tile", S + "summary.py",
+             "height_variance(spec, 2 * math.pi / max(lx, ly),",
+             "height_variance(spec, math.pi / max(lx, ly),",
+             ("tests/api/test_api_scene.py",),
+             "the summary's H_s of the tile's band from K = pi / L, not 2 pi / L"),
     # --- the sea's two-ray propagation factor (radar/propagation.py)
     Mutation("two-ray-no-divergence", S + "radar/propagation.py",
              "two_ray_factor(delta, div, ", "two_ray_factor(delta, 1.0, ",
