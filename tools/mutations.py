@@ -688,6 +688,12 @@ MUTATIONS = [
              "+ 5.0 * math.log10(frequency_hz / GAMMA_REFERENCE_HZ)",
              "+ 10.0 * math.log10(frequency_hz / GAMMA_REFERENCE_HZ)",
              ("tests/scattering/test_land_clutter.py",), "gamma ~ f instead of f^(1/2)"),
+    Mutation("land-any-crossing-is-inside", S + "geometry/land.py",
+             "np.sum(straddle & (x < xc), axis=-1) % 2 == 1",
+             "np.sum(straddle & (x < xc), axis=-1) > 0",
+             ("tests/geometry/test_land_mesh.py",),
+             "a point is on land when its ray crosses the shore at all (not an odd number "
+             "of times): a bay is land"),
     Mutation("land-bistatic-as-monostatic", S + "tracing/land.py",
              "else constant_gamma_sigma0(1.0, sin_i, sin_s))",
              "else constant_gamma_sigma0(1.0, sin_i))",
