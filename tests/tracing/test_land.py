@@ -106,6 +106,12 @@ def test_flat_land_patch_echo_is_the_radar_equation_of_gamma_sin_psi():
     var = math.gamma(4.0) / math.gamma(2.5) ** 2 - 1.0
     n_eff = mean.sum() ** 2 / (mean ** 2).sum()
     assert p.sum() / mean.sum() == pytest.approx(1.0, abs=4 * math.sqrt(var / n_eff))
+    # the facets' powers follow Billingsley's Weibull law of the scene's a_w = 1.5, eq L4:
+    # P(w > x) = exp(-(x / b)^(1 / a_w)), b = 1 / Gamma(1 + a_w); not the exponential
+    b = 1.0 / math.gamma(2.5)
+    assert stats.kstest(lan.power, lambda x: 1.0 - np.exp(-(np.maximum(x, 0) / b)
+                                                          ** (1 / 1.5))).pvalue > 1e-3
+    assert stats.kstest(lan.power, "expon").pvalue < 1e-6
     # and that echo is the pulse's: no sea, no target, no noise
     raw = sim.pulse(0)
     assert np.array_equal(raw, sim.radar.receive(0, [echo]))
@@ -210,6 +216,22 @@ def test_land_patches_outside_the_beam_are_skipped_within_the_stated_bound():
         assert got <= floor * at_peak
         checked += got > 1e-3 * floor * at_peak  # within 30 dB of the bound
     assert checked > 10
+
+
+def test_land_gamma_at_the_carrier_or_as_given():
+    # gamma of the terrain at the carrier, eq L3: farmland -15 dB at 10 GHz (Nathanson,
+    # Reilly & Cohen 1999, as restated by MATLAB's surfacegamma) + 5 log10(f / 10 GHz)
+    # (Barton 1985's f^(1/2)): -17.61 dB at 3 GHz; a scene's gamma_db replaces the table
+    from seaecho.build import build_land
+
+    def gamma_db(land, f_hz):
+        scene = parse_scene(_scene([land], carrier_frequency_hz=f_hz))
+        return 10.0 * math.log10(build_land(scene).pieces[0].gamma)
+
+    assert gamma_db(HEADLAND, 3e9) == pytest.approx(-15.0 - 2.6144, abs=1e-4)
+    assert gamma_db(HEADLAND, 10e9) == pytest.approx(-15.0, abs=1e-12)
+    given = {k: v for k, v in HEADLAND.items() if k != "terrain"}
+    assert gamma_db({**given, "gamma_db": -7.0}, 3e9) == pytest.approx(-7.0, abs=1e-12)
 
 
 def test_bistatic_land_echo_is_gamma_times_the_geometric_mean_and_shadowed_for_both():
