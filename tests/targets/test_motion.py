@@ -317,3 +317,17 @@ def test_slope_weight_is_a_spherical_bessel_function():
     want = 3j * k * spherical_jn(1, np.abs(k) * a) / (np.abs(k) * a)
     np.testing.assert_allclose(_slope_weight(k, a), want, rtol=1e-9, atol=0)
     assert _slope_weight(np.array([0.0]), a)[0] == 0.0
+
+
+def test_a_ships_metacentric_height_sets_its_roll_period():
+    # [[ships]] metacentric_height_m reaches the hull: T_4 = 2 pi k_xx / sqrt(g GM),
+    # k_xx = 0.35 B (Journee & Massie 2001, ch. 6); default GM = 0.05 B (a modelling choice)
+    from seaecho.build import _box_motion
+    from seaecho.config import parse_scene
+
+    for extra, gm in [({"metacentric_height_m": 0.3}, 0.3), ({}, 0.05 * 2.5)]:
+        cfg = parse_scene(_wave_motion_scene(**extra)).all_ships[0]
+        box = _box_motion(cfg)
+        assert (box.length, box.beam, box.draft) == (8.0, 2.5, 0.8)
+        assert 2 * np.pi / box.roll_frequency == pytest.approx(
+            2 * np.pi * 0.35 * 2.5 / np.sqrt(G * gm), rel=1e-12)
