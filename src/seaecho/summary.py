@@ -81,7 +81,9 @@ def scene_summary(scene: Scene) -> SceneSummary:
 
     Sea: spectrum, wind, water, the expected significant wave height
     H_s = 4 sqrt(int S(K) dK) of the whole spectrum and of the band the tile resolves
-    (2 pi / L < K < pi / dx). Geometry at the tile centre, nominal tracks at the middle
+    (2 pi / L < K < pi / dx) (the spectral H_m0 = 4 sqrt(m_0): US Army Corps of
+    Engineers, *Coastal Engineering Manual*, 2002, Part II, ch. 1, eq II-1-147, after
+    Longuet-Higgins 1952). Geometry at the tile centre, nominal tracks at the middle
     of the acquisition: incidence and grazing angles, ranges, bistatic angle. Radar:
     carrier, waveform, PRF, pulses, channels, and the resolution cells:
 

@@ -153,3 +153,23 @@ def test_summary_without_radar_and_repr_never_raises():
     broken = seaecho.with_overrides(seaecho.load_scene(SIM1), {"radar.n_pulses": 2})
     object.__setattr__(broken, "sea", None)
     assert "no summary" in repr(broken)
+
+
+def test_summary_hs_of_the_tiles_band_is_the_pierson_moskowitz_integral():
+    # the Pierson-Moskowitz wavenumber spectrum S(K) = a0 / 2 K^-3 exp(-B / K^2), B = b0
+    # g^2 / U19.5^4, a0 = 8.1e-3, b0 = 0.74 (Pierson & Moskowitz 1964, in the form the
+    # scene files quote) integrates in closed form over a band K1 < K < K2 to
+    # a0 / (4 B) [exp(-B / K2^2) - exp(-B / K1^2)]; the tile resolves 2 pi / L < K < pi / dx.
+    # A 32 m tile at U19.5 = 10 m/s holds about half of the sea's height variance.
+    import math
+
+    u, size, n = 10.0, 32.0, 64
+    scene = seaecho.parse_scene(f'[sea]\nspectrum = "pierson-moskowitz"\nwind_speed_m_s = {u}'
+                                f'\nsize_x_m = {size}\nnx = {n}\n')
+    text = _rows(scene)["expected Hs"]
+    b = 0.74 * G**2 / u**4
+    k1, k2 = 2 * math.pi / size, math.pi / (size / n)
+    var = 8.1e-3 / (4 * b) * (math.exp(-b / k2**2) - math.exp(-b / k1**2))
+    assert _number(text, "m in the tile") == pytest.approx(4 * math.sqrt(var), rel=5e-3)
+    assert _number(text, "m (whole") == pytest.approx(0.2092 * u**2 / G, rel=5e-3)
+    assert 4 * math.sqrt(var) < 0.8 * 0.2092 * u**2 / G  # the band matters here

@@ -15,6 +15,21 @@ def test_polygon_inclusion_and_distance():
     assert distance_to_outline(pts, square) == pytest.approx([5, 1, 0.5, np.sqrt(2)])
 
 
+def test_even_odd_rule_on_a_concave_outline():
+    # a U (a bay 40 m wide and 60 m deep cut into a 100 m square from the north): a
+    # horizontal ray from a point left of the outline, or in the bay, crosses it an even
+    # number of times (Franklin's crossing test): outside; on the land, an odd number
+    u = [[0, 0], [100, 0], [100, 100], [70, 100], [70, 40], [30, 40], [30, 100], [0, 100]]
+    pts = np.array([[-5, 50], [-5, 20], [50, 70], [50, 20], [15, 70], [85, 70], [110, 70]])
+    assert inside_polygon(pts, u).tolist() == [False, False, False, True, True, True, False]
+    assert inside_polygon(pts, u[::-1]).tolist() == inside_polygon(pts, u).tolist()
+    # the mesh covers the U's area, 100^2 - 40 x 60 m^2 (its edges on the 10 m grid)
+    v, f, _ = land_mesh(u, 5.0, 0.0, 10.0)
+    tri = v[f]
+    area = 0.5 * np.abs(np.cross(tri[:, 1, :2] - tri[:, 0, :2], tri[:, 2, :2] - tri[:, 0, :2]))
+    assert area.sum() == pytest.approx(100**2 - 40 * 60)
+
+
 def test_mesh_follows_the_profile_and_faces_up():
     outline = [[0, 0], [400, 0], [400, 300], [0, 300]]
     v, f, cells = land_mesh(outline, 30.0, 50.0, 10.0)

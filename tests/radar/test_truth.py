@@ -65,8 +65,13 @@ def test_truth_positions_headings_and_rcs(run_ds):
     # targets: p0 + v t
     np.testing.assert_allclose(pos[:, 3], np.array([-30, 40, 0.2]) + np.outer(t, [1, -2, 0]))
     # the buoy: IMO MSC.192(79) 5 m^2 at X band, Swerling 3 with a 4-pulse dwell
+    # (sigma = 5 m^2 F, eq T1, F the target's draw for its dwell: pulse // 4)
+    from seaecho.targets.swerling import swerling_factor
+
     rcs = ds["truth_rcs"].values[:, 2, 0]
-    assert rcs.mean() != 5.0 and np.all(rcs[:4] == rcs[0]) and rcs[4] != rcs[0]
+    f = swerling_factor(_scene().run.seed, [3], np.arange(12)[:, None], 4, target=[0])[:, 0]
+    np.testing.assert_allclose(rcs, 5.0 * f, rtol=1e-12)
+    assert np.all(rcs[:4] == rcs[0]) and rcs[4] != rcs[0]
     # the skiff's RCS changes each pulse; the steady far target keeps 1 m^2; ships unknown
     assert len(set(ds["truth_rcs"].values[:, 3, 0])) == 12
     np.testing.assert_array_equal(ds["truth_rcs"].values[:, 4, 0], 1.0)

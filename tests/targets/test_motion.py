@@ -153,13 +153,18 @@ from seaecho.targets.motion import (  # noqa: E402
 )
 
 
-def _regular_wave(amplitude, wavelength, direction, phase=0.0):
-    """One wave z = A cos(K.r - omega t + phase) travelling along ``direction`` [rad]."""
+def _regular_wave(amplitude, wavelength, direction, phase=0.0, backward=False):
+    """One wave z = A cos(K.r - omega t + phase) travelling along ``direction`` [rad], K
+    along ``direction``; ``backward``: the same wave as the component b of -K, z =
+    Re[b e^{+j omega t} e^{-j K.r}] with b = A e^{-j phase} (the second half of eq 12')."""
     k = 2 * np.pi / wavelength
     omega = np.sqrt(G * k)
-    return WaveComponents(np.array([k * np.cos(direction)]), np.array([k * np.sin(direction)]),
-                          np.array([omega]), np.array([amplitude * np.exp(1j * phase)]),
-                          np.array([0j]), np.array([1.0]))
+    amp = np.array([amplitude * np.exp(1j * phase)])
+    kx, ky = np.array([k * np.cos(direction)]), np.array([k * np.sin(direction)])
+    if backward:
+        return WaveComponents(-kx, -ky, np.array([omega]), np.array([0j]), np.conj(amp),
+                              np.array([1.0]))
+    return WaveComponents(kx, ky, np.array([omega]), amp, np.array([0j]), np.array([1.0]))
 
 
 def test_oscillator_limits():
@@ -206,8 +211,9 @@ def _time_domain(motion, wave, heading, v, dof, t_end):
     def forcing(t):
         cx, cy = v[0] * t, v[1] * t
         px, py = cx + xi * c - eta * s, cy + xi * s + eta * c
-        e = np.exp(1j * (wave.kx[0] * px + wave.ky[0] * py - wave.omega[0] * t))
-        z = np.real(wave.a[0] * e)
+        e = np.exp(1j * (wave.kx[0] * px + wave.ky[0] * py))
+        ph = np.exp(-1j * wave.omega[0] * t)
+        z = np.real((wave.a[0] * ph + wave.b[0] * np.conj(ph)) * e)
         return float(np.sum(ww * basis * z))
 
     wn = (motion.heave_frequency, motion.pitch_frequency, motion.roll_frequency)[dof]
@@ -217,15 +223,18 @@ def _time_domain(motion, wave, heading, v, dof, t_end):
     return sol.y[0, -1]
 
 
-@pytest.mark.parametrize(("dof", "wavelength", "direction", "speed"), [
+@pytest.mark.parametrize(("dof", "wavelength", "direction", "speed", "backward"), [
     # heave, head-on wave near the natural frequency
-    pytest.param(0, 25.0, 0.0, 0.0, marks=pytest.mark.slow),
-    (0, 60.0, np.pi, 4.0),        # heave, following wave met at 4 m/s (encounter)
-    pytest.param(2, 60.0, np.pi / 2, 0.0, marks=pytest.mark.slow),  # roll, beam sea
+    pytest.param(0, 25.0, 0.0, 0.0, False, marks=pytest.mark.slow),
+    (0, 60.0, np.pi, 4.0, False),  # heave, following wave met at 4 m/s (encounter)
+    # the same wave as a component b of -K: its encounter frequency -omega - K.V (eq S3)
+    (0, 60.0, np.pi, 4.0, True),
+    pytest.param(2, 60.0, np.pi / 2, 0.0, False, marks=pytest.mark.slow),  # roll, beam sea
 ])
-def test_dynamic_response_matches_time_integration(dof, wavelength, direction, speed):
+def test_dynamic_response_matches_time_integration(dof, wavelength, direction, speed,
+                                                   backward):
     boat = BoxHullMotion(10.0, 3.0, 0.6, 0.15)
-    wave = _regular_wave(0.3, wavelength, direction, phase=0.4)
+    wave = _regular_wave(0.3, wavelength, direction, phase=0.4, backward=backward)
     v = (speed, 0.0)
     # transients decay as exp(-zeta omega_n t): below 1e-7 in heave at 40 s, 2e-4 in roll
     # at 150 s
@@ -292,3 +301,33 @@ def test_wave_components_are_the_surface():
         assert full.elevation(surf.x[j], surf.y[i], 3.0) == pytest.approx(z[i, j], abs=1e-12)
         assert pruned.elevation(surf.x[j], surf.y[i], 3.0) == pytest.approx(
             z[i, j], abs=0.05 * z.std())
+
+
+def test_slope_weight_is_a_spherical_bessel_function():
+    # eq S4's m(k, a) = 3 j k (sin ka - ka cos ka) / (ka)^3 = 3 j k j_1(ka) / (ka), with
+    # j_1(z) = sin z / z^2 - cos z / z the spherical Bessel function (Abramowitz & Stegun
+    # 1964, 10.1.11), evaluated by scipy independently of the module's series near 0
+    from scipy.special import spherical_jn
+
+    from seaecho.targets.motion import _slope_weight
+
+    a = 5.0
+    ka = np.concatenate([np.geomspace(1e-6, 20.0, 200), [9.99e-4, 1.001e-3]])
+    k = np.concatenate([ka, -ka]) / a
+    want = 3j * k * spherical_jn(1, np.abs(k) * a) / (np.abs(k) * a)
+    np.testing.assert_allclose(_slope_weight(k, a), want, rtol=1e-9, atol=0)
+    assert _slope_weight(np.array([0.0]), a)[0] == 0.0
+
+
+def test_a_ships_metacentric_height_sets_its_roll_period():
+    # [[ships]] metacentric_height_m reaches the hull: T_4 = 2 pi k_xx / sqrt(g GM),
+    # k_xx = 0.35 B (Journee & Massie 2001, ch. 6); default GM = 0.05 B (a modelling choice)
+    from seaecho.build import _box_motion
+    from seaecho.config import parse_scene
+
+    for extra, gm in [({"metacentric_height_m": 0.3}, 0.3), ({}, 0.05 * 2.5)]:
+        cfg = parse_scene(_wave_motion_scene(**extra)).all_ships[0]
+        box = _box_motion(cfg)
+        assert (box.length, box.beam, box.draft) == (8.0, 2.5, 0.8)
+        assert 2 * np.pi / box.roll_frequency == pytest.approx(
+            2 * np.pi * 0.35 * 2.5 / np.sqrt(G * gm), rel=1e-12)

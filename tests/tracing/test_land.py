@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 import pytest
+from scipy import stats
 
 from seaecho.build import build_engine, build_sea
 from seaecho.checks.preflight import check_run
@@ -105,6 +106,12 @@ def test_flat_land_patch_echo_is_the_radar_equation_of_gamma_sin_psi():
     var = math.gamma(4.0) / math.gamma(2.5) ** 2 - 1.0
     n_eff = mean.sum() ** 2 / (mean ** 2).sum()
     assert p.sum() / mean.sum() == pytest.approx(1.0, abs=4 * math.sqrt(var / n_eff))
+    # the facets' powers follow Billingsley's Weibull law of the scene's a_w = 1.5, eq L4:
+    # P(w > x) = exp(-(x / b)^(1 / a_w)), b = 1 / Gamma(1 + a_w); not the exponential
+    b = 1.0 / math.gamma(2.5)
+    assert stats.kstest(lan.power, lambda x: 1.0 - np.exp(-(np.maximum(x, 0) / b)
+                                                          ** (1 / 1.5))).pvalue > 1e-3
+    assert stats.kstest(lan.power, "expon").pvalue < 1e-6
     # and that echo is the pulse's: no sea, no target, no noise
     raw = sim.pulse(0)
     assert np.array_equal(raw, sim.radar.receive(0, [echo]))
@@ -209,3 +216,106 @@ def test_land_patches_outside_the_beam_are_skipped_within_the_stated_bound():
         assert got <= floor * at_peak
         checked += got > 1e-3 * floor * at_peak  # within 30 dB of the bound
     assert checked > 10
+
+
+def test_land_gamma_at_the_carrier_or_as_given():
+    # gamma of the terrain at the carrier, eq L3: farmland -15 dB at 10 GHz (Nathanson,
+    # Reilly & Cohen 1999, as restated by MATLAB's surfacegamma) + 5 log10(f / 10 GHz)
+    # (Barton 1985's f^(1/2)): -17.61 dB at 3 GHz; a scene's gamma_db replaces the table
+    from seaecho.build import build_land
+
+    def gamma_db(land, f_hz):
+        scene = parse_scene(_scene([land], carrier_frequency_hz=f_hz))
+        return 10.0 * math.log10(build_land(scene).pieces[0].gamma)
+
+    assert gamma_db(HEADLAND, 3e9) == pytest.approx(-15.0 - 2.6144, abs=1e-4)
+    assert gamma_db(HEADLAND, 10e9) == pytest.approx(-15.0, abs=1e-12)
+    given = {k: v for k, v in HEADLAND.items() if k != "terrain"}
+    assert gamma_db({**given, "gamma_db": -7.0}, 3e9) == pytest.approx(-7.0, abs=1e-12)
+
+
+def test_bistatic_land_echo_is_gamma_times_the_geometric_mean_and_shadowed_for_both():
+    # transmitter south, receiver east: a facet's RCS is eq L5 with eq L2's geometric
+    # mean gamma sqrt(sin psi_i sin psi_s) A_f w_f (the bistatic constant-gamma law,
+    # Willis 2005, section 9.2), not the transmitter's gamma sin psi_i; a wall (not
+    # echoing) between the receiver and part of the field hides that part from the
+    # receiver only, and the land echoes on HH and VV alike, nothing cross-polarised
+    field = dict(HEADLAND, name="field", outline_m=[[-400, -1000], [400, -1000], [400, 0],
+                                                    [-400, 0]],
+                 height_m=1.0, shore_width_m=0.0, resolution_m=20.0, terrain="flatland")
+    wall = dict(HEADLAND, name="wall", outline_m=[[700, -560], [760, -560], [760, -440],
+                                                  [700, -440]], echo=False)
+    scene = _scene([field, wall], tx=(0.0, -2000.0, 60.0),
+                   channels=["HH", "HV", "VH", "VV"])
+    scene["receiver"] = {"position_m": (2000.0, -500.0, 30.0),
+                         "antenna": {"pattern": "isotropic", "look_at_m": (0, -500, 0)}}
+    sim = Simulation(parse_scene(scene))
+    geo = sim.radar.geometry(0)
+    lan = sim.land
+    tx, rx = geo.tx.position, geo.rx.position
+    c = lan.centroid
+    sigma = lan.rcs(tx, rx)
+    top = np.isclose(c[:, 2], 1.0)  # horizontal facets: sin psi = height / range
+    sin_i = (tx[2] - c[:, 2]) / np.linalg.norm(c - tx, axis=-1)
+    sin_s = (rx[2] - c[:, 2]) / np.linalg.norm(c - rx, axis=-1)
+    gamma = 10 ** (-20 / 10)  # flatland at 10 GHz
+    # the receiver's shadow of the 40 m wall from 30 m: the field behind it, the wall's
+    # edges seen from the receiver (y = -500 +- 60 m at x = 700..760) fanned out to x = 400
+    bearing = (c[:, 1] - rx[1]) / (rx[0] - c[:, 0])
+    behind = top & (np.abs(bearing) < 60.0 / 1300.0 - 0.01)
+    clear = top & (np.abs(bearing) > 60.0 / 1240.0 + 0.01)
+    assert behind.sum() > 300 and clear.sum() > 2500
+    assert not sigma[behind].any()
+    assert (sigma[clear] > 0).all()
+    np.testing.assert_allclose(sigma[clear], (gamma * np.sqrt(sin_i * sin_s) * lan.area
+                                              * lan.power)[clear], rtol=1e-12)
+    # the transmitter's gamma sin psi_i alone would be sqrt(sin psi_i / sin psi_s) times
+    # eq L2: 1.3 to 2.1 times here
+    assert np.abs(np.sqrt(sin_i / sin_s)[clear] - 1).min() > 0.25
+    a = np.asarray(lan.echo(geo).amplitudes)  # (HH, HV, VH, VV) per lit facet
+    np.testing.assert_allclose(a[3], a[0], rtol=1e-12)
+    assert np.abs(a[1:3]).max() < 1e-12 * np.abs(a[0]).min()
+    # the facets' phases are uniform over [0, 2 pi) (module docstring): Kolmogorov-Smirnov
+    assert stats.kstest(lan.phase, stats.uniform(0.0, 2.0 * np.pi).cdf).pvalue > 1e-3
+
+
+def test_land_below_the_radio_horizon_is_silent():
+    # a slope rising 30 m over 200 m, facing a 25 m antenna 30 km away on the 4/3 Earth:
+    # a facet at height h is above the horizon when its distance is below
+    # sqrt(2 k a) (sqrt(25 m) + sqrt(h)) (the 4/3-Earth radar horizon, Skolnik 2001, ch. 8;
+    # the radar line-of-sight equation of the ATIS Telecom Glossary / Federal Standard
+    # 1037C: 4.12 km (sqrt(h_a) + sqrt(h_o)), heights in m), i.e. h > 5 m at 30 km. On a
+    # flat Earth the whole slope is lit.
+    from seaecho.build import build_land
+    from seaecho.geometry.earth import effective_radius, horizon_range
+    from seaecho.geometry.land import land_mesh
+    from seaecho.tracing.land import LandEchoes
+
+    hill = dict(HEADLAND, name="hill", outline_m=[[-1000, 30000], [1000, 30000],
+                                                  [1000, 30600], [-1000, 30600]],
+                height_m=30.0, shore_width_m=200.0, resolution_m=20.0)
+    scene = _scene([hill], tx=(0.0, 0.0, 25.0))
+    v, f, _ = land_mesh(hill["outline_m"], 30.0, 200.0, 20.0)
+    mid = v[f].mean(axis=1)  # the facets in the scene's (Earth-following) coordinates
+    # the seaward slope, away from the sides (there the nearest shore is the side's)
+    slope = (mid[:, 1] < 30190.0) & (np.abs(mid[:, 0]) < 700.0)
+    d = np.hypot(mid[:, 0], mid[:, 1])
+    assert d[slope].min() > 30000.0
+    d_h = horizon_range(25.0, mid[:, 2], effective_radius(4.0 / 3.0))
+    assert float(horizon_range(25.0, 5.0, effective_radius(4.0 / 3.0))) == pytest.approx(
+        4.12e3 * (5.0 + math.sqrt(5.0)), rel=2e-3)
+    below, above = slope & (d > 1.05 * d_h), slope & (d < 0.95 * d_h)
+    assert below.sum() >= 20 and above.sum() >= 20
+    for earth in ("spherical", "flat"):
+        s = parse_scene({**scene, "propagation": {"earth": earth}})
+        model = build_land(s)
+        lan = LandEchoes(model, None, 0)
+        tx = np.array([0.0, 0.0, 25.0])
+        if model.earth is not None:
+            tx = model.earth.position(tx)
+        sigma = lan.rcs(tx, tx)
+        assert (sigma[above] > 0).all()
+        if earth == "spherical":
+            assert not sigma[below].any()
+        else:
+            assert (sigma[below] > 0).all()  # the Earth hides them, not the land
