@@ -21,6 +21,10 @@ By default the coastal and shipborne revolutions at half their PRF (1250 pulses 
 one revolution) and the S-band scene over a 6 deg sector; ``--paper``: the scenes as they
 are (2500-pulse revolutions; the S-band scene's 3000-pulse revolution takes hours);
 ``--quick``: a few pulses each on small tiles. The times per scene are printed.
+
+The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
+polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
+doi:10.1109/RADAR.2006.1631862.
 """
 
 from __future__ import annotations
