@@ -617,7 +617,8 @@ def build_tracing(scene, base_dir: str | os.PathLike = ".", *, frequency: float 
     return TracingModel(mode=mode, shadowing=cfg.shadowing,
                         refresh_interval_s=cfg.refresh_interval_s,
                         variant=variant,
-                        objects=tuple(objects), frequency=f, eps_r=eps_r, subfacet=subfacet)
+                        objects=tuple(objects), frequency=f, eps_r=eps_r, subfacet=subfacet,
+                        periodic_apron=cfg.periodic_apron)
 
 
 def platform_positions(scene, radar: RadarModel | None = None,
