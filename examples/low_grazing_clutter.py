@@ -94,7 +94,7 @@ def references(sea_state: int, grazing_deg: float, pol: str, f_ghz: float = F_HZ
 # --- 1. the per-facet NRCS ---------------------------------------------------------------
 
 def facet_table(sea_states=SEA_STATES, grazing_deg=GRAZING_DEG, seed: int = 1,
-                multipath: bool = False) -> list[dict]:
+                multipath: bool = False, shadowing: bool = True) -> list[dict]:
     from sigma0_facets_vs_grazing import simulated
 
     rows = []
@@ -104,7 +104,8 @@ def facet_table(sea_states=SEA_STATES, grazing_deg=GRAZING_DEG, seed: int = 1,
             warnings.simplefilter("ignore")
             sim = simulated(SEA_STATE_WIND[ss], seed=seed, grazing_deg=grazing_deg,
                             f_hz=F_HZ,
-                            radar_height_m=RADAR_HEIGHT_M if multipath else None)
+                            radar_height_m=RADAR_HEIGHT_M if multipath else None,
+                            multipath_shadowing=shadowing)
         sim, apparent = sim if multipath else (sim, None)
         for i, g in enumerate(grazing_deg):
             for pol, j in (("H", 0), ("V", 3)):
