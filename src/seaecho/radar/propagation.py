@@ -76,7 +76,7 @@ condition "with shadowing effect")
 
 .. math::
 
-    p_{ill}(\zeta) = (1 + 2\Lambda)\, p(\zeta)\, F(\zeta)^{2\Lambda}         (P5)
+    p_{ill}(\\zeta) = (1 + 2\\Lambda)\\, p(\\zeta)\\, F(\\zeta)^{2\\Lambda}         (P5)
 
 (normalised: the lit crests reflect the wave that the shadowed troughs do not see; with
 2 Lambda = m - 1 an integer, the density of the highest of m independent heights), and
@@ -85,8 +85,8 @@ exp(-2 g^2) where Lambda = 0, at high grazing angles):
 
 .. math::
 
-    \bar\zeta = \int \zeta\, p_{ill}\, d\zeta, \qquad
-    \rho_{ill} = \int p_{ill}(\zeta)\, e^{-j q (\zeta - \bar\zeta)}\, d\zeta  (P6)
+    \bar\\zeta = \\int \\zeta\\, p_{ill}\\, d\\zeta, \\qquad
+    \rho_{ill} = \\int p_{ill}(\\zeta)\\, e^{-j q (\\zeta - \bar\\zeta)}\\, d\\zeta  (P6)
 
 The factor e^{-j q zeta_bar} is the mirror raised to the mean height of the lit crests.
 A scatterer among the waves (a facet at height h_2) receives the reflected wave only
@@ -97,8 +97,8 @@ reflected legs together
 
 .. math::
 
-    p_{ill}(\zeta \mid h_2) = (1 + 2\Lambda)\, p(\zeta)\, F(\zeta)^{2\Lambda}
-                            / F(h_2)^{1 + 2\Lambda}, \qquad \zeta < h_2          (P7)
+    p_{ill}(\\zeta \\mid h_2) = (1 + 2\\Lambda)\\, p(\\zeta)\\, F(\\zeta)^{2\\Lambda}
+                            / F(h_2)^{1 + 2\\Lambda}, \\qquad \\zeta < h_2          (P7)
 
 (eq P5 for h_2 -> inf: a target high above the waves). The two-ray geometry (P2-P4) is
 evaluated with the heights above zeta_bar, h_1 - zeta_bar and h_2 - zeta_bar (> 0 by
