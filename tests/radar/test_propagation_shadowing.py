@@ -99,6 +99,15 @@ def test_high_grazing_is_the_mean_sea_and_low_grazing_raises_the_mirror():
     r_h, _ = fresnel_coefficients(np.sin(psi), EPS)
     np.testing.assert_allclose(fh, 1.0 + r_h * rho * np.exp(-1j * k * delta), rtol=1e-12)
     assert delta[0] < 2 * h1 * 10.0 / d[0] * 0.95  # lower than over the mean sea
+    # a facet among the waves (0.3 m up): its mirror lies below it (eq P7)
+    low = np.array([[d[0], 0.0, 0.3]])
+    z7, rho7 = illuminated_reflection(lam, sigma_h, 2 * k * np.sin(psi0), ceiling=0.3)
+    assert z7[0] < 0.3 < zeta_bar[0]
+    _, delta7, _ = two_ray_geometry(h1 - z7, 0.3 - z7, d)
+    psi7, _, _ = two_ray_geometry(h1 - z7, 0.3 - z7, d)
+    r_h7, _ = fresnel_coefficients(np.sin(psi7), EPS)
+    np.testing.assert_allclose(shadowed.factors([0.0, 0.0, h1], low)[0],
+                               1.0 + r_h7 * rho7 * np.exp(-1j * k * delta7), rtol=1e-9)
 
 
 def test_scene_key_builds_the_slopes_of_the_band():
