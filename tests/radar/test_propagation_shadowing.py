@@ -101,7 +101,10 @@ def test_high_grazing_is_the_mean_sea_and_low_grazing_raises_the_mirror():
     assert delta[0] < 2 * h1 * 10.0 / d[0] * 0.95  # lower than over the mean sea
     # a facet among the waves (0.3 m up): its mirror lies below it (eq P7)
     low = np.array([[d[0], 0.0, 0.3]])
-    z7, rho7 = illuminated_reflection(lam, sigma_h, 2 * k * np.sin(psi0), ceiling=0.3)
+    psi_low, _, _ = two_ray_geometry(h1, 0.3, d)
+    lam_low = smith_lambda(smith_nu(np.pi / 2 - psi_low, sigma_dir))
+    z7, rho7 = illuminated_reflection(lam_low, sigma_h, 2 * k * np.sin(psi_low),
+                                      ceiling=0.3)
     assert z7[0] < 0.3 < zeta_bar[0]
     _, delta7, _ = two_ray_geometry(h1 - z7, 0.3 - z7, d)
     psi7, _, _ = two_ray_geometry(h1 - z7, 0.3 - z7, d)
