@@ -255,7 +255,8 @@ def _energy(ds) -> np.ndarray:
 
 
 def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
-               n: int = 128, seeds=PPI_SEEDS, multipath: bool = False) -> dict:
+               n: int = 128, seeds=PPI_SEEDS, multipath: bool = False,
+               apron: bool = True) -> dict:
     """Eq (V1): the PPI-calibrated NRCS, HH and VV [linear], and the run's own map,
     both averaged over the sea realisations ``seeds``."""
     import seaecho
@@ -266,7 +267,8 @@ def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 1
         for seed in seeds:
             t = time.perf_counter()
             sea = seaecho.simulate(ppi_scene(range_m, sea_state, tile_m, n, seed=seed,
-                                             multipath=multipath), progress=False)
+                                             multipath=multipath, apron=apron),
+                                   progress=False)
             wall += time.perf_counter() - t
             e_sea = e_sea + _energy(sea) / len(seeds)
             # (polarisation, y_cell, x_cell): sigma_mn x visibility
@@ -291,10 +293,11 @@ def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 1
 
 
 def ppi_table(ranges_m=PPI_RANGES_M, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
-              n: int = 128, seeds=PPI_SEEDS, multipath: bool = False) -> list[dict]:
+              n: int = 128, seeds=PPI_SEEDS, multipath: bool = False,
+              apron: bool = True) -> list[dict]:
     rows = []
     for r in ranges_m:
-        res = ppi_sigma0(r, sea_state, tile_m, n, seeds, multipath)
+        res = ppi_sigma0(r, sea_state, tile_m, n, seeds, multipath, apron)
         row = {"range_m": r, "grazing_deg": round(res["grazing_deg"], 3),
                "sea_state": sea_state, "pulses": res["pulses"],
                "wall_s": round(res["wall_s"], 1)}
@@ -338,10 +341,14 @@ def main(argv: list[str] | None = None) -> None:
                     help="a 64 m tile and two sea states (a smoke run)")
     ap.add_argument("--multipath", action="store_true",
                     help="the sea's two-ray propagation factor (module docstring)")
+    ap.add_argument("--no-apron", action="store_true",
+                    help="part 2: the tile traced alone, without its periodic apron "
+                    "([tracing] periodic_apron = false; files *_alone.csv)")
     ap.add_argument("--seeds", type=int, default=len(PPI_SEEDS),
                     help=f"sea realisations per range of part 2 (default {len(PPI_SEEDS)})")
     a = ap.parse_args(argv)
     tag = "_multipath" if a.multipath else ""
+    ppi_tag = tag + ("_alone" if a.no_apron else "")
     out = Path(a.outdir)
     out.mkdir(parents=True, exist_ok=True)
     if a.part in ("nrcs", "all"):
@@ -359,10 +366,10 @@ def main(argv: list[str] | None = None) -> None:
         tile, n = (64.0, 64) if a.quick else (128.0, 128)
         ranges = (1000.0, 2000.0) if a.quick else PPI_RANGES_M
         rows = ppi_table(ranges, tile_m=tile, n=n, seeds=(3,) if a.quick else PPI_SEEDS[:a.seeds],
-                         multipath=a.multipath)
-        write_csv(rows, out / f"low_grazing_ppi{tag}.csv")
+                         multipath=a.multipath, apron=not a.no_apron)
+        write_csv(rows, out / f"low_grazing_ppi{ppi_tag}.csv")
         ex = falloff_exponents(rows)
-        write_csv(ex, out / f"low_grazing_falloff{tag}.csv")
+        write_csv(ex, out / f"low_grazing_falloff{ppi_tag}.csv")
         for e in ex:
             print(e)
 
