@@ -191,7 +191,7 @@ def plot_facet_table(rows: list[dict], path: Path) -> None:
 
 def ppi_scene(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
               n: int = 128, target: bool = False, seed: int = 3, multipath: bool = False,
-              apron: bool = False):
+              apron: bool = False, shadowing: bool = True):
     """The coastal scene's radar, a sector scan over a tile ``range_m`` north of it
     (the sea with the two-ray factor when ``multipath``; the calibration target always
     in free space)."""
@@ -212,6 +212,7 @@ def ppi_scene(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 12
           "tracing.periodic_apron": apron,
           "land": [],  # the open sea: the scene's headland would hide the tile beyond 5 km
           "propagation.multipath": "two-ray" if multipath and not target else "none",
+          "propagation.multipath_shadowing": shadowing,
           "sea.size_x_m": tile_m, "sea.nx": n,
           "sea.wind_speed_m_s": float(u19_5_from_u10(SEA_STATE_WIND[sea_state])),
           "targets": ([{"name": "calibration", "position_m": [0.0, 0.0, 0.0],
@@ -267,7 +268,7 @@ def _energy(ds) -> np.ndarray:
 
 def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
                n: int = 128, seeds=PPI_SEEDS, multipath: bool = False,
-               apron: bool = True) -> dict:
+               apron: bool = True, shadowing: bool = True) -> dict:
     """Eq (V1): the PPI-calibrated NRCS, HH and VV [linear], and the run's own map,
     both averaged over the sea realisations ``seeds``."""
     import seaecho
@@ -278,7 +279,8 @@ def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 1
         for seed in seeds:
             t = time.perf_counter()
             sea = seaecho.simulate(ppi_scene(range_m, sea_state, tile_m, n, seed=seed,
-                                             multipath=multipath, apron=apron),
+                                             multipath=multipath, apron=apron,
+                                             shadowing=shadowing),
                                    progress=False)
             wall += time.perf_counter() - t
             e_sea = e_sea + _energy(sea) / len(seeds)
@@ -305,10 +307,10 @@ def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 1
 
 def ppi_table(ranges_m=PPI_RANGES_M, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
               n: int = 128, seeds=PPI_SEEDS, multipath: bool = False,
-              apron: bool = True) -> list[dict]:
+              apron: bool = True, shadowing: bool = True) -> list[dict]:
     rows = []
     for r in ranges_m:
-        res = ppi_sigma0(r, sea_state, tile_m, n, seeds, multipath, apron)
+        res = ppi_sigma0(r, sea_state, tile_m, n, seeds, multipath, apron, shadowing)
         row = {"range_m": r, "grazing_deg": round(res["grazing_deg"], 3),
                "sea_state": sea_state, "pulses": res["pulses"],
                "wall_s": round(res["wall_s"], 1)}
@@ -352,20 +354,23 @@ def main(argv: list[str] | None = None) -> None:
                     help="a 64 m tile and two sea states (a smoke run)")
     ap.add_argument("--multipath", action="store_true",
                     help="the sea's two-ray propagation factor (module docstring)")
+    ap.add_argument("--no-shadowing", action="store_true",
+                    help="with --multipath: the mean sea as the mirror ([propagation] "
+                    "multipath_shadowing = false; files *_mean_sea.csv)")
     ap.add_argument("--no-apron", action="store_true",
                     help="part 2: the tile traced alone, without its periodic apron "
                     "([tracing] periodic_apron = false; files *_alone.csv)")
     ap.add_argument("--seeds", type=int, default=len(PPI_SEEDS),
                     help=f"sea realisations per range of part 2 (default {len(PPI_SEEDS)})")
     a = ap.parse_args(argv)
-    tag = "_multipath" if a.multipath else ""
+    tag = "_multipath" + ("_mean_sea" if a.no_shadowing else "") if a.multipath else ""
     ppi_tag = tag + ("_alone" if a.no_apron else "")
     out = Path(a.outdir)
     out.mkdir(parents=True, exist_ok=True)
     if a.part in ("nrcs", "all"):
         rows = facet_table(sea_states=(3,) if a.quick else SEA_STATES,
                            grazing_deg=(0.5, 3.0) if a.quick else GRAZING_DEG,
-                           multipath=a.multipath)
+                           multipath=a.multipath, shadowing=not a.no_shadowing)
         write_csv(rows, out / f"low_grazing_sigma0{tag}.csv")
         if not a.multipath:
             plot_facet_table(rows, out / "low_grazing_sigma0.png")
@@ -377,7 +382,8 @@ def main(argv: list[str] | None = None) -> None:
         tile, n = (64.0, 64) if a.quick else (128.0, 128)
         ranges = (1000.0, 2000.0) if a.quick else PPI_RANGES_M
         rows = ppi_table(ranges, tile_m=tile, n=n, seeds=(3,) if a.quick else PPI_SEEDS[:a.seeds],
-                         multipath=a.multipath, apron=not a.no_apron)
+                         multipath=a.multipath, apron=not a.no_apron,
+                         shadowing=not a.no_shadowing)
         write_csv(rows, out / f"low_grazing_ppi{ppi_tag}.csv")
         ex = falloff_exponents(rows)
         write_csv(ex, out / f"low_grazing_falloff{ppi_tag}.csv")
