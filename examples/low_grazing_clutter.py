@@ -21,8 +21,8 @@ sigma0 is the apparent one, as the published models' (``low_grazing_ppi_multipat
    realisations), the tile traced alone and with its apron
    (``low_grazing_tile_edge.csv``).
 4. **The apron in the bundled scenes** (``--part scenes``): the visible fraction and the
-   mean NRCS of the paper's Simulations 1-4 and the low-grazing scenes without and with
-   the apron (``low_grazing_apron_scenes.csv``).
+   mean NRCS of Simulations 1-4 (the ``paper_sim*`` scenes) and of the low-grazing
+   scenes without and with the apron (``low_grazing_apron_scenes.csv``).
 
 1. **Per-facet NRCS** (``--part nrcs``): the simulation's sea NRCS at 9.4 GHz, grazing
    0.3-3 deg, sea states 2-5 (U10 = 4.5, 7, 10, 12.5 m/s, ``tests/reference_models.py``),
