@@ -1,17 +1,28 @@
 """Sea clutter of a scanning X-band radar at low grazing against the published models.
 
-Run: ``python examples/low_grazing_clutter.py [--part nrcs|ppi|all] [--quick]
-[--multipath] [OUTDIR]`` (default ``all`` into ``docs/figures``). Rerunnable on any
-version of the code: every number of docs/scanning.md's "Validation at low grazing" and
+Run: ``python examples/low_grazing_clutter.py [--part nrcs|ppi|edge|scenes|all] [--quick]
+[--multipath] [--no-apron] [--seeds N] [OUTDIR]`` (default ``all`` into
+``docs/figures``). Every number of docs/scanning.md's "Validation at low grazing" and
 "Propagation over the sea" comes from here.
 
 ``--multipath`` turns on the sea's two-ray propagation factor (``[propagation]
-multipath = "two-ray"``, ``seaecho.radar.propagation``): part 1 adds the apparent NRCS
+multipath = "two-ray"``, ``seaecho.radar.propagation``) with its reflected legs shadowed
+by the waves (``multipath_shadowing``, the default): part 1 adds the apparent NRCS
 that a radar 35 m up (at h / tan psi) sees, each facet's sigma_mn weighted by
 |F_m F_n|^2 at its own height (``low_grazing_sigma0_multipath.csv``); part 2 runs the
 sea with the factor and calibrates by the target in free space, so that the PPI's
 sigma0 is the apparent one, as the published models' (``low_grazing_ppi_multipath.csv``,
-``low_grazing_falloff_multipath.csv``).
+``low_grazing_falloff_multipath.csv``). Part 2 traces the tile with its periodic apron
+(``[tracing] periodic_apron``); ``--no-apron``: the tile alone (``*_alone.csv``).
+
+3. **The tile's edge** (``--part edge``): the run's facet NRCS map (ray-traced
+   occlusion) in the quarter of the tile nearest the radar against the farthest
+   quarter, at 0.3, 0.5 and 1 deg (the PPI part's radar, sea state 4, eight
+   realisations), the tile traced alone and with its apron
+   (``low_grazing_tile_edge.csv``).
+4. **The apron in the bundled scenes** (``--part scenes``): the visible fraction and the
+   mean NRCS of Simulations 1-4 (the ``paper_sim*`` scenes) and of the low-grazing
+   scenes without and with the apron (``low_grazing_apron_scenes.csv``).
 
 1. **Per-facet NRCS** (``--part nrcs``): the simulation's sea NRCS at 9.4 GHz, grazing
    0.3-3 deg, sea states 2-5 (U10 = 4.5, 7, 10, 12.5 m/s, ``tests/reference_models.py``),
@@ -74,6 +85,9 @@ PPI_SEA_STATE = 4
 #: cells of K clutter, one realisation a +-2.5 dB estimate
 PPI_SEEDS = (3, 4, 5, 6)
 RADAR_HEIGHT_M = 35.0
+#: realisations of the tile-edge comparison: a quarter of a 128 m tile holds a third of
+#: the dominant wave at sea state 4, so one realisation's quarters differ by a factor 2-10
+EDGE_SEEDS = tuple(range(3, 11))
 
 
 def db(x):
@@ -94,7 +108,7 @@ def references(sea_state: int, grazing_deg: float, pol: str, f_ghz: float = F_HZ
 # --- 1. the per-facet NRCS ---------------------------------------------------------------
 
 def facet_table(sea_states=SEA_STATES, grazing_deg=GRAZING_DEG, seed: int = 1,
-                multipath: bool = False) -> list[dict]:
+                multipath: bool = False, shadowing: bool = True) -> list[dict]:
     from sigma0_facets_vs_grazing import simulated
 
     rows = []
@@ -104,7 +118,8 @@ def facet_table(sea_states=SEA_STATES, grazing_deg=GRAZING_DEG, seed: int = 1,
             warnings.simplefilter("ignore")
             sim = simulated(SEA_STATE_WIND[ss], seed=seed, grazing_deg=grazing_deg,
                             f_hz=F_HZ,
-                            radar_height_m=RADAR_HEIGHT_M if multipath else None)
+                            radar_height_m=RADAR_HEIGHT_M if multipath else None,
+                            multipath_shadowing=shadowing)
         sim, apparent = sim if multipath else (sim, None)
         for i, g in enumerate(grazing_deg):
             for pol, j in (("H", 0), ("V", 3)):
@@ -178,7 +193,8 @@ def plot_facet_table(rows: list[dict], path: Path) -> None:
 # --- 2. from the PPI of a scanning run ---------------------------------------------------
 
 def ppi_scene(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
-              n: int = 128, target: bool = False, seed: int = 3, multipath: bool = False):
+              n: int = 128, target: bool = False, seed: int = 3, multipath: bool = False,
+              apron: bool = False, shadowing: bool = True):
     """The coastal scene's radar, a sector scan over a tile ``range_m`` north of it
     (the sea with the two-ray factor when ``multipath``; the calibration target always
     in free space)."""
@@ -196,7 +212,10 @@ def ppi_scene(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 12
           "radar.window_start_m": range_m - 0.75 * tile_m - 60.0,
           "radar.window_end_m": range_m + 0.75 * tile_m + 60.0,
           "propagation.earth": "flat", "run.seed": seed,
+          "tracing.periodic_apron": apron,
+          "land": [],  # the open sea: the scene's headland would hide the tile beyond 5 km
           "propagation.multipath": "two-ray" if multipath and not target else "none",
+          "propagation.multipath_shadowing": shadowing,
           "sea.size_x_m": tile_m, "sea.nx": n,
           "sea.wind_speed_m_s": float(u19_5_from_u10(SEA_STATE_WIND[sea_state])),
           "targets": ([{"name": "calibration", "position_m": [0.0, 0.0, 0.0],
@@ -206,6 +225,77 @@ def ppi_scene(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 12
     return seaecho.with_overrides(seaecho.load_scene(SCENE), ov)
 
 
+def edge_table(grazing_deg=(0.3, 0.5, 1.0), sea_state: int = PPI_SEA_STATE,
+               tile_m: float = 128.0, n: int = 128, seeds=EDGE_SEEDS) -> list[dict]:
+    """The tile-edge under-shadowing: the run's facet NRCS map (ray-traced occlusion) in
+    the quarter of the tile nearest the radar against the farthest quarter, the tile
+    traced alone and with its periodic apron (``[tracing] periodic_apron``), averaged
+    over the sea realisations ``seeds`` [dB]."""
+    from seaecho.simulation import Simulation
+
+    rows = []
+    for g in grazing_deg:
+        range_m = RADAR_HEIGHT_M / math.tan(math.radians(g))
+        row = {"grazing_deg": g, "range_m": round(range_m, 1), "sea_state": sea_state}
+        for apron in (False, True):
+            acc, vis, wall = 0.0, 0.0, 0.0
+            for seed in seeds:
+                sc = ppi_scene(range_m, sea_state, tile_m, n, seed=seed, apron=apron)
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    sim = Simulation(sc)
+                    t = time.perf_counter()
+                    truth = sim.sea_truth()  # (pol, y, x): y north, the radar south
+                    wall += time.perf_counter() - t
+                acc = acc + truth["sigma0"] / len(seeds)
+                vis = vis + truth["visibility"] / len(seeds)
+            q = acc.shape[1] // 4
+            tag = "apron" if apron else "alone"
+            for pol, j in (("HH", 0), ("VV", 3)):
+                row[f"{tag}_near_{pol}_db"] = round(float(db(acc[j, :q].mean())), 2)
+                row[f"{tag}_far_{pol}_db"] = round(float(db(acc[j, -q:].mean())), 2)
+                row[f"{tag}_all_{pol}_db"] = round(float(db(acc[j].mean())), 2)
+            row[f"{tag}_visible_near"] = round(float(vis[:q].mean()), 4)
+            row[f"{tag}_visible_far"] = round(float(vis[-q:].mean()), 4)
+            row[f"{tag}_wall_s"] = round(wall / len(seeds), 2)
+        rows.append(row)
+        print(row, flush=True)
+    return rows
+
+
+APRON_SCENES = ("paper_sim1_bistatic_64m", "paper_sim2_sar_128m_wind55",
+                "paper_sim3_sar_128m_wind0", "paper_sim4_sar_500m_u10",
+                "ship_low_grazing_80m", "coastal_vts_xband")
+
+
+def apron_scenes_table(names=APRON_SCENES) -> list[dict]:
+    """What the periodic apron changes in the bundled scenes: the visible fraction and the
+    mean NRCS of the sea-truth map (the sigma-map pulse), without and with
+    ``[tracing] periodic_apron``."""
+    from seaecho.config import load_scene
+    from seaecho.simulation import Simulation
+
+    rows = []
+    for name in names:
+        path = ROOT / "scenes" / f"{name}.toml"
+        scene = load_scene(path)
+        res = []
+        for apron in (False, True):
+            sc = scene.model_copy(update={"tracing": scene.tracing.model_copy(
+                update={"periodic_apron": apron})})
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                truth = Simulation(sc, base_dir=path.parent).sea_truth()
+            res.append((truth["sigma0"].mean(axis=(1, 2)), float(truth["visibility"].mean())))
+        (s0, v0), (s1, v1) = res
+        row = {"scene": name, "visible_alone": round(v0, 6), "visible_apron": round(v1, 6)}
+        for j, ch in enumerate(("HH", "HV", "VH", "VV")):
+            row[f"change_{ch}_db"] = round(float(db(s1[j]) - db(s0[j])), 4)
+        rows.append(row)
+        print(row, flush=True)
+    return rows
+
+
 def _energy(ds) -> np.ndarray:
     """Range-compressed energy summed over rays and gates, per channel [W]."""
     c = ds["compressed"].values
@@ -213,7 +303,8 @@ def _energy(ds) -> np.ndarray:
 
 
 def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
-               n: int = 128, seeds=PPI_SEEDS, multipath: bool = False) -> dict:
+               n: int = 128, seeds=PPI_SEEDS, multipath: bool = False,
+               apron: bool = True, shadowing: bool = True) -> dict:
     """Eq (V1): the PPI-calibrated NRCS, HH and VV [linear], and the run's own map,
     both averaged over the sea realisations ``seeds``."""
     import seaecho
@@ -224,7 +315,9 @@ def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 1
         for seed in seeds:
             t = time.perf_counter()
             sea = seaecho.simulate(ppi_scene(range_m, sea_state, tile_m, n, seed=seed,
-                                             multipath=multipath), progress=False)
+                                             multipath=multipath, apron=apron,
+                                             shadowing=shadowing),
+                                   progress=False)
             wall += time.perf_counter() - t
             e_sea = e_sea + _energy(sea) / len(seeds)
             # (polarisation, y_cell, x_cell): sigma_mn x visibility
@@ -249,10 +342,11 @@ def ppi_sigma0(range_m: float, sea_state: int = PPI_SEA_STATE, tile_m: float = 1
 
 
 def ppi_table(ranges_m=PPI_RANGES_M, sea_state: int = PPI_SEA_STATE, tile_m: float = 128.0,
-              n: int = 128, seeds=PPI_SEEDS, multipath: bool = False) -> list[dict]:
+              n: int = 128, seeds=PPI_SEEDS, multipath: bool = False,
+              apron: bool = True, shadowing: bool = True) -> list[dict]:
     rows = []
     for r in ranges_m:
-        res = ppi_sigma0(r, sea_state, tile_m, n, seeds, multipath)
+        res = ppi_sigma0(r, sea_state, tile_m, n, seeds, multipath, apron, shadowing)
         row = {"range_m": r, "grazing_deg": round(res["grazing_deg"], 3),
                "sea_state": sea_state, "pulses": res["pulses"],
                "wall_s": round(res["wall_s"], 1)}
@@ -291,33 +385,47 @@ def write_csv(rows: list[dict], path: Path) -> None:
 def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("outdir", nargs="?", default=str(ROOT / "docs" / "figures"))
-    ap.add_argument("--part", choices=("nrcs", "ppi", "all"), default="all")
+    ap.add_argument("--part", choices=("nrcs", "ppi", "edge", "scenes", "all"),
+                    default="all")
     ap.add_argument("--quick", action="store_true",
                     help="a 64 m tile and two sea states (a smoke run)")
     ap.add_argument("--multipath", action="store_true",
                     help="the sea's two-ray propagation factor (module docstring)")
+    ap.add_argument("--no-shadowing", action="store_true",
+                    help="with --multipath: the mean sea as the mirror ([propagation] "
+                    "multipath_shadowing = false; files *_mean_sea.csv)")
+    ap.add_argument("--no-apron", action="store_true",
+                    help="part 2: the tile traced alone, without its periodic apron "
+                    "([tracing] periodic_apron = false; files *_alone.csv)")
     ap.add_argument("--seeds", type=int, default=len(PPI_SEEDS),
                     help=f"sea realisations per range of part 2 (default {len(PPI_SEEDS)})")
     a = ap.parse_args(argv)
-    tag = "_multipath" if a.multipath else ""
+    tag = "_multipath" + ("_mean_sea" if a.no_shadowing else "") if a.multipath else ""
+    ppi_tag = tag + ("_alone" if a.no_apron else "")
     out = Path(a.outdir)
     out.mkdir(parents=True, exist_ok=True)
     if a.part in ("nrcs", "all"):
         rows = facet_table(sea_states=(3,) if a.quick else SEA_STATES,
                            grazing_deg=(0.5, 3.0) if a.quick else GRAZING_DEG,
-                           multipath=a.multipath)
+                           multipath=a.multipath, shadowing=not a.no_shadowing)
         write_csv(rows, out / f"low_grazing_sigma0{tag}.csv")
         if not a.multipath:
             plot_facet_table(rows, out / "low_grazing_sigma0.png")
         print_facet_table(rows)
+    if a.part in ("scenes", "all"):
+        write_csv(apron_scenes_table(), out / "low_grazing_apron_scenes.csv")
+    if a.part in ("edge", "all"):
+        rows = edge_table(seeds=(3,) if a.quick else EDGE_SEEDS)
+        write_csv(rows, out / "low_grazing_tile_edge.csv")
     if a.part in ("ppi", "all"):
         tile, n = (64.0, 64) if a.quick else (128.0, 128)
         ranges = (1000.0, 2000.0) if a.quick else PPI_RANGES_M
         rows = ppi_table(ranges, tile_m=tile, n=n, seeds=(3,) if a.quick else PPI_SEEDS[:a.seeds],
-                         multipath=a.multipath)
-        write_csv(rows, out / f"low_grazing_ppi{tag}.csv")
+                         multipath=a.multipath, apron=not a.no_apron,
+                         shadowing=not a.no_shadowing)
+        write_csv(rows, out / f"low_grazing_ppi{ppi_tag}.csv")
         ex = falloff_exponents(rows)
-        write_csv(ex, out / f"low_grazing_falloff{tag}.csv")
+        write_csv(ex, out / f"low_grazing_falloff{ppi_tag}.csv")
         for e in ex:
             print(e)
 

@@ -53,8 +53,8 @@ SIZE, N = 256.0, 256
 
 
 def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
-              grazing_deg=GRAZING, f_hz: float = F, radar_height_m: float | None = None
-              ) -> np.ndarray:
+              grazing_deg=GRAZING, f_hz: float = F, radar_height_m: float | None = None,
+              multipath_shadowing: bool = False) -> np.ndarray:
     """Facet-sum sigma0 (grazing, 4) averaged over the four looks [m^2/m^2] at the
     carrier ``f_hz`` [Hz].
 
@@ -62,7 +62,8 @@ def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
     ground distance h / tan psi from the tile's centre, flat Earth) sees through the
     sea's two-ray factors (``[propagation] multipath = "two-ray"``,
     :class:`seaecho.radar.propagation.TwoRay`): each facet's sigma_mn weighted by
-    |F_m F_n|^2 of its own height; returns (plain, apparent)."""
+    |F_m F_n|^2 of its own height; returns (plain, apparent). ``multipath_shadowing``:
+    the reflected legs shadowed by the waves (``[propagation] multipath_shadowing``)."""
     grazing_deg = np.asarray(grazing_deg, dtype=float)
     sc = parse_scene({
         "sea": {"spectrum": spectrum, "spreading": "elfouhaily",
@@ -79,11 +80,12 @@ def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
     apparent = np.zeros((grazing_deg.size, 4))
     two_ray = None
     if radar_height_m is not None:
-        from seaecho.build import sea_mirror
+        from seaecho.build import sea_mirror, sea_slope_covariance
         from seaecho.constants import C0
         from seaecho.radar.propagation import TwoRay
 
-        two_ray = TwoRay(C0 / f_hz, *sea_mirror(sc, f_hz))
+        two_ray = TwoRay(C0 / f_hz, *sea_mirror(sc, f_hz), slope_cov=(
+            sea_slope_covariance(sc, f_hz) if multipath_shadowing else None))
     area_h = (SIZE * (N - 1) / N) ** 2
     for i, g in enumerate(np.radians(grazing_deg)):
         for look in np.radians(LOOKS_DEG):
@@ -98,10 +100,12 @@ def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
             out[i] += (f.area * f.visibility) @ s / area_h / len(LOOKS_DEG)
             if two_ray is not None:  # the radar on the look's line, h / tan psi away
                 radar = d * radar_height_m / np.sin(g)
-                fh, fv = two_ray.factors(radar, f.centroid)
+                vis = f.visibility > 0  # the factors of the facets that echo
+                fh, fv = two_ray.factors(radar, f.centroid[vis])
                 fp = np.stack([fh, fv], axis=-1)  # (K, (h, v))
                 w = np.abs(fp[:, [0, 0, 1, 1]] * fp[:, [0, 1, 0, 1]]) ** 2  # HH HV VH VV
-                apparent[i] += (f.area * f.visibility) @ (s * w) / area_h / len(LOOKS_DEG)
+                apparent[i] += ((f.area * f.visibility)[vis] @ (s[vis] * w) / area_h
+                                / len(LOOKS_DEG))
     return out if two_ray is None else (out, apparent)
 
 

@@ -617,7 +617,8 @@ def build_tracing(scene, base_dir: str | os.PathLike = ".", *, frequency: float 
     return TracingModel(mode=mode, shadowing=cfg.shadowing,
                         refresh_interval_s=cfg.refresh_interval_s,
                         variant=variant,
-                        objects=tuple(objects), frequency=f, eps_r=eps_r, subfacet=subfacet)
+                        objects=tuple(objects), frequency=f, eps_r=eps_r, subfacet=subfacet,
+                        periodic_apron=cfg.periodic_apron)
 
 
 def platform_positions(scene, radar: RadarModel | None = None,
@@ -815,16 +816,33 @@ def sea_mirror(scene, f: float) -> tuple[complex, float]:
     return eps_sea, sigma_h
 
 
+def sea_slope_covariance(scene, f: float) -> tuple[tuple[float, float], tuple[float, float]]:
+    """Covariance of the slopes (dz/dx, dz/dy) [-] of the waves up to 2 k at carrier f
+    [Hz] (the band of :func:`sea_mirror`'s sigma_h), in the scene's frame: the upwind and
+    crosswind variances (:func:`seaecho.ocean.twoscale.slope_variances`) turned to the
+    wind's direction, for the shadowing of the two-ray factor's reflected legs."""
+    from .ocean.twoscale import slope_variances
+
+    spec = sea_spectrum(scene)
+    up, cross = slope_variances(spec, 0.0, 2.0 * (2.0 * np.pi * f / C0))
+    c, s = np.cos(spec.wind_direction), np.sin(spec.wind_direction)
+    cxy = (up - cross) * c * s
+    return ((up * c * c + cross * s * s, cxy), (cxy, up * s * s + cross * c * c))
+
+
 def build_multipath(scene) -> TwoRay | None:
     """The ``[propagation] multipath`` two-ray factor (:mod:`seaecho.radar.propagation`)
-    of a scene with ``[radar]``: None for ``"none"``."""
+    of a scene with ``[radar]``: None for ``"none"``; its reflected legs shadowed by the
+    waves with ``multipath_shadowing``."""
     if scene.propagation.multipath == "none":
         return None
     f = scene.radar.carrier_frequency_hz
     eps_sea, sigma_h = sea_mirror(scene, f)
     earth = build_earth(scene)
+    slopes = (sea_slope_covariance(scene, f) if scene.propagation.multipath_shadowing
+              else None)
     return TwoRay(wavelength=C0 / f, eps_r=eps_sea, sigma_h=sigma_h,
-                  radius=np.inf if earth is None else earth.radius)
+                  radius=np.inf if earth is None else earth.radius, slope_cov=slopes)
 
 
 @dataclass(frozen=True)

@@ -160,7 +160,8 @@ def test_pseudo_brewster_minimum_of_sea_water():
     assert gam_h[0] == pytest.approx(1.0, abs=0.02) and gam_v[0] > 0.8
 
 
-def _target_scene(ranges_m, h1, h2, multipath="two-ray", channels=("HH", "VV")):
+def _target_scene(ranges_m, h1, h2, multipath="two-ray", channels=("HH", "VV"),
+                  shadowing=False):
     return {
         "sea": {"wind_speed_m_s": 3.0, "size_x_m": 64.0, "nx": 64},
         "radar": {"carrier_frequency_hz": 9.41e9, "sampling_rate_hz": 20e6,
@@ -169,7 +170,7 @@ def _target_scene(ranges_m, h1, h2, multipath="two-ray", channels=("HH", "VV")):
                   "waveform": {"kind": "pulse", "duration_s": 5e-8}},
         "transmitter": {"position_m": (0.0, 0.0, h1), "antenna": {
             "pattern": "isotropic", "azimuth_deg": 0.0, "depression_deg": 0.0}},
-        "propagation": {"multipath": multipath},
+        "propagation": {"multipath": multipath, "multipath_shadowing": shadowing},
         "targets": [{"name": f"t{i}", "position_m": (r, 0.0, h2), "rcs_m2": 1.0}
                     for i, r in enumerate(ranges_m)]}
 

@@ -40,6 +40,14 @@ class PropagationConfig(Section):
         "specular factor from the sea's rms height, divergence of the spherical Earth; "
         "flat or spherical Earth; ray-traced hulls get theirs from the trace)",
     )
+    multipath_shadowing: bool = Field(
+        True,
+        description="two-ray only: the waves shadow the sea-reflected legs, so that only "
+        "the crests lit from both legs reflect (Smith 1967's shadowing; the illuminated "
+        "height PDF of Fabbro, Bourlier & Combes 2006): the mirror is raised to their "
+        "mean height and the roughness is theirs; false: the mean sea as the mirror with "
+        "Miller-Brown-Vegh roughness",
+    )
 
 
 __all__ = ["PropagationConfig"]

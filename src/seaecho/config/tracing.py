@@ -55,6 +55,14 @@ class TracingConfig(Section):
         "unresolved slopes, 1 / (1 + Lambda_i + Lambda_s) at the local angles (Sancer 1969;"
         " Bourlier et al. 2002), sub-grid slopes of the band up to k/3",
     )
+    periodic_apron: bool = Field(
+        False,
+        description="raytraced mode: also trace each facet's shadow rays against the sea "
+        "tile's periodic copies in front of it (the FFT sea is periodic: its continuation),"
+        " as far as the highest wave can shadow (z_max / tan(grazing)); without it the "
+        "facets near the tile's edge towards the radar have no waves in front of them "
+        "(low grazing angles: docs/scanning.md)",
+    )
     refresh_interval_s: float = Field(
         0.0, ge=0.0, le=3600.0,
         description="visibility (BVH rebuild + shadow rays) is computed on the surface at "

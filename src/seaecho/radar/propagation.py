@@ -62,6 +62,53 @@ S' = diag(F_r) S diag(F_t) (:meth:`TwoRay.apply`), so that a monostatic HH echo 
 The hulls' ray-traced echo is not multiplied: their SBR trace follows the sea-reflected
 legs itself (``seaecho.targets.multipath``).
 
+Shadowing of the sea-reflected legs (``TwoRay.slope_cov`` given; ``[propagation]
+multipath_shadowing``). At low grazing angles the waves hide most of the sea from the
+radar, and the reflected leg from the sea to the scatterer runs as low: the wave is
+reflected only by the points of the sea that are lit by the antenna *and* seen from the
+scatterer's side. For a Gaussian sea of rms height sigma_h and rms slope sigma along the
+path, Smith's (1967) probability that a point at height zeta is lit from grazing psi is
+F(zeta)^Lambda (:mod:`seaecho.geometry.shadowing`, eqs T1-T3, nu = tan psi /
+(sqrt 2 sigma)); for the two legs, on opposite sides of the point in one vertical plane,
+F(zeta)^(2 Lambda) (eq T5). The heights of the reflecting points then have the density
+(Bourlier, Pinel and Fabbro 2006; Fabbro, Bourlier and Combes 2006, the Ament boundary
+condition "with shadowing effect")
+
+.. math::
+
+    p_{ill}(\\zeta) = (1 + 2\\Lambda)\\, p(\\zeta)\\, F(\\zeta)^{2\\Lambda}         (P5)
+
+(normalised: the lit crests reflect the wave that the shadowed troughs do not see; with
+2 Lambda = m - 1 an integer, the density of the highest of m independent heights), and
+the coherent reflection is its characteristic function at q = 2 k sin psi (Ament's
+exp(-2 g^2) where Lambda = 0, at high grazing angles):
+
+.. math::
+
+    \bar\\zeta = \\int \\zeta\\, p_{ill}\\, d\\zeta, \\qquad
+    \rho_{ill} = \\int p_{ill}(\\zeta)\\, e^{-j q (\\zeta - \bar\\zeta)}\\, d\\zeta  (P6)
+
+The factor e^{-j q zeta_bar} is the mirror raised to the mean height of the lit crests.
+A scatterer among the waves (a facet at height h_2) receives the reflected wave only
+from points below it: the reflected leg rises from zeta to h_2 over a finite length,
+unshadowed with probability (F(zeta) / F(h_2))^Lambda (Smith's derivation over a finite
+length, as Bourlier, Berginc and Saillard 2002 write it), so that for the incident and
+reflected legs together
+
+.. math::
+
+    p_{ill}(\\zeta \\mid h_2) = (1 + 2\\Lambda)\\, p(\\zeta)\\, F(\\zeta)^{2\\Lambda}
+                            / F(h_2)^{1 + 2\\Lambda}, \\qquad \\zeta < h_2          (P7)
+
+(eq P5 for h_2 -> inf: a target high above the waves). The two-ray geometry (P2-P4) is
+evaluated with the heights above zeta_bar, h_1 - zeta_bar and h_2 - zeta_bar (> 0 by
+P7), and rho_s of (P1) is rho_ill. Lambda, zeta_bar and rho_ill are
+evaluated at the grazing angle of the mean sea's specular point (the raised mirror
+changes psi by about 2 zeta_bar / d); the integrals by Gauss-Legendre quadrature in v =
+F(zeta)^(1 + 2 Lambda), uniform on (0, 1) under (P5), so that zeta(v) = sigma_h
+Phi^-1(F(h_2) v^(1 / (1 + 2 Lambda))); rho_ill = 0 where q sigma_ill > 8 (sigma_ill the spread
+of the lit heights; |rho_ill| < 1e-5 there).
+
 Approximations (stated): the scatterer's response to the reflected wave, which arrives
 from 2 psi below the direct one, is its response to the direct wave, and the antenna's
 gain towards the specular point is its gain towards the point (pattern ratio 1: marine
@@ -84,6 +131,14 @@ References
    K Distribution and Radar Performance*, 2nd ed., IET, section 3.6.
 .. [5] Skolnik, M. I. (2001). *Introduction to Radar Systems*, 3rd ed., section 8.2
    (flat-Earth two-ray: F = 2 |sin(2 pi h_1 h_2 / (lambda R))| for Gamma = -1).
+.. [6] Smith, B. G. (1967). Geometrical shadowing of a random rough surface. *IEEE
+   Trans. Antennas Propag.* 15(5), 668-671.
+.. [7] Fabbro, V., Bourlier, C. and Combes, P. F. (2006). Forward propagation modeling
+   above Gaussian rough surfaces by the parabolic wave equation: introduction of the
+   shadowing effect. *Progress In Electromagnetics Research* 58, 243-269.
+.. [8] Bourlier, C., Pinel, N. and Fabbro, V. (2006). Illuminated height PDF of a random
+   rough surface and its impact on the forward propagation above oceans at grazing
+   angles. *Proc. EuCAP 2006*, Nice.
 """
 
 from __future__ import annotations
@@ -93,11 +148,19 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..geometry.shadowing import directional_slope_std, smith_lambda, smith_nu
 from ..scattering.fresnel import fresnel_coefficients
 from ..targets.multipath import specular_reduction
 
-__all__ = ["TwoRay", "divergence_factor", "heights_and_distance", "reflection_point",
-           "two_ray_factor", "two_ray_geometry"]
+__all__ = ["TwoRay", "divergence_factor", "heights_and_distance", "illuminated_reflection",
+           "reflection_point", "two_ray_factor", "two_ray_geometry"]
+
+#: Gauss-Legendre nodes of the quadrature of eq (P6): absolute error < 1e-4 for
+#: q sigma_ill <= 2, < 1.1e-3 for q sigma_ill <= 8 (against a 40 001-point trapezoid: tests)
+_N_GAUSS = 96
+#: beyond q sigma_ill = 8 rho_ill is 0 (its value there is below 1e-5 for Lambda <= 100;
+#: sigma_ill the rms spread of the lit heights)
+_QSIGMA_MAX = 8.0
 
 
 def reflection_point(h1: ArrayLike, h2: ArrayLike, d: ArrayLike,
@@ -223,6 +286,65 @@ def two_ray_factor(delta: ArrayLike, divergence: ArrayLike, gamma: ArrayLike,
         -2j * np.pi * delta / wavelength)
 
 
+def illuminated_reflection(lam: ArrayLike, sigma_h: float, q: ArrayLike,
+                           ceiling: ArrayLike = np.inf
+                           ) -> tuple[NDArray[np.float64], NDArray[np.complex128]]:
+    """Mean height of the reflecting (lit) points and their coherent factor, eqs (P5-P7).
+
+    Parameters
+    ----------
+    lam : array_like
+        Smith's Lambda of the legs [-] (:func:`seaecho.geometry.shadowing.smith_lambda`
+        at the grazing angle), >= 0, finite; the legs' exponent is 2 Lambda.
+    sigma_h : float
+        Rms height of the (Gaussian) sea [m], >= 0.
+    q : array_like
+        Vertical wavenumber of the reflection 2 k sin psi [rad/m].
+    ceiling : array_like
+        Height of the point that receives the reflected wave [m] (eq P7: the reflecting
+        points lie below it); ``inf``: a point far above the waves (eq P5).
+
+    Returns
+    -------
+    zeta_bar : ndarray
+        Mean height of the reflecting points [m] (0 for Lambda = 0).
+    rho_ill : ndarray of complex
+        Coherent reflection factor about zeta_bar [-]; exp(-q^2 sigma_h^2 / 2) (Ament)
+        for Lambda = 0.
+
+    References
+    ----------
+    Fabbro, Bourlier and Combes (2006); Bourlier, Pinel and Fabbro (2006); Smith (1967).
+    """
+    from scipy.special import log_ndtr, ndtri
+
+    if not (np.isfinite(sigma_h) and sigma_h >= 0):
+        raise ValueError(f"sigma_h = {sigma_h}: must be >= 0 [m]")
+    lam, q, ceiling = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64)
+                                            for a in (lam, q, ceiling)))
+    if np.any(~np.isfinite(lam) | (lam < 0)):
+        raise ValueError("Lambda must be finite and >= 0 (a grazing angle > 0)")
+    if sigma_h == 0.0:  # a flat sea: the mean sea reflects, smooth
+        return np.zeros(lam.shape), np.ones(lam.shape, dtype=np.complex128)
+    v, w = np.polynomial.legendre.leggauss(_N_GAUSS)
+    v, w = 0.5 * (v + 1.0), 0.5 * w  # on (0, 1)
+    m = (1.0 + 2.0 * lam)[..., None]
+    # (P5, P7): v = (F(zeta) / F(ceiling))^m is uniform on (0, 1): F(zeta) = F_c v^(1/m)
+    log_f = log_ndtr(ceiling / sigma_h)[..., None] + np.log(v) / m
+    below = log_f < np.log(0.5)
+    # the smaller of F and 1 - F (the latter accurate near the crests): one ndtri
+    tail = np.where(below, np.exp(log_f), -np.expm1(log_f))
+    zeta = sigma_h * np.where(below, 1.0, -1.0) * ndtri(tail)
+    zeta_bar = zeta @ w  # (P6)
+    dev = zeta - zeta_bar[..., None]
+    sigma_ill = np.sqrt((dev * dev) @ w)  # spread of the lit heights [m]
+    qs = np.broadcast_to(q, zeta_bar.shape)
+    rough = qs * sigma_ill > _QSIGMA_MAX
+    phase = np.where(rough, 0.0, qs)[..., None] * dev
+    rho = np.cos(phase) @ w - 1j * (np.sin(phase) @ w)  # (P6)
+    return zeta_bar, np.where(rough, 0.0, rho)
+
+
 def heights_and_distance(a: ArrayLike, b: ArrayLike, radius: float
                          ) -> tuple[NDArray, NDArray, NDArray]:
     """Heights above the sea of Cartesian points a and b (..., 3) [m] and their ground
@@ -255,7 +377,13 @@ class TwoRay:
     radius : float
         Effective Earth radius k a [m]; ``numpy.inf`` on a flat Earth.
     roughness : str
-        Specular reduction model (:func:`seaecho.targets.multipath.specular_reduction`).
+        Specular reduction model (:func:`seaecho.targets.multipath.specular_reduction`)
+        without shadowing.
+    slope_cov : ((float, float), (float, float)), optional
+        Covariance of the sea's slopes (dz/dx, dz/dy) [-] in the simulation frame: the
+        reflected legs are shadowed by the waves (eqs P5-P6, module docstring), and the
+        roughness is that of the lit crests (``roughness`` is not used). None: no
+        shadowing.
     """
 
     wavelength: float
@@ -263,16 +391,30 @@ class TwoRay:
     sigma_h: float
     radius: float = np.inf
     roughness: str = "miller-brown-vegh"
+    slope_cov: tuple[tuple[float, float], tuple[float, float]] | None = None
 
     def factors(self, antenna: ArrayLike, points: ArrayLike
                 ) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
         """F_h, F_v [-] (eq P1) between an antenna at ``antenna`` (3,) and points (K, 3),
         Cartesian [m] in the simulation frame (the tangent frame on a sphere)."""
         h1, h2, d = heights_and_distance(antenna, points, self.radius)
-        psi, delta, div = two_ray_geometry(h1, h2, d, self.radius)
+        k = 2.0 * np.pi / self.wavelength
+        if self.slope_cov is None:
+            psi, delta, div = two_ray_geometry(h1, h2, d, self.radius)
+            rho = specular_reduction(psi, self.sigma_h, k, self.roughness)
+        else:  # the legs shadowed: the mirror at the lit crests' mean height (P5-P6)
+            psi0, _, _ = two_ray_geometry(h1, h2, d, self.radius)
+            a, b = np.asarray(antenna, dtype=np.float64), np.asarray(points, dtype=np.float64)
+            azimuth = np.arctan2(a[..., 1] - b[..., 1], a[..., 0] - b[..., 0])
+            sigma = directional_slope_std(np.asarray(self.slope_cov), azimuth)
+            # a leg at grazing psi0 from the specular point towards the antenna (T1)
+            theta = np.pi / 2 - np.maximum(psi0, 1e-9)
+            lam = smith_lambda(smith_nu(theta, np.maximum(sigma, 1e-12)))
+            zeta_bar, rho = illuminated_reflection(lam, self.sigma_h,
+                                                   2.0 * k * np.sin(psi0), ceiling=h2)
+            psi, delta, div = two_ray_geometry(h1 - zeta_bar, h2 - zeta_bar, d,
+                                               self.radius)
         r_h, r_v = fresnel_coefficients(np.sin(psi), self.eps_r)
-        rho = specular_reduction(psi, self.sigma_h, 2.0 * np.pi / self.wavelength,
-                                 self.roughness)
         return (two_ray_factor(delta, div, r_h * rho, self.wavelength),
                 two_ray_factor(delta, div, r_v * rho, self.wavelength))
 

@@ -89,7 +89,8 @@ class FacetEngine:
                  mode: str = "raytraced", shadowing: str = "smith",
                  refresh_interval_s: float = 0.0, objects=(), variant: str | None = None,
                  eps_r: complex | None = None, frequency_hz: float | None = None,
-                 subfacet: tuple[float, float, float] | None = None) -> None:
+                 subfacet: tuple[float, float, float] | None = None,
+                 periodic_apron: bool = False) -> None:
         if not callable(surface):
             raise TypeError("surface must be a callable t -> SurfaceState (e.g. sea.state)")
         if mode not in ("raytraced", "analytic"):
@@ -115,6 +116,7 @@ class FacetEngine:
         self.eps_r = eps_r
         self.frequency_hz = frequency_hz
         self.subfacet = subfacet
+        self.periodic_apron = bool(periodic_apron)
         self._lead: FacetEngine | None = None
 
     def share_transmitter(self, lead: FacetEngine) -> None:
@@ -146,7 +148,8 @@ class FacetEngine:
         return cls(surface, tx_position, rx_position, mode=model.mode,
                    shadowing=model.shadowing, refresh_interval_s=model.refresh_interval_s,
                    objects=model.objects, variant=model.variant, eps_r=model.eps_r,
-                   frequency_hz=model.frequency, subfacet=model.subfacet)
+                   frequency_hz=model.frequency, subfacet=model.subfacet,
+                   periodic_apron=model.periodic_apron)
 
     # --------------------------------------------------------------------- facets
     def positions(self, t: float) -> tuple[np.ndarray, np.ndarray]:
@@ -169,8 +172,13 @@ class FacetEngine:
 
             st = self.surface(0.0) if st is None else st
             material = {} if self.frequency_hz is None else {"frequency_hz": self.frequency_hz}
+            period = None
+            if self.periodic_apron:  # an FFT tile: n nodes, period n * spacing
+                period = (st.x.size * float(st.x[1] - st.x[0]),
+                          st.y.size * float(st.y[1] - st.y[0]))
             self._tracer = FacetTracer(st.x, st.y, st.elevation, objects=self.objects,
-                                       eps_r=self.eps_r, variant=self._variant, **material)
+                                       eps_r=self.eps_r, variant=self._variant,
+                                       period_m=period, **material)
         return self._tracer
 
     def geometry(self, state) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:

@@ -34,6 +34,9 @@ class TracingModel:
     subfacet : (float, float, float) or None
         (mss_upwind, mss_crosswind, wind_direction [rad]) of the unresolved tilting
         slopes when the visibility is to include their Smith shadowing; None otherwise.
+    periodic_apron : bool
+        Ray-traced mode: trace the shadow rays against the sea tile's periodic copies in
+        front of it too (:class:`~seaecho.tracing.tracer.FacetTracer`).
     """
 
     mode: str
@@ -44,6 +47,7 @@ class TracingModel:
     frequency: float
     eps_r: complex
     subfacet: tuple[float, float, float] | None = None
+    periodic_apron: bool = False
 
 
 __all__ = ["TracingModel"]

@@ -13,6 +13,19 @@ angles, bases) is float64, computed by the Dr.Jit kernel
 The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
 polarimetric marine radar simulator. *Proc. 2006 IEEE Conference on Radar*,
 doi:10.1109/RADAR.2006.1631862.
+
+Periodic apron
+--------------
+The FFT sea tile is periodic: the sea in front of it (towards the radar) is its own
+periodic continuation. Traced alone, the tile leaves the facets near its edge towards the
+radar without the waves in front of them: at a grazing angle psi a crest of height h
+shadows h / tan psi behind it (190 m for 1 m at 0.3 deg, more than a 128 m tile). With
+``period_m`` the tracer also tests every shadow ray against the tile's periodic copies
+translated by (i L_x, j L_y) (eq A1: a segment blocked by the copy translated by T is the
+segment translated by -T blocked by the tile), for every copy that a segment crosses
+before it rises above the highest wave of the surface, z_max (its ground reach
+(z_max - z_0) / tan(elevation), eq A2): the exact occlusion of the periodic model of the
+sea by itself. The objects are not repeated.
 """
 
 from __future__ import annotations
@@ -52,19 +65,35 @@ class FacetTracer:
         Carrier frequency [Hz].
     variant : str, optional
         Mitsuba variant (default ``llvm_ad_mono_polarized``).
+    period_m : (float, float), optional
+        Periods (L_x, L_y) [m] of a periodic sea (an FFT tile: ``n * spacing``): the
+        shadow rays are also traced against the tile's periodic copies (module
+        docstring, "Periodic apron"). None: the tile alone.
     """
 
     def __init__(self, x: np.ndarray, y: np.ndarray, elevation: np.ndarray | None = None, *,
                  objects: Sequence[ObjectGeometry] = (), eps_r: complex | None = None,
-                 frequency_hz: float = 10.0e9, variant: str | None = None) -> None:
+                 frequency_hz: float = 10.0e9, variant: str | None = None,
+                 period_m: tuple[float, float] | None = None) -> None:
         #: The Mitsuba variant of the scenes and of the frames kernel (one per process).
         self.variant = set_variant(variant)
         variant = self.variant
         self.x = np.asarray(x, dtype=np.float64)
         self.y = np.asarray(y, dtype=np.float64)
         z = np.zeros((self.y.size, self.x.size)) if elevation is None else elevation
-        self.sea = SeaScene(self.x, self.y, z, eps_r=eps_r, frequency_hz=frequency_hz,
-                            variant=variant)
+        if period_m is not None and not (period_m[0] > 0 and period_m[1] > 0):
+            raise ValueError(f"period_m = {period_m}: periods must be > 0 [m]")
+        #: (L_x, L_y) of the periodic sea [m], or None (the tile alone)
+        self.period_m = None if period_m is None else (float(period_m[0]),
+                                                       float(period_m[1]))
+        # a periodic sea's mesh closes its seams: the node row and column at x_0 + L_x,
+        # y_0 + L_y repeat the first ones (the strip between the copies is sea too)
+        x_mesh, y_mesh = self.x, self.y
+        if self.period_m is not None:
+            x_mesh = np.append(self.x, self.x[0] + self.period_m[0])
+            y_mesh = np.append(self.y, self.y[0] + self.period_m[1])
+        self.sea = SeaScene(x_mesh, y_mesh, self._mesh_elevation(z), eps_r=eps_r,
+                            frequency_hz=frequency_hz, variant=variant)
         self._elevation = np.array(z, dtype=np.float64)
         static = [o for o in objects if not o.moving]
         moving = [o for o in objects if o.moving]
@@ -90,9 +119,17 @@ class FacetTracer:
         z = np.asarray(elevation, dtype=np.float64)
         if z is self._elevation or np.array_equal(z, self._elevation):
             return False
-        self.sea.update(z)
+        self.sea.update(self._mesh_elevation(z))
         self._elevation = np.array(z)
         return True
+
+    def _mesh_elevation(self, z: np.ndarray) -> np.ndarray:
+        """The sea mesh's node heights [m]: ``z`` (ny, nx), with the wrapped row and
+        column of a periodic sea (ny + 1, nx + 1)."""
+        z = np.asarray(z, dtype=np.float64)
+        if self.period_m is None:
+            return z
+        return np.pad(z, ((0, 1), (0, 1)), mode="wrap")
 
     def set_time(self, t: float) -> None:
         """Move the moving objects to their positions at time ``t`` [s]."""
@@ -148,6 +185,8 @@ class FacetTracer:
         blocked = shadow_test(self.mi_scenes, origin, d, r * (1.0 - 1e-6),
                               variant=self.variant)
         blocked = xp.Bool(blocked)
+        if self.period_m is not None:
+            blocked = self._apron(c, p, origin, d, blocked, xp, io)
         if device:
             xp.eval(blocked)
             return blocked
@@ -157,6 +196,62 @@ class FacetTracer:
         hit = np.zeros(centroid.shape[0], dtype=bool)
         hit[idx] = hit_sub
         return hit
+
+    def apron_copies(self, centroid: np.ndarray, position: np.ndarray
+                     ) -> tuple[list[tuple[int, int]], np.ndarray]:
+        """The tile's periodic copies that the segments from the facets to a position
+        cross below the highest wave (module docstring, "Periodic apron").
+
+        Parameters
+        ----------
+        centroid : (N, 3) array
+            Facet centroids [m].
+        position : (3,) array
+            Transmitter or receiver position [m].
+
+        Returns
+        -------
+        copies : list of (i, j)
+            Indices of the copies translated by (i L_x, j L_y), the tile (0, 0) excluded.
+        reach : (N,) array
+            Length of each segment up to the height of the highest wave [m] (eq A2; the
+            whole segment where it does not rise).
+        """
+        if self.period_m is None:
+            return [], np.zeros(centroid.shape[0])
+        lx, ly = self.period_m
+        v = np.asarray(position, dtype=np.float64) - centroid
+        r = np.sqrt(np.einsum("ij,ij->i", v, v))
+        up = v[:, 2] / r  # sine of the segment's elevation
+        z_top = float(np.max(self._elevation))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            # (A2) the segment is above every wave beyond (z_max - z_0) / sin(elevation)
+            reach = np.where(up > 0.0, np.minimum(
+                r, np.maximum(z_top - centroid[:, 2], 0.0) / up), r)
+        ends = centroid[:, :2] + v[:, :2] * (reach / r)[:, None]
+        lo = np.minimum(centroid[:, :2], ends)
+        hi = np.maximum(centroid[:, :2], ends)
+        origin = np.array([self.x[0], self.y[0]])
+        period = np.array([lx, ly])
+        i_lo, j_lo = np.floor((lo.min(axis=0) - origin) / period).astype(int)
+        i_hi, j_hi = np.floor((hi.max(axis=0) - origin) / period).astype(int)
+        copies = [(i, j) for j in range(j_lo, j_hi + 1) for i in range(i_lo, i_hi + 1)
+                  if (i, j) != (0, 0)]
+        return copies, reach
+
+    def _apron(self, c: np.ndarray, p: np.ndarray, origin, d, blocked, xp, io):
+        """``blocked`` or'ed with the segments' hits on the tile's periodic copies (eq A1:
+        the segment translated by -T against the tile), on the device."""
+        copies, reach = self.apron_copies(c, p)
+        if not copies:
+            return blocked
+        maxt = io.array(reach)
+        for i, j in copies:
+            shift = xp.vconst(np.array([i * self.period_m[0], j * self.period_m[1], 0.0]))
+            hit = shadow_test([self.sea.mi_scene], origin - shift, d, maxt,
+                              variant=self.variant)  # (A1)
+            blocked = blocked | xp.Bool(hit)
+        return blocked
 
     def _scale(self, c: np.ndarray) -> float:
         """Largest coordinate magnitude of the ray origins [m] (memoised per read-only
