@@ -20,7 +20,7 @@ with the table of docs/imaging.md.
 Sizes (``_gallery.py``): by default the reduced scenes of the gallery (Simulations 2 and 3
 on a 64 m tile on the paper's 0.25 m grid with the boat moved into it, the full 160-pulse
 aperture, a 96 m image; a few minutes each on two cores), ``--paper`` the paper's (128 m
-tiles; Simulation 4 takes about 10 minutes), ``--quick`` a 16 m tile and 16 pulses (the
+tiles; Simulation 4 takes about 8 minutes), ``--quick`` a 16 m tile and 16 pulses (the
 gallery test).
 
 The paper: Arnold-Bos, A., Martin, A. and Khenchaf, A. (2006). A versatile bistatic &
