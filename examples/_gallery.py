@@ -110,6 +110,23 @@ def seaecho_warnings() -> Iterator[None]:
             warnings.showwarning = previous
 
 
+def facets_sea_db(img) -> dict[str, float]:
+    """The facets' own sigma0 [dB] per channel (``sigma0_truth``) averaged over the image's
+    valid open-sea pixels, the truth beside the image's sea level (docs/imaging.md,
+    section 3); empty when the image has no ground truth or no open-sea mask."""
+    import numpy as np
+
+    if "sigma0_truth" not in img or "open_sea" not in img:
+        return {}
+    sea = img["valid"].values.astype(bool) & img["open_sea"].values.astype(bool)
+    out = {}
+    for c, ch in enumerate(str(v) for v in img["channel"].values):
+        truth = img["sigma0_truth"].values[c][sea]
+        if truth.size:
+            out[ch] = float(10 * np.log10(truth.mean()))
+    return out
+
+
 def db(x, floor: float = 1e-30):
     """10 log10(x) with a floor [dB]."""
     import numpy as np
@@ -122,7 +139,8 @@ def sar_figures(scene_file: str, stem: str, args: argparse.Namespace, *,
                 filtered: bool = False) -> list[Path]:
     """Simulate a SAR scene (the paper's Figs. 7-9), focus it with its ``[image]`` section
     and write its sigma0 and Pauli figures as ``<stem>_*.png`` (``seaecho.figures``);
-    print the paper's image measures (``seaecho.image_measures``). ``default`` /
+    print the paper's image measures (``seaecho.image_measures``, and the facets' own
+    sigma0 over the same open-sea pixels, ``facets_sea_db``). ``default`` /
     ``quick``: scene overrides of the reduced / tiny size, ``*_image``: their ``[image]``
     fields; ``filtered``: also the refined-Lee filtered sigma0."""
     import seaecho
@@ -133,7 +151,10 @@ def sar_figures(scene_file: str, stem: str, args: argparse.Namespace, *,
     with seaecho_warnings():
         raw = seaecho.simulate(scene, progress=not args.quick)
         img = seaecho.image(raw, progress=not args.quick, **fields)
+    facets = facets_sea_db(img)
     for ch, m in seaecho.image_measures(img).items():
+        if ch in facets:
+            m = {**m, "facets_sea_db": facets[ch]}
         if m:
             print(f"  {ch}: " + ", ".join(f"{k} {v:.2f}" for k, v in m.items()))
     paths = seaecho.figures(img, Path(args.out) / stem)
