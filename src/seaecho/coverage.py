@@ -57,7 +57,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-from .geometry.patchwork import CACHE_NODES, TILE_MARGIN_M
+from .geometry.patchwork import CACHE_BYTES, CACHE_NODES, TILE_MARGIN_M
 
 
 class TilePlatform:
@@ -87,10 +87,16 @@ class TilePlatform:
         return getattr(self._platform, name)
 
 
-def tile_radar(radar_model, frame, seed: int):
+def tile_radar(radar_model, frame, seed: int, unit_gain: bool = False):
     """The radar model seen from a tile's frame: its platforms carried by
     :class:`TilePlatform`, a look-at point moved into the frame, the tile's seed, no
-    targets, noise or sea skip (the patchwork selects the tiles)."""
+    targets, noise or sea skip (the patchwork selects the tiles). ``unit_gain``: both
+    antennas isotropic (G = 1 in every direction) with the same ports, basis and
+    isolation (:func:`unit_gain_antenna`): the echoes of eq U1."""
+    if unit_gain:
+        radar_model = dataclasses.replace(
+            radar_model, tx_antenna=unit_gain_antenna(radar_model.tx_antenna),
+            rx_antenna=unit_gain_antenna(radar_model.rx_antenna))
     tx = TilePlatform(radar_model.tx, frame)
     rx = tx if radar_model.rx is radar_model.tx else TilePlatform(radar_model.rx, frame)
 
@@ -122,6 +128,58 @@ def point_bounds(radar, geo, frame, points) -> NDArray[np.float64]:
     return out
 
 
+def unit_gain_antenna(antenna):
+    """``antenna`` with an isotropic pattern (G = 1 everywhere) and the same ports
+    (basis, cross-polar isolation): eq R1 with it is the unit-gain echo of eq U1."""
+    return dataclasses.replace(antenna, pattern="isotropic", width=None, height=None)
+
+
+def incidence_directions(geo, positions, velocities) -> NDArray[np.float64]:
+    """Unit vectors n_i from the transmitter to the bounce points of scatterers at
+    ``positions`` moving at ``velocities`` (K, 3) [-]: those whose gain eq R1 takes
+    (:func:`seaecho.radar.equation.flight`, eq R3, as :func:`seaecho.radar.kernels.
+    echo_terms` evaluates it), in the frame of ``geo`` (a pulse's geometry)."""
+    from .backend import NUMPY, Boundary
+    from .constants import C0
+    from .radar.equation import flight
+
+    io = Boundary(NUMPY, len(positions))
+    p_tx = NUMPY.vconst(geo.tx.position)
+    tau_t, _, p_b = flight(NUMPY, p_tx, io.vec3(positions), io.vec3(velocities),
+                           NUMPY.vconst(geo.rx.position), NUMPY.vconst(geo.rx.velocity))
+    n = (p_b - p_tx) * (1.0 / (C0 * tau_t))
+    return np.stack(np.broadcast_arrays(n.x, n.y, n.z), axis=-1)
+
+
+@dataclasses.dataclass(frozen=True)
+class UnitEcho:
+    """A tile's facets for one held block at unit antenna gains (eq U1).
+
+    Attributes
+    ----------
+    block : int
+        The block of held pulses ([radar] sea_update_pulses) it serves.
+    tau : ndarray (K,)
+        Delays [s] of the facets whose echo can reach the window.
+    amplitudes : ndarray (C, K) complex
+        Eq R1 at G_t = G_r = 1 [sqrt(W)]: everything of the pulse but the antennas'
+        gains (occlusion, facet model, speckle, two-ray factor, range loss, carrier).
+    direction : ndarray (K, 3)
+        Unit vector from the transmitter to each facet's bounce point in the simulation
+        frame [-] (:func:`incidence_directions`): where the gains of eq U2 are taken.
+    """
+
+    block: int
+    tau: NDArray[np.float64]
+    amplitudes: NDArray[np.complex128]
+    direction: NDArray[np.float64]
+
+    @property
+    def nbytes(self) -> int:
+        """Memory held [bytes]."""
+        return int(self.tau.nbytes + self.amplitudes.nbytes + self.direction.nbytes)
+
+
 class CoverageSea:
     """The sea echo of a radar-wide sea, pulse by pulse (module docstring).
 
@@ -135,22 +193,32 @@ class CoverageSea:
         ``factory(models, facet_weight)`` -> a simulation of one tile's models
         (:meth:`seaecho.simulation.Simulation.from_models`).
     cache_nodes : int
-        Grid nodes of the tiles held between pulses.
+        Grid nodes of the tiles held between pulses (the evolving sea's path).
+    cache_bytes : int
+        Memory of the unit-gain echoes held between pulses (the held sea's path) [bytes].
     """
 
-    def __init__(self, models, radar, factory: Callable, cache_nodes: int = CACHE_NODES
-                 ) -> None:
+    def __init__(self, models, radar, factory: Callable, cache_nodes: int = CACHE_NODES,
+                 cache_bytes: int = CACHE_BYTES) -> None:
         self.models = models
         self.model = models.coverage
         self.patchwork = self.model.patchwork
         self.radar = radar
         self.floor = models.radar.sea_gain_floor
+        self.block = int(models.radar.sea_update_pulses)
         self._factory = factory
         self.cache_nodes = int(cache_nodes)
+        self.cache_bytes = int(cache_bytes)
         self._nodes = np.array([np.prod(lv.shape) for lv in self.patchwork.levels]
                                )[self.patchwork.level]
         self._boxes = self.patchwork.boxes(TILE_MARGIN_M)
         self._tiles: OrderedDict[int, object] = OrderedDict()
+        self._units: OrderedDict[int, UnitEcho] = OrderedDict()
+        #: eqs U1-U2 (a tile's facets once per block, the gains per pulse): a held sea
+        #: whose occluders all stand still; an evolving sea takes the tile pipeline at
+        #: every pulse (its facets move and their speckle evolves)
+        self.cached = (models.sea_model.dynamics is None and not any(
+            getattr(o, "moving", False) for _, tr in self.model.levels for o in tr.objects))
         # tiles reaching beyond 0.99 of the horizon to the sea level (eq E2): only their
         # facets are tested against the Earth
         self._beyond = np.zeros(len(self.patchwork), dtype=bool)
@@ -167,6 +235,8 @@ class CoverageSea:
                 max(h, 0.0), 0.0, earth.radius))
         #: tiles computed so far (new simulations made), for the benchmarks [-]
         self.tiles_made = 0
+        #: facets whose echo the last pulse summed (eq U2, the held sea's path) [-]
+        self.facets_echoed = 0
 
     def __len__(self) -> int:
         return len(self.patchwork)
@@ -182,19 +252,24 @@ class CoverageSea:
         order [-]."""
         return np.flatnonzero(self.gain_bounds(pulse) >= self.floor)
 
-    def tile(self, i: int):
-        """The simulation of tile ``i`` (held, or made)."""
-        i = int(i)
-        if i in self._tiles:
-            self._tiles.move_to_end(i)
-            return self._tiles[i]
+    def _tile_models(self, i: int, unit_gain: bool = False):
+        """The models of tile ``i``'s simulation: the radar in the tile's frame (unit
+        gains for eq U1), the tile's sea, its level's sea model and tracing, no hulls,
+        land echoes or patchwork (the scene's simulation has them)."""
         pw = self.patchwork
         sea_model, tracing = self.model.levels[int(pw.level[i])]
+        radar = tile_radar(self.models.radar, pw.frame(i), pw.seed(i, self.model.seed),
+                           unit_gain=unit_gain)
+        return dataclasses.replace(self.models, radar=radar, sea=self.model.sea(i),
+                                   sea_model=sea_model, tracing=tracing, hulls=None,
+                                   land=None, coverage=None)
+
+    def _weight(self, i: int, beam: bool) -> Callable:
+        """Tile ``i``'s facet weight: ownership (eq T4), the horizon (eq E2, the tiles
+        near it) and, with ``beam``, the beams' bound in each facet's direction (eq C1:
+        the tile pipeline of every pulse; eq U2 applies it per pulse instead)."""
+        pw = self.patchwork
         frame = pw.frame(i)
-        models = dataclasses.replace(
-            self.models, radar=tile_radar(self.models.radar, frame, pw.seed(i, self.model.seed)),
-            sea=self.model.sea(i), sea_model=sea_model, tracing=tracing, hulls=None,
-            coverage=None)
         owned = np.repeat(pw.cell_owned(i).reshape(-1), 2).astype(np.float64)
         earth = self.models.radar.earth if self._beyond[i] else None
         floor, radar = self.floor, self.radar
@@ -203,7 +278,7 @@ class CoverageSea:
             c = sim.engine.geometry(state)[0]
             # eq C1 at each facet (the beams' bound in its direction): below the floor,
             # its echo is left out as the tiles' (eq C4)
-            w = owned * (point_bounds(radar, geo, frame, c) >= floor)
+            w = owned * (point_bounds(radar, geo, frame, c) >= floor) if beam else owned
             if earth is None:
                 return w
             # eq T5: the facets and the antennas in the simulation frame; the straight
@@ -214,27 +289,119 @@ class CoverageSea:
                     & earth.visible(frame.to_world(geo.rx.position), c))
             return w * seen
 
-        sim = self._factory(models, facet_weight)
+        return facet_weight
+
+    def tile(self, i: int):
+        """The simulation of tile ``i`` (held, or made): the tile pipeline of every
+        pulse (module docstring, step 2)."""
+        i = int(i)
+        if i in self._tiles:
+            self._tiles.move_to_end(i)
+            return self._tiles[i]
+        sim = self._factory(self._tile_models(i), self._weight(i, beam=True))
         self.tiles_made += 1
         held = sum(int(self._nodes[k]) for k in self._tiles)
         if held + int(self._nodes[i]) <= self.cache_nodes:  # else used once and dropped
             self._tiles[i] = sim
         return sim
 
+    def unit_echo(self, i: int, block: int) -> UnitEcho:
+        """Tile ``i``'s facets at unit gains for ``block`` (eq U1; held, or made at the
+        block's first pulse: a pure function of (scene, tile, block))."""
+        i, block = int(i), int(block)
+        held = self._units.get(i)
+        if held is not None and held.block == block:
+            self._units.move_to_end(i)
+            return held
+        self._units.pop(i, None)
+        sim = self._factory(self._tile_models(i, unit_gain=True), self._weight(i, beam=False))
+        self.tiles_made += 1
+        first = block * self.block
+        sea = sim.sea_echo(first)
+        echo, facets = sea.echo, sea.facets
+        if echo.tau.size != facets.visibility.size:  # the culled facets, one echo each
+            raise RuntimeError("unit_echo: the tile's echoes and facets do not match")
+        keep = self.radar.window.keep(echo.tau, self.radar.waveform.n_samples)
+        n = incidence_directions(sim.radar.geometry(first), facets.centroid[keep],
+                                 facets.velocity[keep])
+        unit = UnitEcho(block, np.ascontiguousarray(echo.tau[keep]),
+                        np.ascontiguousarray(np.asarray(echo.amplitudes)[:, keep]),
+                        n @ self.patchwork.frame(i).rotation.T)
+        held = sum(u.nbytes for u in self._units.values())
+        if held + unit.nbytes <= self.cache_bytes:  # else used once and dropped
+            self._units[i] = unit
+        return unit
+
+    def gains(self, pulse: int, direction: NDArray[np.float64]) -> NDArray[np.float64]:
+        """sqrt(G_t G_r) of ``pulse``'s antennas towards unit directions (K, 3) of the
+        simulation frame, 0 where the beams' bound of eq C1 is below the floor (eq U2)
+        [-]: eq A1 in the working precision of the radar equation's gains
+        (:func:`seaecho.radar.kernels.antenna_gain`)."""
+        from .backend import Boundary, drjit_namespace
+        from .radar.coverage import width_envelope
+        from .radar.kernels import antenna_gain
+        from .scattering.facet import PRECISION
+
+        geo = self.radar.geometry(pulse)
+        tx, rx = self.radar.tx_antenna, self.radar.rx_antenna
+        bound = np.ones(len(direction))
+        for ant, axes in ((tx, geo.tx_axes), (rx, geo.rx_axes)):
+            if ant.pattern == "rectangular":  # eq C1 in each facet's direction
+                u = direction @ axes[:, 1]
+                bound *= width_envelope(ant, ant.width * u / ant.wavelength) ** 2
+        out = np.zeros(len(direction))
+        idx = np.flatnonzero(bound >= self.floor)
+        if idx.size == 0:
+            return out
+        xp = drjit_namespace(self.models.variant)
+        xs = xp if PRECISION == "double" else xp.with_precision(PRECISION)
+        io = Boundary(xp, idx.size)
+        d = xs.cast(io.vec3(direction[idx]))
+        g_t = xp.cast(antenna_gain(xp, tx, d, geo.tx_axes, xs))
+        same = rx is tx and np.array_equal(geo.rx_axes, geo.tx_axes)
+        g_r = g_t if same else xp.cast(antenna_gain(xp, rx, d, geo.rx_axes, xs))
+        (out[idx],) = io.numpy(xp.sqrt(g_t * g_r))
+        return out
+
     def raw(self, pulse: int) -> NDArray[np.complex128] | None:
         """The sea's samples of ``pulse``, (channels, samples) [sqrt(W)], the transmit
         phase included and no noise; None when no tile reaches the floor."""
         keep = self.selected(pulse)
         kept = set(keep.tolist())
-        for i in list(self._tiles):  # the tiles the beam left
-            if i not in kept:
-                del self._tiles[i]
+        for held in (self._tiles, self._units):  # the tiles the beam left
+            for i in list(held):
+                if i not in kept:
+                    del held[i]
+        if self.cached:
+            return self._raw_cached(pulse, keep)
         out = None
         for i in keep:  # a tile at a time: its facets are vectorised
             echo = self.tile(i).sea_echo(pulse).echo
             r = self.radar.receive(pulse, [echo], noise=False)
             out = r if out is None else out + r
         return out
+
+    def _raw_cached(self, pulse: int, keep: NDArray[np.int64]
+                    ) -> NDArray[np.complex128] | None:
+        """Eq U2: the kept tiles' unit-gain facets of the pulse's block times the
+        pulse's gains, summed in one receive (eq E2 is linear in the echoes)."""
+        from .radar.system import ScattererEcho
+
+        if keep.size == 0:
+            return None
+        block = pulse // self.block
+        units = [u for u in (self.unit_echo(i, block) for i in keep) if u.tau.size]
+        self.facets_echoed = 0
+        if not units:
+            return self.radar.receive(pulse, [], noise=False)
+        direction = np.concatenate([u.direction for u in units])
+        w = self.gains(pulse, direction)
+        on = np.flatnonzero(w > 0.0)
+        self.facets_echoed = int(on.size)
+        tau = np.concatenate([u.tau for u in units])[on]
+        amp = np.concatenate([u.amplitudes for u in units], axis=1)[:, on] * w[on]
+        echo = ScattererEcho(tau, amp, None, None, None, None, None, None)
+        return self.radar.receive(pulse, [echo], noise=False)
 
     def facet_count(self, pulse: int) -> int:
         """Facets computed at ``pulse`` (all facets of the selected tiles) [-]."""
@@ -243,5 +410,5 @@ class CoverageSea:
         return int(sum(2 * (ny - 1) * (nx - 1) for ny, nx in n))
 
 
-__all__ = ["CACHE_NODES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform", "point_bounds",
-           "tile_radar"]
+__all__ = ["CACHE_BYTES", "CACHE_NODES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform",
+           "UnitEcho", "incidence_directions", "point_bounds", "tile_radar", "unit_gain_antenna"]
