@@ -233,6 +233,11 @@ class CoverageSea:
                            np.maximum(abs(spans[:, 2] - o[1]), abs(spans[:, 3] - o[1])))
             self._beyond = far + TILE_MARGIN_M >= 0.99 * float(horizon_range(
                 max(h, 0.0), 0.0, earth.radius))
+        # The static occluders ([[land]], [[objects]]) in one scene of the simulation
+        # frame, traced from every tile's facets (eq T6), instead of a scene per tile
+        tracing = self.model.levels[0][1]
+        self._static = tuple(o for o in tracing.objects if not getattr(o, "moving", False))
+        self._occluders = None
         #: tiles computed so far (new simulations made), for the benchmarks [-]
         self.tiles_made = 0
         #: facets whose echo the last pulse summed (eq U2, the held sea's path) [-]
@@ -258,6 +263,9 @@ class CoverageSea:
         land echoes or patchwork (the scene's simulation has them)."""
         pw = self.patchwork
         sea_model, tracing = self.model.levels[int(pw.level[i])]
+        if self._static:  # traced in the simulation frame (eq T6, _weight)
+            tracing = dataclasses.replace(tracing, objects=tuple(
+                o for o in tracing.objects if getattr(o, "moving", False)))
         radar = tile_radar(self.models.radar, pw.frame(i), pw.seed(i, self.model.seed),
                            unit_gain=unit_gain)
         return dataclasses.replace(self.models, radar=radar, sea=self.model.sea(i),
@@ -273,12 +281,22 @@ class CoverageSea:
         owned = np.repeat(pw.cell_owned(i).reshape(-1), 2).astype(np.float64)
         earth = self.models.radar.earth if self._beyond[i] else None
         floor, radar = self.floor, self.radar
+        cell = min(pw.levels[int(pw.level[i])].spacing)
 
         def facet_weight(sim, state, geo) -> NDArray[np.float64]:
-            c = sim.engine.geometry(state)[0]
+            c, _, normal, _ = sim.engine.geometry(state)
             # eq C1 at each facet (the beams' bound in its direction): below the floor,
             # its echo is left out as the tiles' (eq C4)
             w = owned * (point_bounds(radar, geo, frame, c) >= floor) if beam else owned
+            if self._static:  # eq T6: the static occluders, in the simulation frame
+                on = np.flatnonzero(w > 0)
+                cw, nw = frame.to_world(c[on]), normal[on] @ frame.rotation.T
+                hidden = np.zeros(on.size, dtype=bool)
+                for pos in {tuple(geo.tx.position), tuple(geo.rx.position)}:
+                    hidden |= self._hidden(cw, nw, frame.to_world(np.array(pos)), cell,
+                                           sim.engine.tracer.variant)
+                w = w.copy()
+                w[on[hidden]] = 0.0
             if earth is None:
                 return w
             # eq T5: the facets and the antennas in the simulation frame; the straight
@@ -290,6 +308,32 @@ class CoverageSea:
             return w * seen
 
         return facet_weight
+
+    def _hidden(self, points, normals, position, cell_m: float, variant: str
+                ) -> NDArray[np.bool_]:
+        """Whether the segments from facets (centroids ``points``, unit ``normals``, (N, 3)
+        of the simulation frame) to ``position`` hit a static occluder (eq T6), starting
+        off the facet along its normal as the tile's tracer's rays do
+        (:meth:`seaecho.tracing.tracer.FacetTracer.occluded`, ``cell_m`` the grid's
+        spacing [m]) [-]."""
+        from .backend import Boundary, drjit_namespace
+        from .tracing.scene import ObjectScene, shadow_test
+
+        if len(points) == 0:
+            return np.zeros(0, dtype=bool)
+        if self._occluders is None:
+            self._occluders = ObjectScene(list(self._static), variant=variant)
+        xp = drjit_namespace(variant)
+        eps = max(1e-3 * cell_m, 8.0 * np.finfo(np.float32).eps
+                  * float(np.max(np.abs(points))))
+        io = Boundary(xp, len(points))
+        origin = io.vec3(points) + io.vec3(normals) * xp.const(eps)
+        d = xp.vconst(position) - origin
+        r = xp.sqrt(xp.dot(d, d))
+        d = d / r
+        blocked = xp.Bool(shadow_test([self._occluders.mi_scene], origin, d,
+                                      r * (1.0 - 1e-6), variant=variant))
+        return np.asarray(xp.host(blocked), dtype=bool).copy()
 
     def tile(self, i: int):
         """The simulation of tile ``i`` (held, or made): the tile pipeline of every
