@@ -51,6 +51,7 @@ tile's tilt (an error of its angle rho / (k a) about the scene's origin).
 from __future__ import annotations
 
 import dataclasses
+import time
 from collections import OrderedDict
 from collections.abc import Callable
 
@@ -174,10 +175,60 @@ class UnitEcho:
     amplitudes: NDArray[np.complex128]
     direction: NDArray[np.float64]
 
+    @classmethod
+    def sorted(cls, block: int, tau, amplitudes, direction) -> UnitEcho:
+        """The echo with its facets in the order of their azimuth atan2(n_y, n_x) in
+        [-pi, pi] (:meth:`sector` slices it)."""
+        order = np.argsort(np.arctan2(direction[:, 1], direction[:, 0]), kind="stable")
+        return cls(int(block), np.ascontiguousarray(tau[order]),
+                   np.ascontiguousarray(amplitudes[:, order]),
+                   np.ascontiguousarray(direction[order]))
+
     @property
     def nbytes(self) -> int:
         """Memory held [bytes]."""
-        return int(self.tau.nbytes + self.amplitudes.nbytes + self.direction.nbytes)
+        return int(self.tau.nbytes + self.amplitudes.nbytes + self.direction.nbytes
+                   + self.azimuth.nbytes)
+
+    @property
+    def azimuth(self) -> NDArray[np.float64]:
+        """atan2(n_y, n_x) of the facets, nondecreasing [rad] (computed once)."""
+        az = self.__dict__.get("_azimuth")
+        if az is None:
+            az = np.arctan2(self.direction[:, 1], self.direction[:, 0])
+            object.__setattr__(self, "_azimuth", az)
+        return az
+
+    def sector(self, width_axis: NDArray[np.float64], u_max: float) -> NDArray[np.int64]:
+        """Indices of the facets that may have |n . y| < ``u_max`` for the unit vector
+        ``width_axis`` y [-]: a superset, contiguous in azimuth (the module docstring's
+        eq U3), every facet when the bound does not narrow them."""
+        n = len(self.tau)
+        if n == 0 or u_max >= 1.0:
+            return np.arange(n)
+        # |n . y| = |c_h rho cos(phi - phi_y) + n_z y_z|, c_h = sqrt(1 - n_z^2)
+        nz = np.abs(self.direction[:, 2])
+        s_max = float(nz.max())
+        c_min = float(np.sqrt(max(1.0 - s_max * s_max, 0.0)))
+        rho = float(np.hypot(width_axis[0], width_axis[1]))
+        if c_min * rho <= 0.0:
+            return np.arange(n)
+        q = (u_max + s_max * abs(float(width_axis[2]))) / (c_min * rho) + 1e-9
+        if q >= 1.0:
+            return np.arange(n)
+        delta = float(np.arcsin(q))
+        phi_y = float(np.arctan2(width_axis[1], width_axis[0]))
+        az = self.azimuth
+        parts = []
+        for centre in (phi_y + 0.5 * np.pi, phi_y - 0.5 * np.pi):
+            a = (centre - delta + np.pi) % (2.0 * np.pi) - np.pi
+            b = (centre + delta + np.pi) % (2.0 * np.pi) - np.pi
+            if a <= b:
+                parts.append((np.searchsorted(az, a), np.searchsorted(az, b, "right")))
+            else:  # across -pi / pi
+                parts += [(0, np.searchsorted(az, b, "right")), (np.searchsorted(az, a), n)]
+        idx = np.concatenate([np.arange(i, j) for i, j in parts])
+        return np.unique(idx)
 
 
 class CoverageSea:
@@ -242,6 +293,8 @@ class CoverageSea:
         self.tiles_made = 0
         #: facets whose echo the last pulse summed (eq U2, the held sea's path) [-]
         self.facets_echoed = 0
+        #: CPU time spent making tiles' unit-gain echoes (eq U1), for the benchmarks [s]
+        self.making_cpu_s = 0.0
 
     def __len__(self) -> int:
         return len(self.patchwork)
@@ -358,6 +411,7 @@ class CoverageSea:
             self._units.move_to_end(i)
             return held
         self._units.pop(i, None)
+        start = time.process_time()
         sim = self._factory(self._tile_models(i, unit_gain=True), self._weight(i, beam=False))
         self.tiles_made += 1
         first = block * self.block
@@ -368,15 +422,16 @@ class CoverageSea:
         keep = self.radar.window.keep(echo.tau, self.radar.waveform.n_samples)
         n = incidence_directions(sim.radar.geometry(first), facets.centroid[keep],
                                  facets.velocity[keep])
-        unit = UnitEcho(block, np.ascontiguousarray(echo.tau[keep]),
-                        np.ascontiguousarray(np.asarray(echo.amplitudes)[:, keep]),
-                        n @ self.patchwork.frame(i).rotation.T)
+        unit = UnitEcho.sorted(block, echo.tau[keep], np.asarray(echo.amplitudes)[:, keep],
+                               n @ self.patchwork.frame(i).rotation.T)
         held = sum(u.nbytes for u in self._units.values())
         if held + unit.nbytes <= self.cache_bytes:  # else used once and dropped
             self._units[i] = unit
+        self.making_cpu_s += time.process_time() - start
         return unit
 
-    def gains(self, pulse: int, direction: NDArray[np.float64]) -> NDArray[np.float64]:
+    def gains(self, pulse: int, direction: NDArray[np.float64], geo=None
+              ) -> NDArray[np.float64]:
         """sqrt(G_t G_r) of ``pulse``'s antennas towards unit directions (K, 3) of the
         simulation frame, 0 where the beams' bound of eq C1 is below the floor (eq U2)
         [-]: eq A1 in the working precision of the radar equation's gains
@@ -386,7 +441,7 @@ class CoverageSea:
         from .radar.kernels import antenna_gain
         from .scattering.facet import PRECISION
 
-        geo = self.radar.geometry(pulse)
+        geo = self.radar.geometry(pulse) if geo is None else geo
         tx, rx = self.radar.tx_antenna, self.radar.rx_antenna
         bound = np.ones(len(direction))
         for ant, axes in ((tx, geo.tx_axes), (rx, geo.rx_axes)):
@@ -406,6 +461,24 @@ class CoverageSea:
         g_r = g_t if same else xp.cast(antenna_gain(xp, rx, d, geo.rx_axes, xs))
         (out[idx],) = io.numpy(xp.sqrt(g_t * g_r))
         return out
+
+    def _u_max(self) -> tuple[float, float]:
+        """(tx, rx): the |u| = |n . y| beyond which an antenna's envelope factor of eq C1
+        is below the floor, so the beams' bound is too (1 where it never is) [-]."""
+        from .radar.coverage import ENVELOPE_STEPS, width_envelope
+
+        out = []
+        for ant in (self.radar.tx_antenna, self.radar.rx_antenna):
+            if ant.pattern != "rectangular":
+                out.append(1.0)
+                continue
+            t_max = ant.width / ant.wavelength
+            t = np.arange(int(np.ceil(t_max * ENVELOPE_STEPS)) + 2) / ENVELOPE_STEPS
+            below = np.flatnonzero(width_envelope(ant, t) ** 2 < self.floor)
+            # the envelope is constant on each step and nonincreasing: |t| >= t[below[0]]
+            out.append(1.0 if below.size == 0 else
+                       min(float(t[below[0]]) / t_max, 1.0))
+        return out[0], out[1]
 
     def raw(self, pulse: int) -> NDArray[np.complex128] | None:
         """The sea's samples of ``pulse``, (channels, samples) [sqrt(W)], the transmit
@@ -434,16 +507,25 @@ class CoverageSea:
         if keep.size == 0:
             return None
         block = pulse // self.block
-        units = [u for u in (self.unit_echo(i, block) for i in keep) if u.tau.size]
+        geo = self.radar.geometry(pulse)
+        u_max = self._u_max()
+        parts = []
+        for i in keep:  # each tile's facets in the beam's sector (eq U3)
+            u = self.unit_echo(i, block)
+            idx = u.sector(geo.tx_axes[:, 1], u_max[0])
+            if u_max[1] < u_max[0]:  # the receiver's narrower sector
+                idx = np.intersect1d(idx, u.sector(geo.rx_axes[:, 1], u_max[1]))
+            if idx.size:
+                parts.append((u, idx))
         self.facets_echoed = 0
-        if not units:
+        if not parts:
             return self.radar.receive(pulse, [], noise=False)
-        direction = np.concatenate([u.direction for u in units])
-        w = self.gains(pulse, direction)
+        direction = np.concatenate([u.direction[idx] for u, idx in parts])
+        w = self.gains(pulse, direction, geo)
         on = np.flatnonzero(w > 0.0)
         self.facets_echoed = int(on.size)
-        tau = np.concatenate([u.tau for u in units])[on]
-        amp = np.concatenate([u.amplitudes for u in units], axis=1)[:, on] * w[on]
+        tau = np.concatenate([u.tau[idx] for u, idx in parts])[on]
+        amp = np.concatenate([u.amplitudes[:, idx] for u, idx in parts], axis=1)[:, on] * w[on]
         echo = ScattererEcho(tau, amp, None, None, None, None, None, None)
         return self.radar.receive(pulse, [echo], noise=False)
 
