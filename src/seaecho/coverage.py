@@ -152,6 +152,55 @@ def incidence_directions(geo, positions, velocities) -> NDArray[np.float64]:
     return np.stack(np.broadcast_arrays(n.x, n.y, n.z), axis=-1)
 
 
+def beam_gains(radar, geo, direction: NDArray[np.float64], floor: float,
+               variant: str | None = None, precision: str | None = None
+               ) -> NDArray[np.float64]:
+    """sqrt(G_t G_r) of a pulse's antennas towards unit directions (K, 3) of the
+    simulation frame, 0 where the beams' bound of eq C1 is below ``floor`` (eq U2) [-].
+
+    Eq A1 (:func:`seaecho.radar.kernels.antenna_gain`, the radar equation's own gain) in
+    ``precision`` (default the sea's working precision,
+    :data:`seaecho.scattering.facet.PRECISION`, as the tile pipeline's radar equation
+    takes it) on the Dr.Jit back end of ``variant``.
+
+    Parameters
+    ----------
+    radar : seaecho.radar.system.RadarSystem
+    geo : seaecho.radar.system.PulseGeometry
+        The pulse's antenna axes.
+    direction : ndarray (K, 3)
+        n_i, from the transmitter; the receiver takes -n_s = n_i (a fixed monostatic
+        radar) [-].
+    floor : float
+        g_f [-].
+    """
+    from .backend import Boundary, drjit_namespace
+    from .radar.coverage import width_envelope
+    from .radar.kernels import antenna_gain
+    from .scattering.facet import PRECISION
+
+    precision = PRECISION if precision is None else precision
+    tx, rx = radar.tx_antenna, radar.rx_antenna
+    bound = np.ones(len(direction))
+    for ant, axes in ((tx, geo.tx_axes), (rx, geo.rx_axes)):
+        if ant.pattern == "rectangular":  # eq C1 in each facet's direction
+            u = direction @ axes[:, 1]
+            bound *= width_envelope(ant, ant.width * u / ant.wavelength) ** 2
+    out = np.zeros(len(direction))
+    idx = np.flatnonzero(bound >= floor)
+    if idx.size == 0:
+        return out
+    xp = drjit_namespace(variant)
+    xs = xp if precision == "double" else xp.with_precision(precision)
+    io = Boundary(xp, idx.size)
+    d = xs.cast(io.vec3(direction[idx]))
+    g_t = xp.cast(antenna_gain(xp, tx, d, geo.tx_axes, xs))
+    same = rx is tx and np.array_equal(geo.rx_axes, geo.tx_axes)
+    g_r = g_t if same else xp.cast(antenna_gain(xp, rx, d, geo.rx_axes, xs))
+    (out[idx],) = io.numpy(xp.sqrt(g_t * g_r))
+    return out
+
+
 @dataclasses.dataclass(frozen=True)
 class UnitEcho:
     """A tile's facets for one held block at unit antenna gains (eq U1).
@@ -432,35 +481,9 @@ class CoverageSea:
 
     def gains(self, pulse: int, direction: NDArray[np.float64], geo=None
               ) -> NDArray[np.float64]:
-        """sqrt(G_t G_r) of ``pulse``'s antennas towards unit directions (K, 3) of the
-        simulation frame, 0 where the beams' bound of eq C1 is below the floor (eq U2)
-        [-]: eq A1 in the working precision of the radar equation's gains
-        (:func:`seaecho.radar.kernels.antenna_gain`)."""
-        from .backend import Boundary, drjit_namespace
-        from .radar.coverage import width_envelope
-        from .radar.kernels import antenna_gain
-        from .scattering.facet import PRECISION
-
+        """:func:`beam_gains` of ``pulse`` (its geometry ``geo`` if already made) [-]."""
         geo = self.radar.geometry(pulse) if geo is None else geo
-        tx, rx = self.radar.tx_antenna, self.radar.rx_antenna
-        bound = np.ones(len(direction))
-        for ant, axes in ((tx, geo.tx_axes), (rx, geo.rx_axes)):
-            if ant.pattern == "rectangular":  # eq C1 in each facet's direction
-                u = direction @ axes[:, 1]
-                bound *= width_envelope(ant, ant.width * u / ant.wavelength) ** 2
-        out = np.zeros(len(direction))
-        idx = np.flatnonzero(bound >= self.floor)
-        if idx.size == 0:
-            return out
-        xp = drjit_namespace(self.models.variant)
-        xs = xp if PRECISION == "double" else xp.with_precision(PRECISION)
-        io = Boundary(xp, idx.size)
-        d = xs.cast(io.vec3(direction[idx]))
-        g_t = xp.cast(antenna_gain(xp, tx, d, geo.tx_axes, xs))
-        same = rx is tx and np.array_equal(geo.rx_axes, geo.tx_axes)
-        g_r = g_t if same else xp.cast(antenna_gain(xp, rx, d, geo.rx_axes, xs))
-        (out[idx],) = io.numpy(xp.sqrt(g_t * g_r))
-        return out
+        return beam_gains(self.radar, geo, direction, self.floor, self.models.variant)
 
     def _u_max(self) -> tuple[float, float]:
         """(tx, rx): the |u| = |n . y| beyond which an antenna's envelope factor of eq C1
@@ -537,4 +560,5 @@ class CoverageSea:
 
 
 __all__ = ["CACHE_BYTES", "CACHE_NODES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform",
-           "UnitEcho", "incidence_directions", "point_bounds", "tile_radar", "unit_gain_antenna"]
+           "UnitEcho", "beam_gains", "incidence_directions", "point_bounds", "tile_radar",
+           "unit_gain_antenna"]
