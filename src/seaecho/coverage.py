@@ -485,11 +485,14 @@ class CoverageSea:
         geo = self.radar.geometry(pulse) if geo is None else geo
         return beam_gains(self.radar, geo, direction, self.floor, self.models.variant)
 
-    def _u_max(self) -> tuple[float, float]:
+    def _u_max(self, same: bool = False) -> tuple[float, float]:
         """(tx, rx): the |u| = |n . y| beyond which an antenna's envelope factor of eq C1
-        is below the floor, so the beams' bound is too (1 where it never is) [-]."""
+        is below the floor, so the beams' bound is too (1 where it never is) [-];
+        ``same``: one antenna on the same axes transmits and receives, its factor
+        squared is the bound (below sqrt(g_f) then)."""
         from .radar.coverage import ENVELOPE_STEPS, width_envelope
 
+        floor = np.sqrt(self.floor) if same else self.floor
         out = []
         for ant in (self.radar.tx_antenna, self.radar.rx_antenna):
             if ant.pattern != "rectangular":
@@ -497,7 +500,7 @@ class CoverageSea:
                 continue
             t_max = ant.width / ant.wavelength
             t = np.arange(int(np.ceil(t_max * ENVELOPE_STEPS)) + 2) / ENVELOPE_STEPS
-            below = np.flatnonzero(width_envelope(ant, t) ** 2 < self.floor)
+            below = np.flatnonzero(width_envelope(ant, t) ** 2 < floor)
             # the envelope is constant on each step and nonincreasing: |t| >= t[below[0]]
             out.append(1.0 if below.size == 0 else
                        min(float(t[below[0]]) / t_max, 1.0))
@@ -531,7 +534,9 @@ class CoverageSea:
             return None
         block = pulse // self.block
         geo = self.radar.geometry(pulse)
-        u_max = self._u_max()
+        same = (self.radar.rx_antenna == self.radar.tx_antenna
+                and np.array_equal(geo.rx_axes, geo.tx_axes))
+        u_max = self._u_max(same)
         parts = []
         for i in keep:  # each tile's facets in the beam's sector (eq U3)
             u = self.unit_echo(i, block)
