@@ -8,7 +8,7 @@ out to its window's end (:mod:`seaecho.geometry.patchwork`, eqs T1-T5; built by
    (:func:`seaecho.radar.coverage.two_way_bounds`, eqs C1-C2) and keeps the tiles whose
    bound reaches ``[radar] sea_gain_floor_db``: the beam's main lobe and the sidelobes
    above the floor;
-2. computes each kept tile's echo with the single tile's whole pipeline
+2. computes a kept tile's facets with the single tile's whole pipeline
    (:meth:`seaecho.simulation.Simulation.sea_echo`: facets, ray-traced occlusion by the
    waves of the tile, two-scale facet model, speckle, radar equation), in the tile's own
    flat frame (eq T5): the radar's states and antenna axes are carried into that frame
@@ -16,24 +16,66 @@ out to its window's end (:mod:`seaecho.geometry.patchwork`, eqs T1-T5; built by
    Earth (its drop and local vertical); the tile's own sea (its seed, ``"sea-tile"``
    stream) with the ships' wakes where its grid lies;
 3. weights each facet by whether its tile owns it (eq T4: no facet counted twice),
-   whether the beams' bound in its own direction reaches the floor (:func:`point_bounds`)
-   and, on a spherical Earth, whether its centroid is above the radar's horizon (the
-   straight ray of :meth:`~seaecho.geometry.earth.SphericalEarth.visible`): the horizon
-   cuts tiles facet by facet (a held sea sends only the weighted facets through the
-   facet model, the same numbers);
-4. accumulates each tile's echo into the pulse's samples before the next tile
-   (:meth:`seaecho.radar.system.RadarSystem.receive` is linear in its echoes), in the
-   tiles' fixed order.
+   whether a static occluder hides it (eq T6 below), on a spherical Earth whether its
+   centroid is above the radar's horizon (the straight ray of
+   :meth:`~seaecho.geometry.earth.SphericalEarth.visible`: the horizon cuts tiles facet
+   by facet), and whether the beams' bound in its own direction reaches the floor
+   (:func:`point_bounds`, eq C1);
+4. accumulates the tiles' echoes into the pulse's samples
+   (:meth:`seaecho.radar.system.RadarSystem.receive` is linear in its echoes).
 
-Memory. Tiles of at most :data:`CACHE_NODES` grid nodes in all are held between pulses
-(their surface, its per-block speckle draws and traced occlusion: the tiles of the beam,
-reused by the next pulses while the beam crosses them); a tile the beam leaves is
-dropped, and a tile that would exceed the budget is computed and dropped at once. One
-tile's facets are worked on at a time, so a pulse's memory is at most the budget plus
-one tile of ``nx x ny`` nodes, whatever the window's range (the time grows with the
-tiles the beam crosses). Which tiles are held changes nothing: each tile's echo is a pure function
-of (scene, tile, pulse) (its held surface and speckle are those of the pulse's block), so
-pulses stay computable in any order and a Dask run writes the serial bytes.
+**A held sea (eqs U1-U3).** For a fixed radar and a sea held over a block of pulses
+(``[radar] sea_update_pulses``, ``[scattering] sea_motion = "held"``) whose occluders
+stand still, nothing of a facet's echo changes from pulse to pulse within the block but
+the antennas' gains: the facets, their occlusion, the speckle draws of the block, the
+delays, the port states (on FSA bases about the platform's vertical, not the scanning
+antenna's axes) and the two-ray factors are the block's. Eq R1 is linear in
+sqrt(G_t G_r), so a tile's pipeline runs once per block, at the block's first pulse, with
+isotropic unit-gain antennas of the same ports (:func:`unit_gain_antenna`):
+
+    a_f^(1) = a_f(G_t = G_r = 1)                                                     (U1)
+
+per facet f the tile owns and sees (step 3 without the beam's bound), held with its
+delay and the direction n_f from the transmitter to its bounce point in the simulation
+frame (:class:`UnitEcho`); each pulse p of the block then takes
+
+    a_f(p) = a_f^(1) sqrt(G_t(n_f; A_p) G_r(n_f; A_p))    where the bound of eq C1
+             at n_f reaches the floor, 0 elsewhere                                    (U2)
+
+(:func:`beam_gains`: eq A1 with the pulse's antenna axes A_p, in the radar equation's
+working precision) and sums the kept tiles' facets in one receive. The facets of a tile
+are held in the order of their azimuth, and a pulse reads only the azimuths where
+|n . y_a| < u_max can hold, u_max the direction cosine beyond which the antenna's width
+envelope is below the floor (one antenna transmitting and receiving on the same axes:
+its square):
+
+    |n . y_a| < u_max  =>  |cos(phi - phi_y)| < (u_max + s |y_z|) / (c rho_y)         (U3)
+
+with n = (c cos phi, c sin phi, n_z), y_a = (rho_y cos phi_y, rho_y sin phi_y, y_z), s
+the largest |n_z| and c the smallest horizontal norm of the tile's facets: two arcs of
+azimuth around phi_y +- 90 deg (:meth:`UnitEcho.sector`), a superset of the facets eq U2
+keeps. Against the tile pipeline at every pulse (the evolving sea's path, below), the
+same physics: in float64 working precision the two agree to the accumulation's NUFFT
+tolerance, in the default float32 to the rounding of the gains' direction cosines,
+taken in the radar's frame instead of each tile's (tests). An evolving sea (its facets
+move and their speckle evolves at every pulse) or a moving occluder takes steps 2-4 at
+every pulse, each kept tile's simulation held between pulses.
+
+**Occluders (T6).** The static occluders (``[[land]]``, ``[[objects]]``) are one
+Mitsuba scene of the simulation frame, where the scene places them (the land on the
+Earth, eq E4): each facet's segment to the antennas, from its centroid carried out of
+the tile's frame (eq T5), is traced against it (:meth:`CoverageSea._hidden`), the tile's
+own tracer holding only its waves (and moving objects, in the tile's frame).
+
+Memory. A held sea keeps the unit-gain echoes of the tiles the beam's bound keeps, at
+most :data:`CACHE_BYTES` in all; an evolving sea keeps the simulations of at most
+:data:`CACHE_NODES` grid nodes. A tile the beam leaves is dropped, one beyond the budget
+is computed and dropped at once, and one tile's facets go through the pipeline at a
+time: a pulse's memory is the budget plus one tile of ``nx x ny`` nodes, whatever the
+window's range (the time grows with the tiles the beam crosses). Which tiles are held
+changes nothing: a tile's unit echo is a pure function of (scene, tile, block), its echo
+at a pulse of (scene, tile, pulse), so pulses stay computable in any order and a Dask
+run writes the serial bytes.
 
 Truncation. A skipped tile's or facet's echo power is at most g_f times its power at
 both beams' peaks (eq C3), so the skipped sea of a pulse is at most
@@ -44,7 +86,7 @@ over the facets of the skipped tiles and those left out of the kept ones.
 
 Neglected: shadowing of a tile's facets by the waves of the tiles in front of it (each
 tile is traced alone: the waves shadow along the beam within a tile); the tile's own
-curvature (eq T5); ``[[objects]]`` occluders are placed in each tile's frame without the
+curvature (eq T5); moving ``[[objects]]`` are placed in each tile's frame without the
 tile's tilt (an error of its angle rho / (k a) about the scene's origin).
 """
 
