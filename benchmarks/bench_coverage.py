@@ -18,7 +18,7 @@ crosses in P x 0.144 deg: the tiles made there times 2500 / P (every tile of the
 coverage is made about once per revolution and block it meets; the sector's share of
 them is its share of the azimuths), plus the tiles of the beam's bound made again at each
 block's start (the warm-up pulse's), plus the per-pulse rest times the revolution's
-pulses: 2500 (the scene: 10 blocks) and 1000 (the issue's target, the same tiles, 4
+pulses: 2500 (the scene: 10 blocks) and 1000 (the speed target's revolution, the same tiles, 4
 blocks). Run it niced:
 ``nice -n 10 python benchmarks/bench_coverage.py``.
 """
