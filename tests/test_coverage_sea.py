@@ -373,3 +373,23 @@ def test_cached_pulse_is_the_tile_pipeline(monkeypatch, precision, tol):
             assert np.abs(b - a).max() <= tol * np.abs(a).max()
     assert cached.coverage.tiles_made == len(cached.coverage.selected(5))
     assert cached.coverage.facets_echoed > 1000
+
+
+@pytest.mark.slow  # ~3 s: the coverage's models (a sea model per level)
+def test_selected_tiles_are_those_of_the_bound_over_every_tile():
+    """The tiles' azimuth prefilter (eq U3 with each box's azimuths and elevation bound)
+    keeps every tile whose bound reaches the floor: the same tiles as eq C2 over all of
+    them, through a revolution and at the back lobe's tiles near the radar."""
+    from seaecho.build import build_simulation
+    from seaecho.coverage import CoverageSea
+    from seaecho.radar.system import RadarSystem
+
+    sc = _scene(window=(300.0, 2500.0), size=128.0, nx=128, n_pulses=2500)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        models = build_simulation(sc.model_copy(update={"land": ()}))
+    cov = CoverageSea(models, RadarSystem(models.radar), factory=None)
+    for p in range(0, 2500, 97):
+        want = np.flatnonzero(cov.gain_bounds(p) >= cov.floor)
+        np.testing.assert_array_equal(cov.selected(p), want)
+    assert len(cov._candidates(300)) < 0.2 * len(cov)

@@ -738,6 +738,11 @@ MUTATIONS = [
              "for centre in (phi_y + 0.5 * np.pi,):",
              ("tests/test_coverage_sea.py",),
              "a tile's facets taken on one side of the antenna only (eq U3)"),
+    Mutation("tile-prefilter-no-elevation", S + "coverage.py",
+             "q = (u_max + s_max * abs(float(y[2]))) / (c_min * rho) + 1e-9",
+             "q = u_max / rho",
+             ("tests/test_coverage_sea.py",),
+             "the tiles' azimuth prefilter without their elevation (eq U3): near tiles lost"),
 ]
 
 

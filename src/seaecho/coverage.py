@@ -356,6 +356,7 @@ class CoverageSea:
         self._boxes = self.patchwork.boxes(TILE_MARGIN_M)
         self._tiles: OrderedDict[int, object] = OrderedDict()
         self._units: OrderedDict[int, UnitEcho] = OrderedDict()
+        self._arcs: tuple | None = None  # the boxes' azimuths (_candidates)
         #: eqs U1-U2 (a tile's facets once per block, the gains per pulse): a held sea
         #: whose occluders all stand still; an evolving sea takes the tile pipeline at
         #: every pulse (its facets move and their speckle evolves)
@@ -398,8 +399,56 @@ class CoverageSea:
 
     def selected(self, pulse: int) -> NDArray[np.int64]:
         """Tiles computed at ``pulse``: bound at or above the floor, in the patchwork's
-        order [-]."""
-        return np.flatnonzero(self.gain_bounds(pulse) >= self.floor)
+        order [-]. The bound is evaluated on the tiles whose azimuths meet the arcs of
+        eq U3 (:meth:`_candidates`, a superset of those it keeps): the same tiles."""
+        from .radar.coverage import two_way_bounds
+
+        cand = self._candidates(pulse)
+        return cand[two_way_bounds(self.radar, pulse, self._boxes[cand]) >= self.floor]
+
+    def _candidates(self, pulse: int) -> NDArray[np.int64]:
+        """The tiles whose boxes' directions from the (fixed) antenna may have
+        |n . y_a| < u_max (eq U3 with each box's azimuth interval and its largest
+        |n_z|), for each antenna; every tile where the arcs do not narrow [-]."""
+        if self._arcs is None:  # each box's azimuth interval and elevation bound, once
+            o = self.radar.geometry(0).tx.position
+            d = self._boxes - o
+            az = np.arctan2(d[..., 1], d[..., 0])
+            centre = np.arctan2(d[..., 1].mean(axis=1), d[..., 0].mean(axis=1))
+            rel = (az - centre[:, None] + np.pi) % (2.0 * np.pi) - np.pi
+            lo, hi = rel.min(axis=1), rel.max(axis=1)
+            mid, half = centre + 0.5 * (lo + hi), 0.5 * (hi - lo)
+            # the plan distance to the corners' rectangle bounds the box's from below
+            gx = np.maximum(np.maximum(d[..., 0].min(axis=1), -d[..., 0].max(axis=1)), 0.0)
+            gy = np.maximum(np.maximum(d[..., 1].min(axis=1), -d[..., 1].max(axis=1)), 0.0)
+            g = np.hypot(gx, gy)
+            dz = np.abs(d[..., 2]).max(axis=1)
+            s_max = dz / np.maximum(np.hypot(g, dz), 1e-300)
+            wide = (g == 0.0) | (half >= 0.5 * np.pi)  # around the antenna: always
+            self._arcs = (mid, half, s_max, np.sqrt(np.maximum(1.0 - s_max ** 2, 0.0)),
+                          wide)
+        mid, half, s_max, c_min, wide = self._arcs
+        geo = self.radar.geometry(pulse)
+        same = (self.radar.rx_antenna == self.radar.tx_antenna
+                and np.array_equal(geo.rx_axes, geo.tx_axes))
+        keep = np.ones(len(mid), dtype=bool)
+        for y, u_max in zip((geo.tx_axes[:, 1], geo.rx_axes[:, 1]), self._u_max(same),
+                            strict=True):
+            if u_max >= 1.0:
+                continue
+            rho = float(np.hypot(y[0], y[1]))
+            with np.errstate(divide="ignore"):
+                q = (u_max + s_max * abs(float(y[2]))) / (c_min * rho) + 1e-9
+            delta = np.arcsin(np.minimum(q, 1.0))
+            phi_y = float(np.arctan2(y[1], y[0]))
+            near = q >= 1.0
+            for centre in (phi_y + 0.5 * np.pi, phi_y - 0.5 * np.pi):
+                gap = np.abs((mid - centre + np.pi) % (2.0 * np.pi) - np.pi)
+                near |= gap <= half + delta + 1e-9
+            keep &= near | wide
+            if same:
+                break
+        return np.flatnonzero(keep)
 
     def _tile_models(self, i: int, unit_gain: bool = False):
         """The models of tile ``i``'s simulation: the radar in the tile's frame (unit
