@@ -4,10 +4,10 @@
 out to its window's end (:mod:`seaecho.geometry.patchwork`, eqs T1-T5; built by
 :func:`seaecho.build.build_coverage`). At pulse p, :class:`CoverageSea`:
 
-1. bounds the two-way gain over every tile's box at once
-   (:func:`seaecho.radar.coverage.two_way_bounds`, eqs C1-C2) and keeps the tiles whose
-   bound reaches ``[radar] sea_gain_floor_db``: the beam's main lobe and the sidelobes
-   above the floor;
+1. bounds the two-way gain over the boxes of the tiles whose azimuths meet the arcs of
+   eq U3 below (:func:`seaecho.radar.coverage.two_way_bounds`, eqs C1-C2; the arcs hold
+   every tile the bound keeps) and keeps the tiles whose bound reaches ``[radar]
+   sea_gain_floor_db``: the beam's main lobe and the sidelobes above the floor;
 2. computes a kept tile's facets with the single tile's whole pipeline
    (:meth:`seaecho.simulation.Simulation.sea_echo`: facets, ray-traced occlusion by the
    waves of the tile, two-scale facet model, speckle, radar equation), in the tile's own
@@ -318,8 +318,15 @@ class UnitEcho:
                 parts.append((np.searchsorted(az, a), np.searchsorted(az, b, "right")))
             else:  # across -pi / pi
                 parts += [(0, np.searchsorted(az, b, "right")), (np.searchsorted(az, a), n)]
-        idx = np.concatenate([np.arange(i, j) for i, j in parts])
-        return np.unique(idx)
+        merged: list[list[int]] = []  # at most three ranges, merged where they overlap
+        for i, j in sorted((int(i), int(j)) for i, j in parts if j > i):
+            if merged and i <= merged[-1][1]:
+                merged[-1][1] = max(merged[-1][1], j)
+            else:
+                merged.append([i, j])
+        if not merged:
+            return np.zeros(0, dtype=np.int64)
+        return np.concatenate([np.arange(i, j) for i, j in merged])
 
 
 class CoverageSea:
