@@ -841,6 +841,21 @@ MUTATIONS = [
              "return TileFrame(self.earth.tilt(o), o.copy(), o)",
              ("tests/test_coverage_sea.py",),
              "a tile turned to its local vertical but left on the tangent plane (eq T5)"),
+    Mutation("unit-echo-gain-not-square-rooted", S + "coverage.py",
+             "(out[idx],) = io.numpy(xp.sqrt(g_t * g_r))",
+             "(out[idx],) = io.numpy(g_t * g_r)",
+             ("tests/test_coverage_sea.py",),
+             "the unit-gain echo scaled by the two-way power gain, not its root (eq U2)"),
+    Mutation("unit-echo-sector-one-side", S + "coverage.py",
+             "for centre in (phi_y + 0.5 * np.pi, phi_y - 0.5 * np.pi):",
+             "for centre in (phi_y + 0.5 * np.pi,):",
+             ("tests/test_coverage_sea.py",),
+             "a tile's facets taken on one side of the antenna only (eq U3)", count=2),
+    Mutation("tile-prefilter-no-elevation", S + "coverage.py",
+             "q = (u_max + s_max * abs(float(y[2]))) / (c_min * rho) + 1e-9",
+             "q = u_max / rho",
+             ("tests/test_coverage_sea.py",),
+             "the tiles' azimuth prefilter without their elevation (eq U3): near tiles lost"),
 ]
 
 

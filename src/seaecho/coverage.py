@@ -4,11 +4,11 @@
 out to its window's end (:mod:`seaecho.geometry.patchwork`, eqs T1-T5; built by
 :func:`seaecho.build.build_coverage`). At pulse p, :class:`CoverageSea`:
 
-1. bounds the two-way gain over every tile's box at once
-   (:func:`seaecho.radar.coverage.two_way_bounds`, eqs C1-C2) and keeps the tiles whose
-   bound reaches ``[radar] sea_gain_floor_db``: the beam's main lobe and the sidelobes
-   above the floor;
-2. computes each kept tile's echo with the single tile's whole pipeline
+1. bounds the two-way gain over the boxes of the tiles whose azimuths meet the arcs of
+   eq U3 below (:func:`seaecho.radar.coverage.two_way_bounds`, eqs C1-C2; the arcs hold
+   every tile the bound keeps) and keeps the tiles whose bound reaches ``[radar]
+   sea_gain_floor_db``: the beam's main lobe and the sidelobes above the floor;
+2. computes a kept tile's facets with the single tile's whole pipeline
    (:meth:`seaecho.simulation.Simulation.sea_echo`: facets, ray-traced occlusion by the
    waves of the tile, two-scale facet model, speckle, radar equation), in the tile's own
    flat frame (eq T5): the radar's states and antenna axes are carried into that frame
@@ -16,24 +16,66 @@ out to its window's end (:mod:`seaecho.geometry.patchwork`, eqs T1-T5; built by
    Earth (its drop and local vertical); the tile's own sea (its seed, ``"sea-tile"``
    stream) with the ships' wakes where its grid lies;
 3. weights each facet by whether its tile owns it (eq T4: no facet counted twice),
-   whether the beams' bound in its own direction reaches the floor (:func:`point_bounds`)
-   and, on a spherical Earth, whether its centroid is above the radar's horizon (the
-   straight ray of :meth:`~seaecho.geometry.earth.SphericalEarth.visible`): the horizon
-   cuts tiles facet by facet (a held sea sends only the weighted facets through the
-   facet model, the same numbers);
-4. accumulates each tile's echo into the pulse's samples before the next tile
-   (:meth:`seaecho.radar.system.RadarSystem.receive` is linear in its echoes), in the
-   tiles' fixed order.
+   whether a static occluder hides it (eq T6 below), on a spherical Earth whether its
+   centroid is above the radar's horizon (the straight ray of
+   :meth:`~seaecho.geometry.earth.SphericalEarth.visible`: the horizon cuts tiles facet
+   by facet), and whether the beams' bound in its own direction reaches the floor
+   (:func:`point_bounds`, eq C1);
+4. accumulates the tiles' echoes into the pulse's samples
+   (:meth:`seaecho.radar.system.RadarSystem.receive` is linear in its echoes).
 
-Memory. Tiles of at most :data:`CACHE_NODES` grid nodes in all are held between pulses
-(their surface, its per-block speckle draws and traced occlusion: the tiles of the beam,
-reused by the next pulses while the beam crosses them); a tile the beam leaves is
-dropped, and a tile that would exceed the budget is computed and dropped at once. One
-tile's facets are worked on at a time, so a pulse's memory is at most the budget plus
-one tile of ``nx x ny`` nodes, whatever the window's range (the time grows with the
-tiles the beam crosses). Which tiles are held changes nothing: each tile's echo is a pure function
-of (scene, tile, pulse) (its held surface and speckle are those of the pulse's block), so
-pulses stay computable in any order and a Dask run writes the serial bytes.
+**A held sea (eqs U1-U3).** For a fixed radar and a sea held over a block of pulses
+(``[radar] sea_update_pulses``, ``[scattering] sea_motion = "held"``) whose occluders
+stand still, nothing of a facet's echo changes from pulse to pulse within the block but
+the antennas' gains: the facets, their occlusion, the speckle draws of the block, the
+delays, the port states (on FSA bases about the platform's vertical, not the scanning
+antenna's axes) and the two-ray factors are the block's. Eq R1 is linear in
+sqrt(G_t G_r), so a tile's pipeline runs once per block, at the block's first pulse, with
+isotropic unit-gain antennas of the same ports (:func:`unit_gain_antenna`):
+
+    a_f^(1) = a_f(G_t = G_r = 1)                                                     (U1)
+
+per facet f the tile owns and sees (step 3 without the beam's bound), held with its
+delay and the direction n_f from the transmitter to its bounce point in the simulation
+frame (:class:`UnitEcho`); each pulse p of the block then takes
+
+    a_f(p) = a_f^(1) sqrt(G_t(n_f; A_p) G_r(n_f; A_p))    where the bound of eq C1
+             at n_f reaches the floor, 0 elsewhere                                    (U2)
+
+(:func:`beam_gains`: eq A1 with the pulse's antenna axes A_p, in the radar equation's
+working precision) and sums the kept tiles' facets in one receive. The facets of a tile
+are held in the order of their azimuth, and a pulse reads only the azimuths where
+|n . y_a| < u_max can hold, u_max the direction cosine beyond which the antenna's width
+envelope is below the floor (one antenna transmitting and receiving on the same axes:
+its square):
+
+    |n . y_a| < u_max  =>  |cos(phi - phi_y)| < (u_max + s |y_z|) / (c rho_y)         (U3)
+
+with n = (c cos phi, c sin phi, n_z), y_a = (rho_y cos phi_y, rho_y sin phi_y, y_z), s
+the largest |n_z| and c the smallest horizontal norm of the tile's facets: two arcs of
+azimuth around phi_y +- 90 deg (:meth:`UnitEcho.sector`), a superset of the facets eq U2
+keeps. Against the tile pipeline at every pulse (the evolving sea's path, below), the
+same physics: in float64 working precision the two agree to the accumulation's NUFFT
+tolerance, in the default float32 to the rounding of the gains' direction cosines,
+taken in the radar's frame instead of each tile's (tests). An evolving sea (its facets
+move and their speckle evolves at every pulse) or a moving occluder takes steps 2-4 at
+every pulse, each kept tile's simulation held between pulses.
+
+**Occluders (T6).** The static occluders (``[[land]]``, ``[[objects]]``) are one
+Mitsuba scene of the simulation frame, where the scene places them (the land on the
+Earth, eq E4): each facet's segment to the antennas, from its centroid carried out of
+the tile's frame (eq T5), is traced against it (:meth:`CoverageSea._hidden`), the tile's
+own tracer holding only its waves (and moving objects, in the tile's frame).
+
+Memory. A held sea keeps the unit-gain echoes of the tiles the beam's bound keeps, at
+most :data:`CACHE_BYTES` in all; an evolving sea keeps the simulations of at most
+:data:`CACHE_NODES` grid nodes. A tile the beam leaves is dropped, one beyond the budget
+is computed and dropped at once, and one tile's facets go through the pipeline at a
+time: a pulse's memory is the budget plus one tile of ``nx x ny`` nodes, whatever the
+window's range (the time grows with the tiles the beam crosses). Which tiles are held
+changes nothing: a tile's unit echo is a pure function of (scene, tile, block), its echo
+at a pulse of (scene, tile, pulse), so pulses stay computable in any order and a Dask
+run writes the serial bytes.
 
 Truncation. A skipped tile's or facet's echo power is at most g_f times its power at
 both beams' peaks (eq C3), so the skipped sea of a pulse is at most
@@ -44,20 +86,21 @@ over the facets of the skipped tiles and those left out of the kept ones.
 
 Neglected: shadowing of a tile's facets by the waves of the tiles in front of it (each
 tile is traced alone: the waves shadow along the beam within a tile); the tile's own
-curvature (eq T5); ``[[objects]]`` occluders are placed in each tile's frame without the
+curvature (eq T5); moving ``[[objects]]`` are placed in each tile's frame without the
 tile's tilt (an error of its angle rho / (k a) about the scene's origin).
 """
 
 from __future__ import annotations
 
 import dataclasses
+import time
 from collections import OrderedDict
 from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import NDArray
 
-from .geometry.patchwork import CACHE_NODES, TILE_MARGIN_M
+from .geometry.patchwork import CACHE_BYTES, CACHE_NODES, TILE_MARGIN_M
 
 
 class TilePlatform:
@@ -87,10 +130,16 @@ class TilePlatform:
         return getattr(self._platform, name)
 
 
-def tile_radar(radar_model, frame, seed: int):
+def tile_radar(radar_model, frame, seed: int, unit_gain: bool = False):
     """The radar model seen from a tile's frame: its platforms carried by
     :class:`TilePlatform`, a look-at point moved into the frame, the tile's seed, no
-    targets, noise or sea skip (the patchwork selects the tiles)."""
+    targets, noise or sea skip (the patchwork selects the tiles). ``unit_gain``: both
+    antennas isotropic (G = 1 in every direction) with the same ports, basis and
+    isolation (:func:`unit_gain_antenna`): the echoes of eq U1."""
+    if unit_gain:
+        radar_model = dataclasses.replace(
+            radar_model, tx_antenna=unit_gain_antenna(radar_model.tx_antenna),
+            rx_antenna=unit_gain_antenna(radar_model.rx_antenna))
     tx = TilePlatform(radar_model.tx, frame)
     rx = tx if radar_model.rx is radar_model.tx else TilePlatform(radar_model.rx, frame)
 
@@ -122,6 +171,164 @@ def point_bounds(radar, geo, frame, points) -> NDArray[np.float64]:
     return out
 
 
+def unit_gain_antenna(antenna):
+    """``antenna`` with an isotropic pattern (G = 1 everywhere) and the same ports
+    (basis, cross-polar isolation): eq R1 with it is the unit-gain echo of eq U1."""
+    return dataclasses.replace(antenna, pattern="isotropic", width=None, height=None)
+
+
+def incidence_directions(geo, positions, velocities) -> NDArray[np.float64]:
+    """Unit vectors n_i from the transmitter to the bounce points of scatterers at
+    ``positions`` moving at ``velocities`` (K, 3) [-]: those whose gain eq R1 takes
+    (:func:`seaecho.radar.equation.flight`, eq R3, as :func:`seaecho.radar.kernels.
+    echo_terms` evaluates it), in the frame of ``geo`` (a pulse's geometry)."""
+    from .backend import NUMPY, Boundary
+    from .constants import C0
+    from .radar.equation import flight
+
+    io = Boundary(NUMPY, len(positions))
+    p_tx = NUMPY.vconst(geo.tx.position)
+    tau_t, _, p_b = flight(NUMPY, p_tx, io.vec3(positions), io.vec3(velocities),
+                           NUMPY.vconst(geo.rx.position), NUMPY.vconst(geo.rx.velocity))
+    n = (p_b - p_tx) * (1.0 / (C0 * tau_t))
+    return np.stack(np.broadcast_arrays(n.x, n.y, n.z), axis=-1)
+
+
+def beam_gains(radar, geo, direction: NDArray[np.float64], floor: float,
+               variant: str | None = None, precision: str | None = None
+               ) -> NDArray[np.float64]:
+    """sqrt(G_t G_r) of a pulse's antennas towards unit directions (K, 3) of the
+    simulation frame, 0 where the beams' bound of eq C1 is below ``floor`` (eq U2) [-].
+
+    Eq A1 (:func:`seaecho.radar.kernels.antenna_gain`, the radar equation's own gain) in
+    ``precision`` (default the sea's working precision,
+    :data:`seaecho.scattering.facet.PRECISION`, as the tile pipeline's radar equation
+    takes it) on the Dr.Jit back end of ``variant``.
+
+    Parameters
+    ----------
+    radar : seaecho.radar.system.RadarSystem
+    geo : seaecho.radar.system.PulseGeometry
+        The pulse's antenna axes.
+    direction : ndarray (K, 3)
+        n_i, from the transmitter; the receiver takes -n_s = n_i (a fixed monostatic
+        radar) [-].
+    floor : float
+        g_f [-].
+    """
+    from .backend import Boundary, drjit_namespace
+    from .radar.coverage import width_envelope
+    from .radar.kernels import antenna_gain
+    from .scattering.facet import PRECISION
+
+    precision = PRECISION if precision is None else precision
+    tx, rx = radar.tx_antenna, radar.rx_antenna
+    bound = np.ones(len(direction))
+    for ant, axes in ((tx, geo.tx_axes), (rx, geo.rx_axes)):
+        if ant.pattern == "rectangular":  # eq C1 in each facet's direction
+            u = direction @ axes[:, 1]
+            bound *= width_envelope(ant, ant.width * u / ant.wavelength) ** 2
+    out = np.zeros(len(direction))
+    idx = np.flatnonzero(bound >= floor)
+    if idx.size == 0:
+        return out
+    xp = drjit_namespace(variant)
+    xs = xp if precision == "double" else xp.with_precision(precision)
+    io = Boundary(xp, idx.size)
+    d = xs.cast(io.vec3(direction[idx]))
+    g_t = xp.cast(antenna_gain(xp, tx, d, geo.tx_axes, xs))
+    same = rx is tx and np.array_equal(geo.rx_axes, geo.tx_axes)
+    g_r = g_t if same else xp.cast(antenna_gain(xp, rx, d, geo.rx_axes, xs))
+    (out[idx],) = io.numpy(xp.sqrt(g_t * g_r))
+    return out
+
+
+@dataclasses.dataclass(frozen=True)
+class UnitEcho:
+    """A tile's facets for one held block at unit antenna gains (eq U1).
+
+    Attributes
+    ----------
+    block : int
+        The block of held pulses ([radar] sea_update_pulses) it serves.
+    tau : ndarray (K,)
+        Delays [s] of the facets whose echo can reach the window.
+    amplitudes : ndarray (C, K) complex
+        Eq R1 at G_t = G_r = 1 [sqrt(W)]: everything of the pulse but the antennas'
+        gains (occlusion, facet model, speckle, two-ray factor, range loss, carrier).
+    direction : ndarray (K, 3)
+        Unit vector from the transmitter to each facet's bounce point in the simulation
+        frame [-] (:func:`incidence_directions`): where the gains of eq U2 are taken.
+    """
+
+    block: int
+    tau: NDArray[np.float64]
+    amplitudes: NDArray[np.complex128]
+    direction: NDArray[np.float64]
+
+    @classmethod
+    def sorted(cls, block: int, tau, amplitudes, direction) -> UnitEcho:
+        """The echo with its facets in the order of their azimuth atan2(n_y, n_x) in
+        [-pi, pi] (:meth:`sector` slices it)."""
+        order = np.argsort(np.arctan2(direction[:, 1], direction[:, 0]), kind="stable")
+        return cls(int(block), np.ascontiguousarray(tau[order]),
+                   np.ascontiguousarray(amplitudes[:, order]),
+                   np.ascontiguousarray(direction[order]))
+
+    @property
+    def nbytes(self) -> int:
+        """Memory held [bytes]."""
+        return int(self.tau.nbytes + self.amplitudes.nbytes + self.direction.nbytes
+                   + self.azimuth.nbytes)
+
+    @property
+    def azimuth(self) -> NDArray[np.float64]:
+        """atan2(n_y, n_x) of the facets, nondecreasing [rad] (computed once)."""
+        az = self.__dict__.get("_azimuth")
+        if az is None:
+            az = np.arctan2(self.direction[:, 1], self.direction[:, 0])
+            object.__setattr__(self, "_azimuth", az)
+        return az
+
+    def sector(self, width_axis: NDArray[np.float64], u_max: float) -> NDArray[np.int64]:
+        """Indices of the facets that may have |n . y| < ``u_max`` for the unit vector
+        ``width_axis`` y [-]: a superset, contiguous in azimuth (the module docstring's
+        eq U3), every facet when the bound does not narrow them."""
+        n = len(self.tau)
+        if n == 0 or u_max >= 1.0:
+            return np.arange(n)
+        # |n . y| = |c_h rho cos(phi - phi_y) + n_z y_z|, c_h = sqrt(1 - n_z^2)
+        nz = np.abs(self.direction[:, 2])
+        s_max = float(nz.max())
+        c_min = float(np.sqrt(max(1.0 - s_max * s_max, 0.0)))
+        rho = float(np.hypot(width_axis[0], width_axis[1]))
+        if c_min * rho <= 0.0:
+            return np.arange(n)
+        q = (u_max + s_max * abs(float(width_axis[2]))) / (c_min * rho) + 1e-9
+        if q >= 1.0:
+            return np.arange(n)
+        delta = float(np.arcsin(q))
+        phi_y = float(np.arctan2(width_axis[1], width_axis[0]))
+        az = self.azimuth
+        parts = []
+        for centre in (phi_y + 0.5 * np.pi, phi_y - 0.5 * np.pi):
+            a = (centre - delta + np.pi) % (2.0 * np.pi) - np.pi
+            b = (centre + delta + np.pi) % (2.0 * np.pi) - np.pi
+            if a <= b:
+                parts.append((np.searchsorted(az, a), np.searchsorted(az, b, "right")))
+            else:  # across -pi / pi
+                parts += [(0, np.searchsorted(az, b, "right")), (np.searchsorted(az, a), n)]
+        merged: list[list[int]] = []  # at most three ranges, merged where they overlap
+        for i, j in sorted((int(i), int(j)) for i, j in parts if j > i):
+            if merged and i <= merged[-1][1]:
+                merged[-1][1] = max(merged[-1][1], j)
+            else:
+                merged.append([i, j])
+        if not merged:
+            return np.zeros(0, dtype=np.int64)
+        return np.concatenate([np.arange(i, j) for i, j in merged])
+
+
 class CoverageSea:
     """The sea echo of a radar-wide sea, pulse by pulse (module docstring).
 
@@ -135,22 +342,33 @@ class CoverageSea:
         ``factory(models, facet_weight)`` -> a simulation of one tile's models
         (:meth:`seaecho.simulation.Simulation.from_models`).
     cache_nodes : int
-        Grid nodes of the tiles held between pulses.
+        Grid nodes of the tiles held between pulses (the evolving sea's path).
+    cache_bytes : int
+        Memory of the unit-gain echoes held between pulses (the held sea's path) [bytes].
     """
 
-    def __init__(self, models, radar, factory: Callable, cache_nodes: int = CACHE_NODES
-                 ) -> None:
+    def __init__(self, models, radar, factory: Callable, cache_nodes: int = CACHE_NODES,
+                 cache_bytes: int = CACHE_BYTES) -> None:
         self.models = models
         self.model = models.coverage
         self.patchwork = self.model.patchwork
         self.radar = radar
         self.floor = models.radar.sea_gain_floor
+        self.block = int(models.radar.sea_update_pulses)
         self._factory = factory
         self.cache_nodes = int(cache_nodes)
+        self.cache_bytes = int(cache_bytes)
         self._nodes = np.array([np.prod(lv.shape) for lv in self.patchwork.levels]
                                )[self.patchwork.level]
         self._boxes = self.patchwork.boxes(TILE_MARGIN_M)
         self._tiles: OrderedDict[int, object] = OrderedDict()
+        self._units: OrderedDict[int, UnitEcho] = OrderedDict()
+        self._arcs: tuple | None = None  # the boxes' azimuths (_candidates)
+        #: eqs U1-U2 (a tile's facets once per block, the gains per pulse): a held sea
+        #: whose occluders all stand still; an evolving sea takes the tile pipeline at
+        #: every pulse (its facets move and their speckle evolves)
+        self.cached = (models.sea_model.dynamics is None and not any(
+            getattr(o, "moving", False) for _, tr in self.model.levels for o in tr.objects))
         # tiles reaching beyond 0.99 of the horizon to the sea level (eq E2): only their
         # facets are tested against the Earth
         self._beyond = np.zeros(len(self.patchwork), dtype=bool)
@@ -165,8 +383,17 @@ class CoverageSea:
                            np.maximum(abs(spans[:, 2] - o[1]), abs(spans[:, 3] - o[1])))
             self._beyond = far + TILE_MARGIN_M >= 0.99 * float(horizon_range(
                 max(h, 0.0), 0.0, earth.radius))
+        # The static occluders ([[land]], [[objects]]) in one scene of the simulation
+        # frame, traced from every tile's facets (eq T6), instead of a scene per tile
+        tracing = self.model.levels[0][1]
+        self._static = tuple(o for o in tracing.objects if not getattr(o, "moving", False))
+        self._occluders = None
         #: tiles computed so far (new simulations made), for the benchmarks [-]
         self.tiles_made = 0
+        #: facets whose echo the last pulse summed (eq U2, the held sea's path) [-]
+        self.facets_echoed = 0
+        #: CPU time spent making tiles' unit-gain echoes (eq U1), for the benchmarks [s]
+        self.making_cpu_s = 0.0
 
     def __len__(self) -> int:
         return len(self.patchwork)
@@ -179,31 +406,97 @@ class CoverageSea:
 
     def selected(self, pulse: int) -> NDArray[np.int64]:
         """Tiles computed at ``pulse``: bound at or above the floor, in the patchwork's
-        order [-]."""
-        return np.flatnonzero(self.gain_bounds(pulse) >= self.floor)
+        order [-]. The bound is evaluated on the tiles whose azimuths meet the arcs of
+        eq U3 (:meth:`_candidates`, a superset of those it keeps): the same tiles."""
+        from .radar.coverage import two_way_bounds
 
-    def tile(self, i: int):
-        """The simulation of tile ``i`` (held, or made)."""
-        i = int(i)
-        if i in self._tiles:
-            self._tiles.move_to_end(i)
-            return self._tiles[i]
+        cand = self._candidates(pulse)
+        return cand[two_way_bounds(self.radar, pulse, self._boxes[cand]) >= self.floor]
+
+    def _candidates(self, pulse: int) -> NDArray[np.int64]:
+        """The tiles whose boxes' directions from the (fixed) antenna may have
+        |n . y_a| < u_max (eq U3 with each box's azimuth interval and its largest
+        |n_z|), for each antenna; every tile where the arcs do not narrow [-]."""
+        if self._arcs is None:  # each box's azimuth interval and elevation bound, once
+            o = self.radar.geometry(0).tx.position
+            d = self._boxes - o
+            az = np.arctan2(d[..., 1], d[..., 0])
+            centre = np.arctan2(d[..., 1].mean(axis=1), d[..., 0].mean(axis=1))
+            rel = (az - centre[:, None] + np.pi) % (2.0 * np.pi) - np.pi
+            lo, hi = rel.min(axis=1), rel.max(axis=1)
+            mid, half = centre + 0.5 * (lo + hi), 0.5 * (hi - lo)
+            # the plan distance to the corners' rectangle bounds the box's from below
+            gx = np.maximum(np.maximum(d[..., 0].min(axis=1), -d[..., 0].max(axis=1)), 0.0)
+            gy = np.maximum(np.maximum(d[..., 1].min(axis=1), -d[..., 1].max(axis=1)), 0.0)
+            g = np.hypot(gx, gy)
+            dz = np.abs(d[..., 2]).max(axis=1)
+            s_max = dz / np.maximum(np.hypot(g, dz), 1e-300)
+            wide = (g == 0.0) | (half >= 0.5 * np.pi)  # around the antenna: always
+            self._arcs = (mid, half, s_max, np.sqrt(np.maximum(1.0 - s_max ** 2, 0.0)),
+                          wide)
+        mid, half, s_max, c_min, wide = self._arcs
+        geo = self.radar.geometry(pulse)
+        same = (self.radar.rx_antenna == self.radar.tx_antenna
+                and np.array_equal(geo.rx_axes, geo.tx_axes))
+        keep = np.ones(len(mid), dtype=bool)
+        for y, u_max in zip((geo.tx_axes[:, 1], geo.rx_axes[:, 1]), self._u_max(same),
+                            strict=True):
+            if u_max >= 1.0:
+                continue
+            rho = float(np.hypot(y[0], y[1]))
+            with np.errstate(divide="ignore"):
+                q = (u_max + s_max * abs(float(y[2]))) / (c_min * rho) + 1e-9
+            delta = np.arcsin(np.minimum(q, 1.0))
+            phi_y = float(np.arctan2(y[1], y[0]))
+            near = q >= 1.0
+            for centre in (phi_y + 0.5 * np.pi, phi_y - 0.5 * np.pi):
+                gap = np.abs((mid - centre + np.pi) % (2.0 * np.pi) - np.pi)
+                near |= gap <= half + delta + 1e-9
+            keep &= near | wide
+            if same:
+                break
+        return np.flatnonzero(keep)
+
+    def _tile_models(self, i: int, unit_gain: bool = False):
+        """The models of tile ``i``'s simulation: the radar in the tile's frame (unit
+        gains for eq U1), the tile's sea, its level's sea model and tracing, no hulls,
+        land echoes or patchwork (the scene's simulation has them)."""
         pw = self.patchwork
         sea_model, tracing = self.model.levels[int(pw.level[i])]
+        if self._static:  # traced in the simulation frame (eq T6, _weight)
+            tracing = dataclasses.replace(tracing, objects=tuple(
+                o for o in tracing.objects if getattr(o, "moving", False)))
+        radar = tile_radar(self.models.radar, pw.frame(i), pw.seed(i, self.model.seed),
+                           unit_gain=unit_gain)
+        return dataclasses.replace(self.models, radar=radar, sea=self.model.sea(i),
+                                   sea_model=sea_model, tracing=tracing, hulls=None,
+                                   land=None, coverage=None)
+
+    def _weight(self, i: int, beam: bool) -> Callable:
+        """Tile ``i``'s facet weight: ownership (eq T4), the horizon (eq E2, the tiles
+        near it) and, with ``beam``, the beams' bound in each facet's direction (eq C1:
+        the tile pipeline of every pulse; eq U2 applies it per pulse instead)."""
+        pw = self.patchwork
         frame = pw.frame(i)
-        models = dataclasses.replace(
-            self.models, radar=tile_radar(self.models.radar, frame, pw.seed(i, self.model.seed)),
-            sea=self.model.sea(i), sea_model=sea_model, tracing=tracing, hulls=None,
-            coverage=None)
         owned = np.repeat(pw.cell_owned(i).reshape(-1), 2).astype(np.float64)
         earth = self.models.radar.earth if self._beyond[i] else None
         floor, radar = self.floor, self.radar
+        cell = min(pw.levels[int(pw.level[i])].spacing)
 
         def facet_weight(sim, state, geo) -> NDArray[np.float64]:
-            c = sim.engine.geometry(state)[0]
+            c, _, normal, _ = sim.engine.geometry(state)
             # eq C1 at each facet (the beams' bound in its direction): below the floor,
             # its echo is left out as the tiles' (eq C4)
-            w = owned * (point_bounds(radar, geo, frame, c) >= floor)
+            w = owned * (point_bounds(radar, geo, frame, c) >= floor) if beam else owned
+            if self._static:  # eq T6: the static occluders, in the simulation frame
+                on = np.flatnonzero(w > 0)
+                cw, nw = frame.to_world(c[on]), normal[on] @ frame.rotation.T
+                hidden = np.zeros(on.size, dtype=bool)
+                for pos in {tuple(geo.tx.position), tuple(geo.rx.position)}:
+                    hidden |= self._hidden(cw, nw, frame.to_world(np.array(pos)), cell,
+                                           sim.engine.tracer.variant)
+                w = w.copy()
+                w[on[hidden]] = 0.0
             if earth is None:
                 return w
             # eq T5: the facets and the antennas in the simulation frame; the straight
@@ -214,27 +507,153 @@ class CoverageSea:
                     & earth.visible(frame.to_world(geo.rx.position), c))
             return w * seen
 
-        sim = self._factory(models, facet_weight)
+        return facet_weight
+
+    def _hidden(self, points, normals, position, cell_m: float, variant: str
+                ) -> NDArray[np.bool_]:
+        """Whether the segments from facets (centroids ``points``, unit ``normals``, (N, 3)
+        of the simulation frame) to ``position`` hit a static occluder (eq T6), starting
+        off the facet along its normal as the tile's tracer's rays do
+        (:meth:`seaecho.tracing.tracer.FacetTracer.occluded`, ``cell_m`` the grid's
+        spacing [m]) [-]."""
+        from .backend import Boundary, drjit_namespace
+        from .tracing.scene import ObjectScene, shadow_test
+
+        if len(points) == 0:
+            return np.zeros(0, dtype=bool)
+        if self._occluders is None:
+            self._occluders = ObjectScene(list(self._static), variant=variant)
+        xp = drjit_namespace(variant)
+        eps = max(1e-3 * cell_m, 8.0 * np.finfo(np.float32).eps
+                  * float(np.max(np.abs(points))))
+        io = Boundary(xp, len(points))
+        origin = io.vec3(points) + io.vec3(normals) * xp.const(eps)
+        d = xp.vconst(position) - origin
+        r = xp.sqrt(xp.dot(d, d))
+        d = d / r
+        blocked = xp.Bool(shadow_test([self._occluders.mi_scene], origin, d,
+                                      r * (1.0 - 1e-6), variant=variant))
+        return np.asarray(xp.host(blocked), dtype=bool).copy()
+
+    def tile(self, i: int):
+        """The simulation of tile ``i`` (held, or made): the tile pipeline of every
+        pulse (module docstring, step 2)."""
+        i = int(i)
+        if i in self._tiles:
+            self._tiles.move_to_end(i)
+            return self._tiles[i]
+        sim = self._factory(self._tile_models(i), self._weight(i, beam=True))
         self.tiles_made += 1
         held = sum(int(self._nodes[k]) for k in self._tiles)
         if held + int(self._nodes[i]) <= self.cache_nodes:  # else used once and dropped
             self._tiles[i] = sim
         return sim
 
+    def unit_echo(self, i: int, block: int) -> UnitEcho:
+        """Tile ``i``'s facets at unit gains for ``block`` (eq U1; held, or made at the
+        block's first pulse: a pure function of (scene, tile, block))."""
+        i, block = int(i), int(block)
+        held = self._units.get(i)
+        if held is not None and held.block == block:
+            self._units.move_to_end(i)
+            return held
+        self._units.pop(i, None)
+        start = time.process_time()
+        sim = self._factory(self._tile_models(i, unit_gain=True), self._weight(i, beam=False))
+        self.tiles_made += 1
+        first = block * self.block
+        sea = sim.sea_echo(first)
+        echo, facets = sea.echo, sea.facets
+        if echo.tau.size != facets.visibility.size:  # the culled facets, one echo each
+            raise RuntimeError("unit_echo: the tile's echoes and facets do not match")
+        keep = self.radar.window.keep(echo.tau, self.radar.waveform.n_samples)
+        n = incidence_directions(sim.radar.geometry(first), facets.centroid[keep],
+                                 facets.velocity[keep])
+        unit = UnitEcho.sorted(block, echo.tau[keep], np.asarray(echo.amplitudes)[:, keep],
+                               n @ self.patchwork.frame(i).rotation.T)
+        held = sum(u.nbytes for u in self._units.values())
+        if held + unit.nbytes <= self.cache_bytes:  # else used once and dropped
+            self._units[i] = unit
+        self.making_cpu_s += time.process_time() - start
+        return unit
+
+    def gains(self, pulse: int, direction: NDArray[np.float64], geo=None
+              ) -> NDArray[np.float64]:
+        """:func:`beam_gains` of ``pulse`` (its geometry ``geo`` if already made) [-]."""
+        geo = self.radar.geometry(pulse) if geo is None else geo
+        return beam_gains(self.radar, geo, direction, self.floor, self.models.variant)
+
+    def _u_max(self, same: bool = False) -> tuple[float, float]:
+        """(tx, rx): the |u| = |n . y| beyond which an antenna's envelope factor of eq C1
+        is below the floor, so the beams' bound is too (1 where it never is) [-];
+        ``same``: one antenna on the same axes transmits and receives, its factor
+        squared is the bound (below sqrt(g_f) then)."""
+        from .radar.coverage import ENVELOPE_STEPS, width_envelope
+
+        floor = np.sqrt(self.floor) if same else self.floor
+        out = []
+        for ant in (self.radar.tx_antenna, self.radar.rx_antenna):
+            if ant.pattern != "rectangular":
+                out.append(1.0)
+                continue
+            t_max = ant.width / ant.wavelength
+            t = np.arange(int(np.ceil(t_max * ENVELOPE_STEPS)) + 2) / ENVELOPE_STEPS
+            below = np.flatnonzero(width_envelope(ant, t) ** 2 < floor)
+            # the envelope is constant on each step and nonincreasing: |t| >= t[below[0]]
+            out.append(1.0 if below.size == 0 else
+                       min(float(t[below[0]]) / t_max, 1.0))
+        return out[0], out[1]
+
     def raw(self, pulse: int) -> NDArray[np.complex128] | None:
         """The sea's samples of ``pulse``, (channels, samples) [sqrt(W)], the transmit
         phase included and no noise; None when no tile reaches the floor."""
         keep = self.selected(pulse)
         kept = set(keep.tolist())
-        for i in list(self._tiles):  # the tiles the beam left
-            if i not in kept:
-                del self._tiles[i]
+        for held in (self._tiles, self._units):  # the tiles the beam left
+            for i in list(held):
+                if i not in kept:
+                    del held[i]
+        if self.cached:
+            return self._raw_cached(pulse, keep)
         out = None
         for i in keep:  # a tile at a time: its facets are vectorised
             echo = self.tile(i).sea_echo(pulse).echo
             r = self.radar.receive(pulse, [echo], noise=False)
             out = r if out is None else out + r
         return out
+
+    def _raw_cached(self, pulse: int, keep: NDArray[np.int64]
+                    ) -> NDArray[np.complex128] | None:
+        """Eq U2: the kept tiles' unit-gain facets of the pulse's block times the
+        pulse's gains, summed in one receive (eq E2 is linear in the echoes)."""
+        from .radar.system import ScattererEcho
+
+        if keep.size == 0:
+            return None
+        block = pulse // self.block
+        geo = self.radar.geometry(pulse)
+        same = (self.radar.rx_antenna == self.radar.tx_antenna
+                and np.array_equal(geo.rx_axes, geo.tx_axes))
+        u_max = self._u_max(same)
+        parts = []
+        for i in keep:  # each tile's facets in the beam's sector (eq U3)
+            u = self.unit_echo(i, block)
+            idx = u.sector(geo.tx_axes[:, 1], u_max[0])
+            if u_max[1] < u_max[0]:  # the receiver's narrower sector
+                idx = np.intersect1d(idx, u.sector(geo.rx_axes[:, 1], u_max[1]))
+            if idx.size:
+                parts.append((u, idx))
+        self.facets_echoed = 0
+        if not parts:
+            return self.radar.receive(pulse, [], noise=False)
+        direction = np.concatenate([u.direction[idx] for u, idx in parts])
+        w = self.gains(pulse, direction, geo)
+        on = np.flatnonzero(w > 0.0)
+        self.facets_echoed = int(on.size)
+        tau = np.concatenate([u.tau[idx] for u, idx in parts])[on]
+        amp = np.concatenate([u.amplitudes[:, idx] for u, idx in parts], axis=1)[:, on] * w[on]
+        echo = ScattererEcho(tau, amp, None, None, None, None, None, None)
+        return self.radar.receive(pulse, [echo], noise=False)
 
     def facet_count(self, pulse: int) -> int:
         """Facets computed at ``pulse`` (all facets of the selected tiles) [-]."""
@@ -243,5 +662,6 @@ class CoverageSea:
         return int(sum(2 * (ny - 1) * (nx - 1) for ny, nx in n))
 
 
-__all__ = ["CACHE_NODES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform", "point_bounds",
-           "tile_radar"]
+__all__ = ["CACHE_BYTES", "CACHE_NODES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform",
+           "UnitEcho", "beam_gains", "incidence_directions", "point_bounds", "tile_radar",
+           "unit_gain_antenna"]

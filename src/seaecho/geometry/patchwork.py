@@ -373,12 +373,16 @@ def ground_range_window(window_m: tuple[float, float], height_m: float,
 #: Grid nodes of the tiles held between pulses [-] (the memory of a pulse:
 #: :class:`seaecho.coverage.CoverageSea`): 2^19, eight tiles of 256 x 256.
 CACHE_NODES = 1 << 19
+#: Memory of the unit-gain facet echoes held between pulses [bytes] (the held sea's
+#: path of :class:`seaecho.coverage.CoverageSea`, eqs U1-U2): 512 MiB, the facets of
+#: several pulses' footprints.
+CACHE_BYTES = 1 << 29
 #: Margin of a tile's box in the beam's bound [m] (as the single tile's, sea elevations
 #: and the facets' horizontal displacements stay below it).
 TILE_MARGIN_M = 30.0
 
 
-__all__ = ["CACHE_NODES", "CREST_M", "FACETS_PER_BEAM", "FACETS_PER_PEAK_WAVE",
+__all__ = ["CACHE_BYTES", "CACHE_NODES", "CREST_M", "FACETS_PER_BEAM", "FACETS_PER_PEAK_WAVE",
            "FACETS_PER_RANGE_CELL", "Level", "MIN_NODES", "Patchwork", "TILE_MARGIN_M",
            "TileFrame", "band_edges", "ground_range_window", "level_spacings", "max_spacing",
            "zigzag"]
