@@ -49,6 +49,7 @@ References
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass
 
 import numpy as np
@@ -251,16 +252,48 @@ class SeaSurface:
         self._derivatives = (
             (1j * self._kx).astype(c), (1j * self._ky).astype(c),
             (-1j * self._omega).astype(c), self._ux.astype(r), self._uy.astype(r))
+        self._travelling_lock = threading.Lock()
+        self._travelling_last: tuple[float, tuple[NDArray, NDArray]] | None = None
+
+    def __getstate__(self) -> dict:
+        state = dict(self.__dict__)
+        state["_travelling_lock"] = None  # a lock does not pickle
+        state["_travelling_last"] = None
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._travelling_lock = threading.Lock()
 
     def _irfft(self, spec: NDArray[np.complexfloating]) -> NDArray[np.floating]:
-        """Inverse real FFT over the last two axes (a stack of spectra in one call), in
-        the precision of ``spec``."""
+        """Inverse real FFT over the last two axes, in the precision of ``spec``; a stack
+        of spectra is transformed one 2-D spectrum at a time (the same bytes as one
+        batched call, in a half to a third of its time on this CPU: pocketfft's batched
+        2-D transform goes through the stack's strided lines; ``docs/performance.md``)."""
         ny, nx = self.shape
-        return scipy.fft.irfft2(spec, s=(ny, nx), axes=(-2, -1), norm="forward", workers=-1)
+        if spec.ndim == 2:
+            return scipy.fft.irfft2(spec, s=(ny, nx), norm="forward", workers=-1)
+        flat = spec.reshape(-1, *spec.shape[-2:])
+        out = np.empty((flat.shape[0], ny, nx), dtype=np.empty(0, spec.dtype).real.dtype)
+        for i, s in enumerate(flat):  # a handful of fields
+            out[i] = scipy.fft.irfft2(s, s=(ny, nx), norm="forward", workers=-1)
+        return out.reshape(*spec.shape[:-2], ny, nx)
 
     def _travelling(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
-        phase = np.exp(-1j * self._omega * t)  # Eq. 15 evolution, exp(-j omega t)
-        return self._a * phase, self._b * np.conj(phase)
+        """The two travelling waves' spectra at ``t`` [s] (eq 12'): ``a e^{-j omega t}``
+        and ``b e^{+j omega t}``; the last time's are kept (the sea state and the
+        particles' kinematics of one time share them, from whichever thread asks first).
+        Read-only arrays."""
+        with self._travelling_lock:
+            last = self._travelling_last
+            if last is not None and last[0] == t:
+                return last[1]
+            phase = np.exp(-1j * self._omega * t)  # Eq. 15 evolution, exp(-j omega t)
+            out = (self._a * phase, self._b * np.conj(phase))
+            for a in out:
+                a.flags.writeable = False
+            self._travelling_last = (t, out)
+            return out
 
     def components(self, slope_fraction: float = 1e-3, height_fraction: float = 1e-4,
                    limit: int = 20000) -> tuple[NDArray, ...]:
