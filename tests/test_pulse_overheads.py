@@ -48,11 +48,13 @@ def test_kept_travelling_waves_give_the_same_fields_and_kinematics():
     # The sea state and the kinematics of one time share its travelling waves: the same
     # bytes whichever is asked first, as from a surface that kept nothing
     kept = _surface()
+    assert not kept.share_travelling  # a surface keeps nothing unless asked
+    kept.share_travelling = True
     k1 = surface_kinematics(kept, 0.7)
     f1 = kept.fields(0.7)
     fresh = _surface()
     f2 = fresh.fields(0.7)
-    fresh._travelling_last = None
+    assert fresh._travelling_last is None
     k2 = surface_kinematics(fresh, 0.7)
     for a, b in ((f1.elevation, f2.elevation), (f1.slope_x, f2.slope_x),
                  (f1.velocity, f2.velocity), (k1.displacement, k2.displacement),
