@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+import seaecho.ocean.surface as surface_module
 import seaecho.simulation as simulation
 from seaecho.checks.guards import _finite
 from seaecho.ocean.spectra import DirectionalSpectrum
@@ -27,9 +28,12 @@ def _surface() -> SeaSurface:
     return SeaSurface(spec, (32.0, 32.0), (64, 64), np.random.default_rng(3))
 
 
-def test_stacked_inverse_ffts_are_those_of_each_field():
-    # A stack of spectra, transformed one 2-D field at a time, equals the transforms of
-    # the fields taken alone, to the byte, in both precisions (and keeps the stack's shape)
+@pytest.mark.parametrize("loop_from", [0, 10**9])
+def test_stacked_inverse_ffts_are_those_of_each_field(loop_from, monkeypatch):
+    # A stack of spectra, transformed one 2-D field at a time or batched, equals the
+    # transforms of the fields taken alone, to the byte, in both precisions (and keeps the
+    # stack's shape)
+    monkeypatch.setattr(surface_module, "LOOP_MIN_NODES", loop_from)
     s = _surface()
     rng = np.random.default_rng(0)
     half = s._a.shape
