@@ -1,10 +1,10 @@
 """Per-pulse shortcuts that must not change a pulse's bytes.
 
 Each shortcut of the Simulation 2 pulse's CPU time (docs/performance.md) is checked
-against the longer way it replaces: the ocean's stacked inverse FFTs done one field at a
-time, the travelling waves kept for the kinematics of the same time, the receive window's
-all-kept test by the extreme delays, the finite-output guard on a list of channels, and no
-per-facet wake damping for a sea without a ship (the damping factor sqrt(1 - 0) = 1).
+against the longer way it replaces: the travelling waves kept for the kinematics of the
+same time, the receive window's all-kept test by the extreme delays, the finite-output
+guard on a list of channels, and no per-facet wake damping for a sea without a ship (the
+damping factor sqrt(1 - 0) = 1).
 """
 
 from __future__ import annotations
@@ -12,7 +12,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import seaecho.ocean.surface as surface_module
 import seaecho.simulation as simulation
 from seaecho.checks.guards import _finite
 from seaecho.ocean.spectra import DirectionalSpectrum
@@ -26,26 +25,6 @@ from test_simulation import _raytraced_scene
 def _surface() -> SeaSurface:
     spec = DirectionalSpectrum("pierson-moskowitz", "longuet-higgins", u19_5=7.0, s=2.0)
     return SeaSurface(spec, (32.0, 32.0), (64, 64), np.random.default_rng(3))
-
-
-@pytest.mark.parametrize("loop_from", [0, 10**9])
-def test_stacked_inverse_ffts_are_those_of_each_field(loop_from, monkeypatch):
-    # A stack of spectra, transformed one 2-D field at a time or batched, equals the
-    # transforms of the fields taken alone, to the byte, in both precisions (and keeps the
-    # stack's shape)
-    monkeypatch.setattr(surface_module, "LOOP_MIN_NODES", loop_from)
-    s = _surface()
-    rng = np.random.default_rng(0)
-    half = s._a.shape
-    stack = rng.standard_normal((2, 3, *half)) + 1j * rng.standard_normal((2, 3, *half))
-    for dtype in (np.complex64, np.complex128):
-        spec = stack.astype(dtype)
-        out = s._irfft(spec)
-        assert out.shape == (2, 3, *s.shape)
-        assert out.dtype == np.empty(0, dtype).real.dtype
-        for i in range(2):
-            for j in range(3):
-                assert out[i, j].tobytes() == s._irfft(spec[i, j]).tobytes()
 
 
 def test_kept_travelling_waves_give_the_same_fields_and_kinematics():

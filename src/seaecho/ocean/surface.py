@@ -68,9 +68,6 @@ _REFINE_COARSE = 0.05
 _REFINE_SUB = 6
 #: Allowed ``SeaSurface(precision=...)``.
 PRECISIONS = ("single", "double")
-#: Grid nodes from which a stack of fields is inverse-transformed field by field
-#: (``SeaSurface._irfft``; 256^2 and more; below, one batched call is faster).
-LOOP_MIN_NODES = 256 * 256
 
 
 def grid_coordinates(size: float, n: int) -> NDArray[np.float64]:
@@ -272,20 +269,10 @@ class SeaSurface:
         self._travelling_lock = threading.Lock()
 
     def _irfft(self, spec: NDArray[np.complexfloating]) -> NDArray[np.floating]:
-        """Inverse real FFT over the last two axes, in the precision of ``spec``; on grids
-        of at least :data:`LOOP_MIN_NODES` nodes a stack of spectra is transformed one 2-D
-        spectrum at a time (the same bytes as one batched call, in about half its time
-        there: measured with ``benchmarks/bench_pulse_parts.py``; smaller grids are
-        faster batched)."""
+        """Inverse real FFT over the last two axes (a stack of spectra in one call), in
+        the precision of ``spec``."""
         ny, nx = self.shape
-        if spec.ndim == 2 or ny * nx < LOOP_MIN_NODES:
-            return scipy.fft.irfft2(spec, s=(ny, nx), axes=(-2, -1), norm="forward",
-                                    workers=-1)
-        flat = spec.reshape(-1, *spec.shape[-2:])
-        out = np.empty((flat.shape[0], ny, nx), dtype=np.empty(0, spec.dtype).real.dtype)
-        for i, s in enumerate(flat):  # a handful of fields
-            out[i] = scipy.fft.irfft2(s, s=(ny, nx), norm="forward", workers=-1)
-        return out.reshape(*spec.shape[:-2], ny, nx)
+        return scipy.fft.irfft2(spec, s=(ny, nx), axes=(-2, -1), norm="forward", workers=-1)
 
     def _travelling(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
         """The two travelling waves' spectra at ``t`` [s] (eq 12'): ``a e^{-j omega t}``
