@@ -13,6 +13,8 @@ threads, ``time.process_time``) and wall ms per call of
 - the ocean's five float32 inverse FFTs at the grid's size, one batched ``irfft2`` (what
   ``SeaSurface.fields`` does) and one per field (measured, not used: slower in a process
   that runs the simulation, faster in a bare one);
+- the travelling waves of one time (eq 12' of ``seaecho.ocean.surface``), which an
+  evolving sea's state and kinematics of that time now share;
 - the vertex mean of the wake mask per facet (``simulation.wake_damping``), which a sea
   without a ship no longer computes;
 - the accumulation of the sea's echo (``radar.echo.accumulate``, four channels, one worker
@@ -142,6 +144,8 @@ def main() -> None:
         ("ocean: 5 float32 irfft2, one per field (not used)",
          lambda: [scipy.fft.irfft2(f, s=surface.shape, norm="forward", workers=-1)
                   for f in five]),
+        ("ocean: travelling waves of one time (kept, evolving)",
+         lambda: surface._travelling_at(0.3)),
         ("wake damping per facet (no ship: not computed)", lambda: wake_damping(state)),
         ("accumulation, 4 channels, 1 worker",
          lambda: accumulate(tau, amp, spec, window, workers=1)),
