@@ -78,7 +78,7 @@ def surface_kinematics(surface: SeaSurface, t: float, acceleration: bool = True
     dy_hat = jy * z_hat
     w2 = -surface._omega ** 2
     irfft = surface._irfft
-    disp = np.moveaxis(irfft(np.stack([dx_hat, dy_hat])), 0, -1)
+    disp = np.moveaxis(irfft(np.stack([dx_hat, dy_hat])), 0, -1)  # one batched FFT
     if not acceleration:
         return SurfaceKinematics(t=float(t), displacement=disp, acceleration=None)
     acc = np.stack([irfft(w2 * dx_hat), irfft(w2 * dy_hat), irfft(w2 * z_hat)], axis=-1)
