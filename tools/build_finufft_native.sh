@@ -7,8 +7,8 @@
 # The PyPI wheels are built for the x86-64 baseline (FINUFFT_ARCH_FLAGS=-march=x86-64:
 # SSE2, no FMA); built from the same version's source with -march=native, the spreader
 # that sums a pulse's facets uses the CPU's wider vectors. Same tolerance, numbers within
-# rounding of the wheel's (the summation order and fused multiply-adds differ: the bytes
-# of a run change, 1e-14 of each channel on a Simulation 2 pulse).
+# rounding of the wheel's (vector width and fused multiply-adds differ: the bytes of a
+# run change at the rounding level).
 #
 # Needs a C++17 compiler, cmake >= 3.19 and FFTW 3 (Debian: apt-get install libfftw3-dev).
 # finufft's CMake fetches xsimd, findFFTW and CPM.cmake from GitHub; on a machine without
