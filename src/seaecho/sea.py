@@ -213,7 +213,10 @@ class Sea:
 
     def kinematics(self, t: float = 0.0, acceleration: bool = True) -> SurfaceKinematics:
         """Particle displacement and acceleration of the wind sea at ``t`` [s]
-        (:func:`surface_kinematics`; the displacement alone without ``acceleration``)."""
+        (:func:`surface_kinematics`; the displacement alone without ``acceleration``).
+        From then on the surface keeps its last time's travelling waves for the sea state
+        of that time (``SeaSurface.share_travelling``)."""
+        self.surface.share_travelling = True
         return surface_kinematics(self.surface, t, acceleration)
 
     def vertical_acceleration(self, t: float = 0.0) -> NDArray[np.float64]:

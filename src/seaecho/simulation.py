@@ -78,6 +78,13 @@ def wake_damping(state) -> NDArray[np.float64]:
     return to_facets(state.wake_mask).reshape(-1)
 
 
+def _block_damping(state) -> NDArray[np.float64] | None:
+    """:func:`wake_damping` of a block's sea state, None where its wake mask is zero
+    everywhere (no ship): the formulas then skip the factor sqrt(1 - 0) = 1, the same
+    numbers without the per-facet average and its copy to the device."""
+    return wake_damping(state) if np.any(state.wake_mask) else None
+
+
 def breaking_fraction(sea_model, sea, state, area: NDArray) -> NDArray[np.float64]:
     """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
 
@@ -414,7 +421,7 @@ class Simulation:
                 nodes = facet_gaussians(n_facets, len(model.tilt.slopes), seed,
                                         "speckle-tilt", block, xp=xp)
                 draws.update({f"bragg{j + 1}": g for j, g in enumerate(nodes)})
-            q = {"damping": wake_damping(state), "draws": draws,
+            q = {"damping": _block_damping(state), "draws": draws,
                  "breaking": None}
             if model.breaking is not None:
                 (g_w,) = facet_gaussians(n_facets, 1, seed, "breaking", block, xp=xp)
@@ -468,7 +475,7 @@ class Simulation:
         acc = np.stack([to_facets(kin.acceleration[..., i]).reshape(-1) for i in range(3)],
                        axis=-1)
         centre = particle_centre(centroid, disp)
-        q = {"damping": wake_damping(state), "draws": None,
+        q = {"damping": _block_damping(state), "draws": None,
              "breaking": None, "t": float(state.t), "centre": centre, "velocity": velocity,
              "acceleration": acc}
         if self.sea_model.breaking is not None:
@@ -489,7 +496,7 @@ class Simulation:
             kin = ahead[1].result()
         else:
             kin = self._kinematics(state.t)
-        q = {"damping": wake_damping(state), "draws": None, "breaking": None,
+        q = {"damping": _block_damping(state), "draws": None, "breaking": None,
              "t": float(state.t), "motion": {"displacement": kin.displacement,
                                              "acceleration": kin.acceleration if
                                              self.block > 1 else None}}

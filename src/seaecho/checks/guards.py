@@ -32,7 +32,10 @@ class NonFiniteEchoError(SceneError):
 
 def _finite(a) -> bool:
     """All elements finite (fast path: the sum of finite values is finite unless it
-    overflows; then the elements are checked one by one)."""
+    overflows; then the elements are checked one by one). A list or tuple (one array per
+    channel) is checked array by array: stacking it would copy every channel."""
+    if isinstance(a, list | tuple) and any(isinstance(x, np.ndarray) for x in a):
+        return all(_finite(x) for x in a)
     a = np.asarray(a)
     if a.size == 0:
         return True

@@ -49,6 +49,7 @@ References
 
 from __future__ import annotations
 
+import threading
 from dataclasses import dataclass
 
 import numpy as np
@@ -251,6 +252,21 @@ class SeaSurface:
         self._derivatives = (
             (1j * self._kx).astype(c), (1j * self._ky).astype(c),
             (-1j * self._omega).astype(c), self._ux.astype(r), self._uy.astype(r))
+        #: keep the last time's travelling waves for the next caller of that time (set
+        #: by ``seaecho.sea.Sea.kinematics``; off, a surface keeps nothing per time)
+        self.share_travelling = False
+        self._travelling_lock = threading.Lock()
+        self._travelling_last: tuple[float, tuple[NDArray, NDArray]] | None = None
+
+    def __getstate__(self) -> dict:
+        state = dict(self.__dict__)
+        state["_travelling_lock"] = None  # a lock does not pickle
+        state["_travelling_last"] = None
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._travelling_lock = threading.Lock()
 
     def _irfft(self, spec: NDArray[np.complexfloating]) -> NDArray[np.floating]:
         """Inverse real FFT over the last two axes (a stack of spectra in one call), in
@@ -259,8 +275,26 @@ class SeaSurface:
         return scipy.fft.irfft2(spec, s=(ny, nx), axes=(-2, -1), norm="forward", workers=-1)
 
     def _travelling(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
+        """The two travelling waves' spectra at ``t`` [s] (eq 12'): ``a e^{-j omega t}``
+        and ``b e^{+j omega t}``, read-only. With :attr:`share_travelling` the last
+        time's are kept (the sea state and the particles' kinematics of one time share
+        them, from whichever thread asks first)."""
+        if not self.share_travelling:
+            return self._travelling_at(t)
+        with self._travelling_lock:
+            last = self._travelling_last
+            if last is not None and last[0] == t:
+                return last[1]
+            out = self._travelling_at(t)
+            self._travelling_last = (t, out)
+            return out
+
+    def _travelling_at(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
         phase = np.exp(-1j * self._omega * t)  # Eq. 15 evolution, exp(-j omega t)
-        return self._a * phase, self._b * np.conj(phase)
+        out = (self._a * phase, self._b * np.conj(phase))
+        for a in out:
+            a.flags.writeable = False
+        return out
 
     def components(self, slope_fraction: float = 1e-3, height_fraction: float = 1e-4,
                    limit: int = 20000) -> tuple[NDArray, ...]:

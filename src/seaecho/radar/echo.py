@@ -168,6 +168,14 @@ class ReceiveWindow:
         lo, hi = self.bounds(pulse_samples)
         return (tau > lo) & (tau < hi)
 
+    def keeps_all(self, tau: NDArray[np.float64], pulse_samples: int) -> bool:
+        """Whether :meth:`keep` is true for every scatterer (by the least and the greatest
+        delay: two reductions instead of a mask; a NaN delay makes it False)."""
+        if np.size(tau) == 0:
+            return True
+        lo, hi = self.bounds(pulse_samples)
+        return bool(np.min(tau) > lo) and bool(np.max(tau) < hi)
+
 
 def accumulate(tau: ArrayLike, amplitudes: ArrayLike, pulse_spectrum: ArrayLike,
                window: ReceiveWindow, eps: float | None = None, *, method: str = "auto",

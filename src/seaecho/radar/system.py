@@ -388,13 +388,14 @@ class RadarSystem:
                 out += accumulate_cuda(e.xp, e.tau, e.amplitudes, self._spectrum,
                                        self.window)
                 continue
-            keep = self.window.keep(e.tau, self.waveform.n_samples)
-            if keep.all():  # no copies
+            if self.window.keeps_all(e.tau, self.waveform.n_samples):  # no copies
                 tau, amp = e.tau, e.amplitudes
-            elif isinstance(e.amplitudes, np.ndarray):
-                tau, amp = e.tau[keep], e.amplitudes[:, keep]
             else:
-                tau, amp = e.tau[keep], [a[keep] for a in e.amplitudes]
+                keep = self.window.keep(e.tau, self.waveform.n_samples)
+                if isinstance(e.amplitudes, np.ndarray):
+                    tau, amp = e.tau[keep], e.amplitudes[:, keep]
+                else:
+                    tau, amp = e.tau[keep], [a[keep] for a in e.amplitudes]
             if device is not None and tau.size * self._spectrum.size > DIRECT_TERMS:
                 d = DeviceEcho.upload(device, tau, amp)
                 out += accumulate_cuda(device, d.tau, d.amplitudes, self._spectrum,
