@@ -193,6 +193,20 @@ def build_ships(scene) -> tuple[Ship, ...]:
     return tuple(out)
 
 
+def sea_current(scene) -> tuple[float, float]:
+    """The uniform surface current of ``[sea]`` (U_x, U_y) [m/s]: ``current_m_s`` plus the
+    wind drift of ``wind_drift`` (:func:`seaecho.ocean.wind.wind_drift_wu`)."""
+    from .ocean.wind import wind_drift_wu
+
+    cfg = scene.sea
+    ux, uy = (float(u) for u in cfg.current_m_s)
+    if cfg.wind_drift == "wu":
+        dx, dy = wind_drift_wu(float(u10_from_u19_5(cfg.wind_speed_m_s)),
+                               float(np.deg2rad(cfg.wind_direction_deg)))
+        ux, uy = ux + dx, uy + dy
+    return ux, uy
+
+
 def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:
     """The sea of a scene: the surface realisation of its seed (``"surface"`` stream) on
     the ``[sea]`` grid, plus the wakes of ``[ship]`` or ``[[ships]]``.
@@ -206,7 +220,8 @@ def build_sea(scene, spectrum: DirectionalSpectrum | None = None) -> Sea:
     cfg = scene.sea
     spectrum = sea_spectrum(scene) if spectrum is None else spectrum
     surface = SeaSurface(spectrum, size=cfg.size_m, shape=cfg.shape,
-                         rng=generator(scene.run.seed, "surface"), depth=cfg.depth_m)
+                         rng=generator(scene.run.seed, "surface"), depth=cfg.depth_m,
+                         current=sea_current(scene))
     ships = build_ships(scene)
     kelvin = [bool(c.kelvin_wake) for c in scene.all_ships]
     narrow = [bool(c.narrow_v) for c in scene.all_ships]
@@ -395,7 +410,7 @@ def build_sea_dynamics(scene, spectrum: DirectionalSpectrum, k: float, k_grid: f
                                                                        k_cut, depth),
                        breaker_velocity=stats.mean_phase_speed * np.array(
                            [np.cos(w), np.sin(w), 0.0]),
-                       travel=travel)
+                       travel=travel, current=sea_current(scene))
 
 
 def check_scene(scene, frequency: float | None = None) -> None:

@@ -92,6 +92,19 @@ class SeaConfig(Section):
         20.0, ge=-2.0, le=40.0, description="sea surface temperature [degC]"
     )
     salinity_psu: float = Field(35.0, ge=0.0, le=45.0, description="salinity [psu]")
+    current_m_s: tuple[float, float] = Field(
+        (0.0, 0.0),
+        description="uniform surface current [U_x, U_y] in the scene frame (x east, y "
+        "north) [m/s], each component from -5 to 5 m/s (the strongest tidal streams); it "
+        "carries the waves (omega_0(K) + K.U, docs/dynamics.md) and the scatterers "
+        "(Doppler q.U); [0, 0]: still water",
+    )
+    wind_drift: Literal["none", "wu"] = Field(
+        "none",
+        description="wind-induced surface drift added to current_m_s, along the wind: "
+        "'none', or 'wu' (0.53 u*, Wu 1975, with u* of Wu's 1982 drag law at U10: about "
+        "2.0 % of U10 at 10 m/s)",
+    )
     coverage: Literal["tile", "radar"] = Field(
         "tile",
         description="where the sea is: 'tile' (one tile of size_x_m x size_y_m around "
@@ -107,6 +120,13 @@ class SeaConfig(Section):
             n = getattr(self, name)
             if n is not None and n % 2:
                 raise ValueError(f"{name} = {n}: must be even (FFT grid with a Nyquist bin)")
+        for i, u in enumerate(self.current_m_s):
+            if not -5.0 <= u <= 5.0:
+                raise ValueError(f"current_m_s[{i}] = {u:g} m/s: allowed -5 .. 5 m/s")
+        if self.coverage == "radar" and (any(self.current_m_s) or self.wind_drift != "none"):
+            raise ValueError(f"current_m_s = {list(self.current_m_s)}, wind_drift = "
+                             f"{self.wind_drift!r} with coverage = 'radar': not implemented "
+                             "yet (a current needs [0, 0] and 'none' there)")
         if self.spectrum == "jonswap" and self.fetch_m is None:
             raise ValueError("fetch_m is required when spectrum = 'jonswap' (fetch-limited sea)")
         return self

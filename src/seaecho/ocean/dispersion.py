@@ -18,6 +18,11 @@ References
 .. [2] T. Elfouhaily, B. Chapron, K. Katsaros and D. Vandemark, "A unified directional
    spectrum for long and short wind-driven waves", J. Geophys. Res. 102(C7),
    15781-15796, 1997.
+.. [3] O. M. Phillips, *The Dynamics of the Upper Ocean*, 2nd ed., Cambridge University
+   Press, 1977, section 3.6 (waves on a current: the Doppler-shifted frequency).
+.. [4] J. T. Kirby and T.-M. Chen, "Surface waves on vertically sheared flows:
+   approximate dispersion relations", J. Geophys. Res. 94(C1), 1013-1027, 1989 (the
+   depth-uniform current as their limiting case).
 """
 
 from __future__ import annotations
@@ -87,6 +92,33 @@ def angular_frequency(
             raise ValueError(f"depth = {depth} m: must be > 0 (or None for deep water)")
         omega2 = omega2 * np.tanh(k * depth)  # Eq. 15 finite depth
     return np.sqrt(omega2)
+
+
+def doppler_shifted_frequency(omega0: Any, kx: Any, ky: Any, current: Any) -> Any:
+    """Absolute angular frequency of a wave of vector K on a uniform current [rad/s].
+
+    .. math::
+
+        \\omega(\\mathbf K) = \\omega_0(|\\mathbf K|) + \\mathbf K \\cdot \\mathbf U     (C1)
+
+    ``omega_0`` the intrinsic frequency of eq 15' (in the frame moving with the water) and
+    ``U`` a depth-uniform horizontal current: the waves are carried by the water
+    (Phillips 1977, section 3.6; Kirby & Chen 1989, the uniform-current limit). A wave
+    along ``-K`` has ``omega_0 - K . U``. Plain arithmetic, so that it runs on numpy and
+    Dr.Jit arrays alike; with ``omega0 = 0`` it is the rate ``K . U`` at which a frozen
+    pattern advected by ``U`` changes phase at a fixed point.
+
+    Parameters
+    ----------
+    omega0 : array_like or Dr.Jit array
+        Intrinsic angular frequency omega_0 [rad/s] (or 0).
+    kx, ky : array_like or Dr.Jit array
+        Wave vector components [rad/m] (scene frame).
+    current : (float, float)
+        Current U = (U_x, U_y) [m/s] (scene frame).
+    """
+    ux, uy = (float(v) for v in current)
+    return omega0 + kx * ux + ky * uy  # Eq. C1 (Phillips 1977, sec. 3.6)
 
 
 def phase_speed(
@@ -174,6 +206,7 @@ def horizontal_to_vertical_ratio(k: ArrayLike, depth: float | None = None
         return 1.0 / np.tanh(k * depth)  # Lamb art. 228
 
 
-__all__ = ["CAPILLARY_WAVENUMBER", "angular_frequency", "group_to_phase_ratio",
+__all__ = ["CAPILLARY_WAVENUMBER", "angular_frequency", "doppler_shifted_frequency",
+           "group_to_phase_ratio",
            "horizontal_to_vertical_ratio", "omega_squared_deep", "phase_speed",
            "wavenumber_of_phase_speed"]

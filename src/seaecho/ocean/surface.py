@@ -26,6 +26,15 @@ u = (K / K) omega coth(K d) z for a wave travelling along K (Lamb 1932, art. 228
 
 The tessellated FFT approach is that of Tessendorf (2001) and Mastin et al. (1987).
 
+A uniform surface current U (``current``) carries every wave: the wave along +K turns at
+omega_0(K) + K.U and the one along -K at omega_0(K) - K.U
+(:func:`~seaecho.ocean.dispersion.doppler_shifted_frequency`, eq C1), so that
+z(r, t) = z_0(r - U t, t), the still-water sea advected by U. The fields are Eulerian
+(on the fixed grid): the velocity returned is then the rate of change of the surface
+point above each node, the orbital velocity less the advection of the orbital pattern,
+``-U . grad`` of the displacement and of the elevation; the particles' own drift U is
+carried by the sub-facet scatterers (:mod:`seaecho.scattering.dynamics`).
+
 Precision. The elevation, which sets the echoes' phases (a two-way path of 2 z cos(theta)
 is 4 pi z / lambda of carrier phase), is synthesised in float64. The slopes and the
 velocities are synthesised by default in float32 (``precision="single"``) and returned as
@@ -57,7 +66,7 @@ import scipy.fft
 from numpy.typing import NDArray
 
 from ..constants import SURFACE_TENSION_OVER_DENSITY
-from .dispersion import angular_frequency, horizontal_to_vertical_ratio
+from .dispersion import angular_frequency, doppler_shifted_frequency, horizontal_to_vertical_ratio
 from .spectra import K_FLOOR, DirectionalSpectrum
 
 #: Grid cells whose centre lies within this many peak wavenumbers are integrated on a
@@ -168,6 +177,9 @@ class SeaSurface:
     cell_spectrum : ndarray (ny, nx), optional
         :func:`cell_averaged_spectrum` of this spectrum on this grid in FFT order [m^4],
         if already computed (the tiles of a radar-wide sea share their level's).
+    current : (float, float)
+        Uniform surface current (U_x, U_y) [m/s] in the scene frame (module docstring);
+        (0, 0): still water, the same numbers as without it.
 
     Notes
     -----
@@ -186,6 +198,7 @@ class SeaSurface:
         precision: str = "single",
         centre: tuple[float, float] = (0.0, 0.0),
         cell_spectrum: NDArray[np.float64] | None = None,
+        current: tuple[float, float] = (0.0, 0.0),
     ) -> None:
         if precision not in PRECISIONS:
             raise ValueError(f"precision = {precision!r}: allowed {PRECISIONS}")
@@ -244,6 +257,17 @@ class SeaSurface:
             speed = np.where(k > 0, self._omega * coth / k, 0.0)
         self._ux = self._kx * speed
         self._uy = self._ky * speed
+        #: uniform surface current (U_x, U_y) [m/s]
+        self.current = (float(current[0]), float(current[1]))
+        if not all(np.isfinite(self.current)):
+            raise ValueError(f"current = {current} m/s: must be finite")
+        #: (omega(+K), omega(-K)) of eq C1 on the half plane [rad/s]; None in still water
+        self._omega_current = None
+        if self.current != (0.0, 0.0):
+            kxb, kyb = np.broadcast_arrays(self._kx, self._ky)
+            self._omega_current = (
+                doppler_shifted_frequency(self._omega, kxb, kyb, self.current),  # along +K
+                -doppler_shifted_frequency(-self._omega, kxb, kyb, self.current))  # -K
         #: complex type of the slopes' and velocities' spectra
         self.precision = precision
         c = np.complex64 if precision == "single" else np.complex128
@@ -290,8 +314,12 @@ class SeaSurface:
             return out
 
     def _travelling_at(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
-        phase = np.exp(-1j * self._omega * t)  # Eq. 15 evolution, exp(-j omega t)
-        out = (self._a * phase, self._b * np.conj(phase))
+        if self._omega_current is None:
+            phase = np.exp(-1j * self._omega * t)  # Eq. 15 evolution, exp(-j omega t)
+            out = (self._a * phase, self._b * np.conj(phase))
+        else:  # eq C1: each wave at its Doppler-shifted frequency
+            w_plus, w_minus = self._omega_current
+            out = (self._a * np.exp(-1j * w_plus * t), self._b * np.exp(1j * w_minus * t))
         for a in out:
             a.flags.writeable = False
         return out
@@ -311,6 +339,9 @@ class SeaSurface:
             [rad/m], [rad/m], [rad/s], [m], [m], [-] (weight 2 on the half plane's
             columns kx > 0, 1 on kx = 0, as the inverse real FFT counts them).
         """
+        if self._omega_current is not None:
+            raise NotImplementedError("not implemented yet: the travelling-wave components "
+                                      "of a sea on a current (one frequency per component)")
         ny, nx = self.shape
         w = np.full(self._a.shape, 2.0)
         w[:, 0] = 1.0
@@ -359,6 +390,14 @@ class SeaSurface:
         np.multiply(ux, diff, out=spectra[2])  # u
         np.multiply(uy, diff, out=spectra[3])  # v
         np.multiply(jw, diff, out=spectra[4])  # w = dz/dt
+        if self._omega_current is not None:  # Eulerian rates: minus U . grad (eq C1)
+            k_u = (-1j * (self._kx * self.current[0] + self._ky * self.current[1])).astype(c)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                gain = np.where(self._omega > 0, 1j / self._omega, 0.0).astype(c)
+            z_u = k_u * z_c
+            spectra[2] += ux * gain * z_u  # u: D = j (K_x/K) coth z, D-rate - U . grad D
+            spectra[3] += uy * gain * z_u
+            spectra[4] += z_u  # dz/dt at the node: w - U . grad z
         derived = self._irfft(spectra)
         velocity = np.empty((*self.shape, 3))
         for i in range(3):

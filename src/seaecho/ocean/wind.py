@@ -66,6 +66,7 @@ References
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import numpy as np
@@ -188,6 +189,34 @@ def friction_velocity(law: str, u10: ArrayLike, inverse_wave_age: float = OMEGA_
         raise ValueError(f"friction-velocity law = {law!r}: unknown; allowed: "
                          f"{sorted(FRICTION_VELOCITY_LAWS)}")
     return FRICTION_VELOCITY_LAWS[law](u10, inverse_wave_age)
+
+
+#: Surface wind drift over the friction velocity of the wind [-] (Wu 1975: the
+#: wind-induced current at the interface is proportional to u*).
+WIND_DRIFT_OVER_U_STAR = 0.53
+
+
+def wind_drift_wu(u10: float, wind_direction: float) -> tuple[float, float]:
+    """Wind-induced surface drift (U_x, U_y) [m/s]: ``0.53 u*`` along the wind.
+
+    Wu (1975) measured the drift at the air-water interface proportional to the wind's
+    friction velocity; ``u*`` here is Wu's (1982) drag law
+    (:func:`friction_velocity_wu1982`). At U10 = 10 m/s: 0.20 m/s, 2.0 % of U10 (the
+    wave-induced Stokes drift, which linear waves do not carry, is not included).
+
+    Parameters
+    ----------
+    u10 : float
+        Wind speed at 10 m [m/s].
+    wind_direction : float
+        Direction the wind blows towards, counter-clockwise from +x [rad].
+
+    References
+    ----------
+    J. Wu, "Wind-induced drift currents", J. Fluid Mech. 68(1), 49-70, 1975.
+    """
+    u_d = WIND_DRIFT_OVER_U_STAR * float(friction_velocity_wu1982(u10))  # Wu 1975
+    return u_d * math.cos(wind_direction), u_d * math.sin(wind_direction)
 
 
 def charnock_roughness_length(u_star: ArrayLike) -> NDArray[np.float64]:

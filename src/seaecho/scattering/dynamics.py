@@ -35,6 +35,13 @@ unresolved waves are advected by the resolved orbital velocity (Thompson 1989; R
 * Breaking zones: the breakers' Lambda-weighted mean phase speed ``c_br`` along the
   wind, ``f = q . (c_br u_wind) / (2 pi)`` (KHCC03; :func:`breaking_statistics`).
 
+**Current** (eq C1 of :mod:`seaecho.ocean.dispersion`). On a uniform surface current U
+the facets stay on the fixed grid (the resolved sea is advected through them,
+:mod:`seaecho.ocean.surface`) while the water and every sub-facet scatterer drift with U:
+each mechanism's line moves by ``q . U / (2 pi)``. For the Bragg lines this is the
+Doppler-shifted dispersion relation, ``omega_0 +- k . U`` with ``k`` the horizontal Bragg
+vector ``q_h``: ``+-f_B + q . U / (2 pi)`` (Phillips 1977, section 3.6).
+
 **Finite coherence** (eq D4). Each process is a cross-fade of independent anchors
 ``G_a ~ CN(0, 1)`` drawn at times ``t_a = a T`` (``T`` the scatterers' lifetime), each
 rotating at its own random Doppler ``f_0 + sigma_f nu_a`` (``nu_a ~ N(0, 1)``)::
@@ -110,7 +117,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..backend import aligned
-from ..ocean.dispersion import angular_frequency, omega_squared_deep
+from ..ocean.dispersion import angular_frequency, doppler_shifted_frequency, omega_squared_deep
 from ..rng import generator
 from .breaking import dissipation_exponent, net_growth_rate
 from .spectrum_table import BraggSpectrumTable
@@ -299,12 +306,16 @@ class SeaDynamics:
         Velocity of the breaking scatterers relative to the facet [m/s].
     travel : BraggSpectrumTable or None
         ``p+`` of eq D3 tabulated over the Bragg roughness band (None: 1/2 everywhere).
+    current : (float, float)
+        Uniform surface current (U_x, U_y) [m/s] carrying the sub-facet scatterers
+        (eq C1; (0, 0): still water).
     """
 
     lifetimes: dict
     velocity_covariance: NDArray
     breaker_velocity: NDArray
     travel: BraggSpectrumTable | None
+    current: tuple[float, float] = (0.0, 0.0)
 
     def sigma_f(self, q: ArrayLike) -> NDArray:
         """Doppler spread ``sqrt(q^T C q) / (2 pi)`` [Hz] for scattering vectors (N, 3)."""
@@ -415,14 +426,25 @@ class EvolvingSpeckle:
             var = (q.x * q.x * c[0, 0] + 2.0 * q.x * q.y * c[0, 1] + q.y * q.y * c[1, 1]
                    + q.z * q.z * c[2, 2])
             sigma_f = xp.sqrt(xp.maximum(var, 0.0)) * (1.0 / (2.0 * math.pi))
-            out = {"specular": self.process_values("specular", t, 0.0, sigma_f, xp)}
+            current = tuple(float(u) for u in self.dynamics.current)
+            moving = current != (0.0, 0.0)
+            to_hz = 1.0 / (2.0 * math.pi)
+            # eq C1 with omega_0 = 0: the drift of the scatterers with the water
+            f_u = doppler_shifted_frequency(0.0, q.x, q.y, current) * to_hz if moving else 0.0
+            out = {"specular": self.process_values("specular", t, f_u, sigma_f, xp)}
             kx, ky = ctx["bragg_vector"]
             kb = xp.sqrt(kx * kx + ky * ky)
-            f_b = xp.sqrt(omega_squared_deep(kb)) * (1.0 / (2.0 * math.pi))  # eq D2
+            w_b = xp.sqrt(omega_squared_deep(kb))  # eq D2
             table = self.dynamics.travel
             p_plus = 0.5 if table is None else xp.clip(table.lookup(xp, kx, ky), 0.0, 1.0)
-            g_p = self.process_values("bragg+", t, f_b, sigma_f, xp)
-            g_m = self.process_values("bragg-", t, -f_b, sigma_f, xp)
+            if moving:  # eq C1: omega_0 +- q_h . U, the lines of the waves along +-q_h
+                f_p = doppler_shifted_frequency(w_b, q.x, q.y, current) * to_hz
+                f_m = doppler_shifted_frequency(-w_b, q.x, q.y, current) * to_hz
+            else:
+                f_p = w_b * to_hz
+                f_m = -f_p
+            g_p = self.process_values("bragg+", t, f_p, sigma_f, xp)
+            g_m = self.process_values("bragg-", t, f_m, sigma_f, xp)
             g_b = g_p * xp.sqrt(p_plus) + g_m * xp.sqrt(1.0 - p_plus)
             out["bragg"] = g_b
             for j, (cs, sn) in enumerate(self.tilt_phases):
@@ -431,6 +453,8 @@ class EvolvingSpeckle:
                 v = self.dynamics.breaker_velocity
                 f_w = (q.x * float(v[0]) + q.y * float(v[1]) + q.z * float(v[2])) * (
                     1.0 / (2.0 * math.pi))
+                if moving:  # the breakers drift with the water too
+                    f_w = f_w + f_u
                 out["breaking"] = self.process_values("breaking", t, f_w, sigma_f, xp)
             return out
 
