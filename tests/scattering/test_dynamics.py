@@ -37,11 +37,12 @@ def _constant_table(value, k_min=1.0, k_max=20 * K):
                               k_max, n_k=16, n_psi=16)
 
 
-def _dynamics(lifetime=1e3, cov=None, travel=None, breaker=(0.0, 0.0, 0.0)):
+def _dynamics(lifetime=1e3, cov=None, travel=None, breaker=(0.0, 0.0, 0.0),
+              current=(0.0, 0.0)):
     life = dict.fromkeys(("specular", "bragg+", "bragg-", "breaking"), lifetime)
     return SeaDynamics(lifetimes=life,
                        velocity_covariance=np.zeros((3, 3)) if cov is None else cov,
-                       breaker_velocity=np.array(breaker), travel=travel)
+                       breaker_velocity=np.array(breaker), travel=travel, current=current)
 
 
 def _sample_acf(process, lags_s, n_starts=40, lifetime=1.0):
@@ -91,7 +92,7 @@ def test_doppler_spread_and_shift_multiply_the_autocorrelation():
     assert coherence_time(T, 0.0) < 2 * T
 
 
-def _bragg_series(p_plus, theta_deg=45.0, prf=200.0, n=256):
+def _bragg_series(p_plus, theta_deg=45.0, prf=200.0, n=256, current=(0.0, 0.0)):
     """Coherent sum over flat facets of the Bragg amplitude (VV) of eq P4 with the
     evolving draws, pulse by pulse (monostatic, no resolved motion, no spread)."""
     m = 400
@@ -99,7 +100,8 @@ def _bragg_series(p_plus, theta_deg=45.0, prf=200.0, n=256):
     n_i, n_s = frames.directions_from_angles(np.full(m, theta), np.zeros(m),
                                              np.full(m, theta), np.full(m, np.pi))
     normal = np.tile([0.0, 0.0, 1.0], (m, 1))
-    sp = EvolvingSpeckle(_dynamics(travel=_constant_table(p_plus)), seed=1, n_facets=m)
+    sp = EvolvingSpeckle(_dynamics(travel=_constant_table(p_plus), current=current), seed=1,
+                         n_facets=m)
     table = _constant_table(1e-8)
     out = []
     for p in range(n):
@@ -222,3 +224,17 @@ def test_device_copies_of_the_anchors_are_made_once():
     sp.process_values("specular", 1.5, 3.0, 0.5, gpu)  # anchors 1 and 2: three more
     assert len(sp._device) == 9
     assert all(sp._device[k][1] is v for k, v in copies.items())
+
+
+def test_bragg_lines_on_a_current_are_doppler_shifted():
+    # On a uniform current U the Bragg waves turn at omega_0 +- k_B . U (Phillips 1977,
+    # section 3.6; eq C1): both lines move by q . U / 2 pi = 2 U . r_hat / lambda. The
+    # radar lies towards -x of the facets (azimuth pi of the scattered direction): a
+    # current of 0.5 m/s along -x approaches it, +2 * 0.5 * sin(45 deg) / lambda =
+    # +23.58 Hz at 10 GHz. Within 0.1 Hz, as the still-water lines.
+    shift = 2 * 0.5 * np.sin(np.radians(45.0)) * K / (2 * np.pi)
+    assert shift == pytest.approx(23.58, abs=0.01)
+    k_b = 2 * K * np.sin(np.radians(45.0))
+    f_b = float(bragg_frequency(k_b))
+    assert _bragg_series(1.0, current=(-0.5, 0.0)) == pytest.approx(f_b + shift, abs=0.1)
+    assert _bragg_series(0.0, current=(-0.5, 0.0)) == pytest.approx(-f_b + shift, abs=0.1)
