@@ -59,17 +59,19 @@ N_PULSES = 128
 
 def scene(u, look_deg, inc_deg, model, size=128.0, n=128, seed=1, update=8,
           n_pulses=N_PULSES, prf=PRF, motion="evolving", freq_hz=F,
-          spreading="elfouhaily"):
+          spreading="elfouhaily", wind_drift=None):
     """Monostatic radar (X band, ``freq_hz`` [Hz], by default) 1 km from the tile centre;
     wind towards +x; look 0: the radar east of the tile looking west (upwind); ``motion``
     None: the default ``[scattering] sea_motion``; ``spreading`` None: the default
-    ``[sea] spreading`` (Longuet-Higgins, s = 1)."""
+    ``[sea] spreading`` (Longuet-Higgins, s = 1); ``wind_drift`` None: the default
+    ``[sea] wind_drift`` (none)."""
     th, az = np.radians(inc_deg), np.radians(look_deg)
     r = 1000.0
     pos = (r * np.sin(th) * np.cos(az), r * np.sin(th) * np.sin(az), r * np.cos(th))
     return parse_scene({
         "sea": {"spectrum": "elfouhaily", "wind_speed_m_s": u, "size_x_m": size, "nx": n,
-                **({"spreading": spreading} if spreading else {})},
+                **({"spreading": spreading} if spreading else {}),
+                **({"wind_drift": wind_drift} if wind_drift else {})},
         "run": {"seed": seed},
         "scattering": {"model": model, **({"sea_motion": motion} if motion else {})},
         "tracing": {"mode": "analytic", "shadowing": "smith"},

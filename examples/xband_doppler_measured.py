@@ -33,7 +33,9 @@ downwind, and 8 m/s upwind with the centro-symmetric Elfouhaily spreading, three
 each, at 5.5 GHz against CDOP (Mouche et al. 2012, C band, VV and
 HH, Hz) and at 10 GHz against the TanDEM-X finding of Elyouncha et al. (2021) that the
 wind sea's Doppler velocity is about 0.15 U10 cos(phi) (horizontal). Writes
-``dynamics_doppler_gmf.csv``; about 3 minutes of CPU.
+``dynamics_doppler_gmf.csv``; about 3 minutes of CPU. ``--gmf --drift``: the same with
+``[sea] wind_drift = "wu"`` (the surface drift 0.53 u* of Wu 1975 along the wind), the
+default-spreading cases only; writes ``dynamics_doppler_gmf_drift.csv``.
 
 ``--breaking``: the effect of breaking at low grazing against Hwang, Sletten & Toporkov
 (2008), *J. Geophys. Res.* 113, C09017 (X band, winds 7-15 m/s, grazing 1.4-5.5 deg):
@@ -86,14 +88,16 @@ def references(u19_5: float, grazing_deg: float = GRAZING_DEG) -> dict[str, floa
 def simulate(u19_5: float, grazing_deg: float = GRAZING_DEG, n_pulses: int = N_PULSES,
              size: float = 128.0, n: int = 128, look_deg: float = 0.0, seed: int = 1,
              freq_hz: float = F, model: str = "blend+breaking",
-             spreading: str | None = None) -> dict[str, float]:
+             spreading: str | None = None, wind_drift: str | None = None
+             ) -> dict[str, float]:
     """Centroid and rms width [Hz] of the HH and VV clutter Doppler spectra, and the
     composite model's Bragg centroid ``(2 p+ - 1) f_B`` [Hz] (``sea_doppler.py``);
     ``look_deg`` 0: the radar looks upwind; ``spreading`` None: the default
     ``[sea] spreading``."""
     sim, _, _, cen, wid = run_case(u19_5, look_deg, 90.0 - grazing_deg, model, size=size,
                                    n=n, n_pulses=n_pulses, motion=None, seed=seed,
-                                   freq_hz=freq_hz, spreading=spreading)
+                                   freq_hz=freq_hz, spreading=spreading,
+                                   wind_drift=wind_drift)
     b_cen = composite_prediction(sim, 90.0 - grazing_deg, look_deg)[0]
     return {"centroid_hh_hz": float(cen[0]), "centroid_vv_hz": float(cen[1]),
             "width_hh_hz": float(wid[0]), "width_vv_hz": float(wid[1]),
@@ -126,9 +130,12 @@ def published_centroids_hz(band: str, u10: float, look_deg: float,
 
 
 def gmf_comparison(outdir: str = "docs/figures", seeds=GMF_SEEDS, size: float = 128.0,
-                   n: int = 128, n_pulses: int = N_PULSES, cases=GMF_CASES) -> Path:
+                   n: int = 128, n_pulses: int = N_PULSES, cases=GMF_CASES,
+                   wind_drift: str | None = None) -> Path:
     """Simulated centroids at 35 deg incidence against CDOP (5.5 GHz) and the X-band
-    0.15 U10 cos(phi) (10 GHz); mean and standard deviation over ``seeds``."""
+    0.15 U10 cos(phi) (10 GHz); mean and standard deviation over ``seeds``;
+    ``wind_drift`` (``"wu"``) sets ``[sea] wind_drift`` and writes
+    ``dynamics_doppler_gmf_drift.csv``."""
     rows = []
     inc = GMF_INCIDENCE_DEG
     vh = horizontal_velocity_m_s
@@ -137,7 +144,7 @@ def gmf_comparison(outdir: str = "docs/figures", seeds=GMF_SEEDS, size: float = 
             t = time.perf_counter()
             u10 = float(u10_from_u19_5(u))
             sims = [simulate(u, 90.0 - inc, n_pulses, size, n, look, s, freq,
-                             spreading=spreading) for s in seeds]
+                             spreading=spreading, wind_drift=wind_drift) for s in seeds]
             r = {k: np.array([s[k] for s in sims]) for k in sims[0]}
             vv, hh = r["centroid_vv_hz"], r["centroid_hh_hz"]
             ref_vv, ref_hh = published_centroids_hz(band, u10, look, inc)
@@ -158,7 +165,8 @@ def gmf_comparison(outdir: str = "docs/figures", seeds=GMF_SEEDS, size: float = 
                            for x in (vv.mean(), hh.mean(), ref_vv, ref_hh))])
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
-    path = out / "dynamics_doppler_gmf.csv"
+    path = out / ("dynamics_doppler_gmf.csv" if wind_drift is None
+                  else "dynamics_doppler_gmf_drift.csv")
     with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["band", "frequency_hz", "incidence_deg", "u19_5_m_s", "u10_m_s",
@@ -254,7 +262,12 @@ if __name__ == "__main__":
     args = sys.argv[1:]
     if "--gmf" in args:
         args.remove("--gmf")
-        gmf_comparison(*args)
+        if "--drift" in args:  # [sea] wind_drift = "wu", the default-spreading cases
+            args.remove("--drift")
+            gmf_comparison(*args, cases=tuple(c for c in GMF_CASES if c[2] is None),
+                           wind_drift="wu")
+        else:
+            gmf_comparison(*args)
         sys.exit(0)
     if "--breaking" in args:
         args.remove("--breaking")

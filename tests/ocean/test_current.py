@@ -115,3 +115,29 @@ def test_doppler_centroid_moves_by_two_u_dot_r_over_lambda():
         cen.append(c)
     expected = 2 * 0.5 * np.sin(np.radians(45.0)) / (C0 / 10e9)
     np.testing.assert_allclose(cen[1] - cen[0], expected, rtol=0.1)
+
+
+def _scene(**sea):
+    from seaecho.config import parse_scene
+
+    return parse_scene({"sea": {"spectrum": "elfouhaily", "wind_speed_m_s": 8.0,
+                                "size_x_m": 16.0, "nx": 8, **sea}})
+
+
+def test_wind_drift_wu_and_the_scene_keys():
+    # Wu (1975): surface drift 0.53 u*; u* of Wu's (1982) drag law, C_D = (0.8 + 0.065
+    # U10) 1e-3: at U10 = 10 m/s, u* = 0.3808 m/s and the drift 0.2018 m/s (2.0 % of U10)
+    from seaecho.build import sea_current
+    from seaecho.ocean.wind import u10_from_u19_5, wind_drift_wu
+
+    ux, uy = wind_drift_wu(10.0, np.pi / 2)
+    assert (ux, uy) == pytest.approx((0.0, 0.53 * 10.0 * np.sqrt(1.45e-3)), abs=1e-12)
+    assert uy == pytest.approx(0.2018, abs=1e-4)
+    assert sea_current(_scene()) == (0.0, 0.0)
+    sc = _scene(current_m_s=[0.1, -0.2], wind_drift="wu", wind_direction_deg=30.0)
+    dx, dy = wind_drift_wu(float(u10_from_u19_5(8.0)), np.radians(30.0))
+    assert sea_current(sc) == pytest.approx((0.1 + dx, -0.2 + dy), abs=1e-12)
+    with pytest.raises(ValueError, match=r"current_m_s\[0\] = 6 m/s"):
+        _scene(current_m_s=[6.0, 0.0])
+    with pytest.raises(ValueError, match="coverage = 'radar': not implemented yet"):
+        _scene(current_m_s=[0.1, 0.0], coverage="radar")
