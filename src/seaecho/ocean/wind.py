@@ -238,4 +238,4 @@ __all__ = ["A_CHARNOCK", "A_SMOOTH", "DRAG_COEFFICIENT_10M", "FRICTION_VELOCITY_
            "OMEGA_C_DEVELOPED", "charnock_roughness_length", "friction_velocity",
            "friction_velocity_constant_drag", "friction_velocity_donelan1993",
            "friction_velocity_wu1982", "u10_from_u19_5", "u12_5_from_u19_5",
-           "u19_5_from_u10", "wind_speed_at"]
+           "u19_5_from_u10", "WIND_DRIFT_OVER_U_STAR", "wind_drift_wu", "wind_speed_at"]
