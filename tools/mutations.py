@@ -227,10 +227,10 @@ MUTATIONS = [
              ("tests/scattering/test_breaking.py", "tests/scattering/test_validation_gmf.py"),
              "KHCC03's fraction of breaking zones q twice too large"),
     Mutation("bragg-lines-swapped", S + "scattering/dynamics.py",
-             'g_p = self.process_values("bragg+", t, f_b, sigma_f, xp)\n'
-             '            g_m = self.process_values("bragg-", t, -f_b, sigma_f, xp)',
-             'g_p = self.process_values("bragg+", t, -f_b, sigma_f, xp)\n'
-             '            g_m = self.process_values("bragg-", t, f_b, sigma_f, xp)',
+             'g_p = self.process_values("bragg+", t, f_p, sigma_f, xp)\n'
+             '            g_m = self.process_values("bragg-", t, f_m, sigma_f, xp)',
+             'g_p = self.process_values("bragg+", t, f_m, sigma_f, xp)\n'
+             '            g_m = self.process_values("bragg-", t, f_p, sigma_f, xp)',
              ("tests/scattering/test_dynamics.py",),
              "evolving speckle: approaching Bragg waves at -f_B, receding at +f_B"),
     Mutation("dispersion-gravity-only", S + "ocean/dispersion.py",
@@ -241,8 +241,8 @@ MUTATIONS = [
              "evolving speckle (11.0 Hz -> 8.6 Hz at X band, 45 deg), the Elfouhaily "
              "phase speed, KHCC03's growth rates (one formula, numpy and Dr.Jit)"),
     Mutation("bragg-line-gravity-only", S + "scattering/dynamics.py",
-             "f_b = xp.sqrt(omega_squared_deep(kb))",
-             "f_b = xp.sqrt(kb * 9.80665)",
+             "w_b = xp.sqrt(omega_squared_deep(kb))",
+             "w_b = xp.sqrt(kb * 9.80665)",
              ("tests/scattering/test_dynamics.py",),
              "the Bragg lines of the evolving speckle without the capillary term of the "
              "dispersion relation (11.0 Hz -> 8.6 Hz at X band, 45 deg)"),
