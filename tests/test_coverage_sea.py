@@ -347,6 +347,19 @@ def test_sector_holds_every_facet_the_bound_keeps():
         want = np.flatnonzero(np.abs(u.direction @ y) < 0.05)
         assert set(want) <= set(idx)
         assert idx.size < 1.2 * want.size + 50
+    # a rolled antenna (a ship's roll of 8 deg): the width axis leaves the horizontal,
+    # y_z = sin 8 deg, and the facets' n_z widen the arcs by s |y_z| / (c rho_y) (eq U3's
+    # elevation term; without it facets the bound keeps fall outside the arcs)
+    el = rng.uniform(-0.3, 0.0, phi.size)
+    n = np.stack([np.cos(el) * np.cos(phi), np.cos(el) * np.sin(phi), np.sin(el)], -1)
+    u = UnitEcho.sorted(0, np.arange(phi.size, dtype=float), np.ones((1, phi.size)), n)
+    roll = np.radians(8.0)
+    for bearing in (0.3, 2.0):
+        y = np.array([-np.sin(bearing) * np.cos(roll), np.cos(bearing) * np.cos(roll),
+                      np.sin(roll)])
+        idx = u.sector(y, 0.05)
+        want = np.flatnonzero(np.abs(u.direction @ y) < 0.05)
+        assert want.size > 100 and set(want) <= set(idx)
 
 
 @pytest.mark.slow  # ~25 s: the tiles of one pulse, twice in each precision
