@@ -862,6 +862,17 @@ MUTATIONS = [
              ("tests/test_coverage_sea.py",),
              "a tile's facet arcs without the facets' elevation (eq U3): a rolled antenna "
              "loses facets the bound keeps"),
+    Mutation("coverage-occluders-in-the-tile-frame", S + "coverage.py",
+             "cw, nw = frame.to_world(c[on]), normal[on] @ frame.rotation.T",
+             "cw, nw = c[on] - frame.centre + frame.origin, normal[on]",
+             ("tests/test_coverage_sea.py",),
+             "a tile's facets traced against the static occluders shifted to the "
+             "simulation frame but not turned (eq T5's tilt dropped, eq T6)"),
+    Mutation("coverage-occluders-antenna-in-the-tile-frame", S + "coverage.py",
+             "hidden |= self._hidden(cw, nw, frame.to_world(np.array(pos)), cell,",
+             "hidden |= self._hidden(cw, nw, np.array(pos), cell,",
+             ("tests/test_coverage_sea.py",),
+             "the occluders' shadow rays aimed at the antenna's tile-frame position (eq T6)"),
     # --- the shadowed two-ray factor's geometry (radar/propagation.py, eqs P5-P7)
     Mutation("two-ray-shadow-q-halved", S + "radar/propagation.py",
              "2.0 * k * np.sin(psi0), ceiling=h2)", "k * np.sin(psi0), ceiling=h2)",
