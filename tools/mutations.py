@@ -731,6 +731,12 @@ MUTATIONS = [
              "origin - shift, d, maxt,", "origin, d, maxt,",
              ("tests/tracing/test_periodic_apron.py",),
              "eq A1: the segments traced against the tile itself, not its copies"),
+    Mutation("apron-seams-not-periodic", S + "tracing/tracer.py",
+             'return np.pad(z, ((0, 1), (0, 1)), mode="wrap")',
+             'return np.pad(z, ((0, 1), (0, 1)), mode="edge")',
+             ("tests/tracing/test_periodic_apron.py",),
+             "the mesh's closing row and column extend the tile's edge flat instead of "
+             "repeating its first row and column (eq A1's periodic sea)"),
     Mutation("apron-reach-halved", S + "tracing/tracer.py",
              "r, np.maximum(z_top - centroid[:, 2], 0.0) / up), r)",
              "r, 0.5 * np.maximum(z_top - centroid[:, 2], 0.0) / up), r)",
