@@ -900,6 +900,11 @@ MUTATIONS = [
              ("tests/radar/test_propagation_shadowing.py",),
              "eq P6's characteristic function with exp(+j q zeta): the wrong time convention"),
     # --- per-pulse shortcuts that must keep the bytes (docs/performance.md)
+    Mutation("wake-damping-skipped-with-a-ship", S + "simulation.py",
+             "return wake_damping(state) if np.any(state.wake_mask) else None",
+             "return None",
+             ("tests/test_end_to_end.py",),
+             "the no-ship shortcut also taken with a ship: the wake's damping dropped"),
     Mutation("window-keeps-all-closed", S + "radar/echo.py",
              "bool(np.max(tau) < hi)", "bool(np.max(tau) <= hi)",
              ("tests/test_pulse_overheads.py",),
