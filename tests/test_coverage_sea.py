@@ -347,6 +347,19 @@ def test_sector_holds_every_facet_the_bound_keeps():
         want = np.flatnonzero(np.abs(u.direction @ y) < 0.05)
         assert set(want) <= set(idx)
         assert idx.size < 1.2 * want.size + 50
+    # a rolled antenna (a ship's roll of 8 deg): the width axis leaves the horizontal,
+    # y_z = sin 8 deg, and the facets' n_z widen the arcs by s |y_z| / (c rho_y) (eq U3's
+    # elevation term; without it facets the bound keeps fall outside the arcs)
+    el = rng.uniform(-0.3, 0.0, phi.size)
+    n = np.stack([np.cos(el) * np.cos(phi), np.cos(el) * np.sin(phi), np.sin(el)], -1)
+    u = UnitEcho.sorted(0, np.arange(phi.size, dtype=float), np.ones((1, phi.size)), n)
+    roll = np.radians(8.0)
+    for bearing in (0.3, 2.0):
+        y = np.array([-np.sin(bearing) * np.cos(roll), np.cos(bearing) * np.cos(roll),
+                      np.sin(roll)])
+        idx = u.sector(y, 0.05)
+        want = np.flatnonzero(np.abs(u.direction @ y) < 0.05)
+        assert want.size > 100 and set(want) <= set(idx)
 
 
 @pytest.mark.slow  # ~25 s: the tiles of one pulse, twice in each precision
@@ -393,3 +406,58 @@ def test_selected_tiles_are_those_of_the_bound_over_every_tile():
         want = np.flatnonzero(cov.gain_bounds(p) >= cov.floor)
         np.testing.assert_array_equal(cov.selected(p), want)
     assert len(cov._candidates(300)) < 0.2 * len(cov)
+
+
+def test_static_occluder_hides_the_facets_behind_it_in_the_simulation_frame():
+    """Eq T6: a tile's facets (tile frame) carried into the simulation frame (eq T5,
+    q -> T (q - O) + P) and traced against a static occluder placed there: a facet is
+    dropped exactly where its segment to the antenna crosses the box (the slab test,
+    closed form), whatever the tile's rotation and offset."""
+    from types import SimpleNamespace
+
+    import trimesh
+
+    from seaecho.coverage import CoverageSea
+    from seaecho.geometry.patchwork import TileFrame
+    from seaecho.tracing.scene import ObjectGeometry
+    from seaecho.tracing.variant import set_variant
+
+    a = np.radians(35.0)  # the tile turned 35 deg about z and tilted 2 deg about x
+    rz = np.array([[np.cos(a), -np.sin(a), 0.0], [np.sin(a), np.cos(a), 0.0], [0, 0, 1]])
+    b = np.radians(2.0)
+    rx = np.array([[1.0, 0.0, 0.0], [0.0, np.cos(b), -np.sin(b)], [0.0, np.sin(b), np.cos(b)]])
+    frame = TileFrame(rz @ rx, np.array([1500.0, -800.0, -0.2]), np.array([40.0, 60.0, 0.0]))
+    rng = np.random.default_rng(4)
+    n_cells = 300
+    c = np.column_stack([rng.uniform(0.0, 80.0, 2 * n_cells), rng.uniform(20.0, 100.0,
+                                                                          2 * n_cells),
+                         rng.uniform(-0.5, 0.5, 2 * n_cells)])  # tile frame [m]
+    normal = np.tile([0.0, 0.0, 1.0], (c.shape[0], 1))
+    tx_tile = np.array([40.0, -400.0, 30.0])  # the antenna, in the tile's frame [m]
+    cw, tw = frame.to_world(c), frame.to_world(tx_tile)
+    # a box in the simulation frame, across the segments of about half the facets
+    mid = frame.to_world(np.array([40.0, 0.0, 0.0]))
+    lo, hi = mid + np.array([-25.0, -25.0, -5.0]), mid + np.array([25.0, 25.0, 3.0])
+    m = trimesh.creation.box(bounds=[lo, hi])
+    box = ObjectGeometry("box", np.asarray(m.vertices, float), np.asarray(m.faces, np.uint32))
+    d = tw - cw  # slab test of each segment cw + t d, 0 < t < 1, against [lo, hi]
+    with np.errstate(divide="ignore"):
+        t1, t2 = (lo - cw) / d, (hi - cw) / d
+    t_in = np.minimum(t1, t2).max(axis=1)
+    t_out = np.maximum(t1, t2).min(axis=1)
+    expected = (t_in < t_out) & (t_out > 0.0) & (t_in < 1.0)
+    margin = np.minimum(np.abs(t_out - t_in), np.abs(t_in)) * np.linalg.norm(d, axis=1)
+    clear = margin > 0.05  # segments not grazing an edge (float32 rounding) [m]
+    assert 0.2 < expected.mean() < 0.8
+    cs = object.__new__(CoverageSea)
+    level = SimpleNamespace(spacing=(1.0, 1.0))
+    cs.patchwork = SimpleNamespace(frame=lambda i: frame, level=[0], levels=[level],
+                                   cell_owned=lambda i: np.ones(n_cells, dtype=bool))
+    cs._beyond, cs._static, cs._occluders = [False], (box,), None
+    cs.floor, cs.radar = 0.0, None  # not read without the beam (beam=False)
+    sim = SimpleNamespace(engine=SimpleNamespace(
+        geometry=lambda state: (c, None, normal, None),
+        tracer=SimpleNamespace(variant=set_variant(None))))
+    ant = SimpleNamespace(position=tx_tile)
+    w = cs._weight(0, beam=False)(sim, None, SimpleNamespace(tx=ant, rx=ant))
+    np.testing.assert_array_equal(w[clear] == 0.0, expected[clear])

@@ -106,3 +106,16 @@ def test_high_grazing_needs_no_copies(gaussian_surface):
 def test_period_must_be_positive():
     with pytest.raises(ValueError, match="period_m"):
         FacetTracer(X, X, period_m=(0.0, PERIOD))
+
+
+def test_mesh_closes_the_seams_with_the_periodic_continuation(gaussian_surface):
+    """The periodic sea at x_0 + L_x (y_0 + L_y) is the sea at x_0 (y_0): the mesh's
+    closing node column and row repeat the first ones (eq A1's periodic model), so the
+    strip between the tile and its copies is the sea's own (not a flat extension)."""
+    z = gaussian_surface(N, DX, corr_len=6.0, sigma_h=0.5, rng=np.random.default_rng(7))
+    mesh = FacetTracer(X, X, z, period_m=(PERIOD, PERIOD))._mesh_elevation(z)
+    assert mesh.shape == (N + 1, N + 1)
+    np.testing.assert_array_equal(mesh[:N, :N], z)
+    np.testing.assert_array_equal(mesh[N, :N], z[0])
+    np.testing.assert_array_equal(mesh[:N, N], z[:, 0])
+    assert mesh[N, N] == z[0, 0]

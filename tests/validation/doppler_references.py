@@ -9,12 +9,16 @@ published form with the published coefficients; none is used by seaecho itself.
   and Hansen, M. W. (2012). On the use of Doppler shift for sea surface wind retrieval
   from SAR. *IEEE Trans. Geosci. Remote Sens.* 50(7), 2901-2909: the geophysical Doppler
   anomaly [Hz] at 5.5 GHz of ENVISAT ASAR wide-swath data against ECMWF winds, VV and HH,
-  fitted by a neural network with one hidden layer of ten sigmoids over incidence
+  fitted by a neural network with one hidden layer of eleven sigmoids over incidence
   (17-42 deg), wind speed U10 (1-17 m/s) and the wind direction relative to the look
   (0 upwind, 90 crosswind, 180 downwind). The weights and biases are those of the article
   (named lambda, omega, gamma, alpha, beta there) as distributed with Ifremer's CDOP code
   and reproduced identically in open implementations (e.g. the ``mouche12`` function of
-  the seastar project, University of Southampton / NOC). Positive: towards the radar.
+  the seastar project, University of Southampton / NOC). Checked value by value and for
+  the forward pass (input scaling, direction folded into 0-180 deg, two sigmoid layers,
+  ``alpha s + beta``) against Ifremer's ``cdop.py`` (A. Mouche, M. W. Hansen, 2014-2015,
+  GPL-3; its header cites the article): the same 2 x (3 + 3 + 11 + 33 + 1 + 11 + 2)
+  numbers. Positive: towards the radar.
 * :data:`XBAND_WAVE_DOPPLER_FRACTION`, :data:`XBAND_GMF_SPREAD_M_S`,
   :data:`XBAND_BRAGG_SPEED_M_S` - the X-band findings of the TanDEM-X along-track InSAR
   study of Elyouncha, A., Eriksson, L. E. B. et al. (2021). Empirical relationship between
@@ -43,7 +47,7 @@ CDOP_FREQUENCY_HZ = 5.5e9
 
 #: CDOP neural-network coefficients per polarisation (Mouche et al. 2012): input scaling
 #: ``x_i = w1_i v_i + b1_i`` of (incidence [deg], U10 [m/s], relative direction [deg]);
-#: hidden layer ``h = sigmoid(W2 x + b2)`` (ten neurons); output
+#: hidden layer ``h = sigmoid(W2 x + b2)`` (eleven neurons); output
 #: ``alpha sigmoid(w3 . h + b3) + beta`` [Hz].
 CDOP_COEFFICIENTS = {
     "VV": {

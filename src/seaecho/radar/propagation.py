@@ -71,8 +71,11 @@ path, Smith's (1967) probability that a point at height zeta is lit from grazing
 F(zeta)^Lambda (:mod:`seaecho.geometry.shadowing`, eqs T1-T3, nu = tan psi /
 (sqrt 2 sigma)); for the two legs, on opposite sides of the point in one vertical plane,
 F(zeta)^(2 Lambda) (eq T5). The heights of the reflecting points then have the density
-(Bourlier, Pinel and Fabbro 2006; Fabbro, Bourlier and Combes 2006, the Ament boundary
-condition "with shadowing effect")
+of the lit points (Bayes' rule on eq T5, normalised), the illuminated height PDF that
+Bourlier, Pinel and Fabbro (2006) and Fabbro, Bourlier and Combes (2006) derive for the
+forward (specular) configuration and put into Ament's boundary condition "with shadowing
+effect" (their abstracts read; their full text and equation numbers were not checked
+here: eq P5 is written from eq T5, and tested against closed forms of order statistics)
 
 .. math::
 
@@ -90,9 +93,10 @@ exp(-2 g^2) where Lambda = 0, at high grazing angles):
 
 The factor e^{-j q zeta_bar} is the mirror raised to the mean height of the lit crests.
 A scatterer among the waves (a facet at height h_2) receives the reflected wave only
-from points below it: the reflected leg rises from zeta to h_2 over a finite length,
-unshadowed with probability (F(zeta) / F(h_2))^Lambda (Smith's derivation over a finite
-length, as Bourlier, Berginc and Saillard 2002 write it), so that for the incident and
+from points below it. This extension is derived here, not taken from the papers above
+(which treat a receiver far above the waves): the reflected leg rises from zeta to h_2
+over a finite length, taken unshadowed with probability (F(zeta) / F(h_2))^Lambda (Smith's
+uncorrelated form restricted to heights below h_2), so that for the incident and
 reflected legs together
 
 .. math::
