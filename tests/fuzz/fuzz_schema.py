@@ -542,6 +542,9 @@ CAPS = {
     # a level in [-300, 0] dB (its validator's range) or 'off'
     ("RadarConfig", "sea_gain_floor_db"): st.one_of(
         st.floats(-300.0, 0.0, allow_nan=False), st.just("off")),
+    # each component within [-5, 5] m/s (its validator's range)
+    ("SeaConfig", "current_m_s"): st.tuples(st.floats(-5.0, 5.0, allow_nan=False),
+                                            st.floats(-5.0, 5.0, allow_nan=False)),
 }
 #: Fields left out of generated scenes: an output path would write beside the tests;
 #: [[receivers]] (multistatic; its cross-receiver rules are tested in tests/multistatic);

@@ -145,3 +145,27 @@ def test_wind_drift_wu_and_the_scene_keys():
         _scene(current_m_s=[6.0, 0.0])
     with pytest.raises(ValueError, match="coverage = 'radar': not implemented yet"):
         _scene(current_m_s=[0.1, 0.0], coverage="radar")
+
+
+def test_dynamic_hull_on_a_current_is_refused_by_the_scene_as_by_the_run():
+    # the hull's dynamic response needs the travelling waves, not built for a sea on a
+    # current: the scene refuses it (so `seaecho check` does), naming the fields
+    from seaecho.config import SceneError, parse_scene
+
+    boat = {"name": "b", "length_m": 8.0, "beam_m": 2.5, "draft_m": 0.8, "speed_m_s": 0.0,
+            "position_m": (0.0, 0.0), "hull_echo": True, "wave_motion": True,
+            "kelvin_wake": False}
+    scene = {"sea": {"wind_speed_m_s": 8.0, "size_x_m": 32.0, "nx": 32,
+                     "current_m_s": [0.3, 0.0]},
+             "radar": {"carrier_frequency_hz": 1.3e9, "sampling_rate_hz": 50e6,
+                       "prf_hz": 100.0, "n_pulses": 2, "channels": ["HH"],
+                       "waveform": {"kind": "lfm", "bandwidth_hz": 40e6,
+                                    "duration_s": 1e-6}},
+             "transmitter": {"position_m": (-300, 0, 30),
+                             "antenna": {"pattern": "isotropic", "look_at_m": (0, 0, 0)}},
+             "ships": [boat]}
+    with pytest.raises(SceneError, match=r"wave_response = 'dynamic' on a sea with "
+                       r"\[sea\] current_m_s = \[0.3, 0.0\].*not implemented yet"):
+        parse_scene(scene)
+    quasi = dict(scene, ships=[dict(boat, wave_response="quasi-static")])
+    assert parse_scene(quasi).sea.current_m_s == (0.3, 0.0)

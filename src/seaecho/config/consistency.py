@@ -99,6 +99,14 @@ def check_ships(scene) -> None:
     if moving and (scene.radar is None or not scene.radar.sea_clutter):
         raise ValueError(f"[[ships]] {moving[0]}: wave_motion = true needs the sea: [radar] "
                          "sea_clutter = true")
+    dynamic = [n for n, s in zip(names, scene.all_ships, strict=True)
+               if s.wave_motion and s.wave_response == "dynamic"]
+    if dynamic and (any(scene.sea.current_m_s) or scene.sea.wind_drift != "none"):
+        raise ValueError(f"[[ships]] {dynamic[0]}: wave_response = 'dynamic' on a sea with "
+                         f"[sea] current_m_s = {list(scene.sea.current_m_s)}, wind_drift = "
+                         f"'{scene.sea.wind_drift}': not implemented yet (the travelling "
+                         "waves of a sea on a current); use wave_response = 'quasi-static' "
+                         "or still water")
     if scene.ship is not None and scene.ship.waypoints_m is not None and any(
             o.follow_ship for o in scene.objects):
         raise ValueError("[[objects]] follow_ship = true with a [ship] on waypoints_m: not "
