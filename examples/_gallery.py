@@ -127,6 +127,22 @@ def facets_sea_db(img) -> dict[str, float]:
     return out
 
 
+def first_ppi(ds, out: Path, name: str) -> Path:
+    """Write the PPI of a scanning run's first sweep as ``out / (name + '.png')``: the
+    figures of ``seaecho.figures`` are drawn beside it under ``_<name>`` and all but that
+    PPI removed (the scripts of docs/scanning.md, docs/land.md and the gallery's)."""
+    import shutil
+
+    import seaecho
+
+    pngs = [p for p in seaecho.figures(ds, Path(out) / f"_{name}") if "_ppi_sweep_" in p.name]
+    target = Path(out) / f"{name}.png"
+    shutil.move(pngs[0], target)
+    for p in Path(out).glob(f"_{name}*.png"):
+        p.unlink()
+    return target
+
+
 def db(x, floor: float = 1e-30):
     """10 log10(x) with a floor [dB]."""
     import numpy as np

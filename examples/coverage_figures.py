@@ -106,8 +106,9 @@ def sband_sector(path: Path) -> None:
     """The S-band scene's sector PPI (module docstring) and its cost."""
     import os
     import resource
-    import shutil
     import time
+
+    from _gallery import first_ppi
 
     import seaecho
 
@@ -120,10 +121,7 @@ def sband_sector(path: Path) -> None:
     wall, cpu = time.perf_counter(), time.process_time()
     ds = seaecho.simulate(scene, progress=False)
     wall, cpu = time.perf_counter() - wall, time.process_time() - cpu
-    pngs = [p for p in seaecho.figures(ds, path.parent / "_sband") if "_ppi_sweep_" in p.name]
-    shutil.move(pngs[0], path)
-    for p in path.parent.glob("_sband*.png"):
-        p.unlink()
+    first_ppi(ds, path.parent, path.stem)
     n = ds.sizes["pulse"]
     print(f"S band sector: {n} pulses in {wall:.0f} s wall / {cpu:.0f} s CPU "
           f"({wall / n * 1e3:.0f} / {cpu / n * 1e3:.0f} ms per pulse), peak RSS "

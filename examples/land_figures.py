@@ -21,7 +21,6 @@ patch's power ratio (simulated over expected).
 from __future__ import annotations
 
 import os
-import shutil
 import sys
 import time
 from pathlib import Path
@@ -31,6 +30,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from _gallery import first_ppi  # noqa: E402
 
 import seaecho  # noqa: E402
 from seaecho.constants import C0  # noqa: E402
@@ -65,12 +65,7 @@ def revolution(out: Path, quick: bool) -> Path:
     for i, name in enumerate(ds["object"].values):
         r = ds["truth_hidden_reason"].values[:, i]
         print(f"  {name}: {reasons[int(np.bincount(r).argmax())]}")
-    pngs = [p for p in seaecho.figures(ds, out / "_land") if "_ppi_sweep_" in p.name]
-    target = out / "land_ppi_revolution.png"
-    shutil.move(pngs[0], target)
-    for p in out.glob("_land*.png"):
-        p.unlink()
-    return target
+    return first_ppi(ds, out, "land_ppi_revolution")
 
 
 def flat_patch(out: Path) -> Path:

@@ -22,7 +22,6 @@ the load average). ``--quick``: 90 pulses of the revolution, a 64 m tile.
 from __future__ import annotations
 
 import os
-import shutil
 import sys
 import time
 from pathlib import Path
@@ -32,6 +31,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from _gallery import first_ppi  # noqa: E402
 
 import seaecho  # noqa: E402
 from seaecho.radar.antennas import line_pattern  # noqa: E402
@@ -74,12 +74,7 @@ def ppi(scene, out: Path, name: str) -> tuple[Path, float, int]:
     start = time.perf_counter()
     ds = seaecho.simulate(scene, progress=False)
     wall = time.perf_counter() - start
-    pngs = [p for p in seaecho.figures(ds, out / f"_{name}") if "_ppi_sweep_" in p.name]
-    target = out / f"{name}.png"
-    shutil.move(pngs[0], target)
-    for p in out.glob(f"_{name}*.png"):
-        p.unlink()
-    return target, wall, ds.sizes["pulse"]
+    return first_ppi(ds, out, name), wall, ds.sizes["pulse"]
 
 
 def main(argv: list[str] | None = None) -> list[Path]:

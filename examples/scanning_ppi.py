@@ -34,11 +34,10 @@ doi:10.1109/RADAR.2006.1631862.
 from __future__ import annotations
 
 import os
-import shutil
 import time
 from pathlib import Path
 
-from _gallery import SCENES, options, seaecho_warnings
+from _gallery import SCENES, first_ppi, options, seaecho_warnings
 
 import seaecho
 
@@ -93,12 +92,7 @@ def ppi(name: str, size: str, out: Path) -> Path:
     n = ds.sizes["pulse"]
     print(f"{name}: {n} pulses in {wall:.1f} s wall / {cpu:.1f} s CPU "
           f"({wall / n * 1e3:.1f} ms per pulse), load {os.getloadavg()[0]:.1f}")
-    stem = out / f"_ppi_{name}"
-    pngs = [p for p in seaecho.figures(ds, stem) if "_ppi_sweep_" in p.name]
-    target = out / f"ppi_{name}.png"
-    shutil.move(pngs[0], target)
-    for p in out.glob(f"_ppi_{name}*"):
-        p.unlink()
+    target = first_ppi(ds, out, f"ppi_{name}")
     print(f"wrote {target}")
     return target
 
