@@ -192,7 +192,11 @@ def friction_velocity(law: str, u10: ArrayLike, inverse_wave_age: float = OMEGA_
 
 
 #: Surface wind drift over the friction velocity of the wind [-] (Wu 1975: the
-#: wind-induced current at the interface is proportional to u*).
+#: wind-induced current at the interface is proportional to u*). The coefficient 0.53 is
+#: quoted from memory: Wu's abstract (the text read here) gives the proportionality and a
+#: total surface drift (wind + Stokes) approaching 3.5 % of the wind at long fetch, not
+#: the number; tank measurements give 0.65-1.2 u* (Polnikov, Qiao & Ma 2020, J. Phys.
+#: Oceanogr. 50(10), abstract).
 WIND_DRIFT_OVER_U_STAR = 0.53
 
 
