@@ -115,7 +115,7 @@ def test_tile_nodes_do_not_grow_with_the_window():
 
 def test_tile_frame_grazing_on_the_earth():
     """Eq T5: seen from its tile's frame, the radar's depression at the tile centre is
-    the grazing angle of eq E1 (Skolnik 2001 eq 8.7)."""
+    the grazing angle of eq E1 (the law of cosines on the 4/3 Earth)."""
     from seaecho.geometry.earth import grazing_angle
 
     earth = SphericalEarth(effective_radius())

@@ -326,7 +326,7 @@ def _with_antenna(ds, width_m=1.0, scene_json=None):
 def test_profile_false_alarms_per_km2_from_the_pulse_limited_cell(earth, y_m):
     # Each tested gate covers R theta_B dR sec psi (Skolnik 2001, section 7.1), theta_B =
     # 0.8859 lambda / L for a uniform aperture (Balanis 2016, 12.5), sin psi = h / R
-    # (flat) or h / R + h^2 / (2 k a R) - R / (2 k a) (4/3 Earth, Skolnik eq 8.7), h the
+    # (flat) or h / R + h^2 / (2 k a R) - R / (2 k a) (4/3 Earth, eq E1), h the
     # height above the sphere (2 km from the tangent point: 0.235 m above the frame's z)
     ds, _ = synthetic_run(n_pulses=60)
     js = '{"propagation": {"earth": "spherical", "earth_radius_factor": 1.3333333333333333}}'

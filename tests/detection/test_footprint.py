@@ -1,7 +1,7 @@
 """The sea a range cell covers (eq F1 of seaecho.detection.footprint): the beam's
 half-power width against the line-source constants (Skolnik 2001, table 9.1; Balanis
 2016, section 12.5) and the pulse-limited cell R theta_B Delta R sec psi on flat and 4/3
-Earths (Skolnik 2001, section 7.1; sin psi of Skolnik eq 8.7)."""
+Earths (Skolnik 2001, section 7.1; sin psi of eq E1 of seaecho.geometry.earth)."""
 
 from __future__ import annotations
 
@@ -38,7 +38,7 @@ def test_clutter_cell_area_closed_forms():
     flat = r * th * dr / np.sqrt(1.0 - (h / r) ** 2)
     assert clutter_cell_area(r, dr, th, np.arcsin(h / r)) == pytest.approx(flat, rel=1e-12)
     assert flat == pytest.approx(523.68, abs=0.01)
-    # 4/3 Earth: sin psi = h / R + h^2 / (2 k a R) - R / (2 k a) (Skolnik eq 8.7)
+    # 4/3 Earth: sin psi = h / R + h^2 / (2 k a R) - R / (2 k a) (eq E1, law of cosines)
     from seaecho.geometry.earth import grazing_angle
 
     s = h / r + h * h / (2 * KA_M * r) - r / (2 * KA_M)

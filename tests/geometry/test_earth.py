@@ -1,9 +1,12 @@
 """The 4/3 Earth: grazing angle, horizon, drop and the scene frame on a sphere.
 
-References: Skolnik, *Introduction to Radar Systems*, 3rd ed. (2001), section 8.2
-(eq 8.7 grazing angle, eq 8.28 horizon: d = 4.12 sqrt(h [m]) km for k = 4/3); Blake,
-*Radar Range-Performance Analysis* (1986), chapter 3 (eq 3.19; a 100 ft antenna sees a
-sea-level target to 12.3 nmi, the "1.23 sqrt(h [ft]) nmi" rule).
+References: Federal Standard 1037C (1996), "radio horizon range (RHR)": on the 4/3
+Earth, R = 1.23 (sqrt(h_t) + sqrt(h_r)) NM with the heights in feet and
+2.23 (sqrt(h_t) + sqrt(h_r)) NM with them in metres (4.12 km sqrt(h [m]) for one end);
+Skolnik, *Introduction to Radar Systems*, 3rd ed. (2001), chapter 8, and Blake, *Radar
+Range-Performance Analysis* (1986), chapter 5 (the 4/3 Earth; their equation numbers
+not checked here). The grazing angle (eq E1) is the law of cosines, checked against the
+sphere's own geometry.
 """
 
 from __future__ import annotations
@@ -23,16 +26,18 @@ from seaecho.geometry.earth import (
 R43 = effective_radius(4.0 / 3.0)
 
 
-def test_skolnik_horizon_rule_4_12_km_per_sqrt_m():
-    # Skolnik (2001) eq 8.28: d [km] = 4.12 sqrt(h [m]) for k = 4/3 (a = 6370 km)
+def test_horizon_rule_4_12_km_per_sqrt_m():
+    # FS-1037C, "radio horizon range": 2.23 NM sqrt(h [m]) = 4.13 km for k = 4/3;
+    # sqrt(2 k a) = 4.122 km per sqrt(m) with a = 6371 km
     assert horizon_range(1.0, 0.0, R43) / 1e3 == pytest.approx(4.12, rel=1e-3)
+    assert horizon_range(1.0, 0.0, R43) / 1852.0 == pytest.approx(2.23, rel=2e-3)
     # a 25 m coastal antenna: 20.6 km to a sea-level target; two 25 m masts: 41.2 km
     assert horizon_range(25.0, 0.0, R43) / 1e3 == pytest.approx(20.6, rel=1e-3)
     assert horizon_range(25.0, 25.0, R43) == pytest.approx(2 * horizon_range(25.0, 0, R43))
 
 
-def test_blake_horizon_rule_1_23_nmi_per_sqrt_ft():
-    # Blake (1986) section 3.3: d [nmi] = 1.23 sqrt(h [ft]); h = 100 ft -> 12.3 nmi
+def test_horizon_rule_1_23_nmi_per_sqrt_ft():
+    # FS-1037C, "radio horizon range": R [NM] = 1.23 sqrt(h [ft]); h = 100 ft -> 12.3 NM
     d_nmi = horizon_range(100 * 0.3048, 0.0, R43) / 1852.0
     assert d_nmi == pytest.approx(12.3, rel=2e-3)
 
@@ -47,7 +52,7 @@ def test_grazing_angle_flat_limit_and_horizon_zero():
     assert grazing_angle(h, 1.01 * r_h, R43) < 0
 
 
-def test_grazing_angle_skolnik_eq_8_7_against_the_sphere():
+def test_grazing_angle_eq_e1_against_the_sphere():
     # Eq E1 is the law of cosines: compare with the geometry of the sphere itself
     earth = SphericalEarth(R43)
     h = 30.0
@@ -56,7 +61,7 @@ def test_grazing_angle_skolnik_eq_8_7_against_the_sphere():
         r = np.linalg.norm(radar)
         psi = np.arcsin(radar[2] / r)  # elevation of the radar seen from the origin
         assert grazing_angle(h, r, R43) == pytest.approx(psi, rel=1e-9, abs=1e-13)
-    # 30 m at 5 km: 0.343 deg flat, 0.327 deg on the 4/3 Earth (Skolnik eq 8.7)
+    # 30 m at 5 km: 0.343 deg flat, 0.327 deg on the 4/3 Earth (eq E1)
     assert np.degrees(grazing_angle(30.0, 5000.0, R43)) == pytest.approx(0.3270, abs=2e-4)
 
 

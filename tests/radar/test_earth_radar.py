@@ -1,8 +1,9 @@
 """The radar on a spherical Earth: targets past the horizon are not seen, the platform
 is mapped onto the sphere, and the flat Earth is today's path, byte for byte.
 
-References: Skolnik, *Introduction to Radar Systems*, 3rd ed. (2001), eq 8.28 (the
-horizon) and eq 8.7 (grazing angle).
+References: the horizon (eq E2) and the grazing angle (eq E1, the law of cosines) of
+seaecho.geometry.earth on the 4/3 Earth (Skolnik, *Introduction to Radar Systems*, 3rd
+ed. 2001, chapter 8; Federal Standard 1037C, "radio horizon range").
 """
 
 from __future__ import annotations
@@ -50,9 +51,9 @@ def test_target_just_inside_and_beyond_the_horizon(h_target):
     assert flat.target_echo(flat.geometry(0)).tau.size == 2  # a flat Earth hides nothing
 
 
-def test_radar_on_the_sphere_sees_the_origin_at_eq_8_7_grazing():
+def test_radar_on_the_sphere_sees_the_origin_at_eq_e1_grazing():
     # the radar 8 km east, 30 m up: its line of sight to the origin's sea surface meets
-    # it at the grazing angle of Skolnik eq 8.7
+    # it at the grazing angle of eq E1
     radar = RadarSystem(build_radar(parse_scene(_scene(
         [{"position_m": (0.0, 0.0, 0.0), "rcs_m2": 1.0}], tx=(8000.0, 0.0, 30.0)))),
         backend="numpy")

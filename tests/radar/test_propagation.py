@@ -6,7 +6,7 @@ section 8.2; Blake 1986, eq 6.11), the interference region F^4 ~ (4 pi h1 h2 / (
 R))^4 where the echo falls as R^-8 (Blake 1986, section 6.4), the limits F -> 1 + Gamma
 and F -> 1, the specular point against the law of reflection on the sphere, Kerr's
 divergence factor against a ray tube traced over the sphere (Kerr 1951, section 2.5;
-Blake 1986, eq 3.49), the pseudo-Brewster minimum of |Gamma_v| of sea water.
+Blake 1986, chapter 6), the pseudo-Brewster minimum of |Gamma_v| of sea water.
 """
 
 from __future__ import annotations
@@ -69,7 +69,7 @@ def test_limits_one_plus_gamma_and_one():
 
 
 def test_specular_point_obeys_the_law_of_reflection_on_the_sphere():
-    # eq P2 (Blake 1986, eqs 3.43-3.45): the two legs meet the sphere at equal grazing
+    # eq P2 (Kerr 1951, section 2.4): the two legs meet the sphere at equal grazing
     h1, h2 = np.array([30.0, 30.0, 5.0, 60.0]), np.array([10.0, 2.0, 5.0, 0.5])
     d = np.array([8e3, 15e3, 6e3, 25e3])
     d1 = reflection_point(h1, h2, d, R43)
@@ -118,7 +118,7 @@ def _ray_tube_divergence(h1, h2, d, radius):
 @pytest.mark.parametrize(("h1", "h2", "d"), [(30.0, 10.0, 10e3), (30.0, 10.0, 20e3),
                                              (30.0, 10.0, 30e3), (25.0, 2.0, 15e3)])
 def test_divergence_factor_against_a_traced_ray_tube(h1, h2, d):
-    # Kerr (1951) eq 2.5(9) / Blake (1986) eq 3.49 against the ray tube over the sphere
+    # Kerr (1951) eq 2.5(9) against the ray tube over the sphere
     d_tube, d1, psi = _ray_tube_divergence(h1, h2, d, R43)
     # (measured: D agrees to 1e-5, e.g. 0.7559 at 20 km and 0.4313 at 30 km)
     assert d1 == pytest.approx(float(reflection_point(h1, h2, d, R43)), rel=1e-5)
@@ -130,7 +130,7 @@ def test_divergence_factor_against_a_traced_ray_tube(h1, h2, d):
 
 
 def test_at_the_horizon_the_reflected_wave_vanishes():
-    # the divergence factor -> 0 at tangency (Blake 1986, fig 3.9): F -> 1 near the
+    # the divergence factor -> 0 at tangency (eq P3 at psi -> 0): F -> 1 near the
     # horizon, where the flat Earth would give the null 1 + Gamma ~ 0
     h1, h2 = 30.0, 10.0
     d = 0.995 * float(horizon_range(h1, h2, R43))

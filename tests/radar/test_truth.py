@@ -3,8 +3,9 @@
 Closed forms: the ships' positions from their courses and routes (eqs W1, W18); a
 target's p0 + v t and its Swerling RCS (the same draw the echo uses); the range cell
 where the compressed echo peaks ((tau - t0) f_s, rounded); the 4/3-Earth radio horizon
-d = sqrt(2 k R_e h), about 4.12 km sqrt(h / 1 m) (M. I. Skolnik, *Introduction to Radar
-Systems*, 3rd ed. 2001, eq 8.6 and its numerical form).
+d = sqrt(2 k R_e h), about 4.12 km sqrt(h / 1 m) (Federal Standard 1037C, "radio horizon
+range": 2.23 NM sqrt(h [m]) on the 4/3 Earth; Skolnik, *Introduction to Radar Systems*,
+3rd ed. 2001, chapter 8).
 """
 
 from __future__ import annotations
@@ -104,7 +105,7 @@ def test_range_cell_is_where_the_echo_peaks(run_ds):
 
 
 def test_radio_horizon_closed_form():
-    # Skolnik (2001) eq 8.6: d = sqrt(2 k R_e h) with k = 4/3, i.e. 4.12 km sqrt(h [m])
+    # d = sqrt(2 k R_e h) with k = 4/3, i.e. 4.12 km sqrt(h [m]) (FS-1037C: 2.23 NM)
     assert radio_horizon_m(10.0, 0.0) == pytest.approx(4.12e3 * np.sqrt(10.0), rel=1e-3)
     assert radio_horizon_m(10.0, 10.0) == pytest.approx(2 * radio_horizon_m(10.0, 0.0))
 

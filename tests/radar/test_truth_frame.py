@@ -5,8 +5,8 @@ Earth-following, x and y along the surface from the origin, z above the sphere: 
 coordinates ``[[targets]]`` are given in, docs/scanning.md), ``truth_position_cartesian``
 in the simulation's Cartesian frame tangent to the sphere at the origin (eq E4 of
 seaecho.geometry.earth), where the platforms' tracks are; the truth's range is that of
-the echo. References: Skolnik, *Introduction to Radar Systems*, 3rd ed. (2001), section
-8.2 (the 4/3 Earth and its horizon, eq 8.28).
+the echo. References: Skolnik, *Introduction to Radar Systems*, 3rd ed. (2001), chapter
+8 (the 4/3 Earth and its horizon, eq E2 of seaecho.geometry.earth).
 """
 
 from __future__ import annotations

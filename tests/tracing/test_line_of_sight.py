@@ -1,10 +1,11 @@
 """Lines of sight: a target behind a wave crest, a hull below the horizon.
 
 References: the geometry of a straight ray over a regular wave crest (the line from the
-antenna tangent to the crest profile); Skolnik, *Introduction to Radar Systems*, 3rd ed.
-(2001), section 8.2, eq 8.28 (the radar horizon sqrt(2 k a)(sqrt(h1) + sqrt(h2))) and
-Blake, *Radar Range-Performance Analysis* (1986), eq 3.21 (the hidden height
-(d - sqrt(2 k a h1))^2 / (2 k a) beyond the horizon).
+antenna tangent to the crest profile); the radar horizon sqrt(2 k a)(sqrt(h1) + sqrt(h2))
+(eq E2 of seaecho.geometry.earth; Skolnik, *Introduction to Radar Systems*, 3rd ed.
+2001, chapter 8) and the hidden height (d - sqrt(2 k a h1))^2 / (2 k a) beyond the
+horizon (the tangent ray's height above the sphere at the distance d - sqrt(2 k a h1)
+past its tangent point, eq E3).
 """
 
 from __future__ import annotations
@@ -54,7 +55,7 @@ def test_target_behind_a_regular_wave_crest_is_hidden_and_above_it_seen():
 def test_hull_centre_just_inside_and_beyond_the_horizon(h_target):
     earth = SphericalEarth(R43)
     tx = earth.position(np.array([0.0, 0.0, 25.0]))
-    d_h = float(horizon_range(25.0, h_target, R43))  # eq 8.28
+    d_h = float(horizon_range(25.0, h_target, R43))  # eq E2
     pts = np.array([[0.995 * d_h, 0.0, h_target], [1.005 * d_h, 0.0, h_target]])
     on, seen = horizon_mask(earth, pts, tx, tx)
     assert seen.tolist() == [True, False]

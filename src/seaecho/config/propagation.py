@@ -3,7 +3,7 @@
 ``earth = "flat"`` (default) keeps the scene's plane z = 0 as the sea's mean surface
 everywhere. ``earth = "spherical"`` draws the rays straight over a sphere of effective
 radius k a (standard refraction: k = 4/3; Skolnik, *Introduction to Radar Systems*, 3rd
-ed., 2001, section 8.2; Blake, *Radar Range-Performance Analysis*, 1986, chapter 3):
+ed., 2001, chapter 8; Blake, *Radar Range-Performance Analysis*, 1986, chapter 5):
 the scene's (x, y) of platforms and targets are distances along the surface from the
 origin, z the height above it; targets beyond the radar horizon do not echo
 (``seaecho.geometry.earth``, docs/scanning.md). ``multipath = "two-ray"`` multiplies the

@@ -2,22 +2,26 @@
 
 Standard atmospheric refraction bends rays down with a curvature about a quarter of the
 Earth's; drawing the rays straight over an Earth of radius k a with k = 4/3 keeps their
-heights (Skolnik 2001, section 8.2; Blake 1986, section 3.3). On that sphere, with the
-radar at height h above the surface and a point of the surface at slant range r:
+heights (Skolnik 2001, chapter 8; Blake 1986, chapter 5, "Tropospheric Refraction").
+On that sphere, with the radar at height h above the surface and a point of the surface
+at slant range r:
 
 .. math::
 
     \\sin\\psi = \\frac{h}{r} + \\frac{h^2}{2 k a\\, r} - \\frac{r}{2 k a}          (E1)
 
-the grazing angle at the surface point (law of cosines in the triangle Earth centre,
-radar, point; Skolnik 2001 eq 8.7, Blake 1986 eq 3.19);
+the grazing angle at the surface point (the law of cosines in the triangle Earth
+centre, radar, point: (R + h)^2 = R^2 + r^2 + 2 R r sin psi with R = k a);
 
 .. math::
 
     d_h = \\sqrt{2 k a}\\,(\\sqrt{h_1} + \\sqrt{h_2})                                (E2)
 
 the radar horizon between heights h_1 and h_2 (the sum of the two tangent distances,
-h << k a; Skolnik 2001 eq 8.28: 4.12 sqrt(h [m]) km for k = 4/3);
+h << k a; for k = 4/3, 4.12 km sqrt(h [m]) for one end: the "radio horizon range" of
+Federal Standard 1037C, R = 1.23 (sqrt(h_t) + sqrt(h_r)) NM with the heights in feet,
+2.23 (sqrt(h_t) + sqrt(h_r)) NM with them in metres, "the effective Earth radius, 4/3
+times the actual Earth radius, is used in deriving the formulae");
 
 .. math::
 
@@ -47,10 +51,16 @@ neglected. A straight ray between two points is blocked when it passes below the
 References
 ----------
 .. [1] M. I. Skolnik, *Introduction to Radar Systems*, 3rd ed., McGraw-Hill, 2001,
-   section 8.2 (eqs 8.7 and 8.28, effective Earth radius 4/3).
-.. [2] L. V. Blake, *Radar Range-Performance Analysis*, Artech House, 1986, chapter 3.
+   chapter 8 (propagation: the 4/3 effective Earth radius, the radar horizon); its
+   section and equation numbers are not checked against the book here.
+.. [2] L. V. Blake, *Radar Range-Performance Analysis*, Artech House, 1986, chapter 5
+   ("Effects of the Earth's Atmosphere", section "Tropospheric Refraction", pp. 178-192,
+   as the book's table of contents gives it; its equations are not checked here).
 .. [3] IUGG mean Earth radius 6371.0088 km (Moritz, H., Geodetic Reference System 1980,
    *Bulletin Géodésique* 54, 1980).
+.. [4] Federal Standard 1037C, *Telecommunications: Glossary of Telecommunication Terms*
+   (1996), entries "radio horizon range (RHR)" and "radar line-of-sight (LOS) equation"
+   (from Weik 1989): the numerical forms of (E2) for k = 4/3 (read).
 """
 
 from __future__ import annotations
@@ -62,12 +72,12 @@ from numpy.typing import ArrayLike, NDArray
 
 #: Mean Earth radius a [m] (IUGG, GRS 80).
 EARTH_RADIUS_M = 6371.0088e3
-#: Effective Earth radius factor k of the standard atmosphere (Skolnik 2001, section 8.2).
+#: Effective Earth radius factor k of the standard atmosphere (Skolnik 2001, ch. 8; FS-1037C).
 STANDARD_REFRACTION_K = 4.0 / 3.0
 
 
 def effective_radius(k: float = STANDARD_REFRACTION_K) -> float:
-    """Effective Earth radius k a [m] (Skolnik 2001, section 8.2).
+    """Effective Earth radius k a [m] (Skolnik 2001, chapter 8; Blake 1986, chapter 5).
 
     Parameters
     ----------
@@ -98,7 +108,7 @@ def grazing_angle(h: ArrayLike, r: ArrayLike, radius: float) -> NDArray[np.float
 
     References
     ----------
-    Skolnik (2001) eq 8.7; Blake (1986) eq 3.19.
+    Eq (E1): the law of cosines on the sphere of radius k a (module docstring).
     """
     h = np.asarray(h, dtype=float)
     r = np.asarray(r, dtype=float)
@@ -112,7 +122,8 @@ def horizon_range(h1: ArrayLike, h2: ArrayLike, radius: float) -> NDArray[np.flo
 
     References
     ----------
-    Skolnik (2001) eq 8.28.
+    Federal Standard 1037C (1996), "radio horizon range (RHR)" (k = 4/3); Skolnik
+    (2001), chapter 8.
     """
     h1, h2 = np.asarray(h1, dtype=float), np.asarray(h2, dtype=float)
     if np.any(h1 < 0) or np.any(h2 < 0):

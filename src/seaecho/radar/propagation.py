@@ -24,8 +24,8 @@ path longer by delta lags by exp(-j k delta)), with
 - D the divergence factor of the spherical Earth (:func:`divergence_factor`, eq P3);
 - delta the path difference (eq P4).
 
-Geometry on the effective Earth of radius R = k a (Blake 1986, section 3.6; Kerr 1951,
-section 2.4). The specular point solves Blake's cubic, written in closed form
+Geometry on the effective Earth of radius R = k a (Kerr 1951, section 2.4; Blake 1986,
+chapter 6). The specular point solves Blake's cubic, written in closed form
 
 .. math::
 
@@ -33,7 +33,7 @@ section 2.4). The specular point solves Blake's cubic, written in closed form
     \\Phi = \\arccos\\frac{2 R (h_1 - h_2)\\, d}{p^3},\\quad
     d_1 = \\frac d2 + p\\cos\\frac{\\Phi + \\pi}{3}                                 (P2)
 
-(Blake 1986, eqs 3.43-3.45; flat-Earth limit R -> inf: d_1 = d h_1 / (h_1 + h_2)). The
+(Kerr 1951, section 2.4; flat-Earth limit R -> inf: d_1 = d h_1 / (h_1 + h_2)). The
 two legs and the direct path are then measured exactly in the vertical plane through the
 antenna, the point and the Earth's centre, in the frame of the specular point S (x
 along the surface, y up): a point at distance s along the surface from S and height h
@@ -48,7 +48,7 @@ the sphere), and
 with u_1, u_2 the vectors from S to the antenna and to the point (flat Earth: delta =
 4 h_1 h_2 / (r_reflected + r_direct), ~ 2 h_1 h_2 / d). The divergence factor of the
 convex sphere, the spreading of the reflected ray tube in the vertical plane (Kerr 1951,
-eq 2.5(9); Blake 1986, eq 3.49):
+eq 2.5(9); Blake 1986, chapter 6):
 
 .. math::
 
@@ -124,8 +124,10 @@ interference region only: points beyond the horizon are hidden, ``seaecho.geomet
 
 References
 ----------
-.. [1] Blake, L. V. (1986). *Radar Range-Performance Analysis*, Artech House, chapters 3
-   (the spherical Earth, eqs 3.43-3.49) and 6 (pattern-propagation factor, eq 6.5).
+.. [1] Blake, L. V. (1986). *Radar Range-Performance Analysis*, Artech House, chapter 6
+   ("Multipath Propagation": the pattern-propagation factor, eq 6.5, over a flat and a
+   spherical Earth; the book's chapter 3 is on target cross section, by its table of
+   contents; the equation numbers in chapter 6 are not checked here).
 .. [2] Kerr, D. E. (ed.) (1951). *Propagation of Short Radio Waves*, MIT Radiation
    Laboratory Series 13, McGraw-Hill, sections 2.4-2.5.
 .. [3] Miller, A. R., Brown, R. M. and Vegh, E. (1984). New derivation for the
@@ -182,7 +184,7 @@ def reflection_point(h1: ArrayLike, h2: ArrayLike, d: ArrayLike,
 
     References
     ----------
-    Blake (1986), eqs 3.43-3.45; Kerr (1951), section 2.4.
+    Kerr (1951), section 2.4; Blake (1986), chapter 6.
     """
     h1, h2, d = (np.asarray(a, dtype=np.float64) for a in (h1, h2, d))
     hs = h1 + h2
@@ -222,7 +224,7 @@ def divergence_factor(d1: ArrayLike, d2: ArrayLike, grazing: ArrayLike,
 
     References
     ----------
-    Kerr (1951), eq 2.5(9); Blake (1986), eq 3.49.
+    Kerr (1951), eq 2.5(9); Blake (1986), chapter 6.
     """
     d1, d2, psi = (np.asarray(a, dtype=np.float64) for a in (d1, d2, grazing))
     if np.isinf(radius):

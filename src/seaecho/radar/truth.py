@@ -42,7 +42,10 @@ is.
 References
 ----------
 .. [1] M. I. Skolnik, *Introduction to Radar Systems*, 3rd ed., McGraw-Hill (2001),
-   section 8.2 (the 4/3 Earth radius and the radar horizon, eq 8.6: d = sqrt(2 k R_e h)).
+   chapter 8 (the 4/3 Earth radius and the radar horizon d = sqrt(2 k R_e h); section
+   and equation numbers not checked here); Federal Standard 1037C (1996), "radio horizon
+   range (RHR)": 2.23 (sqrt(h_t) + sqrt(h_r)) NM with the heights in metres, i.e.
+   4.12 km sqrt(h [m]) for one end, on the 4/3 Earth (read).
 .. [2] B. R. Bean and E. J. Dutton, *Radio Meteorology*, NBS Monograph 92 (1966),
    section 1.3 (the effective Earth radius of a standard atmosphere).
 """
@@ -59,8 +62,9 @@ from ..geometry.earth import EARTH_RADIUS_M, STANDARD_REFRACTION_K, effective_ra
 def radio_horizon_m(h_a: ArrayLike, h_o: ArrayLike, radius_m: float | None = None) -> NDArray:
     """Largest ground distance at which heights h_a and h_o [m] see each other over a
     smooth Earth of effective radius ``radius_m`` [m] (default k R_e, k = 4/3): the
-    radar horizon of :func:`seaecho.geometry.earth.horizon_range` (eq E2; Skolnik 2001,
-    eq 8.6, summed over both ends), with heights below 0 counted as 0."""
+    radar horizon of :func:`seaecho.geometry.earth.horizon_range` (eq E2, the sum of
+    both ends' tangent distances; FS-1037C, "radio horizon range"), with heights below 0
+    counted as 0."""
     radius = effective_radius() if radius_m is None else radius_m
     return horizon_range(np.maximum(np.asarray(h_a, dtype=np.float64), 0.0),
                          np.maximum(np.asarray(h_o, dtype=np.float64), 0.0), radius)

@@ -25,7 +25,8 @@ Earth-following coordinates like a target's, are placed on the sphere (eq E4 of
 :mod:`seaecho.geometry.earth`); a centre echoes only when its straight segments to both
 antennas clear the sphere (:func:`horizon_mask`): the part of a hull below the horizon's
 tangent ray, the hidden height h_hid = (d - sqrt(2 k a h_1))^2 / (2 k a) at ground
-distance d beyond the antenna's horizon (Skolnik 2001, section 8.2; Blake 1986, eq 3.21),
+distance d beyond the antenna's horizon (the tangent ray's height, eq E3 of
+:mod:`seaecho.geometry.earth` at d - sqrt(2 k a h_1) past its tangent point),
 is silent, the rest is heard; a hull wholly below returns nothing.
 
 Identical hulls share traces. Two hulls of the same mesh, material and options whose
