@@ -25,9 +25,20 @@ itself: they are what its physics is compared against.
   NRL takes ``|cos phi|`` in the wind factor (downwind as upwind), Pinel ``cos phi``
   (used here); and the interference factor's argument is divided by ``lambda + 0.015``
   in NRL's code (used here) but by ``lambda`` in Pinel's (and in a third, student
-  implementation found with it), which raises GIT at 9.3 GHz
+  implementation found with it, and a fourth, of a Bragg/whitecap/spike clutter model,
+  whose comment calls it "Eq. 9" of the text it follows), which raises GIT at 9.3 GHz
   by up to 6.6 dB below 1 deg grazing in light winds (0.3 deg: +5.9 dB at U = 7.7 m/s,
-  +2.5 dB at 10 m/s; < 0.5 dB above 3 deg). Horst et al.'s own text was not read.
+  +2.5 dB at 10 m/s; < 0.5 dB above 3 deg). Horst et al.'s own text was not read, nor
+  a restatement that prints the interference factor (Nathanson, Reilly & Cohen 1991,
+  section 7.8, "a mathematical description of the GIT model is given at the end of this
+  section", and Ward, Tough & Watts 2006, chapter 8, describe it; neither text was
+  reachable). The NRL report itself (read, with the code) gives in its text only the
+  model's inputs, average wave height and wind speed (its eq 1 relates them for a fully
+  risen sea), and the whole model as the code in its appendix; it cites the model as
+  "M. M. Horst, F. B. Dyer, and M. Tuley, 'Radar sea clutter model,' College Park, MD:
+  1978, pp. 6-10", says Nathanson describes it in detail, and notes that Horst et al.
+  put the frequency break at 10 GHz, later moved to 12 GHz (used here). So which
+  divisor Horst et al. printed is not settled here, and NRL's is kept.
 * :func:`nrl_sigma0` - the NRL model of Gregers-Hansen & Mital (2012), a five-parameter
   fit to Nathanson's tables (0.1-60 deg grazing, 0.5-35 GHz, sea states 0-6).
 * :data:`NATHANSON_XBAND` - Nathanson's tables (Radar Design Principles, 2nd ed., 1991)
