@@ -61,7 +61,11 @@ References
    chapter 2.
 .. [5] J. B. Billingsley, *Low-Angle Radar Land Clutter: Measurements and Empirical
    Models*, William Andrew / SciTech (2002), chapters 2 (Weibull statistics, a_w) and 4.
-.. [6] N. J. Willis, *Bistatic Radar*, SciTech (2005), section 9.2 (not checked here).
+.. [6] N. J. Willis, *Bistatic Radar*, SciTech (2005), section 9.2 (not checked here;
+   the only clutter chapter whose contents were read is chapter 9, "Bistatic clutter",
+   of N. J. Willis and H. D. Griffiths (eds.), *Advances in Bistatic Radar*, SciTech
+   (2007): 9.2 "System Parameters and Properties", 9.3 "Clutter Cross-Section Per Unit
+   Area"; its text, and whether it gives eq L2, were not read).
 """
 
 from __future__ import annotations
