@@ -283,8 +283,8 @@ def test_land_below_the_radio_horizon_is_silent():
     # a slope rising 30 m over 200 m, facing a 25 m antenna 30 km away on the 4/3 Earth:
     # a facet at height h is above the horizon when its distance is below
     # sqrt(2 k a) (sqrt(25 m) + sqrt(h)) (the 4/3-Earth radar horizon, Skolnik 2001, ch. 8;
-    # the radar line-of-sight equation of the ATIS Telecom Glossary / Federal Standard
-    # 1037C: 4.12 km (sqrt(h_a) + sqrt(h_o)), heights in m), i.e. h > 5 m at 30 km. On a
+    # the "radio horizon range" of Federal Standard 1037C: 2.23 NM (sqrt(h_t) + sqrt(h_r)),
+    # heights in m, i.e. 4.12 km), i.e. h > 5 m at 30 km. On a
     # flat Earth the whole slope is lit.
     from seaecho.build import build_land
     from seaecho.geometry.earth import effective_radius, horizon_range

@@ -59,8 +59,9 @@ References
 .. [3] IUGG mean Earth radius 6371.0088 km (Moritz, H., Geodetic Reference System 1980,
    *Bulletin Géodésique* 54, 1980).
 .. [4] Federal Standard 1037C, *Telecommunications: Glossary of Telecommunication Terms*
-   (1996), entries "radio horizon range (RHR)" and "radar line-of-sight (LOS) equation"
-   (from Weik 1989): the numerical forms of (E2) for k = 4/3 (read).
+   (1996), entry "radio horizon range (RHR)" (from Weik 1989): the numerical forms of
+   (E2) for k = 4/3 (read; the entry "radar line-of-sight (LOS) equation" gives the same
+   in km and statute miles, its formulas not legible in the copy read).
 """
 
 from __future__ import annotations
