@@ -426,7 +426,7 @@ MUTATIONS = [
              "z0 = 3.7e-5 * u**2 / G * inverse_wave_age**0.9",
              "z0 = 3.7e-5 * u**2 / G * inverse_wave_age**1.9",
              ("tests/ocean/test_wind.py",), "Donelan's roughness with Omega_c^1.9"),
-    Mutation("breaking-friction-law", S + "scattering/breaking.py",
+    Mutation("breaking-friction-law", S + "ocean/kudryavtsev.py",
              'FRICTION_LAW = "wu-1982"', 'FRICTION_LAW = "constant-drag"',
              ("tests/ocean/test_wind.py", "tests/scattering/test_breaking.py"),
              "KHCC03's wind growth rate with another drag law than theirs (Wu 1982)"),

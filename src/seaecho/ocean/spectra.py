@@ -265,6 +265,36 @@ def elfouhaily_parameters(u19_5: float, fetch: float | None = None) -> Elfouhail
     )
 
 
+def elfouhaily_long_wave(
+    k: NDArray[np.float64], p: ElfouhailyParameters
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Elfouhaily et al.'s long-wave curvature ``B_l`` [-] and its cut-off [-].
+
+    ``B_l = (alpha_p / 2) (c_p / c) F_p``, ``F_p = L_PM J_p F_c`` (eqs 2-3), with the
+    long-wave side effect ``F_c = exp[-(Omega_c / sqrt(10)) (sqrt(k / k_p) - 1)]``, which
+    ends the long waves' equilibrium range above ``k_p`` (returned as the second value;
+    it exceeds 1 below ``k_p``, where ``L_PM`` takes over). Also the long waves of the
+    Kudryavtsev et al. (2003) spectrum (:mod:`seaecho.ocean.kudryavtsev`).
+
+    Parameters
+    ----------
+    k : ndarray
+        Wavenumber [rad/m] (> 0).
+    p : ElfouhailyParameters
+        From :func:`elfouhaily_parameters`.
+    """
+    c = phase_speed(k)  # phase speed with capillarity
+    cutoff = np.exp(-p.omega_c / np.sqrt(10.0) * (np.sqrt(k / p.k_p) - 1.0))  # side effect
+    return 0.5 * p.alpha_p * (p.c_p / c) * _peak_shape(k, p) * cutoff, cutoff
+
+
+def _peak_shape(k: NDArray[np.float64], p: ElfouhailyParameters) -> NDArray[np.float64]:
+    """``L_PM J_p`` [-]: Pierson-Moskowitz shape times the peak enhancement (eqs 2-3)."""
+    l_pm = np.exp(-1.25 * (p.k_p / k) ** 2)  # Eq. 2
+    big_gamma = np.exp(-((np.sqrt(k / p.k_p) - 1.0) ** 2) / (2.0 * p.delta**2))  # Eq. 3
+    return l_pm * p.gamma**big_gamma  # Eq. 3: J_p = gamma^Gamma
+
+
 @register_spectrum("elfouhaily")
 def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArray[np.float64]:
     """Elfouhaily et al. (1997) unified omnidirectional spectrum.
@@ -303,13 +333,8 @@ def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArra
     p = elfouhaily_parameters(u19_5, fetch)
     k, pos, ks = _positive(k)
     c = phase_speed(ks)  # phase speed with capillarity
-    l_pm = np.exp(-1.25 * (p.k_p / ks) ** 2)  # Eq. 2
-    big_gamma = np.exp(-((np.sqrt(ks / p.k_p) - 1.0) ** 2) / (2.0 * p.delta**2))  # Eq. 3
-    j_p = p.gamma**big_gamma  # Eq. 3
-    # long-wave side effect
-    f_p = l_pm * j_p * np.exp(-p.omega_c / np.sqrt(10.0) * (np.sqrt(ks / p.k_p) - 1.0))
-    b_l = 0.5 * p.alpha_p * (p.c_p / c) * f_p  # long-wave curvature
-    f_m = l_pm * j_p * np.exp(-0.25 * (ks / K_M - 1.0) ** 2)  # short-wave side effect
+    b_l, _ = elfouhaily_long_wave(ks, p)  # long-wave curvature
+    f_m = _peak_shape(ks, p) * np.exp(-0.25 * (ks / K_M - 1.0) ** 2)  # short-wave side effect
     b_h = 0.5 * p.alpha_m * (C_M / c) * f_m  # short-wave curvature
     return np.where(pos, (b_l + b_h) / ks**3, 0.0)  # S = k^-3 (B_l + B_h)
 
@@ -481,12 +506,17 @@ class DirectionalSpectrum:
         return float(k[np.argmax(self.omni(k))])
 
 
+# Kudryavtsev et al. (2003) take Elfouhaily's long waves (elfouhaily_long_wave): their
+# module imports this one, so it registers itself from here, once that is defined.
+from . import kudryavtsev as _kudryavtsev  # noqa: E402, F401
+
 __all__ = [
     "OMNI_SPECTRA",
     "SPREADINGS",
     "DirectionalSpectrum",
     "ElfouhailyParameters",
     "elfouhaily",
+    "elfouhaily_long_wave",
     "elfouhaily_parameters",
     "elfouhaily_spreading",
     "jonswap",
