@@ -354,7 +354,8 @@ def kudryavtsev(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArr
     -------
     ndarray
         S_1d [m^3]; the saturation ``k^3 S_1d`` at the X-band Bragg wavenumber 384 rad/m
-        is 2.5e-3 at U10 = 7 m/s (Elfouhaily et al.: 6.8e-3; Romeiser et al.: 1.6e-3).
+        is 1.4e-3 at U10 = 7 m/s and 6.7e-3 at 12.5 m/s (Elfouhaily et al.: 6.8e-3 and
+        1.7e-2; Romeiser et al.: 1.6e-3 and 3.2e-3).
 
     References
     ----------
