@@ -131,7 +131,7 @@ def test_table_against_direct_quadrature():
     """The tabulated ``int B_sw dphi`` (interpolated in ln k) against an adaptive
     quadrature at wavenumbers between the table's nodes."""
     for k in (37.3, 188.0, 384.0, 777.0):
-        direct, _ = quad(lambda p: float(kud.short_wave_saturation(k, p, 10.0)), -np.pi / 2,
+        direct, _ = quad(lambda p, k=k: float(kud.short_wave_saturation(k, p, 10.0)), -np.pi / 2,
                          np.pi / 2, limit=200, points=[0.0])
         assert float(kud.short_wave_omni_saturation(k, 10.0)) == pytest.approx(direct,
                                                                                rel=2e-3)
