@@ -7,12 +7,14 @@ breaking (``sea_sigma``), averaged over the looks upwind, crosswind (x2) and dow
 water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py``):
 
 * X band (9.3 GHz), sea states 2-5, 5-30 deg grazing: the Elfouhaily et al. (1997)
-  spectrum ("E97", before) and the Romeiser, Alpers & Wismann (1997) spectrum ("RAW97",
-  after), against Nathanson's table, the GIT and the NRL models (``tests/reference_models.py``);
+  spectrum ("E97", before), the Romeiser, Alpers & Wismann (1997) spectrum ("RAW97") and
+  the short-wave spectrum of Kudryavtsev et al. (2003, "K03", ``ocean/kudryavtsev.py``; its
+  breaking model is "KHCC03" below),
+  against Nathanson's table, the GIT and the NRL models (``tests/reference_models.py``);
 * the other candidates at X band with E97: the scale split (k/4 instead of k/3), the tilt
   average (untilted SPM + breaking), the breaking zones (two-scale alone);
 * C band (5.3 GHz), 20-50 deg incidence: VV against CMOD5.N and VV/HH against Mouche et
-  al. (2005), for both spectra;
+  al. (2005), for the three spectra;
 * the non-polarised part that the published X-band models imply (eq CP3,
   ``seaecho.scattering.copol``, with seaecho's two-scale Bragg ratio HH/VV) against
   KHCC03's ``q sigma_wb``: where the remaining VV/HH excess at 20-30 deg lies;
@@ -60,7 +62,7 @@ X_GHZ = 9.3
 C_GHZ = 5.3
 GRAZING_DEG = (5.0, 10.0, 20.0, 30.0)
 SEA_STATES = (2, 3, 4, 5)
-SPECTRA = (("E97", "elfouhaily"), ("RAW97", "romeiser"))
+SPECTRA = (("E97", "elfouhaily"), ("RAW97", "romeiser"), ("K03", "kudryavtsev"))
 
 
 def look_averaged(model: str, f_hz: float, u10: float, inc_deg, spectrum: str = "elfouhaily",
@@ -341,17 +343,20 @@ def band_rows() -> list[dict]:
 def band_markdown(rows: list[dict]) -> str:
     lines = [f"C band (5.3 GHz) and X band (9.3 GHz) at {BAND_INCIDENCE_DEG:.0f} deg incidence "
              f"({90.0 - BAND_INCIDENCE_DEG:.0f} deg grazing), VV [dB] (C / X, X - C):", "",
-             "| SS (U10) | CMOD5.N C | E97 | RAW97 | GIT | NRL |", "|---|---|---|---|---|---|"]
+             "| SS (U10) | CMOD5.N C | E97 | RAW97 | K03 | GIT | NRL |",
+             "|---|---|---|---|---|---|---|"]
     for r in rows:
         cells = [f"{r[f'{n} C VV']:.1f} / {r[f'{n} X VV']:.1f}, "
-                 f"{r[f'{n} X VV'] - r[f'{n} C VV']:+.1f}" for n in ("E97", "RAW97", "GIT", "NRL")]
+                 f"{r[f'{n} X VV'] - r[f'{n} C VV']:+.1f}"
+                 for n in ("E97", "RAW97", "K03", "GIT", "NRL")]
         lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | {r['CMOD5.N C VV']:.1f} | "
                      + " | ".join(cells) + " |")
-    lines += ["", "HH [dB] (C / X, X - C):", "", "| SS (U10) | E97 | RAW97 | GIT | NRL |",
-              "|---|---|---|---|---|"]
+    lines += ["", "HH [dB] (C / X, X - C):", "",
+              "| SS (U10) | E97 | RAW97 | K03 | GIT | NRL |", "|---|---|---|---|---|---|"]
     for r in rows:
         cells = [f"{r[f'{n} C HH']:.1f} / {r[f'{n} X HH']:.1f}, "
-                 f"{r[f'{n} X HH'] - r[f'{n} C HH']:+.1f}" for n in ("E97", "RAW97", "GIT", "NRL")]
+                 f"{r[f'{n} X HH'] - r[f'{n} C HH']:+.1f}"
+                 for n in ("E97", "RAW97", "K03", "GIT", "NRL")]
         lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | " + " | ".join(cells) + " |")
     return "\n".join(lines)
 
@@ -363,8 +368,9 @@ def _fmt(x: float) -> str:
 def markdown(xrows: list[dict], crows: list[dict]) -> str:
     lines = ["X band (9.3 GHz), two-scale + breaking, sigma0 [dB] (HH / VV, VV/HH):", "",
              "| SS (U10) | grazing | E97 HH / VV | E97 VV/HH | RAW97 HH / VV | RAW97 VV/HH "
+             "| K03 HH / VV | K03 VV/HH "
              "| Nathanson HH / VV | GIT HH / VV | NRL HH / VV | refs VV/HH |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in xrows:
         nat = (f"{r['Nathanson HH']:.0f} / {r['Nathanson VV']:.0f}" if "Nathanson HH" in r
                else "-")
@@ -374,16 +380,19 @@ def markdown(xrows: list[dict], crows: list[dict]) -> str:
             f"| {r['sea_state']} ({r['u10_m_s']}) | {r['grazing_deg']:.0f} "
             f"| {_fmt(r['E97 HH'])} / {_fmt(r['E97 VV'])} | {_fmt(r['E97 VV'] - r['E97 HH'])} "
             f"| {_fmt(r['RAW97 HH'])} / {_fmt(r['RAW97 VV'])} "
-            f"| {_fmt(r['RAW97 VV'] - r['RAW97 HH'])} | {nat} "
+            f"| {_fmt(r['RAW97 VV'] - r['RAW97 HH'])} "
+            f"| {_fmt(r['K03 HH'])} / {_fmt(r['K03 VV'])} "
+            f"| {_fmt(r['K03 VV'] - r['K03 HH'])} | {nat} "
             f"| {_fmt(r['GIT HH'])} / {_fmt(r['GIT VV'])} | {_fmt(r['NRL HH'])} / "
             f"{_fmt(r['NRL VV'])} | {min(prs):.1f}-{max(prs):.1f} |")
     lines += ["", "Candidates at X band with E97, change against E97 two-scale + breaking "
               "[dB] (HH / VV / VV/HH), ranges over sea states 2-5:", "",
-              "| grazing | cut k/4 | untilted SPM | no breaking | RAW97 spectrum |",
-              "|---|---|---|---|---|"]
+              "| grazing | cut k/4 | untilted SPM | no breaking | RAW97 spectrum "
+              "| K03 spectrum |",
+              "|---|---|---|---|---|---|"]
     for g in GRAZING_DEG:
         cells = []
-        for name in ("E97 cut k/4", "E97 untilted", "E97 no breaking", "RAW97"):
+        for name in ("E97 cut k/4", "E97 untilted", "E97 no breaking", "RAW97", "K03"):
             sub = [r for r in xrows if r["grazing_deg"] == g]
             dh = [r[f"{name} HH"] - r["E97 HH"] for r in sub]
             dv = [r[f"{name} VV"] - r["E97 VV"] for r in sub]
@@ -391,12 +400,14 @@ def markdown(xrows: list[dict], crows: list[dict]) -> str:
             cells.append(" / ".join(f"{min(d):+.1f}..{max(d):+.1f}" for d in (dh, dv, dp)))
         lines.append(f"| {g:.0f} | " + " | ".join(cells) + " |")
     lines += ["", "C band (5.3 GHz), two-scale + breaking, VV [dB] and VV/HH [dB]:", "",
-              "| U10 | incidence | E97 VV | RAW97 VV | CMOD5.N | E97 VV/HH | RAW97 VV/HH "
-              "| Mouche PR |", "|---|---|---|---|---|---|---|---|"]
+              "| U10 | incidence | E97 VV | RAW97 VV | K03 VV | CMOD5.N | E97 VV/HH "
+              "| RAW97 VV/HH | K03 VV/HH | Mouche PR |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
     for r in crows:
         lines.append(f"| {r['u10_m_s']:.0f} | {r['incidence_deg']:.0f} | {_fmt(r['E97 VV'])} "
-                     f"| {_fmt(r['RAW97 VV'])} | {_fmt(r['CMOD5.N VV'])} "
-                     f"| {_fmt(r['E97 PR'])} | {_fmt(r['RAW97 PR'])} "
+                     f"| {_fmt(r['RAW97 VV'])} | {_fmt(r['K03 VV'])} "
+                     f"| {_fmt(r['CMOD5.N VV'])} "
+                     f"| {_fmt(r['E97 PR'])} | {_fmt(r['RAW97 PR'])} | {_fmt(r['K03 PR'])} "
                      f"| {_fmt(r['Mouche PR'])} |")
     return "\n".join(lines)
 
