@@ -213,6 +213,71 @@ def span_summary(xrows: list[dict]) -> str:
     return "\n".join(lines)
 
 
+def sea_state_summary(xrows: list[dict]) -> str:
+    """Signed distances [dB] of HH, VV and VV/HH to the span of the published models per
+    spectrum and sea state, 5-30 deg grazing (+ above the span, - below, 0 inside)."""
+    lines = ["Signed distance to the span of the published models [dB] (+ above, - below, "
+             "0 inside), 5 / 10 / 20 / 30 deg grazing:", "",
+             "| spectrum | SS | HH | VV | VV/HH |", "|---|---|---|---|---|"]
+
+    def signed(value: float, refs: list[float]) -> float:
+        return value - max(refs) if value > max(refs) else min(value - min(refs), 0.0)
+
+    for name, _ in SPECTRA:
+        for ss in SEA_STATES:
+            cells = {"HH": [], "VV": [], "PR": []}
+            for r in (r for r in xrows if r["sea_state"] == ss):
+                refs = [n for n in ("Nathanson", "GIT", "NRL") if f"{n} HH" in r]
+                for pol in ("HH", "VV"):
+                    cells[pol].append(signed(r[f"{name} {pol}"], [r[f"{n} {pol}"] for n in refs]))
+                cells["PR"].append(signed(r[f"{name} VV"] - r[f"{name} HH"],
+                                          [r[f"{n} VV"] - r[f"{n} HH"] for n in refs]))
+            lines.append(f"| {name} | {ss} | " + " | ".join(
+                " / ".join(f"{x:+.1f}" if abs(x) >= 0.05 else "0" for x in v)
+                for v in cells.values()) + " |")
+    return "\n".join(lines)
+
+
+def saturation_markdown() -> str:
+    """Omnidirectional saturation ``k^3 S_1d`` [-] of each spectrum at the C-band (188 rad/m,
+    60 deg incidence) and X-band (338 and 384 rad/m, 30 and 10 deg grazing) Bragg
+    wavenumbers, and each spectrum's level against E97's [dB]."""
+    ks = (188.0, 338.0, 384.0)
+    lines = ["Saturation k^3 S_1d at the Bragg wavenumbers (188 rad/m: C band at 60 deg "
+             "incidence; 338 / 384 rad/m: X band at 30 / 10 deg grazing), [dB] against E97:",
+             "", "| U10 | spectrum | 188 rad/m | 338 rad/m | 384 rad/m | 338 / 188 |",
+             "|---|---|---|---|---|---|"]
+    for ss in SEA_STATES:
+        u10 = SEA_STATE_WIND[ss]
+        sat = {}
+        for name, sp in SPECTRA:
+            spec = DirectionalSpectrum(spectrum=sp, spreading="elfouhaily",
+                                       u19_5=float(u19_5_from_u10(u10)))
+            sat[name] = np.array(ks) ** 3 * spec.omni(ks)
+        for name, b in sat.items():
+            rel = "" if name == "E97" else [f" ({x:+.1f})" for x in db(b / sat["E97"])]
+            lines.append(f"| {u10} | {name} | " + " | ".join(
+                f"{x:.2e}{rel[i] if rel else ''}" for i, x in enumerate(b))
+                + f" | {b[1] / b[0]:.2f} |")
+    return "\n".join(lines)
+
+
+def cband_summary(crows: list[dict]) -> str:
+    """C band: VV minus CMOD5.N and VV/HH minus Mouche's ratio [dB] per spectrum, at 30-50
+    deg incidence (ranges over 5-15 m/s), and the points beyond the tests' 2 dB."""
+    lines = ["C band, 30-50 deg incidence, 5-15 m/s: VV - CMOD5.N and VV/HH - Mouche [dB]:",
+             "", "| spectrum | VV - CMOD5.N | VV/HH - Mouche | beyond 2 dB |", "|---|---|---|---|"]
+    for name, _ in SPECTRA:
+        sub = [r for r in crows if r["incidence_deg"] >= 30.0]
+        dv = [r[f"{name} VV"] - r["CMOD5.N VV"] for r in sub]
+        dp = [r[f"{name} PR"] - r["Mouche PR"] for r in sub]
+        miss = [f"{r['u10_m_s']:.0f} m/s {r['incidence_deg']:.0f} deg" for r, a, b
+                in zip(sub, dv, dp, strict=True) if abs(a) > 2.0 or abs(b) > 2.0]
+        lines.append(f"| {name} | {min(dv):+.1f}..{max(dv):+.1f} | {min(dp):+.1f}..{max(dp):+.1f}"
+                     f" | {', '.join(miss) or 'none'} |")
+    return "\n".join(lines)
+
+
 def np_rows(ratio_spectrum: str = "RAW97") -> list[dict]:
     """Non-polarised part [dB] implied by each published model (eq CP3 with seaecho's
     look-averaged two-scale Bragg ratio HH/VV of ``ratio_spectrum``, RAW97 by default)
@@ -451,6 +516,12 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
     print(markdown(xrows, crows))
     print()
     print(span_summary(xrows))
+    print()
+    print(sea_state_summary(xrows))
+    print()
+    print(cband_summary(crows))
+    print()
+    print(saturation_markdown())
     print()
     nrows = np_rows()
     print(np_markdown(nrows))
