@@ -24,7 +24,10 @@ water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py`
 * C band against X band at 58 deg incidence (CMOD5.N's edge): how each reference and
   each spectrum moves from one band to the other.
 * the X-band table of the validation section (E97 two-scale and two-scale + breaking
-  against the published models, sea states 2-5, 3-30 deg grazing).
+  against the published models, sea states 2-5, 3-30 deg grazing);
+* per spectrum: the signed distances to the published X-band models per sea state, the
+  C-band distances to CMOD5.N and Mouche's ratio, the saturation at the C- and X-band
+  Bragg wavenumbers, and the total mean square slope against Cox & Munk's fit.
 
 About 5 s of CPU; ``--simulate`` adds the facet sums of one simulated surface (the
 simulation's own sigma0, ``examples/sigma0_facets_vs_grazing.py``) at sea state 3 for both
@@ -259,6 +262,27 @@ def saturation_markdown() -> str:
             lines.append(f"| {u10} | {name} | " + " | ".join(
                 f"{x:.2e}{rel[i] if rel else ''}" for i, x in enumerate(b))
                 + f" | {b[1] / b[0]:.2f} |")
+    return "\n".join(lines)
+
+
+def mss_markdown() -> str:
+    """Total mean square slope ``int k^3 S_1d d ln k`` of each spectrum (1e-3 to 3e4 rad/m)
+    against Cox & Munk's (1954) clean-surface fit 0.003 + 5.12e-3 U12.5 [-]."""
+    from seaecho.ocean.wind import u12_5_from_u19_5
+
+    k = np.logspace(-3.0, 4.5, 12000)
+    lines = ["Mean square slope against Cox & Munk's clean-surface fit (ratio):", "",
+             "| U10 | Cox & Munk | " + " | ".join(n for n, _ in SPECTRA) + " |",
+             "|---|---|" + "---|" * len(SPECTRA)]
+    for u10 in (4.5, 7.0, 10.0, 12.5, 15.0, 20.0):
+        u19_5 = float(u19_5_from_u10(u10))
+        cox_munk = 0.003 + 5.12e-3 * float(u12_5_from_u19_5(u19_5))
+        cells = []
+        for _, sp in SPECTRA:
+            spec = DirectionalSpectrum(spectrum=sp, spreading="elfouhaily", u19_5=u19_5)
+            mss = float(np.trapezoid(k**3 * spec.omni(k), np.log(k)))
+            cells.append(f"{mss:.3f} ({mss / cox_munk:.2f})")
+        lines.append(f"| {u10} | {cox_munk:.3f} | " + " | ".join(cells) + " |")
     return "\n".join(lines)
 
 
@@ -522,6 +546,8 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
     print(cband_summary(crows))
     print()
     print(saturation_markdown())
+    print()
+    print(mss_markdown())
     print()
     nrows = np_rows()
     print(np_markdown(nrows))

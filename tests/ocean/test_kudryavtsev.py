@@ -21,6 +21,7 @@ from seaecho.ocean.spectra import (
     DirectionalSpectrum,
     elfouhaily_long_wave,
     elfouhaily_parameters,
+    kudryavtsev,
 )
 from seaecho.ocean.wind import u12_5_from_u19_5, u19_5_from_u10
 
@@ -28,11 +29,11 @@ from seaecho.ocean.wind import u12_5_from_u19_5, u19_5_from_u10
 def _saturation(k, u10):
     """Omnidirectional saturation B = k^3 S_1d [-] of the KHCC03 spectrum at U10 [m/s]."""
     k = np.asarray(k, dtype=float)
-    return k**3 * kud.kudryavtsev(k, float(u19_5_from_u10(u10)))
+    return k**3 * kudryavtsev(k, float(u19_5_from_u10(u10)))
 
 
 def test_registered_by_name():
-    assert OMNI_SPECTRA["kudryavtsev"] is kud.kudryavtsev
+    assert OMNI_SPECTRA["kudryavtsev"] is kudryavtsev
     DirectionalSpectrum("kudryavtsev", "elfouhaily", u19_5=8.0)  # accepted by name
 
 
@@ -112,7 +113,7 @@ def test_mean_square_slope_of_cox_and_munk(u10):
     -16 to +3 %; Elfouhaily's: -5 to +13 %)."""
     u19_5 = float(u19_5_from_u10(u10))
     k = np.logspace(-3, 4.5, 12000)
-    mss = np.trapezoid(k**3 * kud.kudryavtsev(k, u19_5), np.log(k))
+    mss = np.trapezoid(k**3 * kudryavtsev(k, u19_5), np.log(k))
     cox_munk = 0.003 + 5.12e-3 * float(u12_5_from_u19_5(u19_5))
     assert mss == pytest.approx(cox_munk, rel=0.2)
 
@@ -124,7 +125,7 @@ def test_long_waves_are_elfouhaily_below_the_peak():
     p = elfouhaily_parameters(u19_5)
     k = np.array([0.3, 0.6, 1.0]) * p.k_p
     b_l, _ = elfouhaily_long_wave(k, p)
-    np.testing.assert_allclose(k**3 * kud.kudryavtsev(k, u19_5), b_l, rtol=1e-12)
+    np.testing.assert_allclose(k**3 * kudryavtsev(k, u19_5), b_l, rtol=1e-12)
 
 
 def test_table_against_direct_quadrature():
@@ -152,7 +153,7 @@ def test_downwind_against_an_independent_implementation(u10, k, expected):
 
 
 def test_zero_and_negative_wavenumbers_give_zero():
-    assert np.all(kud.kudryavtsev(np.array([-1.0, 0.0]), 10.0) == 0.0)
+    assert np.all(kudryavtsev(np.array([-1.0, 0.0]), 10.0) == 0.0)
 
 
 def test_scene_selects_it_with_elfouhaily_fetch_law():
@@ -168,7 +169,7 @@ def test_scene_selects_it_with_elfouhaily_fetch_law():
 
     spec = sea_spectrum(scene(1e5))
     assert spec.spectrum == "kudryavtsev"
-    np.testing.assert_allclose(spec.omni([384.0]), kud.kudryavtsev(np.array([384.0]), 8.0,
+    np.testing.assert_allclose(spec.omni([384.0]), kudryavtsev(np.array([384.0]), 8.0,
                                                                     1e5))
     with pytest.raises(SceneError, match="fetch_m"):
         sea_spectrum(scene(10.0))

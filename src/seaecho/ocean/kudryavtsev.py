@@ -72,7 +72,8 @@ long-wave cut-off (KHCC03 eq 30):
     F_c = \\exp\\left[-\\frac{\\Omega_c}{\\sqrt{10}}
     \\left(\\sqrt{k/k_p} - 1\\right)_+\\right]                                   (KU10)
 
-(``B_l`` and ``Omega_c``, ``k_p`` from :func:`seaecho.ocean.spectra.elfouhaily_parameters`).
+(``B_l`` and ``Omega_c``, ``k_p`` from :func:`seaecho.ocean.spectra.elfouhaily_parameters`;
+the registered spectrum, :func:`seaecho.ocean.spectra.kudryavtsev`, puts them together).
 ``u_*`` is Wu's (1982) law (``"wu-1982"`` of :mod:`seaecho.ocean.wind`, the drag law of
 KHCC03 and K05), ``c`` and ``omega`` the dispersion relation with capillarity
 (:mod:`seaecho.ocean.dispersion`), ``k_gamma = sqrt(g / tau)`` its minimum phase speed
@@ -83,6 +84,7 @@ Symbols -> names: B_sw -> :func:`short_wave_saturation`, beta -> :func:`wind_gro
 beta_nu -> :func:`net_growth_rate`, n -> :func:`dissipation_exponent`, f ->
 :func:`transition_function`, alpha -> :func:`saturation_constant`, phi_pc ->
 :func:`parasitic_filter`, ``int B_sw dphi`` -> :func:`short_wave_omni_saturation`,
+``k^3 S_1d`` -> :func:`total_saturation`,
 a -> :data:`A_SATURATION`, C_beta_mean -> :data:`MEAN_C_BETA`, n_g -> :data:`N_GRAVITY`.
 
 **Sources read.** The papers' text was not readable here. The equations are those quoted,
@@ -148,9 +150,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..constants import NU_SEA_WATER, RHO_AIR, RHO_SEA_WATER, VON_KARMAN
 from .dispersion import CAPILLARY_WAVENUMBER, angular_frequency, phase_speed
-from .registry import K_FLOOR, register_spectrum
-from .spectra import elfouhaily_long_wave, elfouhaily_parameters
-from .wind import charnock_roughness_length, friction_velocity, u10_from_u19_5
+from .registry import K_FLOOR
+from .wind import charnock_roughness_length, friction_velocity
 
 #: Saturation level a [-] of the equilibrium range (KHCC03 eq 26, eq KU7).
 A_SATURATION = 2.5e-3
@@ -336,43 +337,28 @@ def short_wave_omni_saturation(k: ArrayLike, u10: float) -> NDArray[np.float64]:
     return np.interp(lk, np.log(_K_TABLE), table, left=0.0, right=0.0)
 
 
-@register_spectrum("kudryavtsev")
-def kudryavtsev(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArray[np.float64]:
-    """KHCC03 omnidirectional spectrum: Elfouhaily's long waves and the short waves of the
-    energy balance (eq KU10).
+def total_saturation(
+    b_long: ArrayLike, cutoff: ArrayLike, b_short: ArrayLike
+) -> NDArray[np.float64]:
+    """Omnidirectional saturation ``k^3 S_1d`` of the whole spectrum [-] (KHCC03 eq 30, KU10).
+
+    ``B_l + (1 - F_c) int B_sw dphi``: the long waves' curvature ``B_l`` and their cut-off
+    ``F_c`` (Elfouhaily et al.'s, :func:`seaecho.ocean.spectra.elfouhaily_long_wave`;
+    ``F_c`` is taken as 1 below the peak, where it exceeds 1) and the short waves'
+    omnidirectional saturation (:func:`short_wave_omni_saturation`). The registered
+    spectrum ``"kudryavtsev"`` is :func:`seaecho.ocean.spectra.kudryavtsev`.
 
     Parameters
     ----------
-    k : array_like
-        Wavenumber [rad/m] (values <= 0 give 0).
-    u19_5 : float
-        Wind speed at 19.5 m [m/s] (U10 from :func:`seaecho.ocean.wind.u10_from_u19_5`).
-    fetch : float or None
-        Fetch [m] of the long waves (None: fully developed, as Elfouhaily et al.).
-
-    Returns
-    -------
-    ndarray
-        S_1d [m^3]; the saturation ``k^3 S_1d`` at the X-band Bragg wavenumber 384 rad/m
-        is 1.4e-3 at U10 = 7 m/s and 6.7e-3 at 12.5 m/s (Elfouhaily et al.: 6.8e-3 and
-        1.7e-2; Romeiser et al.: 1.6e-3 and 3.2e-3).
-
-    References
-    ----------
-    KHCC03 eqs 13-30; Elfouhaily et al. (1997) for the long waves.
+    b_long, cutoff, b_short : array_like
+        ``B_l`` [-], ``F_c`` [-] and ``int B_sw dphi`` [-] at the same wavenumbers.
     """
-    p = elfouhaily_parameters(u19_5, fetch)
-    u10 = float(u10_from_u19_5(u19_5))
-    k = np.asarray(k, dtype=np.float64)
-    pos = k > K_FLOOR
-    ks = np.where(pos, k, 1.0)
-    b_l, cutoff = elfouhaily_long_wave(ks, p)
-    b = b_l + (1.0 - np.minimum(cutoff, 1.0)) * short_wave_omni_saturation(ks, u10)  # KU10
-    return np.where(pos, b / ks**3, 0.0)
+    weight = 1.0 - np.minimum(np.asarray(cutoff, dtype=float), 1.0)
+    return np.asarray(b_long, dtype=float) + weight * np.asarray(b_short, dtype=float)  # KU10
 
 
 __all__ = ["A_SATURATION", "FRICTION_LAW", "K_PC_HIGH", "K_PC_LOW", "K_TRANSITION",
            "MEAN_C_BETA", "N_GRAVITY", "dissipation_exponent", "equilibrium_saturation",
-           "kudryavtsev", "net_growth_rate", "parasitic_filter", "saturation_constant",
-           "short_wave_omni_saturation", "short_wave_saturation", "transition_function",
-           "wind_growth_rate"]
+           "net_growth_rate", "parasitic_filter", "saturation_constant",
+           "short_wave_omni_saturation", "short_wave_saturation", "total_saturation",
+           "transition_function", "wind_growth_rate"]

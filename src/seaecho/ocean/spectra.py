@@ -23,6 +23,8 @@ Omnidirectional spectra (registry :data:`OMNI_SPECTRA`, selectable by name):
   deep-water dispersion relation.
 - ``"elfouhaily"``: the unified spectrum of Elfouhaily et al. (1997), long and short waves
   including the gravity-capillary range that Bragg scattering sees.
+- ``"kudryavtsev"``: Elfouhaily's long waves with the short waves of Kudryavtsev et al.
+  (2003) from the energy balance (:mod:`seaecho.ocean.kudryavtsev`).
 
 Spreading functions (registry :data:`SPREADINGS`): ``"longuet-higgins"`` cos^2s(psi/2)
 (paper eq 6, normalised to unit integral: N(1) = 1/pi), and ``"elfouhaily"`` (Elfouhaily
@@ -64,6 +66,7 @@ from ..warnings import ValidityWarning
 # The spectra defined in their own modules register themselves on import.
 from . import romeiser as _romeiser  # noqa: F401  (Romeiser et al. 1997)
 from .dispersion import CAPILLARY_WAVENUMBER, angular_frequency, phase_speed
+from .kudryavtsev import short_wave_omni_saturation, total_saturation
 from .registry import (
     K_FLOOR,
     OMNI_SPECTRA,
@@ -340,6 +343,48 @@ def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArra
 
 
 # --------------------------------------------------------------------------------------
+# Kudryavtsev et al. (2003)
+# --------------------------------------------------------------------------------------
+
+
+@register_spectrum("kudryavtsev")
+def kudryavtsev(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArray[np.float64]:
+    """Kudryavtsev et al. (2003) omnidirectional spectrum: Elfouhaily's long waves and the
+    short waves of the energy balance (:mod:`seaecho.ocean.kudryavtsev`, eqs KU1-KU10).
+
+    .. math::
+
+        S_{1d}(k) = k^{-3}\\left[B_l + (1 - F_c)\\int B_{sw}\\, d\\varphi\\right]
+
+    Parameters
+    ----------
+    k : array_like
+        Wavenumber [rad/m] (values <= 0 give 0).
+    u19_5 : float
+        Wind speed at 19.5 m [m/s] (U10 from :func:`seaecho.ocean.wind.u10_from_u19_5`).
+    fetch : float or None
+        Fetch [m] of the long waves (None: fully developed, Omega_c = 0.84).
+
+    Returns
+    -------
+    ndarray
+        S_1d [m^3]; the saturation ``k^3 S_1d`` at the X-band Bragg wavenumber 384 rad/m
+        is 1.4e-3 at U10 = 7 m/s and 6.7e-3 at 12.5 m/s (Elfouhaily et al.: 6.8e-3 and
+        1.7e-2; Romeiser et al.: 1.6e-3 and 3.2e-3).
+
+    References
+    ----------
+    Kudryavtsev, Hauser, Caudal & Chapron (2003), eqs 13-30 (KU1-KU10); Elfouhaily et al.
+    (1997) for the long waves.
+    """
+    p = elfouhaily_parameters(u19_5, fetch)
+    k, pos, ks = _positive(k)
+    b_l, cutoff = elfouhaily_long_wave(ks, p)
+    b = total_saturation(b_l, cutoff, short_wave_omni_saturation(ks, p.u10))  # Eq. KU10
+    return np.where(pos, b / ks**3, 0.0)
+
+
+# --------------------------------------------------------------------------------------
 # Spreading functions
 # --------------------------------------------------------------------------------------
 
@@ -506,10 +551,6 @@ class DirectionalSpectrum:
         return float(k[np.argmax(self.omni(k))])
 
 
-# Kudryavtsev et al. (2003) take Elfouhaily's long waves (elfouhaily_long_wave): their
-# module imports this one, so it registers itself from here, once that is defined.
-from . import kudryavtsev as _kudryavtsev  # noqa: E402, F401
-
 __all__ = [
     "OMNI_SPECTRA",
     "SPREADINGS",
@@ -521,6 +562,7 @@ __all__ = [
     "elfouhaily_spreading",
     "jonswap",
     "jonswap_parameters",
+    "kudryavtsev",
     "longuet_higgins",
     "longuet_higgins_normalisation",
     "pierson_moskowitz",
