@@ -118,14 +118,33 @@ def test_mean_square_slope_of_cox_and_munk(u10):
     assert mss == pytest.approx(cox_munk, rel=0.2)
 
 
-def test_long_waves_are_elfouhaily_below_the_peak():
-    """KHCC03 eq 30: ``B = B_l + (1 - F_c) int B_sw dphi``; below the peak the cut-off is 1
-    and the spectrum is Elfouhaily's long-wave curvature alone."""
+@pytest.mark.parametrize("fetch", [None, 2e3])
+def test_long_waves_are_elfouhaily_below_the_peak(fetch):
+    """KHCC03 eq 30: ``B = B_l + (1 - F_c) int B_sw dphi``; below the peak the cut-off is
+    taken as 1 and the spectrum is Elfouhaily's long-wave curvature alone, also for a
+    young sea (2 km fetch at U19.5 = 10 m/s, Omega_c = 3.4), whose waves below the peak
+    are slower than the wind and have a short-wave saturation of their own."""
     u19_5 = 10.0
-    p = elfouhaily_parameters(u19_5)
-    k = np.array([0.3, 0.6, 1.0]) * p.k_p
+    p = elfouhaily_parameters(u19_5, fetch)
+    k = np.array([0.3, 0.6, 0.9]) * p.k_p
+    if fetch is not None:
+        assert p.omega_c == pytest.approx(3.4, abs=0.1)
+        assert np.all(kud.short_wave_omni_saturation(k[1:], p.u10) > 0.0)
     b_l, _ = elfouhaily_long_wave(k, p)
-    np.testing.assert_allclose(k**3 * kudryavtsev(k, u19_5), b_l, rtol=1e-12)
+    np.testing.assert_allclose(k**3 * kudryavtsev(k, u19_5, fetch), b_l, rtol=1e-12)
+
+
+def test_viscous_loss_of_a_free_surface_wave():
+    """Eq KU2: waves across the wind (no wind input) lose energy at the viscous rate
+    ``4 nu k^2`` of a free surface wave (Lamb 1932, art. 348), ``beta_nu = -4 nu k^2 /
+    omega``: at 1000 rad/m (6.3 mm, nu = 1.05e-6 m^2/s) 4.2 / omega."""
+    from seaecho.ocean.dispersion import angular_frequency
+
+    k = np.array([100.0, 1000.0])
+    beta_nu = kud.net_growth_rate(k, np.pi / 2, 10.0)
+    np.testing.assert_allclose(beta_nu, -4.0 * 1.05e-6 * k**2 / angular_frequency(k),
+                               rtol=1e-9, atol=1e-15)
+    assert -beta_nu[1] * float(angular_frequency(1000.0)) == pytest.approx(4.2, rel=1e-9)
 
 
 def test_table_against_direct_quadrature():
