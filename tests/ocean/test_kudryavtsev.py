@@ -2,13 +2,17 @@
 
 The papers' figures could not be read from here. The spectrum is checked against (i) the
 closed forms and limits the equations state: the equilibrium level ``a`` where the growth
-rate equals its mean (KHCC03 eq 26), the dissipation exponent from ``n_g = 5`` to 1 and the
+rate equals its mean (KHCC03 eq 26), the growth-rate constant against Plant's (1982)
+measurements, the dissipation exponent from ``n_g = 5`` to 1 and the
 wind exponent ``2 / n`` it sets, the exact solution of the energy balance where ``n = 1``
 (eq 17), Elfouhaily's long waves below the peak (eq 30); (ii) what KHCC03 tuned ``a`` for:
 the mean square slope of Cox & Munk's (1954) clean surface; (iii) as a guard only, an
 independent implementation of KHCC03 (the ocean emissivity model of Dinnat et al., Fortran
 ``spectrum_Kudryavtsev.f``, with its tabulated filters: values computed from its
 expressions, downwind).
+
+Plant, W. J. (1982). A relationship between wind stress and wave slope. *J. Geophys. Res.*
+87(C3), 1961-1967.
 """
 
 import numpy as np
@@ -65,6 +69,21 @@ def test_wind_exponent_is_two_over_n(k):
     beta_nu = [float(kud.net_growth_rate(k, 0.0, x)) for x in u]
     m_beta = np.log(b[1] / b[0]) / np.log(beta_nu[1] / beta_nu[0])
     assert 2.0 * m_beta == pytest.approx(2.0 / float(kud.dissipation_exponent(k)), rel=0.01)
+
+
+@pytest.mark.parametrize("u10", [5.0, 7.0, 10.0])
+def test_growth_rate_constant_within_plants(u10):
+    """KHCC03 eq 19 against Plant's (1982) measured growth rate of gravity waves,
+    ``beta = (0.04 +- 0.02) (u*/c)^2 cos phi``: at 10-50 rad/m and 5-10 m/s ``C_beta`` is
+    0.022-0.027 (it falls for shorter waves and stronger winds, where the wave sits deeper
+    in the roughness layer: 0.014 at 400 rad/m and 10 m/s)."""
+    from seaecho.ocean.dispersion import phase_speed
+    from seaecho.ocean.wind import friction_velocity
+
+    k = np.array([10.0, 30.0, 50.0])
+    us = float(friction_velocity(kud.FRICTION_LAW, u10))
+    c_beta = kud.wind_growth_rate(k, 0.0, u10) / (us / phase_speed(k)) ** 2
+    assert np.all((c_beta > 0.02) & (c_beta < 0.06))
 
 
 def test_balance_solved_exactly_where_n_is_one():
