@@ -27,7 +27,10 @@ water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py`
   against the published models, sea states 2-5, 3-30 deg grazing);
 * per spectrum: the signed distances to the published X-band models per sea state, the
   C-band distances to CMOD5.N and Mouche's ratio, the saturation at the C- and X-band
-  Bragg wavenumbers, and the total mean square slope against Cox & Munk's fit.
+  Bragg wavenumbers, and the total mean square slope against Cox & Munk's fit; in these
+  summaries also "K03 gauss", K03 with the angular form of its growth rate that Dinnat et
+  al.'s code gives KHCC03 (``exp(-psi^2)`` times the downwind net rate), to show what
+  that choice of the sources moves.
 
 About 5 s of CPU; ``--simulate`` adds the facet sums of one simulated surface (the
 simulation's own sigma0, ``examples/sigma0_facets_vs_grazing.py``) at sea state 3 for both
@@ -39,6 +42,7 @@ from __future__ import annotations
 import csv
 import sys
 import warnings
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -53,8 +57,9 @@ from reference_models import (  # noqa: E402
     mouche_pr,
     nrl_sigma0,
 )
+from seaecho.ocean.registry import register_spectrum  # noqa: E402
 from seaecho.ocean.seawater import sea_water_permittivity  # noqa: E402
-from seaecho.ocean.spectra import DirectionalSpectrum  # noqa: E402
+from seaecho.ocean.spectra import DirectionalSpectrum, kudryavtsev  # noqa: E402
 from seaecho.ocean.wind import u19_5_from_u10  # noqa: E402
 from seaecho.scattering.copol import non_polarised_component  # noqa: E402
 from seaecho.scattering.models import sea_sigma  # noqa: E402
@@ -66,6 +71,11 @@ C_GHZ = 5.3
 GRAZING_DEG = (5.0, 10.0, 20.0, 30.0)
 SEA_STATES = (2, 3, 4, 5)
 SPECTRA = (("E97", "elfouhaily"), ("RAW97", "romeiser"), ("K03", "kudryavtsev"))
+#: Sensitivity of K03 to the angular form of its growth rate, in the summaries only:
+#: ``exp(-psi^2)`` times the downwind net rate (Dinnat et al.'s KHCC03 eq 20), registered
+#: here, for this script, under a name of its own.
+VARIANTS = (("K03 gauss", "kudryavtsev-gaussian"),)
+register_spectrum(VARIANTS[0][1])(partial(kudryavtsev, angular="gaussian"))
 
 
 def look_averaged(model: str, f_hz: float, u10: float, inc_deg, spectrum: str = "elfouhaily",
@@ -106,7 +116,7 @@ def xband_rows() -> list[dict]:
         u10 = SEA_STATE_WIND[ss]
         inc = 90.0 - np.array(GRAZING_DEG)
         runs = {name: db(look_averaged("two-scale+breaking", X_GHZ * 1e9, u10, inc, sp))
-                for name, sp in SPECTRA}
+                for name, sp in SPECTRA + VARIANTS}
         runs["E97 cut k/4"] = db(look_averaged("two-scale+breaking", X_GHZ * 1e9, u10, inc,
                                                cut_ratio=0.25))
         q, wb = _breaking_share(u10, inc)
@@ -173,7 +183,7 @@ def cband_rows() -> list[dict]:
         cmod = db(np.mean([cmod5n(u10, p, inc) for p in LOOKS_DEG], axis=0))
         pr = db(np.mean([mouche_pr(inc, p) for p in LOOKS_DEG], axis=0))
         runs = {name: look_averaged("two-scale+breaking", C_GHZ * 1e9, u10, inc, sp)
-                for name, sp in SPECTRA}
+                for name, sp in SPECTRA + VARIANTS}
         for j, t in enumerate(inc):
             row = {"u10_m_s": u10, "incidence_deg": float(t), "CMOD5.N VV": round(cmod[j], 2),
                    "Mouche PR": round(pr[j], 2)}
@@ -195,7 +205,7 @@ def span_summary(xrows: list[dict]) -> str:
     lines = ["Distance to the span of the published models [dB] (0 = inside), sea states 2-5:",
              "", "| spectrum | grazing | HH | VV | VV/HH | VV/HH > 2 dB at |",
              "|---|---|---|---|---|---|"]
-    for name, _ in SPECTRA:
+    for name, _ in SPECTRA + VARIANTS:
         for lo, hi in ((5.0, 10.0), (20.0, 30.0)):
             d = {"HH": [], "VV": [], "PR": []}
             miss = []
@@ -226,7 +236,7 @@ def sea_state_summary(xrows: list[dict]) -> str:
     def signed(value: float, refs: list[float]) -> float:
         return value - max(refs) if value > max(refs) else min(value - min(refs), 0.0)
 
-    for name, _ in SPECTRA:
+    for name, _ in SPECTRA + VARIANTS:
         for ss in SEA_STATES:
             cells = {"HH": [], "VV": [], "PR": []}
             for r in (r for r in xrows if r["sea_state"] == ss):
@@ -253,7 +263,7 @@ def saturation_markdown() -> str:
     for ss in SEA_STATES:
         u10 = SEA_STATE_WIND[ss]
         sat = {}
-        for name, sp in SPECTRA:
+        for name, sp in SPECTRA + VARIANTS:
             spec = DirectionalSpectrum(spectrum=sp, spreading="elfouhaily",
                                        u19_5=float(u19_5_from_u10(u10)))
             sat[name] = np.array(ks) ** 3 * spec.omni(ks)
@@ -272,13 +282,13 @@ def mss_markdown() -> str:
 
     k = np.logspace(-3.0, 4.5, 12000)
     lines = ["Mean square slope against Cox & Munk's clean-surface fit (ratio):", "",
-             "| U10 | Cox & Munk | " + " | ".join(n for n, _ in SPECTRA) + " |",
-             "|---|---|" + "---|" * len(SPECTRA)]
+             "| U10 | Cox & Munk | " + " | ".join(n for n, _ in SPECTRA + VARIANTS) + " |",
+             "|---|---|" + "---|" * len(SPECTRA + VARIANTS)]
     for u10 in (4.5, 7.0, 10.0, 12.5, 15.0, 20.0):
         u19_5 = float(u19_5_from_u10(u10))
         cox_munk = 0.003 + 5.12e-3 * float(u12_5_from_u19_5(u19_5))
         cells = []
-        for _, sp in SPECTRA:
+        for _, sp in SPECTRA + VARIANTS:
             spec = DirectionalSpectrum(spectrum=sp, spreading="elfouhaily", u19_5=u19_5)
             mss = float(np.trapezoid(k**3 * spec.omni(k), np.log(k)))
             cells.append(f"{mss:.3f} ({mss / cox_munk:.2f})")
@@ -291,7 +301,7 @@ def cband_summary(crows: list[dict]) -> str:
     deg incidence (ranges over 5-15 m/s), and the points beyond the tests' 2 dB."""
     lines = ["C band, 30-50 deg incidence, 5-15 m/s: VV - CMOD5.N and VV/HH - Mouche [dB]:",
              "", "| spectrum | VV - CMOD5.N | VV/HH - Mouche | beyond 2 dB |", "|---|---|---|---|"]
-    for name, _ in SPECTRA:
+    for name, _ in SPECTRA + VARIANTS:
         sub = [r for r in crows if r["incidence_deg"] >= 30.0]
         dv = [r[f"{name} VV"] - r["CMOD5.N VV"] for r in sub]
         dp = [r[f"{name} PR"] - r["Mouche PR"] for r in sub]

@@ -166,14 +166,15 @@ def test_viscous_loss_of_a_free_surface_wave():
     assert -beta_nu[1] * float(angular_frequency(1000.0)) == pytest.approx(4.2, rel=1e-9)
 
 
-def test_table_against_direct_quadrature():
+@pytest.mark.parametrize("angular", kud.ANGULAR_FORMS)
+def test_table_against_direct_quadrature(angular):
     """The tabulated ``int B_sw dphi`` (interpolated in ln k) against an adaptive
     quadrature at wavenumbers between the table's nodes."""
     for k in (37.3, 188.0, 384.0, 777.0):
-        direct, _ = quad(lambda p, k=k: float(kud.short_wave_saturation(k, p, 10.0)), -np.pi / 2,
-                         np.pi / 2, limit=200, points=[0.0])
-        assert float(kud.short_wave_omni_saturation(k, 10.0)) == pytest.approx(direct,
-                                                                               rel=2e-3)
+        direct, _ = quad(lambda p, k=k: float(kud.short_wave_saturation(k, p, 10.0, angular)),
+                         -np.pi, np.pi, limit=200, points=[-np.pi / 2, 0.0, np.pi / 2])
+        assert float(kud.short_wave_omni_saturation(k, 10.0, angular)) == pytest.approx(
+            direct, rel=2e-3)
 
 
 # Downwind B_sw(k, 0) from Dinnat et al.'s spectrum_Kudryavtsev.f (KHCC03 eqs 14-26, its
@@ -188,6 +189,21 @@ def test_downwind_against_an_independent_implementation(u10, k, expected):
     are tables whose f is 0.5 at 0.41 k_gamma, ours at 0.25 k_gamma, and its water
     constants differ slightly: rho_w / rho_a = 1000 / 1.3, nu = 1e-6, tau = 74e-6)."""
     assert float(kud.short_wave_saturation(k, 0.0, u10)) == pytest.approx(expected, rel=0.1)
+
+
+# B_sw(k, 45 deg) from the same code, whose growth rate is exp(-phi^2) times the downwind
+# net rate (its KHCC03 eq 20): (U10, k, B).
+DINNAT_45_DEG = [(10.0, 300.0, 1.769e-3), (10.0, 384.0, 1.710e-3), (15.0, 384.0, 3.617e-3)]
+
+
+@pytest.mark.parametrize(("u10", "k", "expected"), DINNAT_45_DEG)
+def test_gaussian_angular_form_against_an_independent_implementation(u10, k, expected):
+    """Guard only: ``angular="gaussian"`` within 10 % of Dinnat et al.'s code at 45 deg
+    from the wind (measured -8 to -2 %); K05's ``cos phi |cos phi|`` is 18-34 % lower there."""
+    phi = np.pi / 4
+    assert float(kud.short_wave_saturation(k, phi, u10, "gaussian")) == pytest.approx(
+        expected, rel=0.1)
+    assert float(kud.short_wave_saturation(k, phi, u10)) < 0.85 * expected
 
 
 def test_zero_and_negative_wavenumbers_give_zero():

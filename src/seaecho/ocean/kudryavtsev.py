@@ -101,9 +101,11 @@ gives eqs KU5-KU7 and KU9 in the form above. No code was copied.
 **Where the sources differ** (what was chosen and what it does, docs/ocean.md):
 
 * The angular form of ``beta``: ``cos phi |cos phi|`` (K05 eq 17, stereoid, and the
-  breaking model of seaecho) or ``exp(-phi^2)`` (Dinnat's transcription of KHCC03 eq 20).
-  The first is taken; the second gives a 0.5 dB larger omnidirectional saturation where
-  ``n = 1``.
+  breaking model of seaecho) or ``exp(-phi^2)`` times the downwind net rate, viscous loss
+  included (Dinnat's transcription of KHCC03 eq 20). The first is the spectrum's; the
+  second is available as ``angular="gaussian"`` to measure the difference (a larger
+  omnidirectional saturation, most where the viscous loss nearly cancels the wind input:
+  ``examples/xband_spectrum_comparison.py``).
 * The tuning functions: Dinnat's code reads ``f`` and ``phi_pc`` from tables, not from
   formulas, whose ``f`` is 0.5 at 0.41 ``k_gamma`` (not 0.25) and whose ``phi_pc`` falls
   at 10 ``k_gamma`` (not 4). The analytic forms KU6 and KU9 are those of the open text
@@ -171,9 +173,15 @@ FRICTION_LAW = "wu-1982"
 #: Wavenumber table of the omnidirectional short-wave saturation [rad/m]: 200 points per
 #: decade from 1e-3 to 1e5 rad/m (linear interpolation in ln k; 0 outside).
 _K_TABLE = np.logspace(-3.0, 5.0, 1601)
-#: Directions of the quadrature over the downwind half-plane [rad] (trapezoid rule; the
-#: growth rate KU3 is negative upwind, where B_sw is 0).
-_PHI_TABLE = np.linspace(0.0, 0.5 * np.pi, 257)
+#: Directions of the quadrature over half the circle [rad] (trapezoid rule; B_sw is even
+#: in phi).
+_PHI_TABLE = np.linspace(0.0, np.pi, 513)
+#: Angular forms of the net growth rate: ``"cos"``, ``beta = beta(k, 0) cos phi |cos phi|``
+#: less the viscous loss (K05 eq 17, the form seaecho's breaking model uses, the
+#: default); ``"gaussian"``, ``exp(-phi^2)`` times the downwind net rate ``beta(k, 0) - 4 nu
+#: k^2 / omega`` (KHCC03 eq 20 as Dinnat et al.'s code has it, which also scales the viscous
+#: loss).
+ANGULAR_FORMS = ("cos", "gaussian")
 
 
 def wind_growth_rate(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray[np.float64]:
@@ -231,12 +239,15 @@ def saturation_constant(k: ArrayLike) -> NDArray[np.float64]:
     return np.exp(np.log(A_SATURATION) - np.log(MEAN_C_BETA) / n)  # Eq. KU7
 
 
-def net_growth_rate(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray[np.float64]:
+def net_growth_rate(
+    k: ArrayLike, phi: ArrayLike, u10: float, angular: str = "cos"
+) -> NDArray[np.float64]:
     """``beta_nu = beta - 4 nu k^2 / omega`` [-]: wind growth less viscous loss (eq KU2).
 
     The viscous damping rate of a free surface wave, ``4 nu k^2`` (Lamb 1932, art. 348),
     over ``omega`` of the dispersion relation; ``nu`` the kinematic viscosity of sea water
-    (KHCC03, after their eq 13).
+    (KHCC03, after their eq 13). ``angular = "gaussian"`` gives instead ``exp(-phi^2)``
+    times the downwind value (:data:`ANGULAR_FORMS`).
 
     Parameters
     ----------
@@ -246,8 +257,15 @@ def net_growth_rate(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray[np.floa
         Direction of travel relative to the wind [rad].
     u10 : float
         Wind speed at 10 m [m/s].
+    angular : str
+        ``"cos"`` (K05 eq 17, default) or ``"gaussian"`` (Dinnat et al.'s KHCC03 eq 20).
     """
     k = np.asarray(k, dtype=float)
+    if angular == "gaussian":
+        psi = np.angle(np.exp(1j * np.asarray(phi, dtype=float)))  # wrap to (-pi, pi]
+        return np.exp(-(psi**2)) * net_growth_rate(k, 0.0, u10)  # KHCC03 eq 20 (Dinnat)
+    if angular != "cos":
+        raise ValueError(f"angular = {angular!r}: allowed {ANGULAR_FORMS}")
     omega = angular_frequency(k)
     return wind_growth_rate(k, phi, u10) - 4.0 * NU_SEA_WATER * k**2 / omega  # Eq. KU2
 
@@ -262,18 +280,22 @@ def parasitic_filter(k: ArrayLike) -> NDArray[np.float64]:
     return transition_function(k / K_PC_LOW) - transition_function(k / K_PC_HIGH)  # Eq. KU9
 
 
-def equilibrium_saturation(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray[np.float64]:
+def equilibrium_saturation(
+    k: ArrayLike, phi: ArrayLike, u10: float, angular: str = "cos"
+) -> NDArray[np.float64]:
     """``B_w = alpha (beta_nu)_+^(1/n)`` [-]: wind input balanced by dissipation (eq KU8).
 
     The solution of eq KU1 without the parasitic source (K05 eq 24); 0 where the waves
     lose more energy to viscosity (and to an opposing wind) than they gain.
     """
     k = np.asarray(k, dtype=float)
-    beta_nu = np.maximum(net_growth_rate(k, phi, u10), 0.0)
+    beta_nu = np.maximum(net_growth_rate(k, phi, u10, angular), 0.0)
     return saturation_constant(k) * beta_nu ** (1.0 / dissipation_exponent(k))  # Eq. KU8
 
 
-def short_wave_saturation(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray[np.float64]:
+def short_wave_saturation(
+    k: ArrayLike, phi: ArrayLike, u10: float, angular: str = "cos"
+) -> NDArray[np.float64]:
     """Directional saturation ``B_sw(k, phi)`` of the short waves [1/rad] (eqs KU1, KU8).
 
     ``int B_sw dphi`` over ``(-pi, pi]`` is the omnidirectional saturation ``k^3 S_1d``
@@ -287,6 +309,8 @@ def short_wave_saturation(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray[n
         Direction of travel relative to the direction the wind blows towards [rad].
     u10 : float
         Wind speed at 10 m [m/s].
+    angular : str
+        Angular form of the net growth rate (:data:`ANGULAR_FORMS`; default ``"cos"``).
 
     Returns
     -------
@@ -300,25 +324,28 @@ def short_wave_saturation(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray[n
     k = np.asarray(k, dtype=float)
     phi = np.asarray(phi, dtype=float)
     k_g = CAPILLARY_WAVENUMBER**2 / k  # KHCC03 eq 14: the carrying gravity waves
-    beta_g = np.maximum(net_growth_rate(k_g, phi, u10), 0.0)
-    i_pc = parasitic_filter(k) * beta_g * equilibrium_saturation(k_g, phi, u10)  # Eq. KU8
+    beta_g = np.maximum(net_growth_rate(k_g, phi, u10, angular), 0.0)
+    i_pc = (parasitic_filter(k) * beta_g
+            * equilibrium_saturation(k_g, phi, u10, angular))  # Eq. KU8
     alpha = saturation_constant(k)
-    beta_nu = net_growth_rate(k, phi, u10)
+    beta_nu = net_growth_rate(k, phi, u10, angular)
     root = 0.5 * (beta_nu + np.sqrt(beta_nu**2 + 4.0 * i_pc / alpha))  # Eq. KU1
     return alpha * np.maximum(root, 0.0) ** (1.0 / dissipation_exponent(k))
 
 
 @lru_cache(maxsize=32)
-def _omni_table(u10: float) -> NDArray[np.float64]:
-    """``int B_sw dphi`` [-] on :data:`_K_TABLE` (trapezoid over the downwind half-plane,
-    doubled: ``B_sw`` is even in ``phi`` and 0 upwind)."""
-    b = short_wave_saturation(_K_TABLE[:, None], _PHI_TABLE[None, :], u10)
+def _omni_table(u10: float, angular: str) -> NDArray[np.float64]:
+    """``int B_sw dphi`` [-] on :data:`_K_TABLE` (trapezoid over ``[0, pi]``, doubled:
+    ``B_sw`` is even in ``phi``)."""
+    b = short_wave_saturation(_K_TABLE[:, None], _PHI_TABLE[None, :], u10, angular)
     out = 2.0 * np.trapezoid(b, _PHI_TABLE, axis=1)
     out.setflags(write=False)
     return out
 
 
-def short_wave_omni_saturation(k: ArrayLike, u10: float) -> NDArray[np.float64]:
+def short_wave_omni_saturation(
+    k: ArrayLike, u10: float, angular: str = "cos"
+) -> NDArray[np.float64]:
     """Omnidirectional saturation of the short waves ``int B_sw dphi`` [-] (eq KU10).
 
     Interpolated (linearly in ``ln k``) in a table of 200 points per decade from 1e-3
@@ -330,9 +357,11 @@ def short_wave_omni_saturation(k: ArrayLike, u10: float) -> NDArray[np.float64]:
         Wavenumber [rad/m].
     u10 : float
         Wind speed at 10 m [m/s].
+    angular : str
+        Angular form of the net growth rate (:data:`ANGULAR_FORMS`; default ``"cos"``).
     """
     k = np.asarray(k, dtype=float)
-    table = _omni_table(float(u10))
+    table = _omni_table(float(u10), angular)
     lk = np.log(np.maximum(k, K_FLOOR))
     return np.interp(lk, np.log(_K_TABLE), table, left=0.0, right=0.0)
 
@@ -357,7 +386,7 @@ def total_saturation(
     return np.asarray(b_long, dtype=float) + weight * np.asarray(b_short, dtype=float)  # KU10
 
 
-__all__ = ["A_SATURATION", "FRICTION_LAW", "K_PC_HIGH", "K_PC_LOW", "K_TRANSITION",
+__all__ = ["ANGULAR_FORMS", "A_SATURATION", "FRICTION_LAW", "K_PC_HIGH", "K_PC_LOW", "K_TRANSITION",
            "MEAN_C_BETA", "N_GRAVITY", "dissipation_exponent", "equilibrium_saturation",
            "net_growth_rate", "parasitic_filter", "saturation_constant",
            "short_wave_omni_saturation", "short_wave_saturation", "total_saturation",

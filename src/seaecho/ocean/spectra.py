@@ -348,7 +348,9 @@ def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArra
 
 
 @register_spectrum("kudryavtsev")
-def kudryavtsev(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArray[np.float64]:
+def kudryavtsev(
+    k: ArrayLike, u19_5: float, fetch: float | None = None, angular: str = "cos"
+) -> NDArray[np.float64]:
     """Kudryavtsev et al. (2003) omnidirectional spectrum: Elfouhaily's long waves and the
     short waves of the energy balance (:mod:`seaecho.ocean.kudryavtsev`, eqs KU1-KU10).
 
@@ -364,6 +366,10 @@ def kudryavtsev(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArr
         Wind speed at 19.5 m [m/s] (U10 from :func:`seaecho.ocean.wind.u10_from_u19_5`).
     fetch : float or None
         Fetch [m] of the long waves (None: fully developed, Omega_c = 0.84).
+    angular : str
+        Angular form of the short waves' growth rate (``"cos"``, K05 eq 17, the registered
+        spectrum's; ``"gaussian"``, Dinnat et al.'s KHCC03 eq 20: a sensitivity study,
+        :data:`seaecho.ocean.kudryavtsev.ANGULAR_FORMS`).
 
     Returns
     -------
@@ -380,7 +386,8 @@ def kudryavtsev(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArr
     p = elfouhaily_parameters(u19_5, fetch)
     k, pos, ks = _positive(k)
     b_l, cutoff = elfouhaily_long_wave(ks, p)
-    b = total_saturation(b_l, cutoff, short_wave_omni_saturation(ks, p.u10))  # Eq. KU10
+    b = total_saturation(b_l, cutoff,
+                         short_wave_omni_saturation(ks, p.u10, angular))  # Eq. KU10
     return np.where(pos, b / ks**3, 0.0)
 
 
