@@ -110,14 +110,14 @@ gives eqs KU5-KU7 and KU9 in the form above. No code was copied.
   formulas, whose ``f`` is 0.5 at 0.41 ``k_gamma`` (not 0.25) and whose ``phi_pc`` falls
   at 10 ``k_gamma`` (not 4). The analytic forms KU6 and KU9 are those of the open text
   (K05, Yurovskaya et al.) and of stereoid.
-* The generation of short waves by the breaking of longer ones (K05 eq 20, the source
-  ``Q_wb`` that fills the cross-wind directions and is solved by iteration from K05
-  eqs 24-26) is **not implemented**: the readable sources weight its integral by
-  ``omega`` (the open text) or by ``c`` (stereoid), and give its constant as 1.2e-2
-  (K05, stereoid), 2.7e-2 (Kudryavtsev et al. 2014) or 4.5e-3 (Yurovskaya et al. 2013,
-  with another growth rate); which of these K05 prints could not be checked. Without it
-  the spectrum is KHCC03's, which (the open text notes) has a gap in the cross-wind
-  gravity-capillary range that K05 filled.
+* The generation of short waves by the breaking of longer ones (K05's source ``Q_wb``,
+  near their eqs 20 and 29 as stereoid cites them, which fills the cross-wind directions
+  and is solved by iteration from K05 eqs 24-26) is **not implemented**: the readable
+  sources weight its integral by ``omega`` (the open text) or by ``c`` (stereoid), and
+  give its constant as 1.2e-2 (K05, stereoid), 2.7e-2 (Kudryavtsev et al. 2014) or
+  4.5e-3 (Yurovskaya et al. 2013, with another growth rate); which of these K05 prints
+  could not be checked. Without it the spectrum is KHCC03's, which (the open text notes)
+  has a gap in the cross-wind gravity-capillary range that K05 filled.
 
 References
 ----------
@@ -129,7 +129,7 @@ References
    *J. Geophys. Res.* 108(C3), 8054, doi:10.1029/2001JC001003 (sec. 3, eqs 13-30).
 .. [3] Kudryavtsev, V., Akimov, D., Johannessen, J. and Chapron, B. (2005). On radar
    imaging of current features: 1. Model and comparison with observations. *J. Geophys.
-   Res.* 110, C07016, doi:10.1029/2004JC002505 (eqs 17, 20, 24-26).
+   Res.* 110, C07016, doi:10.1029/2004JC002505 (eqs 17, 24-26).
 .. [4] Yurovskaya, M. V., Dulov, V. A., Chapron, B. and Kudryavtsev, V. N. (2013).
    Directional short wind wave spectra derived from the sea surface photography.
    *J. Geophys. Res. Oceans* 118, 4380-4394 (appendix A).
