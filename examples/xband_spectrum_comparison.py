@@ -7,12 +7,14 @@ breaking (``sea_sigma``), averaged over the looks upwind, crosswind (x2) and dow
 water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py``):
 
 * X band (9.3 GHz), sea states 2-5, 5-30 deg grazing: the Elfouhaily et al. (1997)
-  spectrum ("E97", before) and the Romeiser, Alpers & Wismann (1997) spectrum ("RAW97",
-  after), against Nathanson's table, the GIT and the NRL models (``tests/reference_models.py``);
+  spectrum ("E97", before), the Romeiser, Alpers & Wismann (1997) spectrum ("RAW97") and
+  the short-wave spectrum of Kudryavtsev et al. (2003, "K03", ``ocean/kudryavtsev.py``; its
+  breaking model is "KHCC03" below),
+  against Nathanson's table, the GIT and the NRL models (``tests/reference_models.py``);
 * the other candidates at X band with E97: the scale split (k/4 instead of k/3), the tilt
   average (untilted SPM + breaking), the breaking zones (two-scale alone);
 * C band (5.3 GHz), 20-50 deg incidence: VV against CMOD5.N and VV/HH against Mouche et
-  al. (2005), for both spectra;
+  al. (2005), for the three spectra;
 * the non-polarised part that the published X-band models imply (eq CP3,
   ``seaecho.scattering.copol``, with seaecho's two-scale Bragg ratio HH/VV) against
   KHCC03's ``q sigma_wb``: where the remaining VV/HH excess at 20-30 deg lies;
@@ -22,7 +24,13 @@ water at 20 degC and 35 psu, U19.5 from U10 by the log profile (``ocean/wind.py`
 * C band against X band at 58 deg incidence (CMOD5.N's edge): how each reference and
   each spectrum moves from one band to the other.
 * the X-band table of the validation section (E97 two-scale and two-scale + breaking
-  against the published models, sea states 2-5, 3-30 deg grazing).
+  against the published models, sea states 2-5, 3-30 deg grazing);
+* per spectrum: the signed distances to the published X-band models per sea state, the
+  C-band distances to CMOD5.N and Mouche's ratio, the saturation at the C- and X-band
+  Bragg wavenumbers, and the total mean square slope against Cox & Munk's fit; in these
+  summaries also "K03 gauss", K03 with the angular form of its growth rate that Dinnat et
+  al.'s code gives KHCC03 (``exp(-psi^2)`` times the downwind net rate), to show what
+  that choice of the sources moves.
 
 About 5 s of CPU; ``--simulate`` adds the facet sums of one simulated surface (the
 simulation's own sigma0, ``examples/sigma0_facets_vs_grazing.py``) at sea state 3 for both
@@ -34,6 +42,7 @@ from __future__ import annotations
 import csv
 import sys
 import warnings
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -48,8 +57,9 @@ from reference_models import (  # noqa: E402
     mouche_pr,
     nrl_sigma0,
 )
+from seaecho.ocean.registry import register_spectrum  # noqa: E402
 from seaecho.ocean.seawater import sea_water_permittivity  # noqa: E402
-from seaecho.ocean.spectra import DirectionalSpectrum  # noqa: E402
+from seaecho.ocean.spectra import DirectionalSpectrum, kudryavtsev  # noqa: E402
 from seaecho.ocean.wind import u19_5_from_u10  # noqa: E402
 from seaecho.scattering.copol import non_polarised_component  # noqa: E402
 from seaecho.scattering.models import sea_sigma  # noqa: E402
@@ -60,7 +70,12 @@ X_GHZ = 9.3
 C_GHZ = 5.3
 GRAZING_DEG = (5.0, 10.0, 20.0, 30.0)
 SEA_STATES = (2, 3, 4, 5)
-SPECTRA = (("E97", "elfouhaily"), ("RAW97", "romeiser"))
+SPECTRA = (("E97", "elfouhaily"), ("RAW97", "romeiser"), ("K03", "kudryavtsev"))
+#: Sensitivity of K03 to the angular form of its growth rate, in the summaries only:
+#: ``exp(-psi^2)`` times the downwind net rate (Dinnat et al.'s KHCC03 eq 20), registered
+#: here, for this script, under a name of its own.
+VARIANTS = (("K03 gauss", "kudryavtsev-gaussian"),)
+register_spectrum(VARIANTS[0][1])(partial(kudryavtsev, angular="gaussian"))
 
 
 def look_averaged(model: str, f_hz: float, u10: float, inc_deg, spectrum: str = "elfouhaily",
@@ -101,7 +116,7 @@ def xband_rows() -> list[dict]:
         u10 = SEA_STATE_WIND[ss]
         inc = 90.0 - np.array(GRAZING_DEG)
         runs = {name: db(look_averaged("two-scale+breaking", X_GHZ * 1e9, u10, inc, sp))
-                for name, sp in SPECTRA}
+                for name, sp in SPECTRA + VARIANTS}
         runs["E97 cut k/4"] = db(look_averaged("two-scale+breaking", X_GHZ * 1e9, u10, inc,
                                                cut_ratio=0.25))
         q, wb = _breaking_share(u10, inc)
@@ -168,7 +183,7 @@ def cband_rows() -> list[dict]:
         cmod = db(np.mean([cmod5n(u10, p, inc) for p in LOOKS_DEG], axis=0))
         pr = db(np.mean([mouche_pr(inc, p) for p in LOOKS_DEG], axis=0))
         runs = {name: look_averaged("two-scale+breaking", C_GHZ * 1e9, u10, inc, sp)
-                for name, sp in SPECTRA}
+                for name, sp in SPECTRA + VARIANTS}
         for j, t in enumerate(inc):
             row = {"u10_m_s": u10, "incidence_deg": float(t), "CMOD5.N VV": round(cmod[j], 2),
                    "Mouche PR": round(pr[j], 2)}
@@ -190,7 +205,7 @@ def span_summary(xrows: list[dict]) -> str:
     lines = ["Distance to the span of the published models [dB] (0 = inside), sea states 2-5:",
              "", "| spectrum | grazing | HH | VV | VV/HH | VV/HH > 2 dB at |",
              "|---|---|---|---|---|---|"]
-    for name, _ in SPECTRA:
+    for name, _ in SPECTRA + VARIANTS:
         for lo, hi in ((5.0, 10.0), (20.0, 30.0)):
             d = {"HH": [], "VV": [], "PR": []}
             miss = []
@@ -208,6 +223,92 @@ def span_summary(xrows: list[dict]) -> str:
             lines.append(f"| {name} | {lo:.0f}-{hi:.0f} | " + " | ".join(
                 f"{min(v):.1f}-{max(v):.1f}" for v in d.values())
                 + f" | {', '.join(miss) or 'none'} |")
+    return "\n".join(lines)
+
+
+def sea_state_summary(xrows: list[dict]) -> str:
+    """Signed distances [dB] of HH, VV and VV/HH to the span of the published models per
+    spectrum and sea state, 5-30 deg grazing (+ above the span, - below, 0 inside)."""
+    lines = ["Signed distance to the span of the published models [dB] (+ above, - below, "
+             "0 inside), 5 / 10 / 20 / 30 deg grazing:", "",
+             "| spectrum | SS | HH | VV | VV/HH |", "|---|---|---|---|---|"]
+
+    def signed(value: float, refs: list[float]) -> float:
+        return value - max(refs) if value > max(refs) else min(value - min(refs), 0.0)
+
+    for name, _ in SPECTRA + VARIANTS:
+        for ss in SEA_STATES:
+            cells = {"HH": [], "VV": [], "PR": []}
+            for r in (r for r in xrows if r["sea_state"] == ss):
+                refs = [n for n in ("Nathanson", "GIT", "NRL") if f"{n} HH" in r]
+                for pol in ("HH", "VV"):
+                    cells[pol].append(signed(r[f"{name} {pol}"], [r[f"{n} {pol}"] for n in refs]))
+                cells["PR"].append(signed(r[f"{name} VV"] - r[f"{name} HH"],
+                                          [r[f"{n} VV"] - r[f"{n} HH"] for n in refs]))
+            lines.append(f"| {name} | {ss} | " + " | ".join(
+                " / ".join(f"{x:+.1f}" if abs(x) >= 0.05 else "0" for x in v)
+                for v in cells.values()) + " |")
+    return "\n".join(lines)
+
+
+def saturation_markdown() -> str:
+    """Omnidirectional saturation ``k^3 S_1d`` [-] of each spectrum at the C-band (188 rad/m,
+    60 deg incidence) and X-band (338 and 384 rad/m, 30 and 10 deg grazing) Bragg
+    wavenumbers, and each spectrum's level against E97's [dB]."""
+    ks = (188.0, 338.0, 384.0)
+    lines = ["Saturation k^3 S_1d at the Bragg wavenumbers (188 rad/m: C band at 60 deg "
+             "incidence; 338 / 384 rad/m: X band at 30 / 10 deg grazing), [dB] against E97:",
+             "", "| U10 | spectrum | 188 rad/m | 338 rad/m | 384 rad/m | 338 / 188 |",
+             "|---|---|---|---|---|---|"]
+    for ss in SEA_STATES:
+        u10 = SEA_STATE_WIND[ss]
+        sat = {}
+        for name, sp in SPECTRA + VARIANTS:
+            spec = DirectionalSpectrum(spectrum=sp, spreading="elfouhaily",
+                                       u19_5=float(u19_5_from_u10(u10)))
+            sat[name] = np.array(ks) ** 3 * spec.omni(ks)
+        for name, b in sat.items():
+            rel = "" if name == "E97" else [f" ({x:+.1f})" for x in db(b / sat["E97"])]
+            lines.append(f"| {u10} | {name} | " + " | ".join(
+                f"{x:.2e}{rel[i] if rel else ''}" for i, x in enumerate(b))
+                + f" | {b[1] / b[0]:.2f} |")
+    return "\n".join(lines)
+
+
+def mss_markdown() -> str:
+    """Total mean square slope ``int k^3 S_1d d ln k`` of each spectrum (1e-3 to 3e4 rad/m)
+    against Cox & Munk's (1954) clean-surface fit 0.003 + 5.12e-3 U12.5 [-]."""
+    from seaecho.ocean.wind import u12_5_from_u19_5
+
+    k = np.logspace(-3.0, 4.5, 12000)
+    lines = ["Mean square slope against Cox & Munk's clean-surface fit (ratio):", "",
+             "| U10 | Cox & Munk | " + " | ".join(n for n, _ in SPECTRA + VARIANTS) + " |",
+             "|---|---|" + "---|" * len(SPECTRA + VARIANTS)]
+    for u10 in (4.5, 7.0, 10.0, 12.5, 15.0, 20.0):
+        u19_5 = float(u19_5_from_u10(u10))
+        cox_munk = 0.003 + 5.12e-3 * float(u12_5_from_u19_5(u19_5))
+        cells = []
+        for _, sp in SPECTRA + VARIANTS:
+            spec = DirectionalSpectrum(spectrum=sp, spreading="elfouhaily", u19_5=u19_5)
+            mss = float(np.trapezoid(k**3 * spec.omni(k), np.log(k)))
+            cells.append(f"{mss:.3f} ({mss / cox_munk:.2f})")
+        lines.append(f"| {u10} | {cox_munk:.3f} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def cband_summary(crows: list[dict]) -> str:
+    """C band: VV minus CMOD5.N and VV/HH minus Mouche's ratio [dB] per spectrum, at 30-50
+    deg incidence (ranges over 5-15 m/s), and the points beyond the tests' 2 dB."""
+    lines = ["C band, 30-50 deg incidence, 5-15 m/s: VV - CMOD5.N and VV/HH - Mouche [dB]:",
+             "", "| spectrum | VV - CMOD5.N | VV/HH - Mouche | beyond 2 dB |", "|---|---|---|---|"]
+    for name, _ in SPECTRA + VARIANTS:
+        sub = [r for r in crows if r["incidence_deg"] >= 30.0]
+        dv = [r[f"{name} VV"] - r["CMOD5.N VV"] for r in sub]
+        dp = [r[f"{name} PR"] - r["Mouche PR"] for r in sub]
+        miss = [f"{r['u10_m_s']:.0f} m/s {r['incidence_deg']:.0f} deg" for r, a, b
+                in zip(sub, dv, dp, strict=True) if abs(a) > 2.0 or abs(b) > 2.0]
+        lines.append(f"| {name} | {min(dv):+.1f}..{max(dv):+.1f} | {min(dp):+.1f}..{max(dp):+.1f}"
+                     f" | {', '.join(miss) or 'none'} |")
     return "\n".join(lines)
 
 
@@ -341,17 +442,20 @@ def band_rows() -> list[dict]:
 def band_markdown(rows: list[dict]) -> str:
     lines = [f"C band (5.3 GHz) and X band (9.3 GHz) at {BAND_INCIDENCE_DEG:.0f} deg incidence "
              f"({90.0 - BAND_INCIDENCE_DEG:.0f} deg grazing), VV [dB] (C / X, X - C):", "",
-             "| SS (U10) | CMOD5.N C | E97 | RAW97 | GIT | NRL |", "|---|---|---|---|---|---|"]
+             "| SS (U10) | CMOD5.N C | E97 | RAW97 | K03 | GIT | NRL |",
+             "|---|---|---|---|---|---|---|"]
     for r in rows:
         cells = [f"{r[f'{n} C VV']:.1f} / {r[f'{n} X VV']:.1f}, "
-                 f"{r[f'{n} X VV'] - r[f'{n} C VV']:+.1f}" for n in ("E97", "RAW97", "GIT", "NRL")]
+                 f"{r[f'{n} X VV'] - r[f'{n} C VV']:+.1f}"
+                 for n in ("E97", "RAW97", "K03", "GIT", "NRL")]
         lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | {r['CMOD5.N C VV']:.1f} | "
                      + " | ".join(cells) + " |")
-    lines += ["", "HH [dB] (C / X, X - C):", "", "| SS (U10) | E97 | RAW97 | GIT | NRL |",
-              "|---|---|---|---|---|"]
+    lines += ["", "HH [dB] (C / X, X - C):", "",
+              "| SS (U10) | E97 | RAW97 | K03 | GIT | NRL |", "|---|---|---|---|---|---|"]
     for r in rows:
         cells = [f"{r[f'{n} C HH']:.1f} / {r[f'{n} X HH']:.1f}, "
-                 f"{r[f'{n} X HH'] - r[f'{n} C HH']:+.1f}" for n in ("E97", "RAW97", "GIT", "NRL")]
+                 f"{r[f'{n} X HH'] - r[f'{n} C HH']:+.1f}"
+                 for n in ("E97", "RAW97", "K03", "GIT", "NRL")]
         lines.append(f"| {r['sea_state']} ({r['u10_m_s']}) | " + " | ".join(cells) + " |")
     return "\n".join(lines)
 
@@ -363,8 +467,9 @@ def _fmt(x: float) -> str:
 def markdown(xrows: list[dict], crows: list[dict]) -> str:
     lines = ["X band (9.3 GHz), two-scale + breaking, sigma0 [dB] (HH / VV, VV/HH):", "",
              "| SS (U10) | grazing | E97 HH / VV | E97 VV/HH | RAW97 HH / VV | RAW97 VV/HH "
+             "| K03 HH / VV | K03 VV/HH "
              "| Nathanson HH / VV | GIT HH / VV | NRL HH / VV | refs VV/HH |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in xrows:
         nat = (f"{r['Nathanson HH']:.0f} / {r['Nathanson VV']:.0f}" if "Nathanson HH" in r
                else "-")
@@ -374,16 +479,19 @@ def markdown(xrows: list[dict], crows: list[dict]) -> str:
             f"| {r['sea_state']} ({r['u10_m_s']}) | {r['grazing_deg']:.0f} "
             f"| {_fmt(r['E97 HH'])} / {_fmt(r['E97 VV'])} | {_fmt(r['E97 VV'] - r['E97 HH'])} "
             f"| {_fmt(r['RAW97 HH'])} / {_fmt(r['RAW97 VV'])} "
-            f"| {_fmt(r['RAW97 VV'] - r['RAW97 HH'])} | {nat} "
+            f"| {_fmt(r['RAW97 VV'] - r['RAW97 HH'])} "
+            f"| {_fmt(r['K03 HH'])} / {_fmt(r['K03 VV'])} "
+            f"| {_fmt(r['K03 VV'] - r['K03 HH'])} | {nat} "
             f"| {_fmt(r['GIT HH'])} / {_fmt(r['GIT VV'])} | {_fmt(r['NRL HH'])} / "
             f"{_fmt(r['NRL VV'])} | {min(prs):.1f}-{max(prs):.1f} |")
     lines += ["", "Candidates at X band with E97, change against E97 two-scale + breaking "
               "[dB] (HH / VV / VV/HH), ranges over sea states 2-5:", "",
-              "| grazing | cut k/4 | untilted SPM | no breaking | RAW97 spectrum |",
-              "|---|---|---|---|---|"]
+              "| grazing | cut k/4 | untilted SPM | no breaking | RAW97 spectrum "
+              "| K03 spectrum |",
+              "|---|---|---|---|---|---|"]
     for g in GRAZING_DEG:
         cells = []
-        for name in ("E97 cut k/4", "E97 untilted", "E97 no breaking", "RAW97"):
+        for name in ("E97 cut k/4", "E97 untilted", "E97 no breaking", "RAW97", "K03"):
             sub = [r for r in xrows if r["grazing_deg"] == g]
             dh = [r[f"{name} HH"] - r["E97 HH"] for r in sub]
             dv = [r[f"{name} VV"] - r["E97 VV"] for r in sub]
@@ -391,12 +499,14 @@ def markdown(xrows: list[dict], crows: list[dict]) -> str:
             cells.append(" / ".join(f"{min(d):+.1f}..{max(d):+.1f}" for d in (dh, dv, dp)))
         lines.append(f"| {g:.0f} | " + " | ".join(cells) + " |")
     lines += ["", "C band (5.3 GHz), two-scale + breaking, VV [dB] and VV/HH [dB]:", "",
-              "| U10 | incidence | E97 VV | RAW97 VV | CMOD5.N | E97 VV/HH | RAW97 VV/HH "
-              "| Mouche PR |", "|---|---|---|---|---|---|---|---|"]
+              "| U10 | incidence | E97 VV | RAW97 VV | K03 VV | CMOD5.N | E97 VV/HH "
+              "| RAW97 VV/HH | K03 VV/HH | Mouche PR |",
+              "|---|---|---|---|---|---|---|---|---|---|"]
     for r in crows:
         lines.append(f"| {r['u10_m_s']:.0f} | {r['incidence_deg']:.0f} | {_fmt(r['E97 VV'])} "
-                     f"| {_fmt(r['RAW97 VV'])} | {_fmt(r['CMOD5.N VV'])} "
-                     f"| {_fmt(r['E97 PR'])} | {_fmt(r['RAW97 PR'])} "
+                     f"| {_fmt(r['RAW97 VV'])} | {_fmt(r['K03 VV'])} "
+                     f"| {_fmt(r['CMOD5.N VV'])} "
+                     f"| {_fmt(r['E97 PR'])} | {_fmt(r['RAW97 PR'])} | {_fmt(r['K03 PR'])} "
                      f"| {_fmt(r['Mouche PR'])} |")
     return "\n".join(lines)
 
@@ -440,6 +550,14 @@ def main(outdir: str = "docs/figures", *flags: str) -> Path:
     print(markdown(xrows, crows))
     print()
     print(span_summary(xrows))
+    print()
+    print(sea_state_summary(xrows))
+    print()
+    print(cband_summary(crows))
+    print()
+    print(saturation_markdown())
+    print()
+    print(mss_markdown())
     print()
     nrows = np_rows()
     print(np_markdown(nrows))

@@ -609,8 +609,8 @@ def sigma(model: str = "blend", *, theta_i_deg: ArrayLike = 20.0,
     wind_direction_deg : float, optional
         Direction the wind blows towards, counter-clockwise from +x [deg] (default 0).
     spectrum, spreading : str, optional
-        Wave spectrum (``elfouhaily``, ``pierson-moskowitz``, ``jonswap``, ``romeiser``)
-        and spreading (``elfouhaily``, ``longuet-higgins``, ``romeiser``); default
+        Wave spectrum (``elfouhaily``, ``pierson-moskowitz``, ``jonswap``, ``romeiser``,
+        ``kudryavtsev``) and spreading (``elfouhaily``, ``longuet-higgins``, ``romeiser``); default
         Elfouhaily.
     spreading_s : float, optional
         Longuet-Higgins spreading exponent s [-] (default 1, the paper's).
@@ -734,7 +734,7 @@ def wave_spectrum(wavenumber_rad_m: ArrayLike, *, wind_speed_m_s: float = 4.53,
     wind_speed_m_s : float
         U19.5 [m/s] (default 4.53, the paper's Fig. 3 sea).
     spectrum : str
-        ``elfouhaily``, ``pierson-moskowitz``, ``jonswap`` or ``romeiser``.
+        ``elfouhaily``, ``pierson-moskowitz``, ``jonswap``, ``romeiser`` or ``kudryavtsev``.
     fetch_m : float, optional
         Fetch [m] (JONSWAP; Elfouhaily's wave age).
     scene : Scene, optional

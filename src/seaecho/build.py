@@ -127,15 +127,17 @@ def check_sea(sea) -> None:
     from .config import SceneError
     from .ocean.limits import BREAKING_RATIO, fetch_range, min_depth, significant_height
 
-    # The fetch laws that read fetch_m: the spectrum's, and Elfouhaily's spreading's
-    laws = [sea.spectrum] if sea.spectrum in ("jonswap", "elfouhaily") else []
+    # The fetch laws that read fetch_m: the spectrum's (Kudryavtsev et al.'s long waves
+    # are Elfouhaily's), and Elfouhaily's spreading's
+    own = "elfouhaily" if sea.spectrum == "kudryavtsev" else sea.spectrum
+    laws = [own] if own in ("jonswap", "elfouhaily") else []
     if sea.spreading == "elfouhaily" and "elfouhaily" not in laws:
         laws.append("elfouhaily")
     for law in laws if sea.fetch_m is not None else ():
         lo, hi = fetch_range(law, sea.wind_speed_m_s)
         if not lo <= sea.fetch_m <= hi:
             span = f"[{lo:.3g}, {hi:.3g}]" if np.isfinite(hi) else f">= {lo:.3g}"
-            what = "spectrum's" if law == sea.spectrum else "spreading's"
+            what = "spectrum's" if law == own else "spreading's"
             raise SceneError(
                 f"[sea].fetch_m = {sea.fetch_m:g}: outside the fetches the {law} {what} "
                 f"fetch law describes at U19.5 = {sea.wind_speed_m_s:g} m/s, {span} m "

@@ -71,7 +71,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--wind-direction-deg", type=float,
                    help="direction the wind blows towards, CCW from +x [deg] (default 0)")
     p.add_argument("--spectrum", choices=("elfouhaily", "pierson-moskowitz", "jonswap",
-                                          "romeiser"),
+                                          "romeiser", "kudryavtsev"),
                    help="omnidirectional wave spectrum (default elfouhaily)")
     p.add_argument("--spreading", choices=("elfouhaily", "longuet-higgins", "romeiser"),
                    help="directional spreading (default elfouhaily)")

@@ -13,7 +13,8 @@ from pydantic import Field, model_validator
 
 from .base import Section
 
-SpectrumName = Literal["pierson-moskowitz", "jonswap", "elfouhaily", "romeiser"]
+SpectrumName = Literal["pierson-moskowitz", "jonswap", "elfouhaily", "romeiser",
+                       "kudryavtsev"]
 SpreadingName = Literal["longuet-higgins", "elfouhaily", "romeiser"]
 
 #: Lowest wind [m/s]: the lower limit of Beaufort force 1 ("light air, ripples with the
@@ -36,7 +37,9 @@ class SeaConfig(Section):
         "'jonswap' (fetch-limited), 'elfouhaily' (unified, with capillary waves) or "
         "'romeiser' (Romeiser, Alpers & Wismann 1997: short waves fitted to L- to Ka-band "
         "scatterometer data; X-band VV and VV/HH closer to the clutter tables, "
-        "docs/scattering.md)",
+        "docs/scattering.md) or 'kudryavtsev' (Kudryavtsev et al. 2003: short waves from "
+        "the energy balance of wind input, dissipation and parasitic capillaries, "
+        "Elfouhaily's long waves; docs/ocean.md)",
     )
     spreading: SpreadingName = Field(
         "longuet-higgins",

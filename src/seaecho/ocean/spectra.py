@@ -23,6 +23,8 @@ Omnidirectional spectra (registry :data:`OMNI_SPECTRA`, selectable by name):
   deep-water dispersion relation.
 - ``"elfouhaily"``: the unified spectrum of Elfouhaily et al. (1997), long and short waves
   including the gravity-capillary range that Bragg scattering sees.
+- ``"kudryavtsev"``: Elfouhaily's long waves with the short waves of Kudryavtsev et al.
+  (2003) from the energy balance (:mod:`seaecho.ocean.kudryavtsev`).
 
 Spreading functions (registry :data:`SPREADINGS`): ``"longuet-higgins"`` cos^2s(psi/2)
 (paper eq 6, normalised to unit integral: N(1) = 1/pi), and ``"elfouhaily"`` (Elfouhaily
@@ -64,6 +66,7 @@ from ..warnings import ValidityWarning
 # The spectra defined in their own modules register themselves on import.
 from . import romeiser as _romeiser  # noqa: F401  (Romeiser et al. 1997)
 from .dispersion import CAPILLARY_WAVENUMBER, angular_frequency, phase_speed
+from .kudryavtsev import short_wave_omni_saturation, total_saturation
 from .registry import (
     K_FLOOR,
     OMNI_SPECTRA,
@@ -265,6 +268,36 @@ def elfouhaily_parameters(u19_5: float, fetch: float | None = None) -> Elfouhail
     )
 
 
+def elfouhaily_long_wave(
+    k: NDArray[np.float64], p: ElfouhailyParameters
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Elfouhaily et al.'s long-wave curvature ``B_l`` [-] and its cut-off [-].
+
+    ``B_l = (alpha_p / 2) (c_p / c) F_p``, ``F_p = L_PM J_p F_c`` (eqs 2-3), with the
+    long-wave side effect ``F_c = exp[-(Omega_c / sqrt(10)) (sqrt(k / k_p) - 1)]``, which
+    ends the long waves' equilibrium range above ``k_p`` (returned as the second value;
+    it exceeds 1 below ``k_p``, where ``L_PM`` takes over). Also the long waves of the
+    Kudryavtsev et al. (2003) spectrum (:mod:`seaecho.ocean.kudryavtsev`).
+
+    Parameters
+    ----------
+    k : ndarray
+        Wavenumber [rad/m] (> 0).
+    p : ElfouhailyParameters
+        From :func:`elfouhaily_parameters`.
+    """
+    c = phase_speed(k)  # phase speed with capillarity
+    cutoff = np.exp(-p.omega_c / np.sqrt(10.0) * (np.sqrt(k / p.k_p) - 1.0))  # side effect
+    return 0.5 * p.alpha_p * (p.c_p / c) * _peak_shape(k, p) * cutoff, cutoff
+
+
+def _peak_shape(k: NDArray[np.float64], p: ElfouhailyParameters) -> NDArray[np.float64]:
+    """``L_PM J_p`` [-]: Pierson-Moskowitz shape times the peak enhancement (eqs 2-3)."""
+    l_pm = np.exp(-1.25 * (p.k_p / k) ** 2)  # Eq. 2
+    big_gamma = np.exp(-((np.sqrt(k / p.k_p) - 1.0) ** 2) / (2.0 * p.delta**2))  # Eq. 3
+    return l_pm * p.gamma**big_gamma  # Eq. 3: J_p = gamma^Gamma
+
+
 @register_spectrum("elfouhaily")
 def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArray[np.float64]:
     """Elfouhaily et al. (1997) unified omnidirectional spectrum.
@@ -303,15 +336,59 @@ def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArra
     p = elfouhaily_parameters(u19_5, fetch)
     k, pos, ks = _positive(k)
     c = phase_speed(ks)  # phase speed with capillarity
-    l_pm = np.exp(-1.25 * (p.k_p / ks) ** 2)  # Eq. 2
-    big_gamma = np.exp(-((np.sqrt(ks / p.k_p) - 1.0) ** 2) / (2.0 * p.delta**2))  # Eq. 3
-    j_p = p.gamma**big_gamma  # Eq. 3
-    # long-wave side effect
-    f_p = l_pm * j_p * np.exp(-p.omega_c / np.sqrt(10.0) * (np.sqrt(ks / p.k_p) - 1.0))
-    b_l = 0.5 * p.alpha_p * (p.c_p / c) * f_p  # long-wave curvature
-    f_m = l_pm * j_p * np.exp(-0.25 * (ks / K_M - 1.0) ** 2)  # short-wave side effect
+    b_l, _ = elfouhaily_long_wave(ks, p)  # long-wave curvature
+    f_m = _peak_shape(ks, p) * np.exp(-0.25 * (ks / K_M - 1.0) ** 2)  # short-wave side effect
     b_h = 0.5 * p.alpha_m * (C_M / c) * f_m  # short-wave curvature
     return np.where(pos, (b_l + b_h) / ks**3, 0.0)  # S = k^-3 (B_l + B_h)
+
+
+# --------------------------------------------------------------------------------------
+# Kudryavtsev et al. (2003)
+# --------------------------------------------------------------------------------------
+
+
+@register_spectrum("kudryavtsev")
+def kudryavtsev(
+    k: ArrayLike, u19_5: float, fetch: float | None = None, angular: str = "cos"
+) -> NDArray[np.float64]:
+    """Kudryavtsev et al. (2003) omnidirectional spectrum: Elfouhaily's long waves and the
+    short waves of the energy balance (:mod:`seaecho.ocean.kudryavtsev`, eqs KU1-KU10).
+
+    .. math::
+
+        S_{1d}(k) = k^{-3}\\left[B_l + (1 - F_c)\\int B_{sw}\\, d\\varphi\\right]
+
+    Parameters
+    ----------
+    k : array_like
+        Wavenumber [rad/m] (values <= 0 give 0).
+    u19_5 : float
+        Wind speed at 19.5 m [m/s] (U10 from :func:`seaecho.ocean.wind.u10_from_u19_5`).
+    fetch : float or None
+        Fetch [m] of the long waves (None: fully developed, Omega_c = 0.84).
+    angular : str
+        Angular form of the short waves' growth rate (``"cos"``, K05 eq 17, the registered
+        spectrum's; ``"gaussian"``, Dinnat et al.'s KHCC03 eq 20: a sensitivity study,
+        :data:`seaecho.ocean.kudryavtsev.ANGULAR_FORMS`).
+
+    Returns
+    -------
+    ndarray
+        S_1d [m^3]; the saturation ``k^3 S_1d`` at the X-band Bragg wavenumber 384 rad/m
+        is 1.4e-3 at U10 = 7 m/s and 6.7e-3 at 12.5 m/s (Elfouhaily et al.: 6.8e-3 and
+        1.7e-2; Romeiser et al.: 1.6e-3 and 3.2e-3).
+
+    References
+    ----------
+    Kudryavtsev, Hauser, Caudal & Chapron (2003), eqs 13-30 (KU1-KU10); Elfouhaily et al.
+    (1997) for the long waves.
+    """
+    p = elfouhaily_parameters(u19_5, fetch)
+    k, pos, ks = _positive(k)
+    b_l, cutoff = elfouhaily_long_wave(ks, p)
+    b = total_saturation(b_l, cutoff,
+                         short_wave_omni_saturation(ks, p.u10, angular))  # Eq. KU10
+    return np.where(pos, b / ks**3, 0.0)
 
 
 # --------------------------------------------------------------------------------------
@@ -487,10 +564,12 @@ __all__ = [
     "DirectionalSpectrum",
     "ElfouhailyParameters",
     "elfouhaily",
+    "elfouhaily_long_wave",
     "elfouhaily_parameters",
     "elfouhaily_spreading",
     "jonswap",
     "jonswap_parameters",
+    "kudryavtsev",
     "longuet_higgins",
     "longuet_higgins_normalisation",
     "pierson_moskowitz",

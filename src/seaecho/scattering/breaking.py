@@ -37,7 +37,8 @@ the length of fronts per unit area of waves in ``dk dphi``):
 ``c_q = 10.5``; only breakers longer than ten radar wavelengths count and not shorter
 than 0.3 m, ``k_wb = min(0.1 k_r, 2 pi / 0.3)`` (KHCC03 sec. 5; K05, above eq 19). The
 second form holds in the equilibrium range of the KHCC03 spectrum, where the wind input
-balances the dissipation, ``B = alpha beta_nu^(1/n)`` (KHCC03 sec. 3), with the wind
+balances the dissipation, ``B = alpha beta_nu^(1/n)`` (KHCC03 sec. 3; the spectrum itself
+is :mod:`seaecho.ocean.kudryavtsev`, where these laws are defined), with the wind
 growth rate (K05 eq 17; KHCC03 eqs 19-21)
 
 .. math::
@@ -136,10 +137,15 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..backend import NUMPY, Boundary, Mat2
-from ..constants import NU_SEA_WATER, RHO_AIR, RHO_SEA_WATER, VON_KARMAN
 from ..geometry import frames
-from ..ocean.dispersion import CAPILLARY_WAVENUMBER, angular_frequency, phase_speed
-from ..ocean.wind import charnock_roughness_length, friction_velocity
+from ..ocean.dispersion import phase_speed
+from ..ocean.kudryavtsev import (  # noqa: F401  (KHCC03's laws, re-exported here)
+    FRICTION_LAW,
+    N_GRAVITY,
+    dissipation_exponent,
+    net_growth_rate,
+    wind_growth_rate,
+)
 
 #: Mean square slope of the enhanced roughness of breaking zones s_wb^2 [-] (KHCC03).
 S_WB2 = 0.19
@@ -149,79 +155,15 @@ EPS_WB = 5.0e-3
 THETA_WB = 5.0e-2
 #: Constant of the fraction of breaking zones c_q [-] (KHCC03 eq 56).
 C_Q = 10.5
-#: Exponent n of the dissipation term in the gravity range n_g [-] (KHCC03).
-N_GRAVITY = 5.0
 #: Breakers shorter than 1 / B_R radar wavelengths do not scatter as zones [-] (KHCC03).
 B_R = 0.1
 #: Shortest breakers counted [rad/m]: wavelength 0.3 m (K05, above eq 19).
 K_WB_MAX = 2.0 * np.pi / 0.3
-#: The friction-velocity law of KHCC03 and K05 (:data:`seaecho.ocean.wind.
-#: FRICTION_VELOCITY_LAWS`): Wu (1982).
-FRICTION_LAW = "wu-1982"
 
 
 # --- wind and waves (BR4) -----------------------------------------------------------
-
-def wind_growth_rate(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
-    """Wind growth rate ``beta`` of waves of wavenumber ``k`` travelling at ``phi`` [-].
-
-    ``beta = C_beta (u_*/c)^2 cos(phi) |cos(phi)|`` with ``C_beta`` of eq BR4 clipped at 0
-    (waves faster than the wind do not grow); the energy growth rate is ``beta omega``.
-
-    Parameters
-    ----------
-    k : array_like
-        Wavenumber [rad/m].
-    phi : array_like
-        Direction of travel relative to the direction the wind blows towards [rad].
-    u10 : float
-        Wind speed at 10 m [m/s].
-
-    References
-    ----------
-    .. [1] K05 eq 17; KHCC03 eqs 19-21.
-    """
-    k = np.asarray(k, dtype=float)
-    us = float(friction_velocity(FRICTION_LAW, u10))
-    z0 = float(charnock_roughness_length(us))
-    c = phase_speed(k)
-    # Eq BR4: C_beta and beta.
-    c_beta = 1.5 * (RHO_AIR / RHO_SEA_WATER) * (np.log(np.pi / (k * z0)) / VON_KARMAN - c / us)
-    cp = np.cos(np.asarray(phi, dtype=float))
-    return np.maximum(c_beta, 0.0) * (us / c) ** 2 * cp * np.abs(cp)
-
-
-def dissipation_exponent(k: ArrayLike) -> NDArray:
-    """Exponent ``n(k)`` of the KHCC03 dissipation term [-]: ``n_g = 5`` for gravity waves.
-
-    ``1/n = (1 - 1/n_g) f + 1/n_g``, ``f = (1 + tanh(2 ln(k / k_b))) / 2``,
-    ``k_b = k_gamma / 4``, ``k_gamma = sqrt(g / tau)`` (KHCC03 sec. 3; n -> 1 for
-    capillary waves).
-    """
-    k = np.asarray(k, dtype=float)
-    k_b = 0.25 * CAPILLARY_WAVENUMBER
-    f = 0.5 * (1.0 + np.tanh(2.0 * np.log(k / k_b)))
-    return 1.0 / ((1.0 - 1.0 / N_GRAVITY) * f + 1.0 / N_GRAVITY)
-
-
-def net_growth_rate(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
-    """``beta_nu = beta - 4 nu k^2 / omega`` [-]: wind growth less viscous loss (KHCC03).
-
-    The viscous damping rate of a free surface wave, ``4 nu k^2`` (Lamb 1932, art. 348),
-    over ``omega`` of the dispersion relation; ``nu`` the kinematic viscosity of sea water.
-
-    Parameters
-    ----------
-    k : array_like
-        Wavenumber [rad/m].
-    phi : array_like
-        Direction of travel relative to the wind [rad].
-    u10 : float
-        Wind speed at 10 m [m/s].
-    """
-    k = np.asarray(k, dtype=float)
-    omega = angular_frequency(k)
-    return wind_growth_rate(k, phi, u10) - 4.0 * NU_SEA_WATER * k**2 / omega
+# The growth rate, the dissipation exponent and the net growth rate are those of the
+# KHCC03 short-wave spectrum (seaecho.ocean.kudryavtsev), defined there once.
 
 
 def breaking_front_density(k: ArrayLike, phi: ArrayLike, u10: float) -> NDArray:
