@@ -39,7 +39,6 @@ from .model import RadarModel
 from .platforms import PlatformState
 from .pointing import Pointing
 
-
 #: Default of ``RadarSystem.freeze`` (the scatterers' radar equation recorded and
 #: replayed, :mod:`seaecho.radar.replay`): the environment variable
 #: ``SEAECHO_FREEZE_ECHO`` ("1" on, "0" off), else None: on for the CUDA back end only
