@@ -83,12 +83,15 @@ def test_replayed_echo_equals_the_traced_one_byte_for_byte(bistatic, scanning):
     assert not np.array_equal(first.tau, b.tau)
 
 
-def test_replay_records_again_for_another_size_or_precision():
-    # A change of the number of scatterers or of the working precision records again;
-    # going back to an earlier configuration replays its recording (same bytes as traced).
+def test_replay_takes_any_size_and_records_again_for_another_precision():
+    # Another number of scatterers (a hull's centres above the horizon, the land facets
+    # in the beam) replays the same recording: Dr.Jit's frozen functions take inputs of
+    # any width (one scatterer, a width-1 input like the platform vectors, records again);
+    # another working precision records again; every echo has the traced kernel's bytes.
     traced, frozen = _radar(), _radar()
     traced.freeze, frozen.freeze = False, True
-    runs = [(300, "double"), (17, "double"), (300, "single"), (300, "double")]
+    runs = [(300, "double"), (17, "double"), (1, "double"), (300, "single"),
+            (4000, "double")]
     for i, (k, precision) in enumerate(runs):
         p, v, s = _scatterers(k, seed=i)
         geo = traced.geometry(i)

@@ -15,10 +15,13 @@ fused kernel:
   axes), the only per-pulse values of the kernel, enter as inputs too: while recording,
   ``vconst`` of the geometry's arrays returns those inputs
   (:class:`seaecho.radar.resident._BoundGeometry`);
-- the number of scatterers, the working precision, whether the directions are asked
-  for and which of the platform vectors are one and the same array are arguments of the
-  recording: a change of any of them records again (Dr.Jit also records again when an
-  input's type changes).
+- the working precision, whether the directions are asked for and which of the
+  platform vectors are one and the same array are arguments of the recording: a change
+  of any of them records again, as does a change of an input's type or a set of one
+  scatterer (Dr.Jit's rules for width-1 inputs); another number of scatterers replays
+  the same recording (Dr.Jit sizes the recorded kernels by their inputs), which matters
+  for the sets whose size changes from pulse to pulse (the land's facets in the beam, a
+  hull's centres above the horizon).
 
 A replay runs the same kernel on the same values as the trace: the same bytes (tests,
 on ``drjit.llvm``). The radar's constants (carrier, power, antennas, channels) are
@@ -37,11 +40,11 @@ from .kernels import echo_terms
 
 __all__ = ["FROZEN_LIMIT", "FrozenEchoTerms", "geometry_inputs"]
 
-#: Recordings a :class:`FrozenEchoTerms` keeps (one per number of scatterers, precision
-#: and aliasing of the platform vectors; the oldest is dropped beyond it).
+#: Recordings a :class:`FrozenEchoTerms` keeps (one per precision, directions flag and
+#: aliasing of the platform vectors, input types; the oldest is dropped beyond it).
 FROZEN_LIMIT = 16
-#: Recordings after which Dr.Jit warns (scatterer sets whose size changes at every pulse
-#: re-record at every pulse: traced would be cheaper).
+#: Recordings after which Dr.Jit warns (a caller whose inputs change type at every pulse
+#: would record at every pulse: traced would be cheaper).
 FROZEN_WARN_AFTER = 16
 
 
@@ -116,14 +119,13 @@ class FrozenEchoTerms:
         if bound is None:
             return None
         values, bindings, plain, aliasing = bound
-        k = p.shape[0]
-        io = Boundary(xp, k)
+        io = Boundary(xp, p.shape[0])
         inputs = {"p": io.vec3(p), "v": io.vec3(v),
                   "s": [io.complex(s[:, a, b]) for a in range(2) for b in range(2)],
                   "geometry": values}
         self._bound = (geometry, bindings, plain)
         try:
-            t = self._frozen(inputs, k, precision, bool(directions), aliasing)
+            t = self._frozen(inputs, precision, bool(directions), aliasing)
         except RuntimeError as exc:  # a kernel Dr.Jit cannot record: traced from now on
             self.error = str(exc)
             return None
@@ -135,10 +137,10 @@ class FrozenEchoTerms:
         out["amplitudes"] = res[-1].astype(np.complex128, copy=False)
         return out
 
-    def _record(self, inputs: dict, k: int, precision: str, directions: bool,
+    def _record(self, inputs: dict, precision: str, directions: bool,
                 aliasing: tuple) -> dict[str, Any]:
-        """The frozen function's body: ``echo_terms`` with the geometry bound (``k`` and
-        ``aliasing`` are keys of the recording only)."""
+        """The frozen function's body: ``echo_terms`` with the geometry bound
+        (``aliasing`` is a key of the recording only)."""
         from .resident import _BoundGeometry
 
         geometry, bindings, plain = self._bound
