@@ -275,7 +275,7 @@ def scan(variant: str, stride: int, smoke: bool, stages: bool = False,
     """Time the coastal revolution on ``variant`` (module docstring, ``--scan``);
     ``stages``: the mean time per pulse of each stage of the pulses that skip the sea;
     ``freeze``: ``RadarSystem.freeze`` (the scatterers' radar equation replayed; None:
-    the default, on CUDA only)."""
+    the default, on)."""
     import numpy as np
 
     from seaecho.config import load_scene
@@ -359,7 +359,7 @@ def main() -> None:
                     help="--scan: the stages of the pulses that skip the sea")
     ap.add_argument("--freeze-echo", choices=("0", "1"),
                     help="--scan: RadarSystem.freeze, the scatterers' radar equation "
-                    "replayed (default: on for CUDA only)")
+                    "replayed (default: on)")
     ap.add_argument("--variant", help="--sbr, --scan: Mitsuba variant (default: CUDA if "
                     "there is a GPU, else LLVM)")
     ap.add_argument("--child", nargs=2, help=argparse.SUPPRESS)

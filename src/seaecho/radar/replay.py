@@ -14,7 +14,7 @@ fused kernel:
 - the pulse's platform vectors (positions, receiver velocity, vertical axes, antenna
   axes), the only per-pulse values of the kernel, enter as inputs too: while recording,
   ``vconst`` of the geometry's arrays returns those inputs
-  (:class:`seaecho.radar.resident._BoundGeometry`);
+  (:class:`_BoundGeometry`);
 - the working precision, whether the directions are asked for and which of the
   platform vectors are one and the same array are arguments of the recording: a change
   of any of them records again, as does a change of an input's type or a set of one
@@ -30,6 +30,7 @@ constants of the recording, which belongs to its :class:`RadarSystem`.
 
 from __future__ import annotations
 
+import threading
 from typing import Any
 
 import numpy as np
@@ -48,6 +49,41 @@ FROZEN_LIMIT = 16
 FROZEN_WARN_AFTER = 16
 
 
+def _view_key(a: Any) -> tuple | None:
+    """(address, shape, strides) of a numpy array: the same for every view of the same
+    entries."""
+    if not isinstance(a, np.ndarray):
+        return None
+    return (a.__array_interface__["data"][0], a.shape, a.strides)
+
+
+class _BoundGeometry:
+    """A Dr.Jit namespace whose ``vconst`` returns bound values for given numpy arrays.
+
+    While a frozen pulse is recorded, the platform vectors of the pulse's geometry are
+    the frozen function's inputs: ``vconst(a)`` of one of those arrays, or of a view of
+    the same entries (``np.asarray``, a column), returns its input instead of a constant
+    that the recording would keep. Every other attribute is the namespace's.
+    """
+
+    def __init__(self, xp: Any, bindings: dict[tuple, Any], arrays: tuple) -> None:
+        self._xp = xp
+        self._bindings = bindings
+        self._arrays = arrays
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._xp, name)
+
+    def vconst(self, a: Any) -> Any:
+        hit = self._bindings.get(_view_key(a))
+        if hit is not None:
+            return hit
+        if isinstance(a, np.ndarray) and any(np.shares_memory(a, b) for b in self._arrays):
+            raise RuntimeError("a platform vector of the pulse would be frozen as a "
+                               "constant (a view of the geometry that is not bound)")
+        return self._xp.vconst(a)
+
+
 def geometry_inputs(xp, geometry) -> tuple[dict[str, Any], dict, tuple, tuple] | None:
     """The pulse's platform vectors as Dr.Jit inputs of a recording.
 
@@ -58,8 +94,6 @@ def geometry_inputs(xp, geometry) -> tuple[dict[str, Any], dict, tuple, tuple] |
     which two vectors are one array reads one input for both); or None when a vector is
     not a float64 numpy array (it could not be bound: traced).
     """
-    from .resident import _view_key
-
     tx, rx = geometry.tx, geometry.rx
     plain = (tx.position, rx.position, rx.velocity, tx.rotation, rx.rotation,
              geometry.tx_axes, geometry.rx_axes)
@@ -96,6 +130,7 @@ class FrozenEchoTerms:
         self._frozen = xp.dr.freeze(self._record, limit=FROZEN_LIMIT,
                                     warn_after=FROZEN_WARN_AFTER)
         self._bound: tuple | None = None
+        self._lock = threading.Lock()  # one recording or replay at a time (``_bound``)
         #: why freezing was given up (a recording Dr.Jit refused), or None
         self.error: str | None = None
 
@@ -123,14 +158,15 @@ class FrozenEchoTerms:
         inputs = {"p": io.vec3(p), "v": io.vec3(v),
                   "s": [io.complex(s[:, a, b]) for a in range(2) for b in range(2)],
                   "geometry": values}
-        self._bound = (geometry, bindings, plain)
-        try:
-            t = self._frozen(inputs, precision, bool(directions), aliasing)
-        except RuntimeError as exc:  # a kernel Dr.Jit cannot record: traced from now on
-            self.error = str(exc)
-            return None
-        finally:
-            self._bound = None
+        with self._lock:
+            self._bound = (geometry, bindings, plain)
+            try:
+                t = self._frozen(inputs, precision, bool(directions), aliasing)
+            except RuntimeError as exc:  # a kernel Dr.Jit cannot record: traced from now on
+                self.error = str(exc)
+                return None
+            finally:
+                self._bound = None
         names = ["tau", "r_t", "r_r", "g_t", "g_r"] + (["n_i", "n_s"] if directions else [])
         res = io.numpy(*(t[n] for n in names), Rows(t["amplitudes"]))
         out = dict(zip(names, res[:-1], strict=True))
@@ -141,8 +177,6 @@ class FrozenEchoTerms:
                 aliasing: tuple) -> dict[str, Any]:
         """The frozen function's body: ``echo_terms`` with the geometry bound
         (``aliasing`` is a key of the recording only)."""
-        from .resident import _BoundGeometry
-
         geometry, bindings, plain = self._bound
         xp = _BoundGeometry(self.xp, bindings, plain)
         xs = None if precision == "double" else self.xp.with_precision(precision)
