@@ -174,3 +174,36 @@ def test_a_gpu_pulses_point_sets_take_one_transform(monkeypatch, batched):
     assert calls == [3000 + 500 + hull.tau.size]  # one setpts for the pulse
     assert len(syncs) == 2  # one pair of synchronisations for the pulse
     assert np.abs(got - want).max() <= 1e-9 * np.abs(want).max()
+
+
+@pytest.mark.slow  # 2-4 s: two simulations with a sea, land and the crests' trace
+@pytest.mark.filterwarnings("ignore::seaecho.scattering.validity.SPMValidityWarning")
+def test_a_block_of_pulses_has_the_bytes_of_its_pulses_one_by_one():
+    # Simulation.pulses finds the targets hidden by the land or the crests for the rest of
+    # each sea block at once: the same samples, byte for byte, as pulse by pulse
+    # (targets in front of and behind a field, one in the waves; the sea renewed every
+    # two pulses, so the block of four spans three sea states).
+    from seaecho.simulation import Simulation
+
+    field = {"name": "field", "outline_m": [[-50, -500], [50, -500], [50, -450],
+                                            [-50, -450]], "height_m": 30.0,
+             "shore_width_m": 10.0, "resolution_m": 5.0, "terrain": "farmland"}
+    targets = [{"name": "sunk", "position_m": (0.0, 0.0, -1.0), "rcs_m2": 1.0},
+               {"name": "behind", "position_m": (0.0, -300.0, 2.0), "rcs_m2": 10.0},
+               {"name": "front", "position_m": (300.0, -550.0, 2.0), "rcs_m2": 10.0}]
+    scene = parse_scene({
+        "sea": {"wind_speed_m_s": 5.0, "size_x_m": 64.0, "nx": 16},
+        "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 20e6,
+                  "prf_hz": 1000.0, "n_pulses": 5, "sea_update_pulses": 2,
+                  "sea_clutter": True,
+                  "transmit_power_w": 25e3, "channels": ["HH"], "thermal_noise": False,
+                  "waveform": {"kind": "pulse", "duration_s": 5e-8}},
+        "transmitter": {"position_m": (0.0, -600.0, 20.0), "yaw_deg": 90.0, "antenna": {
+            "pattern": "isotropic", "azimuth_deg": 0.0, "depression_deg": 0.0}},
+        "targets": targets, "land": [field]})
+    block, single = Simulation(scene), Simulation(scene)
+    raw, _ = block.pulses(1, 5)
+    hidden = block._hidden_ahead[2]  # the last block: land, then crests
+    assert hidden[0, :, 1].all() and hidden[1, :, 0].all() and not hidden[:, :, 2].any()
+    want = np.stack([single.pulse(p) for p in range(1, 5)])
+    assert raw.tobytes() == want.tobytes()
