@@ -207,3 +207,36 @@ def test_a_block_of_pulses_has_the_bytes_of_its_pulses_one_by_one():
     assert hidden[0, :, 1].all() and hidden[1, :, 0].all() and not hidden[:, :, 2].any()
     want = np.stack([single.pulse(p) for p in range(1, 5)])
     assert raw.tobytes() == want.tobytes()
+
+
+def _cuda_replays(path: str) -> None:
+    """Echoes of the scatterers at three pulses on ``drjit.cuda``, traced and replayed,
+    and the number of recordings (in its own process: one Mitsuba variant each)."""
+    out = []
+    radars = [_radar(), _radar()]
+    radars[0].freeze, radars[1].freeze = False, True
+    for radar in radars:
+        for pulse, k in ((0, 300), (3, 2000), (250, 300)):
+            p, v, s = _scatterers(k, seed=pulse)
+            e = radar.scatterer_echo(radar.geometry(pulse), p, v, s, directions=True,
+                                     variant="cuda_ad_mono_polarized")
+            out.append(np.frombuffer(_bytes(e), dtype=np.float64))
+    out.append(np.array([radars[1]._replay["cuda"].recordings], dtype=np.float64))
+    np.save(path, np.concatenate(out))
+
+
+@pytest.mark.gpu
+@pytest.mark.skipif(not backend.cuda_available(), reason="needs a CUDA GPU")
+def test_cuda_replayed_echo_equals_the_traced_one(tmp_path):
+    # The radar equation replayed on drjit.cuda: the traced kernel's bytes, one recording
+    import subprocess
+    from pathlib import Path
+
+    path = tmp_path / "replay.npy"
+    res = subprocess.run([sys.executable, "-c", "import test_replay; "
+                          f"test_replay._cuda_replays({str(path)!r})"],
+                         cwd=str(Path(__file__).parent), capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr[-3000:]
+    a = np.load(path)
+    traced, frozen = a[:-1][: (a.size - 1) // 2], a[:-1][(a.size - 1) // 2:]
+    assert traced.tobytes() == frozen.tobytes() and a[-1] == 1.0
