@@ -255,7 +255,9 @@ def _simulation_of(path: Path, variant: str, update: dict | None = None):
 SCAN_STAGES = [
     ("seaecho.simulation", "Simulation.pulse", "pulse (end to end, no compression)", 0),
     ("seaecho.simulation", "Simulation.sea_skipped", "the sea's beam bound", 1),
+    ("seaecho.simulation", "Simulation.pulses", "pulses (a block, as Simulation.run)", 0),
     ("seaecho.simulation", "Simulation.targets_hidden", "targets hidden (land, crests)", 1),
+    ("seaecho.simulation", "Simulation.sea_echo", "sea echo", 1),
     ("seaecho.radar.system", "RadarSystem.target_echo", "targets' echo", 1),
     ("seaecho.radar.system", "RadarSystem.scatterer_echo", "radar equation (all sets)", 2),
     ("seaecho.radar.replay", "FrozenEchoTerms.__call__", "replayed", 3),
@@ -300,6 +302,8 @@ def scan(variant: str, stride: int, smoke: bool, stages: bool = False,
     skips = [bool(sim.sea_skipped(int(p))) for p in pulses]
     skipped = sum(skips)
     if stride == 1:  # the whole revolution, a sea block at a time, as Simulation.run
+        if timer is not None:
+            timer.reset()
         w0, c0 = time.perf_counter(), time.process_time()
         for a in range(0, n, sim.block):
             sim.pulses(a, min(a + sim.block, n))
@@ -308,6 +312,13 @@ def scan(variant: str, stride: int, smoke: bool, stages: bool = False,
               f"{setup:.1f} s; all {n} pulses ({skipped} skip the sea) by Simulation."
               f"pulses, {sim.block} at a time: {w:.2f} s wall / {c:.2f} s CPU (real time: "
               f"{n / scene.radar.prf_hz:.2f} s; load {os.getloadavg()[0]:.2f})", flush=True)
+        if timer is not None:  # every pulse of the revolution, with and without the sea
+            print(f"  stages, all {n} pulses (wall / CPU ms per pulse):")
+            for label, _, depth in found:
+                if label in timer.wall:
+                    print(f"    {'  ' * depth + label:44s} {1e3 * timer.wall[label] / n:8.3f}"
+                          f" {1e3 * timer.cpu[label] / n:8.3f}  "
+                          f"({timer.calls[label] / n:g} calls)")
         return
     inbeam, other = [], []
     first = []  # (time, skip) of the first sampled pulse of each sea block

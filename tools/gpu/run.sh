@@ -28,6 +28,6 @@ step 150 $PY -m pytest -q -p no:cacheprovider -m gpu tests/test_backend.py \
     tests/radar/test_resident.py tests/radar/test_replay.py                 # 2
 step 120 $PY $B --no-cpu --pulses 40 --warmup 3                             # 3
 step 70 $PY $B --scan --stride 25 --stages --variant $C                     # 4
-step 120 $PY $B --scan --stride 1 --variant $C                              # 5
+step 120 $PY $B --scan --stride 1 --stages --variant $C                     # 5
 step 70 $PY $B --scan --stride 25 --stages --variant $LV                    # 6
 echo "done [$SECONDS s]" | tee -a $L
