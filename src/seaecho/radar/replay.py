@@ -108,7 +108,7 @@ def geometry_inputs(xp, geometry) -> tuple[dict[str, Any], dict, tuple, tuple] |
     keys = [_view_key(a) for a in arrays.values()]
     aliasing = tuple(keys.index(k) for k in keys)
     values = {name: xp.vconst(a) for name, a in arrays.items()}
-    bindings = {_view_key(a): values[name] for name, a in arrays.items()}
+    bindings = {key: values[name] for key, name in zip(keys, arrays, strict=True)}
     return values, bindings, plain, aliasing
 
 
