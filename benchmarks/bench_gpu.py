@@ -84,6 +84,13 @@ def _simulation(variant: str, refresh: float, update: int):
         return Simulation(scene, base_dir=SIM2.parent)
 
 
+#: Stages timed beside ``profile_pulse.STAGES`` (the GPU path's own).
+GPU_STAGES = [
+    ("seaecho.radar.replay", "FrozenEchoTerms.__call__", "radar equation replayed", 2),
+    ("seaecho.radar.echo", "accumulate_cuda_sets", "cufinufft, all sets + iFFT", 2),
+]
+
+
 def run(variant: str, pulses: int, warmup: int, refresh: float, update: int,
         out: str | None, profile: bool, freezes: tuple = (None,)) -> list[dict]:
     """Time the pulses of one variant in this process, once per entry of ``freezes``
@@ -94,10 +101,13 @@ def run(variant: str, pulses: int, warmup: int, refresh: float, update: int,
 
     timer = None
     if profile:
-        from profile_pulse import Timer, install
+        import profile_pulse
 
-        timer = Timer()
-        found = install(timer)
+        saved = profile_pulse.STAGES
+        profile_pulse.STAGES = saved + GPU_STAGES
+        timer = profile_pulse.Timer()
+        found = profile_pulse.install(timer)
+        profile_pulse.STAGES = saved
     t0 = time.perf_counter()
     sim = _simulation(variant, refresh, update)
     import drjit as dr
@@ -108,6 +118,8 @@ def run(variant: str, pulses: int, warmup: int, refresh: float, update: int,
         t1 = time.perf_counter()
         if freeze is not None and sim._resident is not None:
             sim._resident.freeze = freeze
+        if freeze is not None:  # the scatterers' radar equation (the hull's) likewise
+            sim.radar.freeze = freeze
         for p in range(first, first + warmup):
             sim.compress(sim.pulse(p))
         setup = time.perf_counter() - (t0 if not results else t1)
@@ -139,6 +151,9 @@ def run(variant: str, pulses: int, warmup: int, refresh: float, update: int,
         results.append({"variant": variant, "setup_s": setup, "wall": wall, "cpu": cpu,
                         "freeze": frozen, "launches": len(history) / pulses,
                         "freeze_error": getattr(sim._resident, "freeze_error", None),
+                        "echo_frozen": sim.radar.frozen(_namespace(variant)),
+                        "echo_recordings": {k: r.recordings
+                                            for k, r in sim.radar._replay.items()},
                         "kernels_ms": {k: v / pulses for k, v in kernels.items()},
                         "stages": stages})
     return results
@@ -235,29 +250,110 @@ def _simulation_of(path: Path, variant: str, update: dict | None = None):
         return Simulation(scene, base_dir=path.parent)
 
 
-def scan(variant: str, stride: int, smoke: bool) -> None:
-    """Time the coastal revolution on ``variant`` (module docstring, ``--scan``)."""
+#: (module, attribute path, label, depth): the stages of a pulse whose beam misses the
+#: sea (``--scan --stages``), timed like ``profile_pulse.py``'s.
+SCAN_STAGES = [
+    ("seaecho.simulation", "Simulation.pulse", "pulse (end to end, no compression)", 0),
+    ("seaecho.simulation", "Simulation.sea_skipped", "the sea's beam bound", 1),
+    ("seaecho.simulation", "Simulation.pulses", "pulses (a block, as Simulation.run)", 0),
+    ("seaecho.simulation", "Simulation.targets_hidden", "targets hidden (land, crests)", 1),
+    ("seaecho.simulation", "Simulation.sea_echo", "sea echo", 1),
+    ("seaecho.radar.system", "RadarSystem.target_echo", "targets' echo", 1),
+    ("seaecho.radar.system", "RadarSystem.scatterer_echo", "radar equation (all sets)", 2),
+    ("seaecho.radar.replay", "FrozenEchoTerms.__call__", "replayed", 3),
+    ("seaecho.tracing.hull_echo", "HullEchoes.echoes", "hull echoes", 1),
+    ("seaecho.simulation", "Simulation.land_patches", "land patches in the beam", 1),
+    ("seaecho.tracing.land", "LandEchoes.echo", "land echo", 1),
+    ("seaecho.radar.system", "RadarSystem.receive", "receive (accumulation, noise)", 1),
+    ("seaecho.radar.echo", "accumulate", "NUFFT / direct sum + iFFT", 2),
+    ("seaecho.radar.system", "thermal_noise", "thermal noise", 2),
+    ("seaecho.checks.guards", "check_pulse", "finite check", 1),
+    ("seaecho.simulation", "Simulation.compress", "range compression", 0),
+]
+
+
+def scan(variant: str, stride: int, smoke: bool, stages: bool = False,
+         freeze: bool | None = None) -> None:
+    """Time the coastal revolution on ``variant`` (module docstring, ``--scan``);
+    ``stages``: the mean time per pulse of each stage of the pulses that skip the sea;
+    ``freeze``: ``RadarSystem.freeze`` (the scatterers' radar equation replayed; None:
+    the default, on)."""
     import numpy as np
 
     from seaecho.config import load_scene
 
     path = small_scene(SCAN, grid=16 if smoke else 256, pulses=2500)
     scene = load_scene(path)
+    timer = None
+    if stages:
+        import profile_pulse
+
+        profile_pulse.STAGES, saved = SCAN_STAGES, profile_pulse.STAGES
+        timer = profile_pulse.Timer()
+        found = profile_pulse.install(timer)
+        profile_pulse.STAGES = saved
     t0 = time.perf_counter()
     sim = _simulation_of(path, variant)
+    sim.radar.freeze = freeze
     n = sim.radar.n_pulses
     pulses = np.arange(0, n, stride)
     sim.compress(sim.pulse(int(pulses[0]))[None])  # compilation, the first sea state
     setup = time.perf_counter() - t0
     skips = [bool(sim.sea_skipped(int(p))) for p in pulses]
     skipped = sum(skips)
+    if stride == 1:  # the whole revolution, a sea block at a time, as Simulation.run
+        if timer is not None:
+            timer.reset()
+        w0, c0 = time.perf_counter(), time.process_time()
+        for a in range(0, n, sim.block):
+            sim.pulses(a, min(a + sim.block, n))
+        w, c = time.perf_counter() - w0, time.process_time() - c0
+        print(f"  coastal revolution on {variant} ({scene.sea.nx}^2 sea): set-up "
+              f"{setup:.1f} s; all {n} pulses ({skipped} skip the sea) by Simulation."
+              f"pulses, {sim.block} at a time: {w:.2f} s wall / {c:.2f} s CPU (real time: "
+              f"{n / scene.radar.prf_hz:.2f} s; load {os.getloadavg()[0]:.2f})", flush=True)
+        if timer is not None:  # every pulse of the revolution, with and without the sea
+            print(f"  stages, all {n} pulses (wall / CPU ms per pulse):")
+            for label, _, depth in found:
+                if label in timer.wall:
+                    print(f"    {'  ' * depth + label:44s} {1e3 * timer.wall[label] / n:8.3f}"
+                          f" {1e3 * timer.cpu[label] / n:8.3f}  "
+                          f"({timer.calls[label] / n:g} calls)")
+        return
     inbeam, other = [], []
+    first = []  # (time, skip) of the first sampled pulse of each sea block
     w0, c0 = time.perf_counter(), time.process_time()
+    last = None
     for p, skip in zip(pulses, skips, strict=True):
         t = time.perf_counter()
         sim.compress(sim.pulse(int(p))[None])
-        (other if skip else inbeam).append(time.perf_counter() - t)
+        t = time.perf_counter() - t
+        if int(p) // sim.block != last:  # a new sea state (and its crests' BVH)
+            first.append((t, skip))
+        else:
+            (other if skip else inbeam).append(t)
+        last = int(p) // sim.block
     w, c = time.perf_counter() - w0, time.process_time() - c0
+    # each sea block's first pulse pays its sea state once, not `stride` times
+    typical = {True: float(np.median(other)) if other else 0.0,
+               False: float(np.median(inbeam)) if inbeam else 0.0}
+    once = stride * (sum(other) + sum(inbeam)) + sum(
+        t + (stride - 1) * typical[skip] for t, skip in first)
+    print(f"  revolution with each sea block's first pulse counted once: {once:.1f} s "
+          f"({len(first)} blocks: {1e3 * sum(t for t, _ in first) / max(len(first), 1):.0f} "
+          "ms per first pulse)", flush=True)
+    if timer is not None:  # the pulses that skip the sea, stage by stage
+        timer.reset()
+        for p in [int(q) for q, skip in zip(pulses, skips, strict=True) if skip]:
+            sim.compress(sim.pulse(p)[None])
+        print(f"  stages of the {skipped} pulses that skip the sea (wall / CPU ms per "
+              f"pulse; load {os.getloadavg()[0]:.2f}; radar equation replayed: "
+              f"{sim.radar.frozen(_namespace(variant))}):")
+        for label, _, depth in found:
+            if label in timer.wall:
+                print(f"    {'  ' * depth + label:44s} {1e3 * timer.wall[label] / skipped:8.3f}"
+                      f" {1e3 * timer.cpu[label] / skipped:8.3f}  "
+                      f"({timer.calls[label] / skipped:g} calls)")
     print(f"  coastal revolution on {variant} ({scene.sea.nx}^2 sea): set-up {setup:.1f} s; "
           f"{len(pulses)} pulses ({skipped} skip the sea) in {w:.2f} s wall / {c:.2f} s CPU; "
           f"revolution (extrapolated x {n / len(pulses):g}) {w * n / len(pulses):.1f} s wall "
@@ -265,6 +361,12 @@ def scan(variant: str, stride: int, smoke: bool) -> None:
           f"{1e3 * float(np.median(inbeam)) if inbeam else float('nan'):.1f} ms, without "
           f"{1e3 * float(np.median(other)) if other else float('nan'):.2f} ms (medians)",
           flush=True)
+
+
+def _namespace(variant: str):
+    from seaecho.backend import drjit_namespace
+
+    return drjit_namespace(variant)
 
 
 def main() -> None:
@@ -289,6 +391,11 @@ def main() -> None:
     ap.add_argument("--scan", action="store_true",
                     help="time the coastal revolution instead")
     ap.add_argument("--stride", type=int, default=25, help="--scan: every N-th pulse")
+    ap.add_argument("--stages", action="store_true",
+                    help="--scan: the stages of the pulses that skip the sea")
+    ap.add_argument("--freeze-echo", choices=("0", "1"),
+                    help="--scan: RadarSystem.freeze, the scatterers' radar equation "
+                    "replayed (default: on)")
     ap.add_argument("--variant", help="--sbr, --scan: Mitsuba variant (default: CUDA if "
                     "there is a GPU, else LLVM)")
     ap.add_argument("--child", nargs=2, help=argparse.SUPPRESS)
@@ -319,7 +426,8 @@ def main() -> None:
         if args.sbr:
             sbr(variant, args.sbr_batch, args.sbr_profile)
         else:
-            scan(variant, 1250 if args.smoke else args.stride, args.smoke)
+            scan(variant, 1250 if args.smoke else args.stride, args.smoke, args.stages,
+                 None if args.freeze_echo is None else args.freeze_echo == "1")
         return
     if not cuda_available():
         if args.smoke:  # the CPU half, which runs anywhere
@@ -327,7 +435,8 @@ def main() -> None:
                          args.update, None, profile=True, freezes=(False, True)):
                 print(f"bench_gpu --smoke: no CUDA GPU; CPU (llvm) set-up {r['setup_s']:.1f} "
                       f"s, {len(r['wall'])} pulse(s), {1e3 * statistics.median(r['wall']):.1f} "
-                      f"ms, frozen {r['freeze']}")
+                      f"ms, frozen {r['freeze']}, radar equation replayed "
+                      f"{r['echo_frozen']} {r['echo_recordings']}")
             return
         sys.exit("bench_gpu: no CUDA GPU here (Dr.Jit finds no CUDA device)")
     try:
@@ -350,7 +459,8 @@ def main() -> None:
                   f": set-up {g['setup_s']:.1f} s; per pulse median {np.median(w):.2f} ms, "
                   f"min {w.min():.2f}, max {w.max():.2f} ms (host CPU "
                   f"{1e3 * statistics.median(g['cpu']):.2f} ms; {g['launches']:.0f} "
-                  "launches)", flush=True)
+                  f"launches); scatterers' radar equation replayed: {g['echo_frozen']} "
+                  f"(recordings {g['echo_recordings']})", flush=True)
             print(f"  {'stage':44s} {'wall [ms]':>10s}")
             for label, ms, depth in g["stages"]:
                 print(f"  {'  ' * depth + label:44s} {ms:10.2f}")

@@ -259,6 +259,9 @@ class Simulation:
         self._speckle = None
         self._tile_box = None  # the sea tile's box of sea_gain_bound (8, 3) [m]
         self._skip_cache: dict[int, bool] = {}  # sea_skipped by pulse (a pure function)
+        #: targets_hidden of a block of pulses (first, end, (2, end - first, T) or None),
+        #: computed at once by pulses()
+        self._hidden_ahead: tuple | None = None
         if self.sea is not None:
             from .tracing.engine import FacetEngine
 
@@ -680,7 +683,11 @@ class Simulation:
         echoes = []
         if self.sea is not None and not self.sea_skipped(pulse):
             echoes.append(self.sea_echo(pulse, geo).echo)
-        hidden = self.targets_hidden(pulse)  # behind the land or a wave crest
+        ahead = self._hidden_ahead  # computed for a block of pulses by pulses()
+        if ahead is not None and ahead[0] <= pulse < ahead[1]:
+            hidden = None if ahead[2] is None else ahead[2][:, pulse - ahead[0]][:, None]
+        else:
+            hidden = self.targets_hidden(pulse)  # behind the land or a wave crest
         hide = {} if hidden is None or not hidden.any() else {"hidden": hidden.any(axis=0)[0]}
         t = self.radar.target_echo(geo, variant=self.variant, **hide)  # its pulse: geo.time
         if t is not None:
@@ -803,6 +810,12 @@ class Simulation:
                     and not self.sea_skipped(p + 1)):
                 self.surface_state(p)  # this pulse's sea (computed ahead, if it was)
                 self.prefetch_surface(p + 1)  # the next one's, while this pulse runs
+            ahead = self._hidden_ahead
+            if ahead is None or not ahead[0] <= p < ahead[1]:
+                # the targets' lines of sight of the rest of this sea block at once (a
+                # pure function of the pulse: the same bytes as pulse by pulse)
+                end = min(stop, (p // self.block + 1) * self.block)
+                self._hidden_ahead = (p, end, self.targets_hidden(np.arange(p, end)))
             out.append(self.pulse(p))
         raw = np.stack(out)
         return raw, self.compress(raw)

@@ -480,24 +480,66 @@ def accumulate_cuda(xp, tau: object, amplitudes: tuple, pulse_spectrum: ArrayLik
     the order in which the GPU's threads run (results agree with :func:`accumulate` to
     the NUFFT tolerance, not bit for bit).
     """
+    return accumulate_cuda_sets(xp, [(tau, amplitudes)], pulse_spectrum, window, eps)
+
+
+def accumulate_cuda_sets(xp, sets: list, pulse_spectrum: ArrayLike, window: ReceiveWindow,
+                         eps: float = 1e-9) -> NDArray[np.complex128]:
+    """:func:`accumulate_cuda` of several point sets of one pulse (the sea's facets, a
+    hull's centres) as one transform.
+
+    Eq (E2) is a sum over scatterers, so the sets' points are concatenated on the device
+    (their folded phasor points into one (K,) buffer, their channels into one (C, K)
+    buffer, in the kernel that folds them) and go through one ``setpts``, one cufinufft
+    call (``n_trans = C``), one pair of context synchronisations, one copy of the (C, N)
+    sums and one inverse FFT on the host: the host work of a pulse, not of each set.
+
+    Parameters
+    ----------
+    xp : seaecho.backend.DrJitNamespace
+    sets : list of (tau, amplitudes)
+        Each as :func:`accumulate_cuda`'s ``tau`` and ``amplitudes`` (the same C).
+    pulse_spectrum, window, eps
+        As :func:`accumulate_cuda`.
+
+    Returns
+    -------
+    ndarray (C, n_samples) complex
+        The sum of the sets' r_m [sqrt(W)], to the NUFFT tolerance.
+    """
     import cufinufft
 
     from ..backend import cuda_array, cuda_synchronize
 
     spec = np.asarray(pulse_spectrum)
-    n, c = spec.size, len(amplitudes)
-    k = xp.width(tau)
+    n = spec.size
+    c = len(sets[0][1])
+    sets = [(t, a) for t, a in sets if xp.width(t) > 0]
+    widths = [xp.width(t) for t, _ in sets]
+    k = sum(widths)
     if k == 0:
         return np.zeros((c, window.n_samples), dtype=np.complex128)
-    # Eq (E2): the phasor points, folded into [-pi, pi)
-    u = (tau - xp.const(window.t0)) * (window.sampling_rate / n) + 0.5
-    x = (2.0 * np.pi) * (u - xp.floor(u)) - np.pi
+
+    def fold(tau):  # eq (E2): the phasor points, folded into [-pi, pi)
+        u = (tau - xp.const(window.t0)) * (window.sampling_rate / n) + 0.5
+        return (2.0 * np.pi) * (u - xp.floor(u)) - np.pi
+
+    if len(sets) == 1:
+        x = fold(sets[0][0])
+    else:  # the sets' points one after the other
+        x, off = xp.empty(k), 0
+        for (t, _), w in zip(sets, widths, strict=True):
+            xp.scatter(x, fold(t), xp.arange(w) + off)
+            off += w
     if CUDA_BATCH_CHANNELS and c > 1:
         # the channels stacked into one (C, K) buffer on the device (one kernel), one
         # cufinufft call with n_trans = C, one copy of the (C, N) sums to the host
-        stacked, idx = xp.empty(2 * c * k), xp.arange(2 * k)
-        for j, a in enumerate(amplitudes):
-            xp.scatter(stacked, a, idx + 2 * k * j)
+        stacked, off = xp.empty(2 * c * k), 0
+        for (_, amps), w in zip(sets, widths, strict=True):
+            idx = xp.arange(2 * w) + 2 * off
+            for j, a in enumerate(amps):
+                xp.scatter(stacked, a, idx + 2 * k * j)
+            off += w
         sums = xp.empty(2 * c * n)
         xp.eval(x, stacked, sums)
         cuda_synchronize()
@@ -508,12 +550,21 @@ def accumulate_cuda(xp, tau: object, amplitudes: tuple, pulse_spectrum: ArrayLik
         cuda_synchronize()
         phasors = np.asarray(xp.host(sums)).view(np.complex128).reshape(c, n)
         return np.fft.ifft(phasors * spec, axis=-1)[:, :window.n_samples]
+    if len(sets) == 1:
+        channels = list(sets[0][1])
+    else:  # each channel's sets one after the other
+        channels, off = [xp.empty(2 * k) for _ in range(c)], 0
+        for (_, amps), w in zip(sets, widths, strict=True):
+            idx = xp.arange(2 * w) + 2 * off
+            for buf, a in zip(channels, amps, strict=True):
+                xp.scatter(buf, a, idx)
+            off += w
     out = [xp.empty(2 * n) for _ in range(c)]
-    xp.eval(x, *amplitudes, *out)
+    xp.eval(x, *channels, *out)
     cuda_synchronize()
     plan = _cuda_plan(cufinufft, n, float(eps))
     plan.setpts(cuda_array(x, np.float64, (k,)))
-    for a, o in zip(amplitudes, out, strict=True):
+    for a, o in zip(channels, out, strict=True):
         plan.execute(cuda_array(a, np.complex128, (k,)), out=cuda_array(o, np.complex128, (n,)))
     cuda_synchronize()
     phasors = np.stack([np.asarray(xp.host(o)).view(np.complex128) for o in out])
@@ -602,6 +653,7 @@ __all__ = [
     "MIRROR_TOLERANCE",
     "NUFFT_CHUNKS",
     "accumulate",
+    "accumulate_cuda_sets",
     "accumulate_cuda",
     "accumulate_direct",
     "accumulate_pulse_write",

@@ -68,6 +68,7 @@ from ..scattering.facet import (
 )
 from ..scattering.spectrum_table import BraggSpectrumTable
 from .kernels import facet_visibility, sea_echo_terms
+from .replay import _BoundGeometry, _view_key
 from .system import DeviceEcho, PulseGeometry, RadarSystem, ScattererEcho
 
 __all__ = ["FREEZE", "ResidentSea", "resident_sea"]
@@ -81,41 +82,6 @@ FREEZE: bool | None = ({"1": True, "0": False}.get(os.environ["SEAECHO_FREEZE"])
 #: Recordings of the frozen kernel after which Dr.Jit warns (a scene whose pulses keep
 #: changing its structure would re-record at every pulse).
 FREEZE_WARN_AFTER = 10
-
-
-def _view_key(a: Any) -> tuple | None:
-    """(address, shape, strides) of a numpy array: the same for every view of the same
-    entries."""
-    if not isinstance(a, np.ndarray):
-        return None
-    return (a.__array_interface__["data"][0], a.shape, a.strides)
-
-
-class _BoundGeometry:
-    """A Dr.Jit namespace whose ``vconst`` returns bound values for given numpy arrays.
-
-    While a frozen pulse is recorded, the platform vectors of the pulse's geometry are
-    the frozen function's inputs: ``vconst(a)`` of one of those arrays, or of a view of
-    the same entries (``np.asarray``, a column), returns its input instead of a constant
-    that the recording would keep. Every other attribute is the namespace's.
-    """
-
-    def __init__(self, xp: Any, bindings: dict[tuple, Any], arrays: tuple) -> None:
-        self._xp = xp
-        self._bindings = bindings
-        self._arrays = arrays
-
-    def __getattr__(self, name: str) -> Any:
-        return getattr(self._xp, name)
-
-    def vconst(self, a: Any) -> Any:
-        hit = self._bindings.get(_view_key(a))
-        if hit is not None:
-            return hit
-        if isinstance(a, np.ndarray) and any(np.shares_memory(a, b) for b in self._arrays):
-            raise RuntimeError("a platform vector of the pulse would be frozen as a "
-                               "constant (a view of the geometry that is not bound)")
-        return self._xp.vconst(a)
 
 
 class ResidentSea:

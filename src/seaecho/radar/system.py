@@ -22,6 +22,7 @@ emission time (the echo arrives microseconds later).
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -32,11 +33,19 @@ from ..backend import aligned
 from ..constants import C0
 from ..geometry.frames import tile_outline
 from ..rng import generator
-from .echo import DIRECT_TERMS, ReceiveWindow, accumulate, accumulate_cuda
+from .echo import DIRECT_TERMS, ReceiveWindow, accumulate, accumulate_cuda_sets
 from .equation import noise_power, thermal_noise
 from .model import RadarModel
 from .platforms import PlatformState
 from .pointing import Pointing
+
+#: Default of ``RadarSystem.freeze`` (the scatterers' radar equation recorded and
+#: replayed, :mod:`seaecho.radar.replay`): the environment variable
+#: ``SEAECHO_FREEZE_ECHO`` ("1" on, "0" off), else None: on for both back ends (a
+#: replay costs less than a trace on the CPU too: 0.3 against 0.7 ms for 3 scatterers,
+#: 27 against 29 ms for 50 000; docs/performance.md, section 4).
+FREEZE_ECHO: bool | None = ({"1": True, "0": False}.get(os.environ["SEAECHO_FREEZE_ECHO"])
+                            if "SEAECHO_FREEZE_ECHO" in os.environ else None)
 
 
 @dataclass(frozen=True)
@@ -185,6 +194,30 @@ class RadarSystem:
         self.window = window
         self.n_fft = window.n_fft(self.waveform.n_samples)
         self._spectrum = self.waveform.spectrum(self.n_fft)
+        #: replay the recorded radar-equation kernel of :meth:`scatterer_echo`
+        #: (``drjit.freeze``, :mod:`seaecho.radar.replay`) instead of tracing it at each
+        #: call; None: :data:`FREEZE_ECHO`, and where that is None, on (both back ends)
+        self.freeze: bool | None = None
+        self._replay: dict[str, Any] = {}
+
+    def __getstate__(self) -> dict:
+        state = dict(self.__dict__)
+        state["_replay"] = {}  # recordings stay in their process (they do not pickle)
+        return state
+
+    def frozen(self, xp: Any) -> bool:
+        """Whether :meth:`scatterer_echo` replays its recorded kernel on namespace ``xp``
+        (:attr:`freeze`); makes the recorder on first use."""
+        on = self.freeze
+        if on is None:
+            on = True if FREEZE_ECHO is None else FREEZE_ECHO
+        if not on:
+            return False
+        if xp.name not in self._replay:
+            from .replay import FrozenEchoTerms
+
+            self._replay[xp.name] = FrozenEchoTerms(xp, self)
+        return self._replay[xp.name].error is None
 
     # ------------------------------------------------------------------------ basics
     @property
@@ -322,8 +355,12 @@ class RadarSystem:
         s = self.propagated(geometry, p, np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2),
                             multipath)
         xp = drjit_namespace(variant)
-        xs = None if precision == "double" else xp.with_precision(precision)
-        r = scatterer_echo(xp, self, geometry, p, v, s, directions, scattering=xs)
+        r = None
+        if self.frozen(xp):  # the recorded kernel replayed (radar.replay)
+            r = self._replay[xp.name](geometry, p, v, s, directions, precision)
+        if r is None:
+            xs = None if precision == "double" else xp.with_precision(precision)
+            r = scatterer_echo(xp, self, geometry, p, v, s, directions, scattering=xs)
         return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
                              r["g_r"], r.get("n_i"), r.get("n_s"))
 
@@ -382,11 +419,12 @@ class RadarSystem:
             out[...] = 0.0
         # A pulse whose sea is on a GPU accumulates there the host scatterer sets that
         # would take the NUFFT (a hull's centres): uploaded, cufinufft on the same plan
+        # (all of them in one transform: accumulate_cuda_sets)
         device = next((e.xp for e in echoes if isinstance(e, DeviceEcho)), None)
+        on_device: list[DeviceEcho] = []
         for e in echoes:  # a handful of scatterer sets (sea, targets), each one vectorised
             if isinstance(e, DeviceEcho):  # already cut to the window, on the GPU
-                out += accumulate_cuda(e.xp, e.tau, e.amplitudes, self._spectrum,
-                                       self.window)
+                on_device.append(e)
                 continue
             if self.window.keeps_all(e.tau, self.waveform.n_samples):  # no copies
                 tau, amp = e.tau, e.amplitudes
@@ -397,12 +435,13 @@ class RadarSystem:
                 else:
                     tau, amp = e.tau[keep], [a[keep] for a in e.amplitudes]
             if device is not None and tau.size * self._spectrum.size > DIRECT_TERMS:
-                d = DeviceEcho.upload(device, tau, amp)
-                out += accumulate_cuda(device, d.tau, d.amplitudes, self._spectrum,
-                                       self.window)
+                on_device.append(DeviceEcho.upload(device, tau, amp))
             elif tau.size:
                 out += accumulate(tau, amp, self._spectrum, self.window,
                                   precision=self.model.accumulation_precision)
+        if on_device:
+            out += accumulate_cuda_sets(device, [(e.tau, e.amplitudes) for e in on_device],
+                                        self._spectrum, self.window)
         if self.model.transmit_phase == "random":  # a magnetron: a new phase per pulse
             out *= np.exp(1j * self.transmit_phase(pulse))
         if self.model.thermal_noise if noise is None else noise:
