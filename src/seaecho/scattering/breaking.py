@@ -104,8 +104,9 @@ of the fronts, ``int c(k) cos(phi) Lambda dk dphi / int Lambda dk dphi`` along t
 (the mean breaker velocity of Hansen et al. 2012, eq 19, after K05; read in an open
 implementation of their DopRIM model; :func:`breaking_statistics`), gives the Doppler
 shift of the breaking component (0.97 m/s at 10 GHz and U10 = 7.6 m/s; the mean *speed*
-times the wind direction, used before, gave 1.11 m/s), and each breaker lives for roughly one period of its wave (active breaking
-lasts about one wave period in the laboratory, Rapp & Melville 1990). The speckle of
+times the wind direction, used before, gave 1.11 m/s), and each breaker lives for
+roughly one period of its wave (active breaking lasts about one wave period in the
+laboratory, Rapp & Melville 1990). The speckle of
 the breaking component is independent of the Bragg and specular speckle (distinct
 scatterers).
 
