@@ -196,7 +196,8 @@ def friction_velocity(law: str, u10: ArrayLike, inverse_wave_age: float = OMEGA_
 #: quoted from memory: Wu's abstract (the text read here) gives the proportionality and a
 #: total surface drift (wind + Stokes) approaching 3.5 % of the wind at long fetch, not
 #: the number; tank measurements give 0.65-1.2 u* (Polnikov, Qiao & Ma 2020, J. Phys.
-#: Oceanogr. 50(10), abstract).
+#: Oceanogr. 50(10), abstract). Searched again (Wu 1975, Wu 1983, the open Doppler models):
+#: not found; the default drift is the sourced total surface drift (SURFACE_DRIFT_OVER_U10).
 WIND_DRIFT_OVER_U_STAR = 0.53
 
 
