@@ -14,7 +14,8 @@ composite-surface model's predictions (Thompson 1989): the Bragg centroid
 waves travelling towards the radar, ``U`` the surface drift of the default ``[sea]
 wind_drift``, 3 % of U10 along the wind on this evolving sea) and the width
 ``sqrt(sigma_orb^2 + 4 p+ p- f_B^2)`` with ``sigma_orb = sqrt(q^T C q) / (2 pi)`` the
-Doppler spread of the orbital velocities of all the waves of the tile (eq U2). Writes ``dynamics_doppler_spectra.png`` and ``dynamics_doppler.csv``.
+Doppler spread of the orbital velocities of all the waves of the tile (eq U2). Writes
+``dynamics_doppler_spectra.png`` and ``dynamics_doppler.csv``.
 """
 
 from __future__ import annotations
