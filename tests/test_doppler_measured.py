@@ -28,9 +28,9 @@ centroid from below by the Bragg line plus the drift (the model carries the drif
 default ``[sea] wind_drift = "auto"`` is 3 % of U10 on this evolving sea, and the
 orbital part adds to it upwind). (An earlier version also bounded it from above by
 Bragg + drift: that held for the centro-symmetric Elfouhaily spreading, whose waves run
-both ways and carry no tilt-orbital Doppler, and a model without drift.) The moderate-incidence centroids are
-compared value by value with published Doppler model functions in
-``tests/validation/test_doppler_gmf.py``.
+both ways and carry no tilt-orbital Doppler, and a model without drift.) The
+moderate-incidence centroids are compared value by value with published Doppler model
+functions in ``tests/validation/test_doppler_gmf.py``.
 """
 
 from __future__ import annotations

@@ -28,7 +28,7 @@ agree; VV upwind is 0.5-0.7 of the published values at 5-12 m/s (the model has n
 drift, no hydrodynamic modulation of the short waves by the long ones, and the sub-facet
 waves' tilt is uncorrelated with their orbital velocity); the Bragg line alone (what a
 centro-symmetric spreading leaves) is a quarter of CDOP. At low grazing the breaking
-zones speed the centroid up 2.1x (VV) and 5-6x (HH) for the measured ~1.5x.
+zones speed the HH centroid up 2.9-3.6x for the measured ~1.5x (VV: 1.5x, as measured).
 """
 
 from __future__ import annotations
@@ -219,11 +219,17 @@ def test_breaking_speeds_up_both_polarisations_at_low_grazing(breaking_rows):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="breaking zones move at the breakers' phase speed: the "
-                   "centroid grows 2.1x (VV) and 5-6x (HH) for the measured ~1.5x "
-                   "(docs/dynamics.md)")
-def test_breaking_speed_up_about_fifty_percent(breaking_rows):
-    # "about 50% faster": read here as 1.25-1.75 (the abstract gives no scatter)
+def test_breaking_speeds_vv_up_about_fifty_percent(breaking_rows):
+    # "about 50% faster": read here as 1.25-1.75 (the abstract gives no scatter); with the
+    # default surface drift and the breakers' mean velocity VV gives 1.52-1.55
     for r in breaking_rows:
-        for ch in ("vv", "hh"):
-            assert 1.25 < r[f"ratio_{ch}"] < 1.75
+        assert 1.25 < r["ratio_vv"] < 1.75
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="the breaking zones sit on the sharpest crests of the "
+                   "resolved waves: HH speeds up 2.9-3.6x for the measured ~1.5x "
+                   "(docs/dynamics.md)")
+def test_breaking_speeds_hh_up_about_fifty_percent(breaking_rows):
+    for r in breaking_rows:
+        assert 1.25 < r["ratio_hh"] < 1.75
