@@ -272,7 +272,7 @@ def test_incremental_phase_centres_follow_the_exact_surface():
     # acceleration (second order): after 5 ms they are within 10 um (measured 0.9 um;
     # 4e-4 rad of two-way phase at 10 GHz) of the particle positions of the exact
     # surface (sea_update_pulses = 1); the first order alone is off by 51 um, the held
-    # positions by 2.9 mm. On still water: the default surface drift (here 0.11 m/s, 3 %
+    # positions by 2.9 mm. On still water: the default surface drift (here 0.085 m/s, 3 %
     # of U10) is an Eulerian advection the particle acceleration of the second-order term
     # does not carry; with it the error is 6.4 um (first order 57 um), still within 10 um.
     def still(sc):
