@@ -10,10 +10,12 @@ downwind and crosswind; 8 m/s upwind at 10 deg grazing with and without breaking
 
 For each case and channel it prints the centroid and rms width and, beside them, the
 composite-surface model's predictions (Thompson 1989): the Bragg centroid
-``(2 p+ - 1) f_B`` (``f_B`` the Bragg line, ``p+`` the fraction of Bragg waves travelling
-towards the radar) and the width ``sqrt(sigma_orb^2 + 4 p+ p- f_B^2)`` with ``sigma_orb =
-sqrt(q^T C q) / (2 pi)`` the Doppler spread of the orbital velocities of all the waves of
-the tile (eq U2). Writes ``dynamics_doppler_spectra.png`` and ``dynamics_doppler.csv``.
+``(2 p+ - 1) f_B + q . U / 2 pi`` (``f_B`` the Bragg line, ``p+`` the fraction of Bragg
+waves travelling towards the radar, ``U`` the surface drift of the default ``[sea]
+wind_drift``, 3 % of U10 along the wind on this evolving sea) and the width
+``sqrt(sigma_orb^2 + 4 p+ p- f_B^2)`` with ``sigma_orb = sqrt(q^T C q) / (2 pi)`` the
+Doppler spread of the orbital velocities of all the waves of the tile (eq U2). Writes
+``dynamics_doppler_spectra.png`` and ``dynamics_doppler.csv``.
 """
 
 from __future__ import annotations
@@ -64,7 +66,7 @@ def scene(u, look_deg, inc_deg, model, size=128.0, n=128, seed=1, update=8,
     wind towards +x; look 0: the radar east of the tile looking west (upwind); ``motion``
     None: the default ``[scattering] sea_motion``; ``spreading`` None: the default
     ``[sea] spreading`` (Longuet-Higgins, s = 1); ``wind_drift`` None: the default
-    ``[sea] wind_drift`` (none)."""
+    ``[sea] wind_drift`` ("auto": 3 % of U10 along the wind on an evolving sea)."""
     th, az = np.radians(inc_deg), np.radians(look_deg)
     r = 1000.0
     pos = (r * np.sin(th) * np.cos(az), r * np.sin(th) * np.sin(az), r * np.cos(th))
@@ -85,7 +87,8 @@ def scene(u, look_deg, inc_deg, model, size=128.0, n=128, seed=1, update=8,
 
 
 def composite_prediction(sim, inc_deg, look_deg):
-    """Bragg centroid and composite-model width [Hz] at the tile centre (monostatic)."""
+    """Bragg centroid (plus the surface drift's ``q . U / 2 pi``, eq C1) and
+    composite-model width [Hz] at the tile centre (monostatic)."""
     m = sim.sea_model
     spec = sim.sea.spectrum
     k = m.k
@@ -98,7 +101,11 @@ def composite_prediction(sim, inc_deg, look_deg):
     lx = sim.sea.x[-1] - sim.sea.x[0] + (sim.sea.x[1] - sim.sea.x[0])
     c = orbital_velocity_covariance(spec, np.pi / lx, m.k_cut)
     s_orb = np.sqrt(q @ c @ q) / (2 * np.pi)
-    return (2 * p - 1) * f_b, float(np.sqrt(s_orb**2 + 4 * p * (1 - p) * f_b**2)), f_b, p
+    # the surface drift of [sea] wind_drift (eq C1: every line moves by q . U / 2 pi)
+    dyn = m.dynamics
+    f_u = 0.0 if dyn is None else float(kb @ np.asarray(dyn.current, float)) / (2 * np.pi)
+    return ((2 * p - 1) * f_b + f_u, float(np.sqrt(s_orb**2 + 4 * p * (1 - p) * f_b**2)),
+            f_b, p)
 
 
 def run_case(u, look, inc, model, **kw):

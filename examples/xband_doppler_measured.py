@@ -15,10 +15,11 @@ in Hz and as line-of-sight velocity ``lambda f / 2``, beside the references:
   1955, Wright 1968),
 * the VV peak of the low-grazing Doppler model of Trizna (1985), fitted to measured VV
   spectra: the Bragg phase speed plus the orbital velocity of the long waves plus the
-  wind drift of the surface. The drift is 3 % of U10 (Wu 1975, 1983) along the wind; the
-  simulation carries the Bragg waves and the orbital motion but no drift current; the
-  Bragg line plus the drift's Doppler ``2 (0.03 U10) cos(psi) / lambda`` is printed (the
-  orbital term is not tabulated by these references),
+  wind drift of the surface. The drift is 3 % of U10 along the wind (AMS Glossary of
+  Meteorology; Wu 1975), which the simulation now carries too (the default ``[sea]
+  wind_drift = "auto"`` is ``"3pct"`` on this evolving sea); the Bragg line plus the
+  drift's Doppler ``2 (0.03 U10) cos(psi) / lambda`` is printed (the orbital term is not
+  tabulated by these references),
 * the measured orderings: HH centroids above VV at low grazing (Trizna 1985; Lee et al.
   1995), the speed of the "faster-than-Bragg" scatterers increasing with the wind (Lee et
   al. 1996, data at winds of 3.8-10.3 m/s), widths growing with the wind (the orbital
@@ -33,9 +34,9 @@ downwind, and 8 m/s upwind with the centro-symmetric Elfouhaily spreading, three
 each, at 5.5 GHz against CDOP (Mouche et al. 2012, C band, VV and
 HH, Hz) and at 10 GHz against the TanDEM-X finding of Elyouncha et al. (2021) that the
 wind sea's Doppler velocity is about 0.15 U10 cos(phi) (horizontal). Writes
-``dynamics_doppler_gmf.csv``; about 3 minutes of CPU. ``--gmf --drift``: the same with
-``[sea] wind_drift = "wu"`` (the surface drift 0.53 u* of Wu 1975 along the wind), the
-default-spreading cases only; writes ``dynamics_doppler_gmf_drift.csv``.
+``dynamics_doppler_gmf.csv``; about 3 minutes of CPU. ``--gmf --no-drift``: the same with
+``[sea] wind_drift = "none"`` (the default before the drift was: no surface drift), the
+default-spreading cases only; writes ``dynamics_doppler_gmf_nodrift.csv``.
 
 ``--breaking``: the effect of breaking at low grazing against Hwang, Sletten & Toporkov
 (2008), *J. Geophys. Res.* 113, C09017 (X band, winds 7-15 m/s, grazing 1.4-5.5 deg):
@@ -64,14 +65,14 @@ from doppler_references import (  # noqa: E402
 from sea_doppler import F, composite_prediction, run_case  # noqa: E402
 
 from seaecho.constants import C0  # noqa: E402
-from seaecho.ocean.wind import u10_from_u19_5  # noqa: E402
+from seaecho.ocean.wind import SURFACE_DRIFT_OVER_U10, u10_from_u19_5  # noqa: E402
 from seaecho.scattering.dynamics import bragg_frequency  # noqa: E402
 
 GRAZING_DEG = 10.0
 WINDS = (5.0, 8.0, 12.0)  # U19.5 [m/s]
-#: Surface wind drift as a fraction of U10 (Wu 1975, J. Fluid Mech. 68; Wu 1983,
-#: J. Phys. Oceanogr. 13): the drift Trizna (1985) and Walker (2001) add to the Bragg speed
-DRIFT_FRACTION = 0.03
+#: Surface drift as a fraction of U10 (AMS Glossary of Meteorology; Wu 1975), the drift
+#: Trizna (1985) and Walker (2001) add to the Bragg speed: the default wind drift's law
+DRIFT_FRACTION = SURFACE_DRIFT_OVER_U10
 N_PULSES = 96
 
 
@@ -134,8 +135,8 @@ def gmf_comparison(outdir: str = "docs/figures", seeds=GMF_SEEDS, size: float = 
                    wind_drift: str | None = None) -> Path:
     """Simulated centroids at 35 deg incidence against CDOP (5.5 GHz) and the X-band
     0.15 U10 cos(phi) (10 GHz); mean and standard deviation over ``seeds``;
-    ``wind_drift`` (``"wu"``) sets ``[sea] wind_drift`` and writes
-    ``dynamics_doppler_gmf_drift.csv``."""
+    ``wind_drift`` (e.g. ``"none"``) sets ``[sea] wind_drift`` and writes
+    ``dynamics_doppler_gmf_<wind_drift>.csv``."""
     rows = []
     inc = GMF_INCIDENCE_DEG
     vh = horizontal_velocity_m_s
@@ -166,7 +167,7 @@ def gmf_comparison(outdir: str = "docs/figures", seeds=GMF_SEEDS, size: float = 
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     path = out / ("dynamics_doppler_gmf.csv" if wind_drift is None
-                  else "dynamics_doppler_gmf_drift.csv")
+                  else f"dynamics_doppler_gmf_{wind_drift.replace('none', 'nodrift')}.csv")
     with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["band", "frequency_hz", "incidence_deg", "u19_5_m_s", "u10_m_s",
@@ -262,10 +263,10 @@ if __name__ == "__main__":
     args = sys.argv[1:]
     if "--gmf" in args:
         args.remove("--gmf")
-        if "--drift" in args:  # [sea] wind_drift = "wu", the default-spreading cases
-            args.remove("--drift")
+        if "--no-drift" in args:  # [sea] wind_drift = "none", default-spreading cases
+            args.remove("--no-drift")
             gmf_comparison(*args, cases=tuple(c for c in GMF_CASES if c[2] is None),
-                           wind_drift="wu")
+                           wind_drift="none")
         else:
             gmf_comparison(*args)
         sys.exit(0)

@@ -252,6 +252,35 @@ def test_bundled_scenes_resolve_auto_as_documented():
         assert sea_motion(sc) == motion, name
 
 
+@pytest.mark.parametrize(("drift", "n_pulses", "update", "motion", "expected"), [
+    # auto: the total surface drift (3 % of U10) where the sea evolves ...
+    (None, 8, 1, None, "3pct"),
+    (None, 8, 8, "evolving", "3pct"),
+    # ... none where one surface is held (no Doppler for the drift to shift)
+    (None, 8, 8, None, "none"),
+    (None, 8, 1, "held", "none"),
+    # explicit values are kept
+    ("none", 8, 1, None, "none"),
+    ("wu", 8, 8, None, "wu"),
+    ("3pct", 8, 8, None, "3pct"),
+])
+def test_auto_wind_drift_resolves_with_the_sea_motion(drift, n_pulses, update, motion,
+                                                      expected):
+    from seaecho.build import sea_current, wind_drift
+    from seaecho.ocean.wind import WIND_DRIFT_LAWS, u10_from_u19_5
+
+    sc = _motion_scene(motion, n_pulses, update)
+    if drift is not None:
+        sc = sc.model_copy(update={"sea": sc.sea.model_copy(update={"wind_drift": drift})})
+    assert sc.sea.wind_drift == (drift or "auto")
+    assert wind_drift(sc) == expected
+    u = (0.0, 0.0) if expected == "none" else WIND_DRIFT_LAWS[expected](
+        float(u10_from_u19_5(8.0)), 0.0)
+    assert sea_current(sc) == pytest.approx(u, abs=1e-12)
+    if drift is None and motion is None and update == 1:  # the scatterers drift with it
+        assert tuple(build_sea_model(sc).dynamics.current) == pytest.approx(u, abs=1e-12)
+
+
 def test_first_pulses_keep_the_runs_sea_motion():
     # --pulses N is a quick look at the run's first pulses: one pulse of a sea renewed
     # every pulse would resolve "auto" to held on its own; it keeps the run's "evolving"

@@ -272,17 +272,24 @@ def test_incremental_phase_centres_follow_the_exact_surface():
     # acceleration (second order): after 5 ms they are within 10 um (measured 0.9 um;
     # 4e-4 rad of two-way phase at 10 GHz) of the particle positions of the exact
     # surface (sea_update_pulses = 1); the first order alone is off by 51 um, the held
-    # positions by 2.9 mm.
-    exact = Simulation(_evolving(n_pulses=6, update=1))
-    inc = Simulation(_evolving(n_pulses=6, update=6))
-    p = 5
-    a = exact.phase_centres(p, exact.surface_state(p))
-    b = inc.phase_centres(p, inc.surface_state(p))
-    err = np.abs(a - b).max()
-    assert err < 1e-5
-    held = inc._block_quantities(p, inc.surface_state(p), a.shape[0])
-    first = held["centre"] + held["velocity"] * 5e-3
-    assert np.abs(first - a).max() > 10 * err
+    # positions by 2.9 mm. On still water: the default surface drift (here 0.085 m/s, 3 %
+    # of U10) is an Eulerian advection the particle acceleration of the second-order term
+    # does not carry; with it the error is 6.4 um (first order 57 um), still within 10 um.
+    def still(sc):
+        return sc.model_copy(update={"sea": sc.sea.model_copy(update={"wind_drift": "none"})})
+
+    for drift, factor in ((False, 10.0), (True, 5.0)):
+        exact = _evolving(n_pulses=6, update=1)
+        inc = _evolving(n_pulses=6, update=6)
+        exact, inc = (Simulation(x if drift else still(x)) for x in (exact, inc))
+        p = 5
+        a = exact.phase_centres(p, exact.surface_state(p))
+        b = inc.phase_centres(p, inc.surface_state(p))
+        err = np.abs(a - b).max()
+        assert err < 1e-5
+        held = inc._block_quantities(p, inc.surface_state(p), a.shape[0])
+        first = held["centre"] + held["velocity"] * 5e-3
+        assert np.abs(first - a).max() > factor * err
 
 
 def test_dataset_says_whether_the_sea_is_frozen(tmp_path):

@@ -100,6 +100,7 @@ __all__ = [
     "sea_spectrum",
     "sea_motion",
     "section_spectrum",
+    "wind_drift",
 ]
 
 
@@ -195,16 +196,38 @@ def build_ships(scene) -> tuple[Ship, ...]:
     return tuple(out)
 
 
+def wind_drift(scene) -> str:
+    """The drift law of ``[sea] wind_drift`` (``"none"``, ``"3pct"`` or ``"wu"``): the one
+    place that resolves ``"auto"``.
+
+    ``"auto"`` is ``"3pct"`` (the total surface drift, 3 % of U10: AMS Glossary of
+    Meteorology; Wu 1975; :func:`seaecho.ocean.wind.surface_drift_3pct`) when the sea
+    evolves between pulses (:func:`sea_motion` resolves to ``"evolving"``) on a tile, and
+    ``"none"`` otherwise: a held sea has no Doppler for a drift to shift (one surface per
+    block), ``coverage = "radar"`` has no current yet, and neither has a dynamic hull
+    response (``config.consistency``).
+    """
+    law = scene.sea.wind_drift
+    if law != "auto":
+        return law
+    if (sea_motion(scene) != "evolving" or scene.sea.coverage != "tile"
+            or any(s.wave_motion and s.wave_response == "dynamic" for s in scene.all_ships)):
+        return "none"
+    return "3pct"
+
+
 def sea_current(scene) -> tuple[float, float]:
     """The uniform surface current of ``[sea]`` (U_x, U_y) [m/s]: ``current_m_s`` plus the
-    wind drift of ``wind_drift`` (:func:`seaecho.ocean.wind.wind_drift_wu`)."""
-    from .ocean.wind import wind_drift_wu
+    drift of the law :func:`wind_drift` resolves (:data:`seaecho.ocean.wind.WIND_DRIFT_LAWS`)
+    along the wind."""
+    from .ocean.wind import WIND_DRIFT_LAWS
 
     cfg = scene.sea
     ux, uy = (float(u) for u in cfg.current_m_s)
-    if cfg.wind_drift == "wu":
-        dx, dy = wind_drift_wu(float(u10_from_u19_5(cfg.wind_speed_m_s)),
-                               float(np.deg2rad(cfg.wind_direction_deg)))
+    law = wind_drift(scene)
+    if law != "none":
+        dx, dy = WIND_DRIFT_LAWS[law](float(u10_from_u19_5(cfg.wind_speed_m_s)),
+                                      float(np.deg2rad(cfg.wind_direction_deg)))
         ux, uy = ux + dx, uy + dy
     return ux, uy
 
@@ -410,7 +433,7 @@ def build_sea_dynamics(scene, spectrum: DirectionalSpectrum, k: float, k_grid: f
     return SeaDynamics(lifetimes=lifetimes,
                        velocity_covariance=orbital_velocity_covariance(spectrum, k_grid,
                                                                        k_cut, depth),
-                       breaker_velocity=stats.mean_phase_speed * np.array(
+                       breaker_velocity=stats.mean_velocity * np.array(
                            [np.cos(w), np.sin(w), 0.0]),
                        travel=travel, current=sea_current(scene))
 

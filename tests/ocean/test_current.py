@@ -147,6 +147,28 @@ def test_wind_drift_wu_and_the_scene_keys():
         _scene(current_m_s=[0.1, 0.0], coverage="radar")
 
 
+def test_surface_drift_3pct_against_the_published_fractions():
+    # AMS Glossary of Meteorology: the surface drift is "2.5%-3.0% of the wind speed",
+    # "a rough estimate of wind drift is 3% of the wind speed"; Wu (1975): the total
+    # surface drift approaches "about 3.5%" of the wind at very long fetch
+    from seaecho.build import sea_current
+    from seaecho.ocean.wind import surface_drift_3pct, u10_from_u19_5
+
+    for u10 in (3.0, 7.6, 10.0, 20.0):
+        ux, uy = surface_drift_3pct(u10, np.radians(120.0))
+        assert np.hypot(ux, uy) / u10 == pytest.approx(0.03, abs=1e-12)
+        assert 0.025 <= np.hypot(ux, uy) / u10 <= 0.035
+        assert np.degrees(np.arctan2(uy, ux)) == pytest.approx(120.0, abs=1e-9)
+    assert surface_drift_3pct(10.0, 0.0) == pytest.approx((0.30, 0.0), abs=1e-12)
+    sc = _scene(wind_drift="3pct", wind_direction_deg=-45.0)
+    u = 0.03 * float(u10_from_u19_5(8.0))
+    assert sea_current(sc) == pytest.approx((u / np.sqrt(2), -u / np.sqrt(2)), abs=1e-12)
+    # an explicit law on a radar-coverage sea is refused; "auto" resolves to none there
+    with pytest.raises(ValueError, match="wind_drift = '3pct' with coverage = 'radar'"):
+        _scene(wind_drift="3pct", coverage="radar")
+    assert sea_current(_scene(coverage="radar", size_x_m=64.0, nx=16)) == (0.0, 0.0)
+
+
 def test_dynamic_hull_on_a_current_is_refused_by_the_scene_as_by_the_run():
     # the hull's dynamic response needs the travelling waves, not built for a sea on a
     # current: the scene refuses it (so `seaecho check` does), naming the fields

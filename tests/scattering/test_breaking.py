@@ -131,6 +131,30 @@ def test_breaking_fraction_grows_with_wind_and_radar_wavenumber():
     assert st.mean_phase_speed > np.sqrt(9.80665 / st.k_wb)
 
 
+def test_breakers_drift_at_their_mean_velocity_not_their_mean_speed():
+    """Hansen et al. (2012) eq 19 (after K05): the breaking zones move at the
+    Lambda-weighted mean of c(k) cos(phi), the mean velocity of the fronts along the wind,
+    below the mean speed by the spread of the breaking directions. Checked against an
+    independent quadrature of eq BR3 (midpoint rule in ln k and phi)."""
+    from seaecho.ocean.dispersion import phase_speed
+    from seaecho.scattering.breaking import breaking_front_density
+
+    for u10 in (4.7, 7.6, 11.3):
+        st = breaking_statistics(u10, K_X)
+        edges = np.linspace(np.log(1e-3), np.log(st.k_wb), 2001)
+        k = np.exp(0.5 * (edges[1:] + edges[:-1]))
+        dk = np.diff(np.exp(edges))
+        phi = np.linspace(-np.pi, np.pi, 361)[:-1] + np.pi / 360
+        lam = breaking_front_density(k[:, None], phi[None, :], u10) * dk[:, None]
+        v = float((lam * phase_speed(k)[:, None] * np.cos(phi)[None, :]).sum() / lam.sum())
+        assert st.mean_velocity == pytest.approx(v, rel=5e-3)
+        # the fronts spread about the wind: 0.87 of the mean speed at X band
+        assert 0.8 < st.mean_velocity / st.mean_phase_speed < 0.92
+    # at 10 GHz, U10 = 7.6 m/s: 0.97 m/s (the mean speed, 1.11 m/s, is not the velocity)
+    st = breaking_statistics(7.6, 2 * np.pi * 10e9 / C0)
+    assert (st.mean_velocity, st.mean_phase_speed) == pytest.approx((0.967, 1.111), abs=0.005)
+
+
 def test_breaking_share_grows_with_wind_and_towards_grazing_hh():
     """KHCC03 (and Mouche et al. 2006): the non-polarised share of the NRCS grows with
     wind speed and incidence angle, and is larger in HH than in VV."""

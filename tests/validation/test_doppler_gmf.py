@@ -23,12 +23,14 @@ GMF and the other models and data sets (Elyouncha et al.), i.e. 4.2 Hz at 5.5 GH
 own realisations (three seeds of a 128 m tile for 0.19 s each).
 
 Known disagreements, kept visible (strict xfails; docs/dynamics.md gives the numbers): on
-the default sea (Longuet-Higgins spreading), 14 of the 20 moderate-incidence comparisons
-agree; VV upwind is 0.5-0.7 of the published values at 5-12 m/s (the model has no wind
-drift, no hydrodynamic modulation of the short waves by the long ones, and the sub-facet
-waves' tilt is uncorrelated with their orbital velocity); the Bragg line alone (what a
-centro-symmetric spreading leaves) is a quarter of CDOP. At low grazing the breaking
-zones speed the centroid up 2.1x (VV) and 5-6x (HH) for the measured ~1.5x.
+the default sea (Longuet-Higgins spreading) with the default surface drift (3 % of U10
+where the sea evolves: AMS Glossary of Meteorology; Wu 1975), 18 of the 20
+moderate-incidence comparisons agree (14 without the drift); VV at C band and 5 m/s is
+0.65 of CDOP and HH at C band and 12 m/s 1.33 of it (no hydrodynamic modulation of the
+short waves by the long ones; the sub-facet waves' tilt uncorrelated with their orbital
+velocity); the Bragg line alone (what a centro-symmetric spreading leaves) is a quarter
+of CDOP. At low grazing the breaking
+zones speed the HH centroid up 2.9-3.6x for the measured ~1.5x (VV: 1.5x, as measured).
 """
 
 from __future__ import annotations
@@ -161,10 +163,11 @@ def gmf_rows(tmp_path_factory):
 
 
 #: (band, U19.5, look, channel) where the simulated centroid falls short of the published
-#: one by more than the tolerance (docs/dynamics.md): VV upwind at low and moderate winds,
-#: VV downwind at X band, and HH at C band and 5 m/s
-SHORT = {("C", 5.0, 0.0, "vv"), ("C", 8.0, 0.0, "vv"), ("C", 5.0, 0.0, "hh"),
-         ("X", 8.0, 0.0, "vv"), ("X", 12.0, 0.0, "vv"), ("X", 8.0, 180.0, "vv")}
+#: one by more than the tolerance (docs/dynamics.md): VV at C band and 5 m/s upwind (with
+#: the default surface drift; six cases before it), and where it exceeds it: HH at C band
+#: and 12 m/s upwind
+SHORT = {("C", 5.0, 0.0, "vv")}
+OVER = {("C", 12.0, 0.0, "hh")}
 
 
 def _allowed_hz(r, ch):
@@ -178,10 +181,13 @@ def test_moderate_incidence_centroids_against_cdop_and_tandem_x(gmf_rows):
         for ch in ("vv", "hh"):
             sim, ref = r[f"centroid_{ch}_hz"], r[f"published_{ch}_hz"]
             if key + (ch,) in SHORT:
-                # the known shortfall: between the Bragg line and the published value,
-                # at least a third of the latter
+                # the known shortfall: between the Bragg line plus drift and the published
+                # value, at least a third of the latter
                 assert abs(r["bragg_centroid_hz"]) < abs(sim) < abs(ref)
                 assert abs(sim) > abs(ref) / 3.0
+            elif key + (ch,) in OVER:
+                # the known excess: above the published value, below 1.5 times it
+                assert abs(ref) < abs(sim) < 1.5 * abs(ref)
             else:
                 assert abs(sim - ref) < _allowed_hz(r, ch), (key, ch, sim, ref)
         if r["look_deg"] != 90.0:
@@ -190,8 +196,8 @@ def test_moderate_incidence_centroids_against_cdop_and_tandem_x(gmf_rows):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="no wind drift, no hydrodynamic modulation: VV upwind "
-                   "is 0.5-0.7 of the published wave Doppler (docs/dynamics.md)")
+@pytest.mark.xfail(strict=True, reason="no hydrodynamic modulation: VV at C band and 5 m/s "
+                   "is 0.65 of CDOP; HH at C band and 12 m/s 1.33 of it (docs/dynamics.md)")
 def test_moderate_incidence_centroids_all_within_published_spread(gmf_rows):
     for r in gmf_rows:
         for ch in ("vv", "hh"):
@@ -219,11 +225,17 @@ def test_breaking_speeds_up_both_polarisations_at_low_grazing(breaking_rows):
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="breaking zones move at the breakers' phase speed: the "
-                   "centroid grows 2.1x (VV) and 5-6x (HH) for the measured ~1.5x "
-                   "(docs/dynamics.md)")
-def test_breaking_speed_up_about_fifty_percent(breaking_rows):
-    # "about 50% faster": read here as 1.25-1.75 (the abstract gives no scatter)
+def test_breaking_speeds_vv_up_about_fifty_percent(breaking_rows):
+    # "about 50% faster": read here as 1.25-1.75 (the abstract gives no scatter); with the
+    # default surface drift and the breakers' mean velocity VV gives 1.52-1.55
     for r in breaking_rows:
-        for ch in ("vv", "hh"):
-            assert 1.25 < r[f"ratio_{ch}"] < 1.75
+        assert 1.25 < r["ratio_vv"] < 1.75
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="the breaking zones sit on the sharpest crests of the "
+                   "resolved waves: HH speeds up 2.9-3.6x for the measured ~1.5x "
+                   "(docs/dynamics.md)")
+def test_breaking_speeds_hh_up_about_fifty_percent(breaking_rows):
+    for r in breaking_rows:
+        assert 1.25 < r["ratio_hh"] < 1.75

@@ -101,7 +101,8 @@ def check_ships(scene) -> None:
                          "sea_clutter = true")
     dynamic = [n for n, s in zip(names, scene.all_ships, strict=True)
                if s.wave_motion and s.wave_response == "dynamic"]
-    if dynamic and (any(scene.sea.current_m_s) or scene.sea.wind_drift != "none"):
+    if dynamic and (any(scene.sea.current_m_s)
+                    or scene.sea.wind_drift not in ("none", "auto")):
         raise ValueError(f"[[ships]] {dynamic[0]}: wave_response = 'dynamic' on a sea with "
                          f"[sea] current_m_s = {list(scene.sea.current_m_s)}, wind_drift = "
                          f"'{scene.sea.wind_drift}': not implemented yet (the travelling "

@@ -102,11 +102,15 @@ class SeaConfig(Section):
         "carries the waves (omega_0(K) + K.U, docs/dynamics.md) and the scatterers "
         "(Doppler q.U); [0, 0]: still water",
     )
-    wind_drift: Literal["none", "wu"] = Field(
-        "none",
-        description="wind-induced surface drift added to current_m_s, along the wind: "
-        "'none', or 'wu' (0.53 u*, Wu 1975, with u* of Wu's 1982 drag law at U10: about "
-        "2.0 % of U10 at 10 m/s)",
+    wind_drift: Literal["auto", "none", "3pct", "wu"] = Field(
+        "auto",
+        description="surface drift added to current_m_s, along the wind: '3pct' (the "
+        "total surface drift, wind-induced current plus Stokes drift, 3 % of U10: AMS "
+        "Glossary of Meteorology; Wu 1975), 'wu' (0.53 u* with u* of Wu's 1982 drag law: "
+        "the wind-induced part only, about 2.0 % of U10 at 10 m/s; the coefficient is "
+        "unsourced), 'none', or 'auto' (the default: '3pct' where the sea evolves between "
+        "pulses, [scattering] sea_motion resolving to 'evolving', and the scene allows a "
+        "current; 'none' otherwise: a held sea has no Doppler to carry it)",
     )
     coverage: Literal["tile", "radar"] = Field(
         "tile",
@@ -126,10 +130,11 @@ class SeaConfig(Section):
         for i, u in enumerate(self.current_m_s):
             if not -5.0 <= u <= 5.0:
                 raise ValueError(f"current_m_s[{i}] = {u:g} m/s: allowed -5 .. 5 m/s")
-        if self.coverage == "radar" and (any(self.current_m_s) or self.wind_drift != "none"):
+        if self.coverage == "radar" and (any(self.current_m_s)
+                                         or self.wind_drift not in ("none", "auto")):
             raise ValueError(f"current_m_s = {list(self.current_m_s)}, wind_drift = "
                              f"{self.wind_drift!r} with coverage = 'radar': not implemented "
-                             "yet (a current needs [0, 0] and 'none' there)")
+                             "yet (a current needs [0, 0] and 'none' or 'auto' there)")
         if self.spectrum == "jonswap" and self.fetch_m is None:
             raise ValueError("fetch_m is required when spectrum = 'jonswap' (fetch-limited sea)")
         return self

@@ -196,7 +196,8 @@ def friction_velocity(law: str, u10: ArrayLike, inverse_wave_age: float = OMEGA_
 #: quoted from memory: Wu's abstract (the text read here) gives the proportionality and a
 #: total surface drift (wind + Stokes) approaching 3.5 % of the wind at long fetch, not
 #: the number; tank measurements give 0.65-1.2 u* (Polnikov, Qiao & Ma 2020, J. Phys.
-#: Oceanogr. 50(10), abstract).
+#: Oceanogr. 50(10), abstract). Searched again (Wu 1975, Wu 1983, the open Doppler models):
+#: not found; the default drift is the sourced total surface drift (SURFACE_DRIFT_OVER_U10).
 WIND_DRIFT_OVER_U_STAR = 0.53
 
 
@@ -223,6 +224,51 @@ def wind_drift_wu(u10: float, wind_direction: float) -> tuple[float, float]:
     return u_d * math.cos(wind_direction), u_d * math.sin(wind_direction)
 
 
+#: Total surface drift (wind-induced current plus the waves' Stokes drift) over U10 [-]:
+#: "Empirically, it is found that the drift current at the surface is 2.5%-3.0% of the
+#: wind speed" and "a rough estimate of wind drift is 3% of the wind speed" (American
+#: Meteorological Society, Glossary of Meteorology, entries "Surface current" and "Wind
+#: drift"); Wu (1975, abstract) measured the total surface drift approaching "about 3.5%"
+#: of the wind at very long fetch; Elyouncha et al. (2021) use "~3% of wind speed" for the
+#: wind-induced drift in their X-band Doppler budget.
+SURFACE_DRIFT_OVER_U10 = 0.03
+
+
+def surface_drift_3pct(u10: float, wind_direction: float) -> tuple[float, float]:
+    """Total surface drift (U_x, U_y) [m/s]: ``0.03 U10`` along the wind.
+
+    The empirical surface drift of the AMS Glossary of Meteorology (2.5-3.0 % of the wind;
+    "a rough estimate of wind drift is 3% of the wind speed"), which is the wind-induced
+    current *and* the Stokes drift of the waves (Wu 1975: their sum approaches 3.5 % of
+    the wind at long fetch): the synthesised waves are linear and carry neither, so the
+    whole drift is added. 0.30 m/s at U10 = 10 m/s. The Ekman veering of the glossary's
+    entry ("about 10 deg to the right (left) of the wind direction in the Northern
+    (Southern) Hemisphere") is not applied: a scene has no latitude.
+
+    Parameters
+    ----------
+    u10 : float
+        Wind speed at 10 m [m/s].
+    wind_direction : float
+        Direction the wind blows towards, counter-clockwise from +x [rad].
+
+    References
+    ----------
+    American Meteorological Society, Glossary of Meteorology, "Surface current" and "Wind
+    drift". J. Wu, "Wind-induced drift currents", J. Fluid Mech. 68(1), 49-70, 1975.
+    """
+    u_d = SURFACE_DRIFT_OVER_U10 * float(u10)  # AMS Glossary; Wu 1975
+    return u_d * math.cos(wind_direction), u_d * math.sin(wind_direction)
+
+
+#: Wind-drift laws of ``[sea] wind_drift`` by name: ``law(u10 [m/s], direction [rad]) ->
+#: (U_x, U_y) [m/s]``.
+WIND_DRIFT_LAWS: dict[str, Callable[[float, float], tuple[float, float]]] = {
+    "wu": wind_drift_wu,
+    "3pct": surface_drift_3pct,
+}
+
+
 def charnock_roughness_length(u_star: ArrayLike) -> NDArray[np.float64]:
     """Aerodynamic roughness z0 = 0.018 u*^2 / g + 0.1 nu_a / u* [m] (KHCC03 eq 21).
 
@@ -242,4 +288,5 @@ __all__ = ["A_CHARNOCK", "A_SMOOTH", "DRAG_COEFFICIENT_10M", "FRICTION_VELOCITY_
            "OMEGA_C_DEVELOPED", "charnock_roughness_length", "friction_velocity",
            "friction_velocity_constant_drag", "friction_velocity_donelan1993",
            "friction_velocity_wu1982", "u10_from_u19_5", "u12_5_from_u19_5",
-           "u19_5_from_u10", "WIND_DRIFT_OVER_U_STAR", "wind_drift_wu", "wind_speed_at"]
+           "u19_5_from_u10", "SURFACE_DRIFT_OVER_U10", "surface_drift_3pct",
+           "WIND_DRIFT_LAWS", "WIND_DRIFT_OVER_U_STAR", "wind_drift_wu", "wind_speed_at"]
