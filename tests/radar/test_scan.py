@@ -196,6 +196,10 @@ def test_random_transmit_phase_is_seeded_and_uniform():
      "omit azimuth_deg"),
     ({"scan": {"mode": "rotating", "rate_rpm": 20.0}, "depression_deg": None},
      "needs depression_deg"),
+    # a pointing that conflicts with the scan is named before the missing depression
+    # (found by the fuzzing suite: look_at_m given, depression_deg removed)
+    ({"scan": {"mode": "rotating", "rate_rpm": 20.0}, "depression_deg": None,
+      "look_at_m": (100.0, 0.0, 0.0)}, "omit azimuth_deg, look_at_m"),
     ({"scan": {"mode": "sector", "rate_rpm": 20.0, "sector_deg": (10.0, 10.0)}},
      "empty sector"),
     # a sector of 1e-300 deg overflowed the sweep count (found by the fuzzing suite)

@@ -227,13 +227,14 @@ class AntennaConfig(Section):
             raise ValueError(f"illumination '{self.illumination}' needs pattern "
                              "'rectangular'")
         if self.scan.scanning:
-            if self.depression_deg is None:
-                raise ValueError("a scanning antenna needs depression_deg")
+            # the conflicting pointing first: it names the field the user gave
             if (self.azimuth_deg is not None or self.look_at_m is not None
                     or self.track_look_at):
                 raise ValueError("a scanning antenna is pointed by its scan and "
                                  "depression_deg: omit azimuth_deg, look_at_m and "
                                  "track_look_at")
+            if self.depression_deg is None:
+                raise ValueError("a scanning antenna needs depression_deg")
             return self
         by_angles = self.azimuth_deg is not None or self.depression_deg is not None
         if by_angles and (self.azimuth_deg is None or self.depression_deg is None):
