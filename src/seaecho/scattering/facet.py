@@ -322,6 +322,20 @@ class FacetTerms:
         return out
 
 
+class NodeWeights(Mat2):
+    """Channel weights ``c_n w_mn`` [-] of a tilt node (eq P6) with their square roots.
+
+    ``root`` holds ``sqrt(c_n) sqrt(w_mn)``: the nodes share one square root of ``w_mn``
+    per channel (:func:`speckle`'s amplitudes), four instead of twenty.
+    """
+
+    __slots__ = ("root",)
+
+    def __init__(self, w: Mat2, root: Mat2, c: float) -> None:
+        super().__init__(*(w * c).flat())
+        self.root = root * math.sqrt(c)
+
+
 def _each(fn: Callable[[Any], Any], m: Any) -> Any:
     """``fn`` on every channel: on each entry of a Mat2, or on an array of channels."""
     return m.map(fn) if isinstance(m, Mat2) else fn(m)
@@ -434,7 +448,8 @@ def mechanisms(
         if tilt is None:
             out["bragg"] = (b, w_b)
         else:
-            out["bragg"] = (b, w_b * tilt.weights[0])
+            root_b = w_b.map(xp.sqrt)
+            out["bragg"] = (b, NodeWeights(w_b, root_b, tilt.weights[0]))
             if e_u is None:
                 e_u, e_c = wind_axes(xp, N, cos_wind, sin_wind)
             for j, (zu, zc) in enumerate(tilt.slopes):
@@ -449,7 +464,7 @@ def mechanisms(
                 if damp is not None:
                     rj = rj * damp
                 bj = bragg_matrix(xp, k, eps_r, ci, cs, cp, sp, ai, as_, roughness=rj)
-                out[f"bragg{j + 1}"] = (bj, w_b * tilt.weights[j + 1])
+                out[f"bragg{j + 1}"] = (bj, NodeWeights(w_b, root_b, tilt.weights[j + 1]))
     if breaking is not None:
         # Eq P7: breaking zones (BR5-BR6) on the facet's plane, weight q
         wb = breaking_matrix(xp, n_i, n_s, N, basis_i, basis_s, cos_wind, sin_wind,
@@ -482,7 +497,8 @@ def speckle(xp, mech: Mapping[str, tuple[Any, Any]], draws: Mapping[str, Any],
     """
     total = None
     for name, (m, w) in mech.items():
-        term = _each(xp.sqrt, w) * m  # a new array: scaled in place below (numpy)
+        root = w.root if isinstance(w, NodeWeights) else _each(xp.sqrt, w)
+        term = root * m  # a new array: scaled in place below (numpy)
         term *= draws[name]
         if total is None:
             total = term
