@@ -150,6 +150,20 @@ def main() -> None:
         ("accumulation, 4 channels, 1 worker",
          lambda: accumulate(tau, amp, spec, window, workers=1)),
     ]
+    resident = getattr(sim, "_resident", None)
+    if resident is not None:
+        xp, n = resident.xp, resident.n_facets(state)
+
+        def uncompacted():  # timing only: hidden facets and echoes outside the window kept
+            count = xp.count
+            xp.count = lambda mask: n
+            try:
+                sim.sea_echo(pulse)
+            finally:
+                xp.count = count
+
+        rows += [("fused sea echo (kernel + compaction)", lambda: sim.sea_echo(pulse)),
+                 ("fused sea echo, compaction skipped (timing only)", uncompacted)]
     print(f"bench_pulse_parts: {path.stem}, {surface.shape[0]}^2 sea, {tau.size} facets "
           f"in the window, {len(amp)} channels; {os.cpu_count()} CPUs, load {load:.2f}; "
           f"finufft {finufft.__version__} from {Path(finufft.__file__).parent}")

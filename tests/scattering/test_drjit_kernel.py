@@ -274,3 +274,42 @@ def test_single_precision_stays_finite_at_the_extremes(table):
         assert np.all(np.isfinite(b))
         np.testing.assert_allclose(b, a, rtol=1e-2, atol=1e-2 * np.abs(a).max())
         assert np.abs(a).max() > (1e5 if cm is None else 1.0)
+
+
+@pytest.mark.parametrize("precision", ["single", pytest.param("double",
+                                                               marks=pytest.mark.slow)])
+def test_monostatic_receive_side_from_the_transmit_side_to_the_bit(table, precision):
+    """``mechanisms(..., monostatic=True)`` takes the receive side's FSA bases, rotations
+    and local cosines from the transmit side's (``frames.reversed_fsa_basis``,
+    ``frames.reversed_basis_change``): negation is exact and round-to-nearest symmetric,
+    so every mechanism matrix and weight must equal the general path's bit for bit, on
+    the geometries of _facets made monostatic (nadir: the global basis degenerate; a
+    facet normal along the ray: the local one degenerate; both), with the unresolved
+    tilts and breaking zones, in numpy and in Dr.Jit (float32 and float64)."""
+    from seaecho.scattering.facet import TiltQuadrature, kernel_sea, mechanisms
+
+    n_i, _, normal = _facets()
+    n_i[4:8] = [[0.0, 0.0, -1.0], [0.0, 0.0, -1.0], [0.6, 0.0, -0.8], [0.3, -0.4, -0.8660254]]
+    normal[5:8] = -n_i[5:8]  # facets facing the ray: local bases degenerate
+    normal[4] = [0.1, 0.0, 0.99498744]
+    n_s = -n_i
+    sea = FacetModel(K, EPS, table, 0.01, 0.006, 0.5, model="blend",
+                     tilt=TiltQuadrature.unscented(0.01, 0.006), breaking_tilt=0.05)
+    spaces = [NUMPY] + ([_backend.drjit_namespace()] if _drjit_available() else [])
+    for xp in spaces:
+        xs = xp.with_precision(precision)
+        io = Boundary(xp, len(n_i))
+        vi, vs, vn = (xs.cast(io.vec3(a)) for a in (n_i, n_s, normal))
+        ks = kernel_sea(io, sea, xs)
+        brk = xs.cast(io.array(np.linspace(0.0, 0.1, len(n_i))))
+        out = []
+        for m in (False, True):
+            mech = mechanisms(xs, vi, vs, vn, ks, breaking=brk, monostatic=m)
+            names = [f"{k} {j}" for k in mech for j in range(8)]
+            entries = [e for pair in mech.values() for mat in pair for e in mat.flat()]
+            out.append(dict(zip(names, io.numpy(*(xs.cast(e) if not isinstance(
+                e, int | float) else xs.cast(io.array(np.full(len(n_i), float(e))))
+                for e in entries)), strict=True)))
+        assert out[0].keys() == out[1].keys()
+        for name, x in out[0].items():
+            np.testing.assert_array_equal(out[1][name], x, err_msg=f"{xp.name}: {name}")

@@ -126,6 +126,36 @@ def fsa_basis(xp, n: Any, N: Any) -> tuple[Any, Any]:
     return h, xp.cross(h, n)  # eq F2
 
 
+def reversed_fsa_basis(xp, basis: tuple[Any, Any], n: Any, N: Any) -> tuple[Any, Any]:
+    """:func:`fsa_basis` of ``-n`` about ``N`` from ``basis = fsa_basis(xp, n, N)`` [-].
+
+    The tangential part of ``-n`` is ``-t``, so ``(h, v)`` of ``-n`` is ``(-h, v)``;
+    where ``t`` vanishes both take the reference azimuth and it is ``(h, -v)``. Negation
+    is exact and round-to-nearest is symmetric, so these are the numbers
+    ``fsa_basis(xp, -n, N)`` computes, to the bit, for the price of a test (the
+    monostatic receive side, ``n_s = -n_i``).
+    """
+    _, degenerate = tangential_part(xp, n, N)
+    h, v = basis
+    return xp.select(degenerate, h, -h), xp.select(degenerate, -v, v)
+
+
+def reversed_basis_change(xp, a: Mat2, n: Any, N_from: Any, N_to: Any) -> Mat2:
+    """:func:`basis_change` between the FSA bases of ``-n`` about ``N_from`` and about
+    ``N_to``, from ``a``, the one of ``n`` [-].
+
+    With :func:`reversed_fsa_basis` each basis of ``-n`` is ``(-h, v)`` or ``(h, -v)``:
+    the diagonal of ``a`` keeps its sign and the off-diagonal flips, all four negated
+    where exactly one of the two bases is degenerate (to the bit: products of negated
+    factors round as the products of the factors).
+    """
+    _, deg_from = tangential_part(xp, n, N_from)
+    _, deg_to = tangential_part(xp, n, N_to)
+    flip = deg_from ^ deg_to
+    return Mat2(xp.select(flip, -a.hh, a.hh), xp.select(flip, a.hv, -a.hv),
+                xp.select(flip, a.vh, -a.vh), xp.select(flip, -a.vv, a.vv))
+
+
 def local_geometry(xp, n_i: Any, n_s: Any, N: Any) -> tuple[Any, Any, Any, Any]:
     r"""Cosines of the local angles and the local azimuth of ``n_s`` about a plane.
 

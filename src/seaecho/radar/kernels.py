@@ -235,8 +235,9 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
         :mod:`seaecho.scattering.dynamics`), the centroids otherwise. The facing test and
         the scattering use the centroids, as the facet engine does.
     mechanisms_of : callable
-        ``(n_i, n_s, N) -> mechanisms`` (:func:`seaecho.scattering.facet.mechanisms` with
-        the sea's values bound): the facets' mechanism matrices and weights.
+        ``(n_i, n_s, N, monostatic=...) -> mechanisms``
+        (:func:`seaecho.scattering.facet.mechanisms` with the sea's values bound): the
+        facets' mechanism matrices and weights.
     draws : dict or callable
         Speckle draws per mechanism (complex namespace values, eq P4), or a callable
         ``draws(xp, io, context)`` returning them (the evolving speckle, eqs D2-D4 of
@@ -265,7 +266,9 @@ def sea_echo_terms(xp, radar, geometry, facets: dict[str, Any], mechanisms_of: A
     visible, n_i, n_s = facet_visibility(xp, geometry, facets)
     # Eqs P1-P4 with the facet's area times its visibility (0 or 1)
     area = facets["area"] * xp.select(visible, xp.const(1.0), xp.const(0.0))
-    mech = mechanisms_of(xs.cast(n_i), xs.cast(n_s), xs.cast(facets["normal"]))
+    monostatic = bool(np.array_equal(geometry.tx.position, geometry.rx.position))
+    mech = mechanisms_of(xs.cast(n_i), xs.cast(n_s), xs.cast(facets["normal"]),
+                         monostatic=monostatic)  # n_s = -n_i there (eq G1)
     if callable(draws):  # the evolving speckle of the pulse's time, in float64
         if wavenumber is None:
             raise ValueError("sea_echo_terms: evolving draws need the wavenumber")

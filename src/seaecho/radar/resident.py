@@ -155,8 +155,9 @@ class ResidentSea:
         sea = kernel_sea(io, self.facet_model, xs)
         damping, breaking = facet_arrays(io, xs, damping, breaking)
 
-        def of(n_i, n_s, normal):
-            return mechanisms(xs, n_i, n_s, normal, sea, damping=damping, breaking=breaking)
+        def of(n_i, n_s, normal, monostatic=False):
+            return mechanisms(xs, n_i, n_s, normal, sea, damping=damping, breaking=breaking,
+                              monostatic=monostatic)
         return of
 
     @staticmethod
@@ -379,8 +380,9 @@ class ResidentSea:
         visible, n_i, n_s = facet_visibility(xp, geometry, facets)
         vis = xp.select(visible, xp.const(1.0), xp.const(0.0))
         xs = self.xs
-        mech = self._mechanisms(io, damping, breaking)(xs.cast(n_i), xs.cast(n_s),
-                                                       xs.cast(facets["normal"]))
+        mech = self._mechanisms(io, damping, breaking)(
+            xs.cast(n_i), xs.cast(n_s), xs.cast(facets["normal"]),
+            monostatic=bool(np.array_equal(geometry.tx.position, geometry.rx.position)))
         sigma = mechanism_sigma(xs, mech)
         sig, vis_h, area = io.numpy(sigma, vis, facets["area"])
         rcs = sig.reshape(n, 4) * vis_h[:, None] * area[:, None]  # [m^2] per facet

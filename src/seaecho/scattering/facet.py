@@ -322,6 +322,20 @@ class FacetTerms:
         return out
 
 
+class NodeWeights(Mat2):
+    """Channel weights ``c_n w_mn`` [-] of a tilt node (eq P6) with their square roots.
+
+    ``root`` holds ``sqrt(c_n) sqrt(w_mn)``: the nodes share one square root of ``w_mn``
+    per channel (:func:`speckle`'s amplitudes), four instead of twenty.
+    """
+
+    __slots__ = ("root",)
+
+    def __init__(self, w: Mat2, root: Mat2, c: float) -> None:
+        super().__init__(*(w * c).flat())
+        self.root = root * math.sqrt(c)
+
+
 def _each(fn: Callable[[Any], Any], m: Any) -> Any:
     """``fn`` on every channel: on each entry of a Mat2, or on an array of channels."""
     return m.map(fn) if isinstance(m, Mat2) else fn(m)
@@ -345,6 +359,7 @@ def mechanisms(
     breaking: Any = None,
     local: tuple | None = None,
     context: dict | None = None,
+    monostatic: bool = False,
 ) -> dict[str, tuple[Mat2, Mat2]]:
     """Eqs P1-P2, P6-P7 and B1-B4: each mechanism's matrix and channel weights, per facet.
 
@@ -371,6 +386,11 @@ def mechanisms(
     context : dict, optional
         Filled with intermediate per-facet values that a caller may reuse in the same
         kernel: ``"bragg_vector"`` (kx, ky of the facet's plane) [rad/m].
+    monostatic : bool
+        ``n_s`` is ``-n_i`` (the same transmit and receive position): the receive side's
+        FSA bases and local cosines are taken from the transmit side's
+        (:func:`seaecho.geometry.frames.reversed_fsa_basis`), the numbers that computing
+        them gives, to the bit, for fewer operations.
 
     Returns
     -------
@@ -387,12 +407,23 @@ def mechanisms(
     cos_wind, sin_wind = sea.cos_wind, sea.sin_wind
     z = xp.vec(0.0, 0.0, 1.0)
     basis_i = frames.fsa_basis(xp, n_i, z)
-    basis_s = frames.fsa_basis(xp, n_s, z)
+
+    def local_frames(normal: Any) -> tuple[Any, ...]:
+        """Local angles and the rotations A_i, A_s of the plane of ``normal``."""
+        ci, cs, x_s, y_s = frames.local_geometry(xp, n_i, n_s, normal)
+        if monostatic:  # dot(-n_i, N) is -dot(n_i, N) to the bit: one cosine, so that
+            cs = ci     # the receive side's terms of eqs S3-S6 are the transmit side's
+        cp, sp = azimuth_cos_sin(xp, x_s, y_s)
+        a_i = frames.basis_change(xp, basis_i, frames.fsa_basis(xp, n_i, normal))
+        if monostatic:
+            return ci, cs, cp, sp, a_i, frames.reversed_basis_change(xp, a_i, n_i, z, normal)
+        return (ci, cs, cp, sp, a_i,
+                frames.basis_change(xp, basis_s, frames.fsa_basis(xp, n_s, normal)))
+
+    basis_s = (frames.reversed_fsa_basis(xp, basis_i, n_i, z) if monostatic
+               else frames.fsa_basis(xp, n_s, z))
     if local is None:
-        cos_i, cos_s, x_s, y_s = frames.local_geometry(xp, n_i, n_s, N)
-        cos_phi, sin_phi = azimuth_cos_sin(xp, x_s, y_s)
-        a_i = frames.basis_change(xp, basis_i, frames.fsa_basis(xp, n_i, N))
-        a_s = frames.basis_change(xp, basis_s, frames.fsa_basis(xp, n_s, N))
+        cos_i, cos_s, cos_phi, sin_phi, a_i, a_s = local_frames(N)
     else:
         cos_i, cos_s, cos_phi, sin_phi, a_i, a_s = local
     lit = (cos_i > _BEHIND) & (cos_s > _BEHIND)
@@ -434,22 +465,20 @@ def mechanisms(
         if tilt is None:
             out["bragg"] = (b, w_b)
         else:
-            out["bragg"] = (b, w_b * tilt.weights[0])
+            root_b = w_b.map(xp.sqrt)
+            out["bragg"] = (b, NodeWeights(w_b, root_b, tilt.weights[0]))
             if e_u is None:
                 e_u, e_c = wind_axes(xp, N, cos_wind, sin_wind)
             for j, (zu, zc) in enumerate(tilt.slopes):
                 # Eq P6: the facet's Bragg term on the plane tilted by a node's slopes
                 n_j = xp.normalize(N - e_u * xp.const(zu) - e_c * xp.const(zc))
-                ci, cs, x_s, y_s = frames.local_geometry(xp, n_i, n_s, n_j)
-                cp, sp = azimuth_cos_sin(xp, x_s, y_s)
-                ai = frames.basis_change(xp, basis_i, frames.fsa_basis(xp, n_i, n_j))
-                as_ = frames.basis_change(xp, basis_s, frames.fsa_basis(xp, n_s, n_j))
+                ci, cs, cp, sp, ai, as_ = local_frames(n_j)
                 kxj, kyj = bragg_vector(xp, n_i, n_s, n_j, k)
                 rj = xp.sqrt(xp.maximum(spectrum(kxj, kyj), 0.0))
                 if damp is not None:
                     rj = rj * damp
                 bj = bragg_matrix(xp, k, eps_r, ci, cs, cp, sp, ai, as_, roughness=rj)
-                out[f"bragg{j + 1}"] = (bj, w_b * tilt.weights[j + 1])
+                out[f"bragg{j + 1}"] = (bj, NodeWeights(w_b, root_b, tilt.weights[j + 1]))
     if breaking is not None:
         # Eq P7: breaking zones (BR5-BR6) on the facet's plane, weight q
         wb = breaking_matrix(xp, n_i, n_s, N, basis_i, basis_s, cos_wind, sin_wind,
@@ -482,7 +511,8 @@ def speckle(xp, mech: Mapping[str, tuple[Any, Any]], draws: Mapping[str, Any],
     """
     total = None
     for name, (m, w) in mech.items():
-        term = _each(xp.sqrt, w) * m  # a new array: scaled in place below (numpy)
+        root = w.root if isinstance(w, NodeWeights) else _each(xp.sqrt, w)
+        term = root * m  # a new array: scaled in place below (numpy)
         term *= draws[name]
         if total is None:
             total = term
