@@ -87,6 +87,7 @@ def _simulation(variant: str, refresh: float, update: int):
 #: Stages timed beside ``profile_pulse.STAGES`` (the GPU path's own).
 GPU_STAGES = [
     ("seaecho.radar.replay", "FrozenEchoTerms.__call__", "radar equation replayed", 2),
+    ("seaecho.radar.system", "RadarSystem.device_echo", "echo kept on the device", 2),
     ("seaecho.radar.echo", "accumulate_cuda_sets", "cufinufft, all sets + iFFT", 2),
 ]
 
@@ -266,6 +267,7 @@ SCAN_STAGES = [
     ("seaecho.tracing.land", "LandEchoes.echo", "land echo", 1),
     ("seaecho.radar.system", "RadarSystem.receive", "receive (accumulation, noise)", 1),
     ("seaecho.radar.echo", "accumulate", "NUFFT / direct sum + iFFT", 2),
+    ("seaecho.radar.echo", "accumulate_cuda_sets", "cufinufft, all sets + iFFT", 2),
     ("seaecho.radar.system", "thermal_noise", "thermal noise", 2),
     ("seaecho.checks.guards", "check_pulse", "finite check", 1),
     ("seaecho.simulation", "Simulation.compress", "range compression", 0),
