@@ -331,3 +331,43 @@ def test_a_hull_echo_kept_on_the_device_sums_to_the_host_one(monkeypatch):
                       ScattererEcho)
     assert isinstance(device.scatterer_echo(geo, p, v, s, directions=True, on_device=True),
                       ScattererEcho)
+
+
+@pytest.mark.slow  # ~5 s: two simulations with a sea, land and a target
+@pytest.mark.filterwarnings("ignore::seaecho.scattering.validity.SPMValidityWarning")
+def test_a_pulse_with_its_land_on_the_device_equals_the_host_one(monkeypatch):
+    # The GPU's branch of a whole pulse on the CPU back end (stand-in cufinufft): the
+    # land's echo kept on the device (RadarSystem.device_echoes, every set sent to the
+    # NUFFT: DIRECT_TERMS 0) and summed in one transform with the sea's and the target's,
+    # against the host pulse, to the NUFFT tolerance (eps 1e-9).
+    from test_resident import _FakePlan
+
+    from seaecho.radar import echo as echo_mod
+    from seaecho.radar import system as system_mod
+    from seaecho.radar.system import DeviceEcho
+    from seaecho.simulation import Simulation
+
+    monkeypatch.setitem(sys.modules, "cufinufft", types.SimpleNamespace(Plan=_FakePlan))
+    monkeypatch.setattr(backend, "cuda_synchronize", lambda: None)
+    monkeypatch.setattr(echo_mod, "_CUDA_PLANS", {})
+    monkeypatch.setattr(system_mod, "DIRECT_TERMS", 0)
+    field = {"name": "field", "outline_m": [[-50, -500], [50, -500], [50, -450],
+                                            [-50, -450]], "height_m": 30.0,
+             "shore_width_m": 10.0, "resolution_m": 5.0, "terrain": "farmland"}
+    scene = parse_scene({
+        "sea": {"wind_speed_m_s": 5.0, "size_x_m": 64.0, "nx": 16},
+        "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 20e6,
+                  "prf_hz": 1000.0, "n_pulses": 3, "sea_clutter": True,
+                  "transmit_power_w": 25e3, "channels": ["HH"], "thermal_noise": False,
+                  "waveform": {"kind": "pulse", "duration_s": 5e-8}},
+        "transmitter": {"position_m": (0.0, -600.0, 20.0), "yaw_deg": 90.0, "antenna": {
+            "pattern": "isotropic", "azimuth_deg": 0.0, "depression_deg": 0.0}},
+        "targets": [{"name": "front", "position_m": (300.0, -550.0, 2.0),
+                     "rcs_m2": 10.0}],
+        "land": [field]})
+    device, host = Simulation(scene), Simulation(scene)
+    device.radar.device_echoes = True
+    geo = device.radar.geometry(1)
+    assert isinstance(device.land.echo(geo, variant=device.variant), DeviceEcho)
+    got, want = device.pulse(1), host.pulse(1)
+    assert np.abs(got - want).max() <= 1e-9 * np.abs(want).max()

@@ -8,7 +8,8 @@
 # About 3 minutes on an H100 (each limit below is the most a step may take): the
 # environment, the gpu-marked tests, the held Simulation 2 pulse traced and then frozen
 # (the sea's kernel and the scatterers' radar equation replayed, the hull's echo kept on
-# the device, one transform per pulse), the coastal revolution's stages over all its
+# the device, one transform per pulse; then the frozen one with each stage waiting for
+# the GPU, so that it holds its own GPU work), the coastal revolution's stages over all its
 # pulses on CUDA. The earlier measurements (SBR, new sea every pulse) are
 # tools/gpu/run_previous.sh's steps; the revolution's stride-25 stages on CUDA and on the
 # LLVM back end were this script's steps 4 and 6 before (its history).
@@ -28,5 +29,6 @@ step 40 $PY tools/gpu/check_env.py                                          # 1
 step 120 $PY -m pytest -q -p no:cacheprovider -m gpu tests/test_backend.py \
     tests/radar/test_resident.py tests/radar/test_replay.py                 # 2
 step 100 $PY $B --no-cpu --pulses 40 --warmup 3                             # 3
+step 60 $PY $B --no-cpu --pulses 20 --warmup 3 --freeze 1 --sync-stages      # 3b
 step 100 $PY $B --scan --stride 1 --stages --variant $C                     # 4
 echo "done [$SECONDS s]" | tee -a $L

@@ -12,9 +12,13 @@ fused kernel:
 - the scatterers' positions, velocities and scattering amplitudes enter as the recording's
   inputs (Dr.Jit arrays made at the boundary, :class:`seaecho.backend.Boundary`);
 - the pulse's platform vectors (positions, receiver velocity, vertical axes, antenna
-  axes), the only per-pulse values of the kernel, enter as inputs too: while recording,
-  ``vconst`` of the geometry's arrays returns those inputs
-  (:class:`_BoundGeometry`);
+  axes), the only per-pulse values of the kernel, enter as one input too (their 33
+  components packed: one upload per call, where 33 opaque constants were 33 device
+  allocations and fills): while recording, ``vconst`` of the geometry's arrays returns
+  the components gathered from it (:class:`_BoundGeometry`);
+- a read-only amplitude array (a hull's centres, held between two traces) is converted
+  once while it lives; with ``device`` the outputs stay Dr.Jit arrays (the GPU's
+  accumulation reads them where they are);
 - the working precision, whether the directions are asked for and which of the
   platform vectors are one and the same array are arguments of the recording: a change
   of any of them records again, as does a change of an input's type or a set of one
