@@ -252,8 +252,8 @@ class RadarSystem:
         The last few pulses' geometries are kept (a pulse asks for its own two to three
         times: its echoes, the sea's gain bound, the hulls' beam test): the same object,
         whose arrays must not be written."""
-        key = (int(pulse), id(self.tx), id(self.rx), id(self.tx_pointing),
-               id(self.rx_pointing))
+        key = (int(pulse), self.start_time, self.prf, id(self.tx), id(self.rx),
+               id(self.tx_pointing), id(self.rx_pointing))
         hit = self._geometries.get(key)
         if hit is not None:
             return hit
