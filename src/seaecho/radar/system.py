@@ -250,8 +250,9 @@ class RadarSystem:
         """Platform states and antenna axes at the emission of ``pulse``.
 
         The last few pulses' geometries are kept (a pulse asks for its own two to three
-        times: its echoes, the sea's gain bound, the hulls' beam test): the same object,
-        whose arrays must not be written."""
+        times: its echoes, the sea's gain bound, the hulls' beam test), up to
+        :data:`GEOMETRIES_KEPT` before they are dropped together: the same object, whose
+        arrays must not be written."""
         key = (int(pulse), self.start_time, self.prf, id(self.tx), id(self.rx),
                id(self.tx_pointing), id(self.rx_pointing))
         hit = self._geometries.get(key)
@@ -261,9 +262,10 @@ class RadarSystem:
         tx, rx = self.tx.state(t), self.rx.state(t)
         geo = PulseGeometry(t, tx, rx, self.tx_pointing.axes(tx, t),
                             self.rx_pointing.axes(rx, t))
-        if len(self._geometries) >= GEOMETRIES_KEPT:
-            self._geometries.pop(next(iter(self._geometries)))
-        self._geometries[key] = geo
+        kept = self._geometries
+        if len(kept) >= GEOMETRIES_KEPT:  # a new dict (other threads may be reading)
+            self._geometries = kept = {}
+        kept[key] = geo
         return geo
 
     def target_positions(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
