@@ -42,6 +42,7 @@ with the CPU's on another machine (``--child llvm_ad_mono_polarized FILE`` there
 from __future__ import annotations
 
 import argparse
+import functools
 import json
 import os
 import statistics
@@ -87,16 +88,47 @@ def _simulation(variant: str, refresh: float, update: int):
 #: Stages timed beside ``profile_pulse.STAGES`` (the GPU path's own).
 GPU_STAGES = [
     ("seaecho.radar.replay", "FrozenEchoTerms.__call__", "radar equation replayed", 2),
+    ("seaecho.radar.system", "RadarSystem.device_echo", "echo kept on the device", 2),
     ("seaecho.radar.echo", "accumulate_cuda_sets", "cufinufft, all sets + iFFT", 2),
 ]
 
 
+def _synchronised(timer, variant: str) -> None:
+    """Make ``timer``'s stages wait for the device before they start and before they end
+    (``--sync-stages``): each stage then holds its own GPU work, not that of the stages
+    before it that it waits for at its first read-back (the pulse takes longer)."""
+    import drjit as dr
+
+    from seaecho.backend import cuda_synchronize
+
+    sync = cuda_synchronize if variant.startswith("cuda") else dr.sync_thread
+    plain = timer.wrap
+
+    def wrap(label, fn):
+        def ended(*args, **kwargs):
+            try:
+                return fn(*args, **kwargs)
+            finally:
+                sync()
+
+        timed = plain(label, ended)
+
+        @functools.wraps(fn)
+        def started(*args, **kwargs):
+            sync()
+            return timed(*args, **kwargs)
+        return started
+
+    timer.wrap = wrap
+
+
 def run(variant: str, pulses: int, warmup: int, refresh: float, update: int,
-        out: str | None, profile: bool, freezes: tuple = (None,)) -> list[dict]:
+        out: str | None, profile: bool, freezes: tuple = (None,),
+        sync_stages: bool = False) -> list[dict]:
     """Time the pulses of one variant in this process, once per entry of ``freezes``
     (the fused kernel traced, False, or replayed, True; None: as the environment says),
     the same pulses each time; save the samples to ``out`` (``{freeze}`` in it replaced
-    by 0 or 1)."""
+    by 0 or 1); ``sync_stages``: :func:`_synchronised` stages."""
     import numpy as np
 
     timer = None
@@ -106,6 +138,8 @@ def run(variant: str, pulses: int, warmup: int, refresh: float, update: int,
         saved = profile_pulse.STAGES
         profile_pulse.STAGES = saved + GPU_STAGES
         timer = profile_pulse.Timer()
+        if sync_stages:
+            _synchronised(timer, variant)
         found = profile_pulse.install(timer)
         profile_pulse.STAGES = saved
     t0 = time.perf_counter()
@@ -266,6 +300,7 @@ SCAN_STAGES = [
     ("seaecho.tracing.land", "LandEchoes.echo", "land echo", 1),
     ("seaecho.radar.system", "RadarSystem.receive", "receive (accumulation, noise)", 1),
     ("seaecho.radar.echo", "accumulate", "NUFFT / direct sum + iFFT", 2),
+    ("seaecho.radar.echo", "accumulate_cuda_sets", "cufinufft, all sets + iFFT", 2),
     ("seaecho.radar.system", "thermal_noise", "thermal noise", 2),
     ("seaecho.checks.guards", "check_pulse", "finite check", 1),
     ("seaecho.simulation", "Simulation.compress", "range compression", 0),
@@ -383,6 +418,9 @@ def main() -> None:
     ap.add_argument("--unbatched", action="store_true",
                     help="one cufinufft call per channel (radar.echo.CUDA_BATCH_CHANNELS "
                     "off)")
+    ap.add_argument("--sync-stages", action="store_true",
+                    help="each stage waits for the GPU before it starts and ends (its own "
+                    "GPU work in its time; the pulse takes longer)")
     ap.add_argument("--sbr", action="store_true", help="time the SBR hull trace instead")
     ap.add_argument("--sbr-batch", type=int, default=1 << 20,
                     help="a second ray batch size of --sbr [rays]")
@@ -452,7 +490,8 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as d:
         gpu_out = str(Path(args.save or d) / "gpu_freeze{freeze}.npy")
         for g in run("cuda_ad_mono_polarized", args.pulses, args.warmup, args.refresh,
-                     args.update, gpu_out, profile=True, freezes=freezes):
+                     args.update, gpu_out, profile=True, freezes=freezes,
+                     sync_stages=args.sync_stages):
             w = np.array(g["wall"]) * 1e3
             print(f"\n  GPU, fused kernel {'frozen (replayed)' if g['freeze'] else 'traced'}"
                   f"{'' if not g['freeze_error'] else ' (gave up: ' + g['freeze_error'] + ')'}"

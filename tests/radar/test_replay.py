@@ -240,3 +240,134 @@ def test_cuda_replayed_echo_equals_the_traced_one(tmp_path):
     a = np.load(path)
     traced, frozen = a[:-1][: (a.size - 1) // 2], a[:-1][(a.size - 1) // 2:]
     assert traced.tobytes() == frozen.tobytes() and a[-1] == 1.0
+
+
+def test_a_pulse_geometry_is_computed_once():
+    # RadarSystem.geometry keeps the last pulses' geometries: the same object for the same
+    # pulse (a pulse asks for it two to three times), the bytes of a fresh computation,
+    # and a bounded number kept.
+    from seaecho.radar.system import GEOMETRIES_KEPT
+
+    radar, fresh = _radar(scanning=True), _radar(scanning=True)
+    g = radar.geometry(7)
+    assert radar.geometry(7) is g and radar.geometry(8) is not g
+    for pulse in range(3 * GEOMETRIES_KEPT):
+        radar.geometry(pulse)
+    assert len(radar._geometries) <= GEOMETRIES_KEPT
+    again, want = radar.geometry(7), fresh.geometry(7)
+    for a, b in ((again.tx_axes, want.tx_axes), (again.rx.position, want.rx.position),
+                 (again.tx.rotation, want.tx.rotation), (g.tx_axes, want.tx_axes)):
+        assert a.tobytes() == b.tobytes()
+    assert again.time == want.time
+
+
+def test_read_only_amplitudes_are_uploaded_once(monkeypatch):
+    # A hull's scattering amplitudes, held (read-only) between two traces, are converted
+    # to Dr.Jit once while they live: the next pulses convert only the positions and
+    # velocities, and every echo keeps the traced kernel's bytes.
+    import gc
+
+    from seaecho.radar import replay
+
+    converted = []
+    convert = backend._convert
+    monkeypatch.setattr(backend, "_convert", lambda xp, a, kind, keep: (
+        converted.append(kind), convert(xp, a, kind, keep))[1])
+    traced, frozen = _radar(), _radar()
+    traced.freeze, frozen.freeze = False, True
+    p, v, s = _scatterers(200)
+    s.flags.writeable = False
+    for pulse in (0, 5, 9):
+        converted.clear()
+        a = traced.scatterer_echo(traced.geometry(pulse), p + pulse, v, s)
+        converted.clear()
+        b = frozen.scatterer_echo(frozen.geometry(pulse), p + pulse, v, s)
+        assert _bytes(a) == _bytes(b), pulse
+        # positions, velocities, the packed platform vectors (+ the four components once)
+        assert converted.count("complex") == (4 if pulse == 0 else 0), converted
+    assert ("llvm", id(s)) in replay._AMPLITUDES
+    key = ("llvm", id(s))
+    del s
+    gc.collect()
+    assert key not in replay._AMPLITUDES
+
+
+def test_a_hull_echo_kept_on_the_device_sums_to_the_host_one(monkeypatch):
+    # RadarSystem.scatterer_echo(on_device=True) of a set large enough for the NUFFT
+    # returns the replay's arrays as a DeviceEcho (the GPU's branch, on the CPU back end
+    # with the stand-in cufinufft): the same delays, byte for byte, the same amplitudes
+    # inside the receive window and zero outside it (scatterers 3 km away), and the
+    # pulse's samples equal the host echo's to the NUFFT tolerance (eps 1e-9).
+    from test_resident import _FakePlan
+
+    from seaecho.radar import echo as echo_mod
+    from seaecho.radar.echo import DIRECT_TERMS
+    from seaecho.radar.system import DeviceEcho, ScattererEcho
+
+    monkeypatch.setitem(sys.modules, "cufinufft", types.SimpleNamespace(Plan=_FakePlan))
+    monkeypatch.setattr(backend, "cuda_synchronize", lambda: None)
+    monkeypatch.setattr(echo_mod, "_CUDA_PLANS", {})
+    device, host = _radar(), _radar()
+    device.freeze, host.freeze = True, True
+    device.device_echoes = True
+    k = DIRECT_TERMS // device._spectrum.size + 60
+    p, v, s = _scatterers(k)
+    p[:40, 0] += 3000.0  # beyond the window's end
+    geo = device.geometry(3)
+    e = device.scatterer_echo(geo, p, v, s, on_device=True)
+    h = host.scatterer_echo(host.geometry(3), p, v, s, on_device=True)  # host: default
+    assert isinstance(e, DeviceEcho) and isinstance(h, ScattererEcho)
+    back = e.to_host()
+    keep = device.window.keep(h.tau, device.waveform.n_samples)
+    assert keep.sum() == k - 40
+    assert back.tau.tobytes() == h.tau.tobytes()
+    assert back.amplitudes[:, keep].tobytes() == h.amplitudes[:, keep].tobytes()
+    assert not back.amplitudes[:, ~keep].any()
+    got = device.receive(3, [e], noise=False)
+    want = host.receive(3, [h], noise=False)
+    assert np.abs(got - want).max() <= 1e-9 * np.abs(want).max()
+    # a set small enough for the direct sum, or asked with its directions, stays on the host
+    assert isinstance(device.scatterer_echo(geo, p[:5], v[:5], s[:5], on_device=True),
+                      ScattererEcho)
+    assert isinstance(device.scatterer_echo(geo, p, v, s, directions=True, on_device=True),
+                      ScattererEcho)
+
+
+@pytest.mark.slow  # ~5 s: two simulations with a sea, land and a target
+@pytest.mark.filterwarnings("ignore::seaecho.scattering.validity.SPMValidityWarning")
+def test_a_pulse_with_its_land_on_the_device_equals_the_host_one(monkeypatch):
+    # The GPU's branch of a whole pulse on the CPU back end (stand-in cufinufft): the
+    # land's echo kept on the device (RadarSystem.device_echoes, every set sent to the
+    # NUFFT: DIRECT_TERMS 0) and summed in one transform with the sea's and the target's,
+    # against the host pulse, to the NUFFT tolerance (eps 1e-9).
+    from test_resident import _FakePlan
+
+    from seaecho.radar import echo as echo_mod
+    from seaecho.radar import system as system_mod
+    from seaecho.radar.system import DeviceEcho
+    from seaecho.simulation import Simulation
+
+    monkeypatch.setitem(sys.modules, "cufinufft", types.SimpleNamespace(Plan=_FakePlan))
+    monkeypatch.setattr(backend, "cuda_synchronize", lambda: None)
+    monkeypatch.setattr(echo_mod, "_CUDA_PLANS", {})
+    monkeypatch.setattr(system_mod, "DIRECT_TERMS", 0)
+    field = {"name": "field", "outline_m": [[-50, -500], [50, -500], [50, -450],
+                                            [-50, -450]], "height_m": 30.0,
+             "shore_width_m": 10.0, "resolution_m": 5.0, "terrain": "farmland"}
+    scene = parse_scene({
+        "sea": {"wind_speed_m_s": 5.0, "size_x_m": 64.0, "nx": 16},
+        "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 20e6,
+                  "prf_hz": 1000.0, "n_pulses": 3, "sea_clutter": True,
+                  "transmit_power_w": 25e3, "channels": ["HH"], "thermal_noise": False,
+                  "waveform": {"kind": "pulse", "duration_s": 5e-8}},
+        "transmitter": {"position_m": (0.0, -600.0, 20.0), "yaw_deg": 90.0, "antenna": {
+            "pattern": "isotropic", "azimuth_deg": 0.0, "depression_deg": 0.0}},
+        "targets": [{"name": "front", "position_m": (300.0, -550.0, 2.0),
+                     "rcs_m2": 10.0}],
+        "land": [field]})
+    device, host = Simulation(scene), Simulation(scene)
+    device.radar.device_echoes = True
+    geo = device.radar.geometry(1)
+    assert isinstance(device.land.echo(geo, variant=device.variant), DeviceEcho)
+    got, want = device.pulse(1), host.pulse(1)
+    assert np.abs(got - want).max() <= 1e-9 * np.abs(want).max()

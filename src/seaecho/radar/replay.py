@@ -12,9 +12,13 @@ fused kernel:
 - the scatterers' positions, velocities and scattering amplitudes enter as the recording's
   inputs (Dr.Jit arrays made at the boundary, :class:`seaecho.backend.Boundary`);
 - the pulse's platform vectors (positions, receiver velocity, vertical axes, antenna
-  axes), the only per-pulse values of the kernel, enter as inputs too: while recording,
-  ``vconst`` of the geometry's arrays returns those inputs
-  (:class:`_BoundGeometry`);
+  axes), the only per-pulse values of the kernel, enter as one input too (their 33
+  components packed: one upload per call, where 33 opaque constants were 33 device
+  allocations and fills): while recording, ``vconst`` of the geometry's arrays returns
+  the components gathered from it (:class:`_BoundGeometry`);
+- a read-only amplitude array (a hull's centres, held between two traces) is converted
+  once while it lives; with ``device`` the outputs stay Dr.Jit arrays (the GPU's
+  accumulation reads them where they are);
 - the working precision, whether the directions are asked for and which of the
   platform vectors are one and the same array are arguments of the recording: a change
   of any of them records again, as does a change of an input's type or a set of one
@@ -31,6 +35,7 @@ constants of the recording, which belongs to its :class:`RadarSystem`.
 from __future__ import annotations
 
 import threading
+import weakref
 from typing import Any
 
 import numpy as np
@@ -84,32 +89,43 @@ class _BoundGeometry:
         return self._xp.vconst(a)
 
 
-def geometry_inputs(xp, geometry) -> tuple[dict[str, Any], dict, tuple, tuple] | None:
-    """The pulse's platform vectors as Dr.Jit inputs of a recording.
+def geometry_inputs(geometry) -> tuple[NDArray, list, tuple, tuple] | None:
+    """The pulse's platform vectors as one input of a recording.
 
-    Returns ``(values, bindings, plain, aliasing)``: the named Dr.Jit values, the map
-    from each numpy array's view key to its value (for ``_BoundGeometry``), the
-    geometry's numpy arrays (whose unbound views the recording refuses) and, for each
-    named vector, the index of the first one that is the same memory (a recording in
-    which two vectors are one array reads one input for both); or None when a vector is
-    not a float64 numpy array (it could not be bound: traced).
+    Returns ``(packed, keys, plain, aliasing)``: the vectors' 33 float64 components in
+    one array (tx position, rx position, rx velocity, the two vertical axes, the three
+    axes of each antenna: one upload per call, where one opaque constant per component
+    was 33 device allocations and fills), each vector's numpy view key (for
+    ``_BoundGeometry``), the geometry's numpy arrays (whose unbound views the recording
+    refuses) and, for each vector, the index of the first one that is the same memory (a
+    recording in which two vectors are one array reads one value for both, as the trace
+    does); or None when a vector is not a float64 numpy array (it could not be bound:
+    traced).
     """
     tx, rx = geometry.tx, geometry.rx
     plain = (tx.position, rx.position, rx.velocity, tx.rotation, rx.rotation,
              geometry.tx_axes, geometry.rx_axes)
     if not all(isinstance(a, np.ndarray) and a.dtype == np.float64 for a in plain):
         return None
-    arrays = {"tx_position": tx.position, "rx_position": rx.position,
-              "rx_velocity": rx.velocity, "tx_up": tx.rotation[:, 2],
-              "rx_up": rx.rotation[:, 2]}
-    for side, axes in (("tx", geometry.tx_axes), ("rx", geometry.rx_axes)):
-        for j in range(3):
-            arrays[f"{side}_axis{j}"] = axes[:, j]
-    keys = [_view_key(a) for a in arrays.values()]
+    arrays = [tx.position, rx.position, rx.velocity, tx.rotation[:, 2], rx.rotation[:, 2]]
+    arrays += [axes[:, j] for axes in (geometry.tx_axes, geometry.rx_axes) for j in range(3)]
+    keys = [_view_key(a) for a in arrays]
     aliasing = tuple(keys.index(k) for k in keys)
-    values = {name: xp.vconst(a) for name, a in arrays.items()}
-    bindings = {key: values[name] for key, name in zip(keys, arrays, strict=True)}
-    return values, bindings, plain, aliasing
+    packed = np.concatenate([np.asarray(a, dtype=np.float64).reshape(3) for a in arrays])
+    return packed, keys, plain, aliasing
+
+
+def _unpacked(xp, packed, keys: list, aliasing: tuple) -> dict:
+    """``_BoundGeometry``'s bindings: each vector's view key -> the three components
+    gathered from the packed input (aliases share their first vector's value)."""
+    values: list = []
+    for i, first in enumerate(aliasing):
+        if first < i:
+            values.append(values[first])
+            continue
+        values.append(xp.Array3(*(xp.gather(packed, xp.UInt(3 * i + c))
+                                  for c in range(3))))
+    return dict(zip(keys, values, strict=True))
 
 
 class FrozenEchoTerms:
@@ -140,26 +156,32 @@ class FrozenEchoTerms:
         return int(self._frozen.n_recordings)
 
     def __call__(self, geometry, p: NDArray, v: NDArray, s: NDArray,
-                 directions: bool = False, precision: str = "double"
-                 ) -> dict[str, NDArray] | None:
+                 directions: bool = False, precision: str = "double",
+                 device: bool = False) -> dict[str, Any] | None:
         """:func:`~seaecho.radar.kernels.scatterer_echo` of (K, 3) positions [m],
         velocities [m/s] and (K, 2, 2) scattering amplitudes [m] (float64, complex128),
         the same dict of numpy arrays; None where it cannot be replayed (platform
         vectors that are not float64 numpy arrays, or a kernel Dr.Jit refused to record:
-        the caller traces it)."""
+        the caller traces it).
+
+        A read-only ``s`` (a hull's scattering centres, held between two traces) is
+        uploaded once while it lives (its four components).
+        ``device``: return the replay's Dr.Jit arrays as they are (``tau`` and the
+        complex ``amplitudes`` only; nothing read back), for an accumulation on the
+        device (:meth:`seaecho.radar.system.RadarSystem.scatterer_echo`).
+        """
         if self.error is not None:
             return None
         xp = self.xp
-        bound = geometry_inputs(xp, geometry)
+        bound = geometry_inputs(geometry)
         if bound is None:
             return None
-        values, bindings, plain, aliasing = bound
+        packed, keys, plain, aliasing = bound
         io = Boundary(xp, p.shape[0])
-        inputs = {"p": io.vec3(p), "v": io.vec3(v),
-                  "s": [io.complex(s[:, a, b]) for a in range(2) for b in range(2)],
-                  "geometry": values}
+        inputs = {"p": io.vec3(p), "v": io.vec3(v), "s": _amplitude_inputs(xp, io, s),
+                  "geometry": io.array(packed)}
         with self._lock:
-            self._bound = (geometry, bindings, plain)
+            self._bound = (geometry, keys, plain)
             try:
                 t = self._frozen(inputs, precision, bool(directions), aliasing)
             except RuntimeError as exc:  # a kernel Dr.Jit cannot record: traced from now on
@@ -167,6 +189,8 @@ class FrozenEchoTerms:
                 return None
             finally:
                 self._bound = None
+        if device:
+            return {"tau": t["tau"], "amplitudes": t["amplitudes"], "keep": io}
         names = ["tau", "r_t", "r_r", "g_t", "g_r"] + (["n_i", "n_s"] if directions else [])
         res = io.numpy(*(t[n] for n in names), Rows(t["amplitudes"]))
         out = dict(zip(names, res[:-1], strict=True))
@@ -176,8 +200,9 @@ class FrozenEchoTerms:
     def _record(self, inputs: dict, precision: str, directions: bool,
                 aliasing: tuple) -> dict[str, Any]:
         """The frozen function's body: ``echo_terms`` with the geometry bound
-        (``aliasing`` is a key of the recording only)."""
-        geometry, bindings, plain = self._bound
+        (``aliasing`` is a key of the recording and says which vectors share a value)."""
+        geometry, keys, plain = self._bound
+        bindings = _unpacked(self.xp, inputs["geometry"], keys, aliasing)
         xp = _BoundGeometry(self.xp, bindings, plain)
         xs = None if precision == "double" else self.xp.with_precision(precision)
         t = echo_terms(xp, self.radar, geometry, inputs["p"], inputs["v"],
@@ -186,3 +211,25 @@ class FrozenEchoTerms:
         out = {n: t[n] for n in names}
         out["amplitudes"] = list(t["amplitudes"])
         return out
+
+
+#: Device copies of read-only amplitude arrays (key -> (weak reference, components,
+#: their buffers)).
+_AMPLITUDES: dict[tuple, tuple] = {}
+
+
+def _amplitude_inputs(xp, io: Boundary, s: NDArray) -> list:
+    """The four complex components s_hh, s_hv, s_vh, s_vv of (K, 2, 2) amplitudes as
+    namespace values: converted at every call, or once while ``s`` lives where it is a
+    read-only array (the same values, one upload per hull signature)."""
+    if not isinstance(s, np.ndarray) or s.flags.writeable:
+        return [io.complex(s[:, a, b]) for a in range(2) for b in range(2)]
+    key = (xp.name, id(s))
+    hit = _AMPLITUDES.get(key)
+    if hit is not None and hit[0]() is s:
+        return hit[1]
+    held = Boundary(xp, s.shape[0])  # keeps the aligned buffers (LLVM aliases them)
+    comps = [held.complex(s[:, a, b]) for a in range(2) for b in range(2)]
+    _AMPLITUDES[key] = (weakref.ref(s, lambda _, key=key: _AMPLITUDES.pop(key, None)),
+                        comps, held)
+    return comps

@@ -48,6 +48,10 @@ FREEZE_ECHO: bool | None = ({"1": True, "0": False}.get(os.environ["SEAECHO_FREE
                             if "SEAECHO_FREEZE_ECHO" in os.environ else None)
 
 
+#: Pulse geometries :meth:`RadarSystem.geometry` keeps (the most recent ones).
+GEOMETRIES_KEPT = 8
+
+
 @dataclass(frozen=True)
 class PulseGeometry:
     """Platform states and antenna axes at one pulse's emission time."""
@@ -199,10 +203,17 @@ class RadarSystem:
         #: call; None: :data:`FREEZE_ECHO`, and where that is None, on (both back ends)
         self.freeze: bool | None = None
         self._replay: dict[str, Any] = {}
+        #: keep a replayed echo asked for ``on_device`` (a hull's centres) in the device's
+        #: memory, as a :class:`DeviceEcho` for the pulse's one transform
+        #: (:func:`~seaecho.radar.echo.accumulate_cuda_sets`): None: on ``drjit.cuda``
+        #: only; True: on any Dr.Jit namespace (the CPU tests of the GPU's branch)
+        self.device_echoes: bool | None = None
+        self._geometries: dict[tuple, PulseGeometry] = {}
 
     def __getstate__(self) -> dict:
         state = dict(self.__dict__)
         state["_replay"] = {}  # recordings stay in their process (they do not pickle)
+        state["_geometries"] = {}
         return state
 
     def frozen(self, xp: Any) -> bool:
@@ -236,11 +247,26 @@ class RadarSystem:
         return self.start_time + np.asarray(pulse, dtype=float) / self.prf
 
     def geometry(self, pulse: int) -> PulseGeometry:
-        """Platform states and antenna axes at the emission of ``pulse``."""
+        """Platform states and antenna axes at the emission of ``pulse``.
+
+        The last few pulses' geometries are kept (a pulse asks for its own two to three
+        times: its echoes, the sea's gain bound, the hulls' beam test), up to
+        :data:`GEOMETRIES_KEPT` before they are dropped together: the same object, whose
+        arrays must not be written."""
+        key = (int(pulse), self.start_time, self.prf, id(self.tx), id(self.rx),
+               id(self.tx_pointing), id(self.rx_pointing))
+        hit = self._geometries.get(key)
+        if hit is not None:
+            return hit
         t = float(self.emission_time(pulse))
         tx, rx = self.tx.state(t), self.rx.state(t)
-        return PulseGeometry(t, tx, rx, self.tx_pointing.axes(tx, t),
-                             self.rx_pointing.axes(rx, t))
+        geo = PulseGeometry(t, tx, rx, self.tx_pointing.axes(tx, t),
+                            self.rx_pointing.axes(rx, t))
+        kept = self._geometries
+        if len(kept) >= GEOMETRIES_KEPT:  # a new dict (other threads may be reading)
+            self._geometries = kept = {}
+        kept[key] = geo
+        return geo
 
     def target_positions(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
         """Positions [m] of the model's targets at time t [s] in the simulation frame
@@ -302,7 +328,8 @@ class RadarSystem:
     def scatterer_echo(self, geometry: PulseGeometry, positions: ArrayLike,
                        velocities: ArrayLike, s: ArrayLike, directions: bool = False, *,
                        variant: str | None = None, precision: str = "double",
-                       multipath: bool = False) -> ScattererEcho:
+                       multipath: bool = False, on_device: bool = False
+                       ) -> ScattererEcho | DeviceEcho:
         """Delays and per-channel amplitudes of scatterers, eqs (R1) and (R3).
 
         Evaluates :func:`seaecho.radar.kernels.echo_terms` as one fused Dr.Jit kernel
@@ -339,10 +366,16 @@ class RadarSystem:
             eq P1), when the model has them (``[propagation] multipath``): point targets
             and sea facets ask for it, ray-traced hulls (whose trace follows the sea's
             reflections) do not.
+        on_device : bool
+            The echo may stay in the device's memory (a hull's centres): where
+            :attr:`device_echoes` allows it, the replayed kernel's delays and amplitudes
+            are returned as a :class:`DeviceEcho` (:meth:`device_echo`) when the set is
+            large enough for the NUFFT; otherwise, and where the kernel is traced, a
+            :class:`ScattererEcho` as always.
 
         Returns
         -------
-        ScattererEcho
+        ScattererEcho or DeviceEcho
         """
         if self.backend == "numpy" or np.size(positions) == 0:
             return self.scatterer_echo_numpy(geometry, positions, velocities, s,
@@ -352,17 +385,52 @@ class RadarSystem:
 
         p = np.asarray(positions, dtype=np.float64).reshape(-1, 3)
         v = np.asarray(velocities, dtype=np.float64).reshape(-1, 3)
-        s = self.propagated(geometry, p, np.asarray(s, dtype=np.complex128).reshape(-1, 2, 2),
-                            multipath)
+        s = np.asarray(s, dtype=np.complex128)
+        if s.shape != (p.shape[0], 2, 2):  # (a view would hide a hull's resident amplitudes)
+            s = s.reshape(-1, 2, 2)
+        s = self.propagated(geometry, p, s, multipath)
         xp = drjit_namespace(variant)
         r = None
         if self.frozen(xp):  # the recorded kernel replayed (radar.replay)
-            r = self._replay[xp.name](geometry, p, v, s, directions, precision)
+            device = on_device and not directions and self.keeps_on_device(xp, p.shape[0])
+            r = self._replay[xp.name](geometry, p, v, s, directions, precision,
+                                      device=device)
+            if device and r is not None:
+                return self.device_echo(xp, r["tau"], r["amplitudes"], r["keep"])
         if r is None:
             xs = None if precision == "double" else xp.with_precision(precision)
             r = scatterer_echo(xp, self, geometry, p, v, s, directions, scattering=xs)
         return ScattererEcho(r["tau"], r["amplitudes"], r["r_t"], r["r_r"], r["g_t"],
                              r["g_r"], r.get("n_i"), r.get("n_s"))
+
+    def keeps_on_device(self, xp: Any, n: int) -> bool:
+        """Whether an echo of ``n`` scatterers asked for ``on_device`` stays on namespace
+        ``xp``'s device (:attr:`device_echoes`; only a set that :meth:`receive` would
+        give the NUFFT, not the direct sum)."""
+        on = self.device_echoes
+        if on is None:
+            on = xp.name == "cuda"
+        return bool(on) and not xp.is_numpy and n * self._spectrum.size > DIRECT_TERMS
+
+    def device_echo(self, xp: Any, tau: Any, amplitudes: list, keep: Any = None
+                    ) -> DeviceEcho:
+        """A :class:`DeviceEcho` of Dr.Jit delays (K,) [s] and C complex amplitudes (K,)
+        [sqrt(W)]: each channel interleaved (re, im) into one (2 K,) array on the device,
+        zero for the scatterers whose echo misses the receive window (those
+        :meth:`receive` cuts from a host echo: a zero amplitude adds nothing to eq E2's
+        sum, and the device's accumulation folds every delay into the window). Nothing
+        is read back; ``keep`` holds host buffers the arrays may alias."""
+        lo, hi = self.window.bounds(self.waveform.n_samples)
+        inside = (tau > lo) & (tau < hi)
+        idx = xp.arange(xp.width(tau))
+        zero = xp.Float(0.0)
+        out = []
+        for a in amplitudes:
+            buf = xp.empty(2 * xp.width(tau))
+            xp.scatter(buf, xp.pair(xp.dr.select(inside, xp.Float(a.real), zero),
+                                    xp.dr.select(inside, xp.Float(a.imag), zero)), idx)
+            out.append(buf)
+        return DeviceEcho(xp, tau, tuple(out), len(out), keep)
 
     def propagated(self, geometry: PulseGeometry, positions: NDArray[np.float64],
                    s: NDArray[np.complex128], multipath: bool) -> NDArray[np.complex128]:

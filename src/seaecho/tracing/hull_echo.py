@@ -616,7 +616,9 @@ class HullEchoes:
 
     # ---------------------------------------------------------------------- pulses
     def echoes(self, geometry, pulse: int, seen: Callable | None = None) -> list:
-        """Echoes of every hull for one pulse (a ``ScattererEcho`` each).
+        """Echoes of every hull for one pulse (a ``ScattererEcho`` each, or a
+        ``DeviceEcho`` where the radar keeps it on its GPU:
+        ``RadarSystem.scatterer_echo``'s ``on_device``).
 
         Parameters
         ----------
@@ -656,6 +658,8 @@ class HullEchoes:
             if self.hulls[i].waterplane is not None:
                 pos = self.in_waves(i, pos, geometry.time)
             s = c.s
+            if s.flags.writeable:  # held until the next trace: uploaded once on a device
+                s.flags.writeable = False
             if self.earth is not None:  # on the sphere; the part below the horizon hidden
                 pos, seen = horizon_mask(self.earth, pos, geometry.tx.position,
                                          geometry.rx.position)
@@ -663,7 +667,7 @@ class HullEchoes:
                     continue
                 if not seen.all():
                     pos, vel, s = pos[seen], vel[seen], s[seen]
-            out.append(self.radar.scatterer_echo(geometry, pos, vel, s))
+            out.append(self.radar.scatterer_echo(geometry, pos, vel, s, on_device=True))
         return out
 
     def attitude(self, hull: int, t: float) -> tuple[float, float, float]:

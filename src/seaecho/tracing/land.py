@@ -262,8 +262,10 @@ class LandEchoes:
 
     def echo(self, geometry, patches: NDArray[np.bool_] | None = None, *,
              variant: str | None = None):
-        """The land's echo at one pulse (a ``ScattererEcho``), or None when no facet of the
-        kept ``patches`` (bool per :attr:`patch_boxes`; default all) is lit and seen.
+        """The land's echo at one pulse (a ``ScattererEcho``, or a ``DeviceEcho`` where the
+        radar keeps it on its GPU: ``RadarSystem.scatterer_echo``'s ``on_device``), or
+        None when no facet of the kept ``patches`` (bool per :attr:`patch_boxes`; default
+        all) is lit and seen.
 
         Parameters
         ----------
@@ -296,4 +298,4 @@ class LandEchoes:
         s[:, 1, 1] = a
         pos = self.centroid[facet]
         return self.radar.scatterer_echo(geometry, pos, np.zeros_like(pos), s,
-                                         variant=variant)
+                                         variant=variant, on_device=True)
