@@ -371,3 +371,26 @@ def test_a_pulse_with_its_land_on_the_device_equals_the_host_one(monkeypatch):
     assert isinstance(device.land.echo(geo, variant=device.variant), DeviceEcho)
     got, want = device.pulse(1), host.pulse(1)
     assert np.abs(got - want).max() <= 1e-9 * np.abs(want).max()
+
+
+def test_a_kept_geometry_follows_a_platform_assigned_later():
+    # The kept geometries are keyed on the ids of the platforms and pointings: an entry
+    # holds those objects (a platform assigned later cannot take a freed one's id and be
+    # served its geometry), and a platform assigned in place of another gives its own.
+    import gc
+    import weakref
+
+    from seaecho.radar.platforms import Platform
+
+    radar = _radar()
+    first = radar.geometry(0)
+    old = weakref.ref(radar.tx)
+    for shift in (10.0, 20.0, 30.0):  # each new platform replaces (and frees) the last
+        radar.tx = Platform(np.array([0.0]), np.array([[shift, 0.0, 100.0]]))
+        radar.model = None  # (the model's reference too)
+        gc.collect()
+        geo = radar.geometry(0)
+        assert geo.tx.position.tolist() == [shift, 0.0, 100.0]
+        assert radar.geometry(0) is geo
+    assert first.tx.position.tolist() != [10.0, 0.0, 100.0]
+    assert old() is not None  # held by its kept entry while it is kept

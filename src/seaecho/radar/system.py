@@ -208,7 +208,8 @@ class RadarSystem:
         #: (:func:`~seaecho.radar.echo.accumulate_cuda_sets`): None: on ``drjit.cuda``
         #: only; True: on any Dr.Jit namespace (the CPU tests of the GPU's branch)
         self.device_echoes: bool | None = None
-        self._geometries: dict[tuple, PulseGeometry] = {}
+        #: kept pulse geometries: key -> (geometry, the platforms and pointings it is of)
+        self._geometries: dict[tuple, tuple[PulseGeometry, tuple]] = {}
 
     def __getstate__(self) -> dict:
         state = dict(self.__dict__)
@@ -253,11 +254,13 @@ class RadarSystem:
         times: its echoes, the sea's gain bound, the hulls' beam test), up to
         :data:`GEOMETRIES_KEPT` before they are dropped together: the same object, whose
         arrays must not be written."""
-        key = (int(pulse), self.start_time, self.prf, id(self.tx), id(self.rx),
-               id(self.tx_pointing), id(self.rx_pointing))
+        parts = (self.tx, self.rx, self.tx_pointing, self.rx_pointing)
+        key = (int(pulse), self.start_time, self.prf) + tuple(map(id, parts))
         hit = self._geometries.get(key)
-        if hit is not None:
-            return hit
+        # the entry holds the objects it was computed from: their ids cannot be reused by
+        # a platform or pointing assigned later while it is kept
+        if hit is not None and all(a is b for a, b in zip(hit[1], parts, strict=True)):
+            return hit[0]
         t = float(self.emission_time(pulse))
         tx, rx = self.tx.state(t), self.rx.state(t)
         geo = PulseGeometry(t, tx, rx, self.tx_pointing.axes(tx, t),
@@ -265,7 +268,7 @@ class RadarSystem:
         kept = self._geometries
         if len(kept) >= GEOMETRIES_KEPT:  # a new dict (other threads may be reading)
             self._geometries = kept = {}
-        kept[key] = geo
+        kept[key] = (geo, parts)
         return geo
 
     def target_positions(self, t: float) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
