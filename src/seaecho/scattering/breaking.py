@@ -234,7 +234,7 @@ class BreakingStatistics:
     mean_phase_speed: float
     mean_period: float
     k_wb: float
-    mean_velocity: float = 0.0
+    mean_velocity: float
 
 
 def breaking_wavenumber_limit(k_radar: float) -> float:
@@ -284,7 +284,7 @@ def _statistics(u10: float, k_wb: float) -> BreakingStatistics:
     total = float(lam_k.sum())
     q = C_Q * total
     if total <= 0.0:
-        return BreakingStatistics(0.0, 0.0, 0.0, 0.0, k_wb)
+        return BreakingStatistics(0.0, 0.0, 0.0, 0.0, k_wb, 0.0)
     a_wb = float((lam_k * np.cos(phi)[None, :]).sum() / total)
     c = phase_speed(k)
     c_mean = float((lam_k.sum(axis=1) * c).sum() / total)
