@@ -1002,8 +1002,32 @@ MUTATIONS = [
              "return all(_finite(x) for x in a)", "return _finite(a[0])",
              ("tests/test_pulse_overheads.py",),
              "the finite-output guard checks the first channel of a list only"),
+    Mutation("hidden-ahead-first-pulse-of-block", S + "simulation.py",
+             "ahead[2][:, pulse - ahead[0]][:, None]", "ahead[2][:, 0][:, None]",
+             ("tests/radar/test_replay.py",),
+             "the batched targets-hidden search read at the block's first pulse for every "
+             "pulse of the block"),
+    Mutation("wind-drift-auto-on-radar-coverage", S + "build.py",
+             'if (sea_motion(scene) != "evolving" or scene.sea.coverage != "tile"',
+             'if (sea_motion(scene) != "evolving"',
+             ("tests/test_build.py", "tests/ocean/test_current.py"),
+             "the default drift applied to coverage = 'radar' (which has no current yet)"),
+    Mutation("wind-drift-auto-with-dynamic-hull", S + "build.py",
+             'or any(s.wave_motion and s.wave_response == "dynamic" for s in '
+             'scene.all_ships)):',
+             "or False):",
+             ("tests/test_build.py", "tests/ocean/test_current.py"),
+             "the default drift applied with a hull's dynamic response (refused on a current)"),
+    Mutation("spm-sin-product-unrooted", S + "scattering/spm.py",
+             "xp.sqrt(s2_i * s2_s), cos_phi", "s2_i * s2_s, cos_phi",
+             ("tests/scattering/test_spm.py",),
+             "eq S6's sin(theta_i) sin(theta_s) taken as the product of the squared sines"),
+    Mutation("kept-geometry-without-its-platforms", S + "radar/system.py",
+             "kept[key] = (geo, parts)", "kept[key] = (geo, ())",
+             ("tests/radar/test_replay.py",),
+             "a kept pulse geometry keyed on ids of platforms it does not hold (a later "
+             "platform may take a freed one's id and be served its geometry)"),
 ]
-
 
 def _copy_tree(dest: Path) -> None:
     """Copy the working tree: the files git tracks or would track (README, setup.sh,

@@ -394,3 +394,42 @@ def test_a_kept_geometry_follows_a_platform_assigned_later():
         assert radar.geometry(0) is geo
     assert first.tx.position.tolist() != [10.0, 0.0, 100.0]
     assert old() is not None  # held by its kept entry while it is kept
+
+
+def test_each_pulse_of_a_block_reads_its_own_hidden_targets(monkeypatch):
+    # Simulation.pulses computes the targets hidden for the rest of a sea block at once;
+    # each pulse must read its own column (a target that goes behind the land or a crest
+    # within the block). targets_hidden is replaced by a pattern that changes every
+    # pulse, and the flags each pulse hands to target_echo are recorded.
+    from seaecho.simulation import Simulation
+
+    targets = [{"name": f"t{i}", "position_m": (20.0 * i, 0.0, 2.0), "rcs_m2": 1.0}
+               for i in range(3)]
+    scene = parse_scene({
+        "sea": {"wind_speed_m_s": 5.0, "size_x_m": 16.0, "nx": 16},
+        "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 20e6,
+                  "prf_hz": 1000.0, "n_pulses": 6, "sea_update_pulses": 4,
+                  "sea_clutter": False, "channels": ["HH"], "thermal_noise": False,
+                  "waveform": {"kind": "pulse", "duration_s": 5e-8}},
+        "transmitter": {"position_m": (0.0, -600.0, 20.0), "yaw_deg": 90.0, "antenna": {
+            "pattern": "isotropic", "azimuth_deg": 0.0, "depression_deg": 0.0}},
+        "targets": targets})
+    sim = Simulation(scene)
+
+    def pattern(pulses):  # (2, P, T): target p % 3 behind the land at pulse p
+        p = np.atleast_1d(np.asarray(pulses))
+        out = np.zeros((2, p.size, 3), dtype=bool)
+        out[0, np.arange(p.size), p % 3] = True
+        return out
+
+    seen = {}
+    echo = sim.radar.target_echo
+
+    def recorded(geo, **kw):
+        seen[round(geo.time * 1000.0)] = kw["hidden"].tolist()
+        return echo(geo, **kw)
+
+    monkeypatch.setattr(sim, "targets_hidden", pattern)
+    monkeypatch.setattr(sim.radar, "target_echo", recorded)
+    sim.pulses(1, 6)
+    assert seen == {p: [i == p % 3 for i in range(3)] for p in range(1, 6)}

@@ -257,9 +257,7 @@ class RadarSystem:
         parts = (self.tx, self.rx, self.tx_pointing, self.rx_pointing)
         key = (int(pulse), self.start_time, self.prf) + tuple(map(id, parts))
         hit = self._geometries.get(key)
-        # the entry holds the objects it was computed from: their ids cannot be reused by
-        # a platform or pointing assigned later while it is kept
-        if hit is not None and all(a is b for a, b in zip(hit[1], parts, strict=True)):
+        if hit is not None:
             return hit[0]
         t = float(self.emission_time(pulse))
         tx, rx = self.tx.state(t), self.rx.state(t)
@@ -268,6 +266,8 @@ class RadarSystem:
         kept = self._geometries
         if len(kept) >= GEOMETRIES_KEPT:  # a new dict (other threads may be reading)
             self._geometries = kept = {}
+        # the entry holds the objects it was computed from: while it is kept, their ids
+        # cannot be taken by a platform or pointing assigned later (a stale geometry)
         kept[key] = (geo, parts)
         return geo
 
