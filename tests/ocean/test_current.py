@@ -191,3 +191,31 @@ def test_dynamic_hull_on_a_current_is_refused_by_the_scene_as_by_the_run():
         parse_scene(scene)
     quasi = dict(scene, ships=[dict(boat, wave_response="quasi-static")])
     assert parse_scene(quasi).sea.current_m_s == (0.3, 0.0)
+
+
+def test_auto_drift_is_none_with_a_dynamic_hull_and_on_radar_coverage():
+    # "auto" is the 3 % surface drift on an evolving tile, and none where a current
+    # cannot be simulated: a hull's dynamic response (refused on a current, above) and
+    # coverage = "radar" (no current yet), even where the sea evolves.
+    from seaecho.build import sea_current, sea_motion, wind_drift
+    from seaecho.config import parse_scene
+
+    boat = {"name": "b", "length_m": 8.0, "beam_m": 2.5, "draft_m": 0.8, "speed_m_s": 0.0,
+            "position_m": (0.0, 0.0), "hull_echo": True, "wave_motion": True,
+            "kelvin_wake": False}
+    scene = {"sea": {"wind_speed_m_s": 8.0, "size_x_m": 32.0, "nx": 32},
+             "radar": {"carrier_frequency_hz": 1.3e9, "sampling_rate_hz": 50e6,
+                       "prf_hz": 100.0, "n_pulses": 8, "sea_update_pulses": 1,
+                       "channels": ["HH"],
+                       "waveform": {"kind": "lfm", "bandwidth_hz": 40e6,
+                                    "duration_s": 1e-6}},
+             "transmitter": {"position_m": (-300, 0, 30),
+                             "antenna": {"pattern": "isotropic", "look_at_m": (0, 0, 0)}},
+             "ships": [boat]}
+    dynamic = parse_scene(scene)
+    assert sea_motion(dynamic) == "evolving" and wind_drift(dynamic) == "none"
+    assert sea_current(dynamic) == (0.0, 0.0)
+    quasi = parse_scene(dict(scene, ships=[dict(boat, wave_response="quasi-static")]))
+    assert wind_drift(quasi) == "3pct" and sea_current(quasi) != (0.0, 0.0)
+    radar = parse_scene({**scene, "ships": [], "sea": {**scene["sea"], "coverage": "radar"}})
+    assert sea_motion(radar) == "evolving" and wind_drift(radar) == "none"
