@@ -377,7 +377,6 @@ def test_a_kept_geometry_follows_a_platform_assigned_later():
     # The kept geometries are keyed on the ids of the platforms and pointings: an entry
     # holds those objects (a platform assigned later cannot take a freed one's id and be
     # served its geometry), and a platform assigned in place of another gives its own.
-    import gc
     import weakref
 
     from seaecho.radar.platforms import Platform
@@ -387,8 +386,7 @@ def test_a_kept_geometry_follows_a_platform_assigned_later():
     old = weakref.ref(radar.tx)
     for shift in (10.0, 20.0, 30.0):  # each new platform replaces (and frees) the last
         radar.tx = Platform(np.array([0.0]), np.array([[shift, 0.0, 100.0]]))
-        radar.model = None  # (the model's reference too)
-        gc.collect()
+        radar.model = None  # (the model's reference too: freed when replaced)
         geo = radar.geometry(0)
         assert geo.tx.position.tolist() == [shift, 0.0, 100.0]
         assert radar.geometry(0) is geo
