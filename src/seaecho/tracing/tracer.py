@@ -37,6 +37,7 @@ import numpy as np
 from ..backend import Boundary, drjit_namespace
 from ..geometry.facets import Facets
 from ..geometry.mesh import facet_geometry, grid_vertices, to_facets
+from .heightfield import WALK_MAX_CELLS, heightfield_blocked, walk_cells
 from .kernels import facet_frames_drjit
 from .scene import ObjectGeometry, ObjectScene, SeaScene, shadow_test
 from .variant import set_variant
@@ -99,6 +100,11 @@ class FacetTracer:
         moving = [o for o in objects if o.moving]
         self.static_objects = ObjectScene(static, variant=variant) if static else None
         self.moving_objects = ObjectScene(moving, variant=variant) if moving else None
+        #: trace the sea's shadow rays by the grid walk where it is short (no BVH
+        #: rebuild for a new surface; :mod:`seaecho.tracing.heightfield`: the same
+        #: masks); False: always Embree's / OptiX's BVH
+        self.walk = bool(np.allclose(np.diff(self.x), self.x[1] - self.x[0], rtol=1e-9)
+                         and np.allclose(np.diff(self.y), self.y[1] - self.y[0], rtol=1e-9))
         cell = min(np.min(np.diff(self.x)), np.min(np.diff(self.y)))
         self._cell = float(cell)
         self._scale_of: tuple[np.ndarray, float] | None = None
@@ -111,7 +117,8 @@ class FacetTracer:
         return out
 
     def set_surface(self, elevation: np.ndarray) -> bool:
-        """New sea elevation (ny, nx) [m]: vertex update and BVH rebuild of the sea scene.
+        """New sea elevation (ny, nx) [m]: vertex update of the sea scene (its BVH is
+        rebuilt when next traced, :class:`~seaecho.tracing.scene.SeaScene`).
 
         Returns False (and rebuilds nothing) when the elevation equals the current one, as
         when the surface is held between pulses (paper section V-B).
@@ -182,11 +189,23 @@ class FacetTracer:
         d = xp.vconst(p) - origin
         r = xp.sqrt(xp.dot(d, d))
         d = d / r
-        blocked = shadow_test(self.mi_scenes, origin, d, r * (1.0 - 1e-6),
-                              variant=self.variant)
-        blocked = xp.Bool(blocked)
-        if self.period_m is not None:
-            blocked = self._apron(c, p, origin, d, blocked, xp, io)
+        maxt = r * (1.0 - 1e-6)
+        if self._walks(p):  # the sea by the grid walk, the objects by their BVHs
+            reach = None
+            if self.period_m is not None:
+                reach = io.array(self.apron_copies(c, p)[1])
+            blocked = heightfield_blocked(xp, self.sea.vertices, origin, d, maxt,
+                                          period_m=self.period_m, reach=reach)
+            objects = [s.mi_scene for s in (self.static_objects, self.moving_objects)
+                       if s is not None]
+            if objects:
+                blocked = blocked | xp.Bool(shadow_test(objects, origin, d, maxt,
+                                                        variant=self.variant))
+        else:
+            blocked = xp.Bool(shadow_test(self.mi_scenes, origin, d, maxt,
+                                          variant=self.variant))
+            if self.period_m is not None:
+                blocked = self._apron(c, p, origin, d, blocked, xp, io)
         if device:
             xp.eval(blocked)
             return blocked
@@ -196,6 +215,16 @@ class FacetTracer:
         hit = np.zeros(centroid.shape[0], dtype=bool)
         hit[idx] = hit_sub
         return hit
+
+    def _walks(self, position: np.ndarray) -> bool:
+        """Whether the sea's shadow rays to ``position`` take the grid walk
+        (:mod:`seaecho.tracing.heightfield`: :attr:`walk` on, a CPU variant, and an
+        estimated walk of at most ``WALK_MAX_CELLS`` cells) rather than the BVH."""
+        if not self.walk or not self.variant.startswith("llvm"):
+            return False
+        z = self.sea.vertices[..., 2]
+        return walk_cells(self.x, self.y, float(z.min()), float(z.max()),
+                          position) <= WALK_MAX_CELLS
 
     def apron_copies(self, centroid: np.ndarray, position: np.ndarray
                      ) -> tuple[list[tuple[int, int]], np.ndarray]:
