@@ -246,6 +246,7 @@ class Simulation:
         self.engine = None
         self._resident = None
         self._state_cache: tuple[float, object] | None = None
+        self._state_before: tuple[float, object] | None = None  # the one held before
         # (time, job) of the sea state computed ahead on a thread (prefetch_surface)
         self._prefetch: tuple[float, object] | None = None
         # (time, job) of the evolving block's kinematics computed ahead (fused kernel)
@@ -353,11 +354,17 @@ class Simulation:
 
     def surface_state(self, pulse: int):
         """Sea state of ``pulse``'s block (memoised: the same for every pulse of a block;
-        taken from :meth:`prefetch_surface` when it was started for this block)."""
+        taken from :meth:`prefetch_surface` when it was started for this block). The
+        state held before is kept too: with a new sea every pulse, the occlusion refresh
+        traces the surface of the pulse before the refresh time (``surface_state_at``),
+        which is then not synthesised again."""
         t = self.surface_time(pulse)
         if self._state_cache is None or self._state_cache[0] != t:
             ahead = self._prefetch
-            if ahead is not None and ahead[0] == t:
+            before, self._state_before = self._state_before, self._state_cache
+            if before is not None and before[0] == t:
+                state = before[1]
+            elif ahead is not None and ahead[0] == t:
                 self._prefetch = None
                 state = ahead[1].result()
             else:
