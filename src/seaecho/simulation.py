@@ -247,6 +247,7 @@ class Simulation:
         self._resident = None
         self._state_cache: tuple[float, object] | None = None
         self._state_before: tuple[float, object] | None = None  # the one held before
+        self._lazy_slopes = False  # sea states' slopes synthesised when read (LazySlopes)
         # (time, job) of the sea state computed ahead on a thread (prefetch_surface)
         self._prefetch: tuple[float, object] | None = None
         # (time, job) of the evolving block's kinematics computed ahead (fused kernel)
@@ -269,6 +270,8 @@ class Simulation:
             # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
             self.engine = FacetEngine.from_model(models.tracing, self.surface_state_at,
                                                  lambda t: tx.state(t).position, rx_fn)
+            # ray-traced facets come from the heights: the slopes only if read (outputs)
+            self._lazy_slopes = self.engine.mode == "raytraced"
             from .radar.resident import resident_sea  # the fused pulse, where it applies
 
             if facet_weight is None:
@@ -368,7 +371,7 @@ class Simulation:
                 self._prefetch = None
                 state = ahead[1].result()
             else:
-                state = self.sea.state(t)
+                state = self.sea.state(t, self._lazy_slopes)
             self._state_cache = (t, state)
         return self._state_cache[1]
 
@@ -389,7 +392,7 @@ class Simulation:
             return
         from .sea import ThreadJob
 
-        self._prefetch = (t, ThreadJob(self.sea.state, t))
+        self._prefetch = (t, ThreadJob(self.sea.state, t, self._lazy_slopes))
         if self.evolving and self._resident is not None:  # the block's kinematics too
             self._kinematics_ahead = (t, ThreadJob(self._kinematics, t))
 

@@ -51,3 +51,16 @@ def test_scratch_fields_from_several_threads():
         th.join()
     for t in times:
         assert _bytes(out[t]) == _bytes(s.fields(t))
+
+
+@pytest.mark.parametrize("precision", ["single", "double"])
+def test_fields_without_slopes_and_slopes_later(precision):
+    # three transforms instead of five, and the two slopes later: the same bytes
+    s = _surface(precision=precision)
+    full = s.fields(0.37)
+    part = s.fields(0.37, slopes=False)
+    assert part.slope_x is None and part.slope_y is None
+    for a, b in ((full.elevation, part.elevation), (full.velocity, part.velocity)):
+        assert a.tobytes() == b.tobytes()
+    sx, sy = s.slopes(0.37)
+    assert sx.tobytes() == full.slope_x.tobytes() and sy.tobytes() == full.slope_y.tobytes()
