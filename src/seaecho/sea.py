@@ -241,6 +241,9 @@ class Sea:
         from .wake import KelvinWake
 
         self._wakes = [KelvinWake(s) for s, k in zip(ships, flags, strict=True) if k]
+        #: :meth:`state` synthesises the slopes only when they are read (a ray-traced
+        #: simulation sets it: its facets come from the heights)
+        self.lazy_slopes = False
 
     @property
     def spectrum(self) -> DirectionalSpectrum:
@@ -297,15 +300,17 @@ class Sea:
                 mask = 1.0 - (1.0 - mask) * (1.0 + gain)
         return w, mask
 
-    def state(self, t: float = 0.0, lazy_slopes: bool = False) -> SurfaceState:
+    def state(self, t: float = 0.0, lazy_slopes: bool | None = None) -> SurfaceState:
         """Sea + wake at time ``t`` [s].
 
         On grids of at least :data:`THREAD_MIN_NODES` nodes the ship's wake is computed
         on a thread of its own while the wind sea is synthesised (finufft and numpy
         release the GIL): the same numbers, in less wall time on two cores. With
-        ``lazy_slopes`` the slopes are synthesised only if read (:class:`LazySlopes`,
-        the same bytes): a ray-traced pulse does not read them.
+        ``lazy_slopes`` (None: :attr:`lazy_slopes`) the slopes are synthesised only if
+        read (:class:`LazySlopes`, the same bytes): a ray-traced pulse does not read them.
         """
+        if lazy_slopes is None:
+            lazy_slopes = self.lazy_slopes
         threaded = bool(self.ships) and self.x.size * self.y.size >= THREAD_MIN_NODES
         job = ThreadJob(self._ship_fields, t) if threaded else None
         f = self.surface.fields(t, slopes=not lazy_slopes)

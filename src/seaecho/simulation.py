@@ -270,8 +270,11 @@ class Simulation:
             # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
             self.engine = FacetEngine.from_model(models.tracing, self.surface_state_at,
                                                  lambda t: tx.state(t).position, rx_fn)
-            # ray-traced facets come from the heights: the slopes only if read (outputs)
+            # ray-traced facets come from the heights: the slopes only if read (outputs;
+            # the same bytes either way)
             self._lazy_slopes = self.engine.mode == "raytraced"
+            if self._lazy_slopes:
+                self.sea.lazy_slopes = True
             from .radar.resident import resident_sea  # the fused pulse, where it applies
 
             if facet_weight is None:
@@ -371,7 +374,7 @@ class Simulation:
                 self._prefetch = None
                 state = ahead[1].result()
             else:
-                state = self.sea.state(t, self._lazy_slopes)
+                state = self.sea.state(t)
             self._state_cache = (t, state)
         return self._state_cache[1]
 
@@ -392,7 +395,7 @@ class Simulation:
             return
         from .sea import ThreadJob
 
-        self._prefetch = (t, ThreadJob(self.sea.state, t, self._lazy_slopes))
+        self._prefetch = (t, ThreadJob(self.sea.state, t))
         if self.evolving and self._resident is not None:  # the block's kinematics too
             self._kinematics_ahead = (t, ThreadJob(self._kinematics, t))
 
