@@ -744,7 +744,7 @@ MUTATIONS = [
     # --- the periodic apron of the sea tile's shadow rays (tracing/tracer.py)
     Mutation("apron-copies-not-shifted", S + "tracing/tracer.py",
              "origin - shift, d, maxt,", "origin, d, maxt,",
-             ("tests/tracing/test_periodic_apron.py",),
+             ("tests/tracing/test_periodic_apron.py", "tests/tracing/test_heightfield.py"),
              "eq A1: the segments traced against the tile itself, not its copies"),
     Mutation("apron-seams-not-periodic", S + "tracing/tracer.py",
              'return np.pad(z, ((0, 1), (0, 1)), mode="wrap")',
@@ -757,6 +757,22 @@ MUTATIONS = [
              "r, 0.5 * np.maximum(z_top - centroid[:, 2], 0.0) / up), r)",
              ("tests/tracing/test_periodic_apron.py",),
              "eq A2: the apron half as long as the longest shadow"),
+    # --- the grid walk of the sea's shadow rays (tracing/heightfield.py)
+    Mutation("walk-one-triangle-per-cell", S + "tracing/heightfield.py",
+             "h = (_triangle_hit(dr, o, d32, tf, p00, p10, p11)\n"
+             "             | _triangle_hit(dr, o, d32, tf, p00, p11, p01))",
+             "h = _triangle_hit(dr, o, d32, tf, p00, p10, p11)",
+             ("tests/tracing/test_heightfield.py",),
+             "each cell's second triangle (P00, P11, P01) never tested"),
+    Mutation("walk-copies-not-shifted", S + "tracing/heightfield.py",
+             "o = (dr.select(home, o32[0], f32(ox - ci * lx)),",
+             "o = (dr.select(home, o32[0], f32(ox)),",
+             ("tests/tracing/test_heightfield.py", "tests/tracing/test_periodic_apron.py"),
+             "eq A1 in the walk: a copy's triangles tested with the unshifted segment"),
+    Mutation("walk-steps-x-only", S + "tracing/heightfield.py",
+             "along_x = t_x < t_y", "along_x = t_x < t_y + 1e300",
+             ("tests/tracing/test_heightfield.py",),
+             "the walk leaves out the cells its ray enters across a row boundary"),
     # --- land, lines of sight, the truth's frame (docs/land.md)
     Mutation("land-sigma0-sin-squared", S + "scattering/land.py",
              "return gamma * si  # Eq (L1)", "return gamma * si * si  # Eq (L1)",
