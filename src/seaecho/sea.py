@@ -18,22 +18,65 @@ from .ocean.spectra import DirectionalSpectrum
 from .ocean.surface import SeaSurface
 
 
+class LazySlopes:
+    """The slopes (dz/dx, dz/dy) of a sea state, synthesised when first asked for
+    (:meth:`seaecho.ocean.surface.SeaSurface.slopes`, the bytes of the batched
+    synthesis) plus the Kelvin wakes' (``wake``: their summed fields, or None); once,
+    from any thread. A ray-traced pulse never asks (its facets come from the heights)."""
+
+    def __init__(self, surface: SeaSurface, t: float, wake=None) -> None:
+        self._args = (surface, float(t), wake)
+        self._value: tuple[NDArray, NDArray] | None = None
+        self._lock = threading.Lock()
+
+    @property
+    def value(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """(dz/dx, dz/dy), sea + wake [-]."""
+        with self._lock:
+            if self._value is None:
+                surface, t, wake = self._args
+                sx, sy = surface.slopes(t)
+                if wake is not None:
+                    sx, sy = sx + wake.slope_x, sy + wake.slope_y
+                self._value = (sx, sy)
+                self._args = None
+            return self._value
+
+    def __reduce__(self):  # pickled as its arrays
+        return (tuple, (self.value,))
+
+
 @dataclass(frozen=True)
 class SurfaceState:
-    """Sea + wake on the grid at one time. Arrays shaped (ny, nx) unless stated."""
+    """Sea + wake on the grid at one time. Arrays shaped (ny, nx) unless stated.
+
+    The slopes come as ``slopes``: the pair (dz/dx, dz/dy), or a :class:`LazySlopes`
+    that synthesises them when :attr:`slope_x` or :attr:`slope_y` is first read.
+    """
 
     t: float  #: time [s]
     x: NDArray[np.float64]  #: x coordinates (nx,) [m]
     y: NDArray[np.float64]  #: y coordinates (ny,) [m]
     elevation: NDArray[np.float64]  #: z, sea + wake [m]
-    slope_x: NDArray[np.float64]  #: dz/dx, sea + wake [-]
-    slope_y: NDArray[np.float64]  #: dz/dy, sea + wake [-]
+    slopes: tuple | LazySlopes  #: (dz/dx, dz/dy), sea + wake [-], or their LazySlopes
     velocity: NDArray[np.float64]  #: surface velocity (u, v, w), (ny, nx, 3) [m/s]
     wake_elevation: NDArray[np.float64]  #: the Kelvin wake's own height [m]
     #: Bragg spectrum change of the wake: the sea's Bragg spectrum is multiplied by
     #: 1 - wake_mask; 0 (none) .. 1 (short waves damped by the turbulent wake), negative
     #: where the narrow-V wake adds Bragg waves (:mod:`seaecho.wake.narrow_v`) [-]
     wake_mask: NDArray[np.float64]
+
+    @property
+    def slope_x(self) -> NDArray[np.float64]:
+        """dz/dx, sea + wake [-]."""
+        s = self.slopes
+        return (s.value if isinstance(s, LazySlopes) else s)[0]
+
+    @property
+    def slope_y(self) -> NDArray[np.float64]:
+        """dz/dy, sea + wake [-]."""
+        s = self.slopes
+        return (s.value if isinstance(s, LazySlopes) else s)[1]
 
 
 @dataclass(frozen=True)
@@ -198,6 +241,9 @@ class Sea:
         from .wake import KelvinWake
 
         self._wakes = [KelvinWake(s) for s, k in zip(ships, flags, strict=True) if k]
+        #: :meth:`state` synthesises the slopes only when they are read (a ray-traced
+        #: simulation sets it: its facets come from the heights)
+        self.lazy_slopes = False
 
     @property
     def spectrum(self) -> DirectionalSpectrum:
@@ -254,36 +300,40 @@ class Sea:
                 mask = 1.0 - (1.0 - mask) * (1.0 + gain)
         return w, mask
 
-    def state(self, t: float = 0.0) -> SurfaceState:
+    def state(self, t: float = 0.0, lazy_slopes: bool | None = None) -> SurfaceState:
         """Sea + wake at time ``t`` [s].
 
         On grids of at least :data:`THREAD_MIN_NODES` nodes the ship's wake is computed
         on a thread of its own while the wind sea is synthesised (finufft and numpy
-        release the GIL): the same numbers, in less wall time on two cores.
+        release the GIL): the same numbers, in less wall time on two cores. With
+        ``lazy_slopes`` (None: :attr:`lazy_slopes`) the slopes are synthesised only if
+        read (:class:`LazySlopes`, the same bytes): a ray-traced pulse does not read them.
         """
+        if lazy_slopes is None:
+            lazy_slopes = self.lazy_slopes
         threaded = bool(self.ships) and self.x.size * self.y.size >= THREAD_MIN_NODES
         job = ThreadJob(self._ship_fields, t) if threaded else None
-        f = self.surface.fields(t)
+        f = self.surface.fields(t, slopes=not lazy_slopes)
         w, mask = job.result() if threaded else self._ship_fields(t)
         shape = f.elevation.shape
         wake_z = np.zeros(shape)
-        elevation, slope_x, slope_y = f.elevation, f.slope_x, f.slope_y
-        velocity = f.velocity
+        elevation, velocity = f.elevation, f.velocity
+        slopes = LazySlopes(self.surface, t, w) if lazy_slopes else (f.slope_x, f.slope_y)
         if w is not None:
             wake_z = w.elevation
             elevation = elevation + w.elevation
-            slope_x = slope_x + w.slope_x
-            slope_y = slope_y + w.slope_y
+            if not lazy_slopes:
+                slopes = (f.slope_x + w.slope_x, f.slope_y + w.slope_y)
             velocity = velocity.copy()
             velocity[..., 2] += w.dzdt
         if mask is None:
             mask = np.zeros(shape)
         return SurfaceState(
-            t=float(t), x=self.x, y=self.y, elevation=elevation, slope_x=slope_x,
-            slope_y=slope_y, velocity=velocity, wake_elevation=wake_z,
+            t=float(t), x=self.x, y=self.y, elevation=elevation, slopes=slopes,
+            velocity=velocity, wake_elevation=wake_z,
             wake_mask=np.asarray(mask, dtype=np.float64),
         )
 
 
-__all__ = ["THREAD_MIN_NODES", "Sea", "SurfaceKinematics", "SurfaceState", "surface_kinematics",
-           "vertical_acceleration"]
+__all__ = ["THREAD_MIN_NODES", "LazySlopes", "Sea", "SurfaceKinematics", "SurfaceState",
+           "surface_kinematics", "vertical_acceleration"]

@@ -246,6 +246,8 @@ class Simulation:
         self.engine = None
         self._resident = None
         self._state_cache: tuple[float, object] | None = None
+        self._state_before: tuple[float, object] | None = None  # the one held before
+        self._lazy_slopes = False  # sea states' slopes synthesised when read (LazySlopes)
         # (time, job) of the sea state computed ahead on a thread (prefetch_surface)
         self._prefetch: tuple[float, object] | None = None
         # (time, job) of the evolving block's kinematics computed ahead (fused kernel)
@@ -271,6 +273,11 @@ class Simulation:
             # The occlusion of a refresh time t_ref is traced on the surface held at t_ref
             self.engine = FacetEngine.from_model(models.tracing, self.surface_state_at,
                                                  lambda t: tx.state(t).position, rx_fn)
+            # ray-traced facets come from the heights: the slopes only if read (outputs;
+            # the same bytes either way)
+            self._lazy_slopes = self.engine.mode == "raytraced"
+            if self._lazy_slopes:
+                self.sea.lazy_slopes = True
             from .radar.resident import resident_sea  # the fused pulse, where it applies
 
             if facet_weight is None:
@@ -356,11 +363,17 @@ class Simulation:
 
     def surface_state(self, pulse: int):
         """Sea state of ``pulse``'s block (memoised: the same for every pulse of a block;
-        taken from :meth:`prefetch_surface` when it was started for this block)."""
+        taken from :meth:`prefetch_surface` when it was started for this block). The
+        state held before is kept too: with a new sea every pulse, the occlusion refresh
+        traces the surface of the pulse before the refresh time (``surface_state_at``),
+        which is then not synthesised again."""
         t = self.surface_time(pulse)
         if self._state_cache is None or self._state_cache[0] != t:
             ahead = self._prefetch
-            if ahead is not None and ahead[0] == t:
+            before, self._state_before = self._state_before, self._state_cache
+            if before is not None and before[0] == t:
+                state = before[1]
+            elif ahead is not None and ahead[0] == t:
                 self._prefetch = None
                 state = ahead[1].result()
             else:

@@ -140,14 +140,50 @@ def _psi_on_fft_grid(
     return np.where(pos, omni * spectrum.spread(ks, psi_dir) / ks, 0.0)  # Eq. 4
 
 
+#: Scratch arrays of :meth:`SeaSurface.fields`, by (half-plane shape, complex type): a
+#: few sets per grid shape, shared by the surfaces of that shape (two threads may
+#: synthesise at once: the next pulse's sea computed ahead) [-].
+_SCRATCH: dict[tuple, list[dict]] = {}
+_SCRATCH_LOCK = threading.Lock()
+_SCRATCH_KEEP = 2
+
+
+class _scratch:
+    """A set of scratch arrays for :meth:`SeaSurface.fields` on a half plane of
+    ``shape`` (``with _scratch(shape, complex_type) as w``): taken from the pool, or
+    made, and given back after use."""
+
+    def __init__(self, shape: tuple[int, int], c: type) -> None:
+        self.key = (tuple(shape), np.dtype(c).str)
+        self.shape, self.c = tuple(shape), c
+
+    def __enter__(self) -> dict:
+        with _SCRATCH_LOCK:
+            free = _SCRATCH.get(self.key)
+            if free:
+                self.w = free.pop()
+                return self.w
+        e = np.empty
+        self.w = dict(phase=e(self.shape, np.complex128), plus=e(self.shape, np.complex128),
+                      z_hat=e(self.shape, np.complex128), z_c=e(self.shape, self.c),
+                      diff=e(self.shape, self.c), spectra=e((5, *self.shape), self.c))
+        return self.w
+
+    def __exit__(self, *exc) -> None:
+        with _SCRATCH_LOCK:
+            free = _SCRATCH.setdefault(self.key, [])
+            if len(free) < _SCRATCH_KEEP:
+                free.append(self.w)
+
+
 @dataclass(frozen=True)
 class SurfaceFields:
     """The sea surface on the grid at one time; arrays shaped (ny, nx)."""
 
     t: float  #: time [s]
     elevation: NDArray[np.float64]  #: z [m]
-    slope_x: NDArray[np.float64]  #: dz/dx [-]
-    slope_y: NDArray[np.float64]  #: dz/dy [-]
+    slope_x: NDArray[np.float64] | None  #: dz/dx [-] (None: ``fields(slopes=False)``)
+    slope_y: NDArray[np.float64] | None  #: dz/dy [-] (None: ``fields(slopes=False)``)
     velocity: NDArray[np.float64]  #: surface particle velocity (u, v, w), shape (ny, nx, 3) [m/s]
 
 
@@ -313,9 +349,17 @@ class SeaSurface:
             self._travelling_last = (t, out)
             return out
 
+    def _minus_j_omega(self) -> NDArray[np.complex128]:
+        """``-1j * omega`` on the half plane [rad/s] (made once)."""
+        out = self.__dict__.get("_mjw")
+        if out is None:
+            out = -1j * self._omega
+            self._mjw = out
+        return out
+
     def _travelling_at(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
         if self._omega_current is None:
-            phase = np.exp(-1j * self._omega * t)  # Eq. 15 evolution, exp(-j omega t)
+            phase = np.exp(self._minus_j_omega() * t)  # Eq. 15 evolution, exp(-j omega t)
             out = (self._a * phase, self._b * np.conj(phase))
         else:  # eq C1: each wave at its Doppler-shifted frequency
             w_plus, w_minus = self._omega_current
@@ -371,22 +415,75 @@ class SeaSurface:
         plus, minus = self._travelling(t)
         return self._irfft(plus + minus)
 
-    def fields(self, t: float = 0.0) -> SurfaceFields:
+    def fields(self, t: float = 0.0, slopes: bool = True) -> SurfaceFields:
         """Elevation, slopes and surface velocity at time t [s].
 
         The five derived fields go through one batched inverse FFT in the type of
-        ``precision`` (module docstring); every array returned is float64.
+        ``precision`` (module docstring); every array returned is float64. The spectra
+        in between are written into scratch arrays kept between calls
+        (:func:`_scratch`: no fresh pages to fault in at every time), with the same
+        operations, hence the same numbers, as fresh arrays. ``slopes=False`` leaves the
+        slopes out (None; three transforms instead of five): :meth:`slopes` gives the
+        same arrays later.
         """
-        plus, minus = self._travelling(t)
-        z_hat = plus + minus
+        jkx, jky, jw, ux, uy = self._derivatives
+        c = jkx.dtype
+        with _scratch(self._a.shape, c) as w:
+            return self._fields(t, w, slopes)
+
+    def slopes(self, t: float = 0.0) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """The slopes (dz/dx, dz/dy) [-] of :meth:`fields` at time ``t`` [s], the same
+        bytes, by two transforms."""
+        jkx, jky, jw, ux, uy = self._derivatives
+        with _scratch(self._a.shape, jkx.dtype) as w:
+            plus, minus = self._travelling_into(t, w)
+            z_c = self._spectrum_z(plus, minus, w)
+            spectra = w["spectra"][:2]
+            np.multiply(jkx, z_c, out=spectra[0])  # dz/dx
+            np.multiply(jky, z_c, out=spectra[1])  # dz/dy
+            derived = self._irfft(spectra)
+        return derived[0].astype(np.float64), derived[1].astype(np.float64)
+
+    def _travelling_into(self, t: float, w: dict):
+        """The travelling waves of :meth:`_travelling` at ``t``, in the scratch arrays
+        ``w`` where nothing keeps them."""
+        if self.share_travelling or self._omega_current is not None:
+            return self._travelling(t)
+        # _travelling_at(t), in w: the same operations (eq 12', eq 15)
+        phase = w["phase"]
+        np.multiply(self._minus_j_omega(), t, out=phase)
+        np.exp(phase, out=phase)
+        plus = np.multiply(self._a, phase, out=w["plus"])
+        # as written there: numpy may reuse the temporary conj(phase) with the factors
+        # swapped, and the complex product rounds differently with their order
+        minus = self._b * np.conj(phase)
+        return plus, minus
+
+    def _spectrum_z(self, plus, minus, w: dict):
+        """z_hat = plus + minus in ``w["z_hat"]``, as the derived fields' type."""
+        z_hat = np.add(plus, minus, out=w["z_hat"])
+        c = self._derivatives[0].dtype
+        if c == z_hat.dtype:
+            return z_hat
+        np.copyto(w["z_c"], z_hat, casting="same_kind")
+        return w["z_c"]
+
+    def _fields(self, t: float, w: dict, slopes: bool = True) -> SurfaceFields:
+        """:meth:`fields` with the scratch arrays ``w`` (:func:`_scratch`)."""
+        plus, minus = self._travelling_into(t, w)
+        z_c = self._spectrum_z(plus, minus, w)
+        z_hat = w["z_hat"]
         elevation = self._irfft(z_hat)
         jkx, jky, jw, ux, uy = self._derivatives
         c = jkx.dtype
-        z_c = z_hat.astype(c, copy=False)
-        diff = (plus - minus).astype(c, copy=False)  # wave along +K minus wave along -K
-        spectra = np.empty((5, *z_hat.shape), dtype=c)
-        np.multiply(jkx, z_c, out=spectra[0])  # dz/dx
-        np.multiply(jky, z_c, out=spectra[1])  # dz/dy
+        diff = np.subtract(plus, minus, out=w["phase"])  # wave along +K minus along -K
+        if c != diff.dtype:
+            diff = w["diff"]
+            np.copyto(diff, w["phase"], casting="same_kind")
+        spectra = w["spectra"]
+        if slopes:
+            np.multiply(jkx, z_c, out=spectra[0])  # dz/dx
+            np.multiply(jky, z_c, out=spectra[1])  # dz/dy
         np.multiply(ux, diff, out=spectra[2])  # u
         np.multiply(uy, diff, out=spectra[3])  # v
         np.multiply(jw, diff, out=spectra[4])  # w = dz/dt
@@ -398,13 +495,14 @@ class SeaSurface:
             spectra[2] += ux * gain * z_u  # u: D = j (K_x/K) coth z, D-rate - U . grad D
             spectra[3] += uy * gain * z_u
             spectra[4] += z_u  # dz/dt at the node: w - U . grad z
-        derived = self._irfft(spectra)
+        derived = self._irfft(spectra if slopes else spectra[2:])
         velocity = np.empty((*self.shape, 3))
         for i in range(3):
-            velocity[..., i] = derived[2 + i]
+            velocity[..., i] = derived[i - 3]
         return SurfaceFields(
-            t=float(t), elevation=elevation, slope_x=derived[0].astype(np.float64),
-            slope_y=derived[1].astype(np.float64), velocity=velocity,
+            t=float(t), elevation=elevation, velocity=velocity,
+            slope_x=derived[0].astype(np.float64) if slopes else None,
+            slope_y=derived[1].astype(np.float64) if slopes else None,
         )
 
 

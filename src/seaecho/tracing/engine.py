@@ -239,9 +239,8 @@ class FacetEngine:
             tracer.set_time(t_ref)
             if st_ref is st:  # the usual held surface: meshed once
                 c_ref, _, n_ref, _ = self.geometry(st)
-            else:
-                c_ref, _, n_ref = facet_geometry(grid_vertices(st_ref.x, st_ref.y,
-                                                               st_ref.elevation))
+            else:  # a surface traced once (a new sea every pulse): meshed on the device
+                c_ref, n_ref = tracer.surface_geometry()
             if self._lead is None:
                 occ_tx = tracer.occluded(c_ref, n_ref, tx_ref, device=True)
             else:  # the transmitter's leg, traced once for every receiver

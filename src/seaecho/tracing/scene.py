@@ -253,7 +253,9 @@ class SeaScene:
 
     Notes
     -----
-    :meth:`update` writes new vertex positions and rebuilds the BVH.
+    :meth:`update` writes new vertex positions; the BVH is rebuilt when :attr:`mi_scene`
+    is next asked for (the grid walk of :mod:`seaecho.tracing.heightfield` needs only
+    :attr:`vertices`).
     """
 
     def __init__(self, x: np.ndarray, y: np.ndarray, elevation: np.ndarray, *,
@@ -271,14 +273,29 @@ class SeaScene:
         self._scene = _mi_scene(mi, {"sea": mesh})
         self._params = mi.traverse(self._scene)
         self._key = "sea.vertex_positions"
+        self._mesh_buf = self._vbuf  # the buffer the Mitsuba mesh aliases
+        self._stale = False  # vertices written, BVH not rebuilt yet
 
     @property
     def mi_scene(self):
-        """The Mitsuba scene (for ray queries)."""
+        """The Mitsuba scene (for ray queries), its BVH rebuilt first if the vertices
+        changed since."""
+        if self._stale:
+            self._params[self._key] = self._mi.Float(self._vbuf.ravel())
+            self._params.update()
+            self._mesh_buf = self._vbuf
+            self._stale = False
         return self._scene
 
+    @property
+    def vertices(self) -> np.ndarray:
+        """The mesh's vertices (ny, nx, 3), float32, as the scene holds them [m] (not
+        to be written)."""
+        return self._vbuf
+
     def update(self, elevation: np.ndarray) -> None:
-        """Move the sea's vertices to a new elevation [m] and rebuild its BVH."""
+        """Move the sea's vertices to a new elevation [m]; the BVH is rebuilt on the next
+        use of :attr:`mi_scene`."""
         z = np.asarray(elevation)
         if z.shape != self._vbuf.shape[:2]:
             raise ValueError(f"elevation shaped {z.shape}, expected {self._vbuf.shape[:2]}")
@@ -287,9 +304,8 @@ class SeaScene:
         buf = np.empty_like(self._vbuf)
         buf[..., :2] = self._vbuf[..., :2]
         buf[..., 2] = z
-        self._params[self._key] = self._mi.Float(buf.ravel())
-        self._params.update()
-        self._vbuf = buf
+        self._vbuf = buf  # (the mesh still aliases _mesh_buf until it is updated)
+        self._stale = True
 
 
 class ObjectScene:

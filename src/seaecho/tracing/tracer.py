@@ -36,7 +36,8 @@ import numpy as np
 
 from ..backend import Boundary, drjit_namespace
 from ..geometry.facets import Facets
-from ..geometry.mesh import facet_geometry, grid_vertices, to_facets
+from ..geometry.mesh import facet_geometry, facet_geometry_in, grid_vertices, to_facets
+from .heightfield import WALK_MAX_CELLS, heightfield_blocked, walk_cells
 from .kernels import facet_frames_drjit
 from .scene import ObjectGeometry, ObjectScene, SeaScene, shadow_test
 from .variant import set_variant
@@ -99,6 +100,11 @@ class FacetTracer:
         moving = [o for o in objects if o.moving]
         self.static_objects = ObjectScene(static, variant=variant) if static else None
         self.moving_objects = ObjectScene(moving, variant=variant) if moving else None
+        #: trace the sea's shadow rays by the grid walk where it is short (no BVH
+        #: rebuild for a new surface; :mod:`seaecho.tracing.heightfield`: the same
+        #: masks); False: always Embree's / OptiX's BVH
+        self.walk = bool(np.allclose(np.diff(self.x), self.x[1] - self.x[0], rtol=1e-9)
+                         and np.allclose(np.diff(self.y), self.y[1] - self.y[0], rtol=1e-9))
         cell = min(np.min(np.diff(self.x)), np.min(np.diff(self.y)))
         self._cell = float(cell)
         self._scale_of: tuple[np.ndarray, float] | None = None
@@ -111,7 +117,8 @@ class FacetTracer:
         return out
 
     def set_surface(self, elevation: np.ndarray) -> bool:
-        """New sea elevation (ny, nx) [m]: vertex update and BVH rebuild of the sea scene.
+        """New sea elevation (ny, nx) [m]: vertex update of the sea scene (its BVH is
+        rebuilt when next traced, :class:`~seaecho.tracing.scene.SeaScene`).
 
         Returns False (and rebuilds nothing) when the elevation equals the current one, as
         when the surface is held between pulses (paper section V-B).
@@ -147,8 +154,9 @@ class FacetTracer:
 
         Parameters
         ----------
-        centroid, normal : (N, 3) arrays
-            Facet centroids [m] and unit normals [-] of the current surface.
+        centroid, normal : (N, 3) arrays, or namespace vectors
+            Facet centroids [m] and unit normals [-] of the current surface (namespace
+            vectors: :meth:`surface_geometry`, with ``mask`` None).
         position : (3,) array
             Transmitter or receiver position [m].
         mask : (N,) bool array, optional
@@ -163,6 +171,10 @@ class FacetTracer:
         """
         xp = drjit_namespace(self.variant)
         p = np.asarray(position, dtype=np.float64)
+        if not isinstance(centroid, np.ndarray):  # on the device already
+            if mask is not None:
+                raise ValueError("occluded: a mask needs numpy centroids and normals")
+            return self._occluded_device(xp, centroid, normal, p, device)
         idx = None if mask is None else np.flatnonzero(mask)
         if idx is not None and idx.size == centroid.shape[0]:
             idx = None  # every facet traced: no gather, no scatter
@@ -174,19 +186,9 @@ class FacetTracer:
         if n == 0:
             return xp.Bool(np.zeros(0, dtype=bool)) if device else np.zeros(
                 centroid.shape[0], dtype=bool)
-        # float32 resolution at the ray origins (the facets), not at the far end
-        scale = self._scale(c)
-        eps = max(1e-3 * self._cell, 8.0 * np.finfo(np.float32).eps * scale)
         io = Boundary(xp, n)
-        origin = io.vec3(c) + io.vec3(nrm) * xp.const(eps)
-        d = xp.vconst(p) - origin
-        r = xp.sqrt(xp.dot(d, d))
-        d = d / r
-        blocked = shadow_test(self.mi_scenes, origin, d, r * (1.0 - 1e-6),
-                              variant=self.variant)
-        blocked = xp.Bool(blocked)
-        if self.period_m is not None:
-            blocked = self._apron(c, p, origin, d, blocked, xp, io)
+        blocked = self._blocked(xp, io, io.vec3(c), io.vec3(nrm), self._scale(c), p,
+                                lambda: c)
         if device:
             xp.eval(blocked)
             return blocked
@@ -196,6 +198,76 @@ class FacetTracer:
         hit = np.zeros(centroid.shape[0], dtype=bool)
         hit[idx] = hit_sub
         return hit
+
+    def surface_geometry(self):
+        """Centroids [m] and unit normals [-] of the current surface's facets as
+        namespace vectors, computed on the device from the nodes
+        (:func:`seaecho.geometry.mesh.facet_geometry_in`: the numbers of the numpy
+        :func:`~seaecho.geometry.mesh.facet_geometry`), for :meth:`occluded`."""
+        xp = drjit_namespace(self.variant)
+        io = Boundary(xp)
+        z = io.array(self._elevation.ravel())
+        f = facet_geometry_in(xp, io.array(self.x), io.array(self.y), z,
+                              xp.vec(z, z, z), self.x.size, self.y.size)
+        c, nrm = f["centroid"], f["normal"]
+        xp.eval(c, nrm)
+        self._keep_io = io  # the node copies, until the kernel has run
+        return c, nrm
+
+    def _occluded_device(self, xp, c, nrm, p: np.ndarray, device: bool):
+        """:meth:`occluded` of every facet, centroids and normals on the device."""
+        dr = xp.dr
+        n = dr.width(c.x)
+        if n == 0:
+            return xp.Bool(np.zeros(0, dtype=bool)) if device else np.zeros(0, dtype=bool)
+        scale = float(dr.max(dr.maximum(dr.maximum(dr.abs(c.x), dr.abs(c.y)),
+                                        dr.abs(c.z)))[0])
+        io = Boundary(xp, n)
+        blocked = self._blocked(xp, io, c, nrm, scale, p, lambda: np.column_stack(
+            [np.asarray(xp.host(a), dtype=np.float64) for a in (c.x, c.y, c.z)]))
+        if device:
+            xp.eval(blocked)
+            return blocked
+        return np.asarray(xp.host(blocked), dtype=bool).copy()
+
+    def _blocked(self, xp, io, c_dev, nrm_dev, scale: float, p: np.ndarray, c_host):
+        """The shadow test of the segments from the facets (namespace vectors
+        ``c_dev``, ``nrm_dev``; ``c_host()`` their numpy centroids, for the apron) to
+        ``p``: namespace Bool."""
+        # float32 resolution at the ray origins (the facets), not at the far end
+        eps = max(1e-3 * self._cell, 8.0 * np.finfo(np.float32).eps * scale)
+        origin = c_dev + nrm_dev * xp.const(eps)
+        d = xp.vconst(p) - origin
+        r = xp.sqrt(xp.dot(d, d))
+        d = d / r
+        maxt = r * (1.0 - 1e-6)
+        if self._walks(p):  # the sea by the grid walk, the objects by their BVHs
+            reach = None
+            if self.period_m is not None:
+                reach = io.array(self.apron_copies(c_host(), p)[1])
+            blocked = heightfield_blocked(xp, self.sea.vertices, origin, d, maxt,
+                                          period_m=self.period_m, reach=reach)
+            objects = [s.mi_scene for s in (self.static_objects, self.moving_objects)
+                       if s is not None]
+            if objects:
+                blocked = blocked | xp.Bool(shadow_test(objects, origin, d, maxt,
+                                                        variant=self.variant))
+        else:
+            blocked = xp.Bool(shadow_test(self.mi_scenes, origin, d, maxt,
+                                          variant=self.variant))
+            if self.period_m is not None:
+                blocked = self._apron(c_host(), p, origin, d, blocked, xp, io)
+        return blocked
+
+    def _walks(self, position: np.ndarray) -> bool:
+        """Whether the sea's shadow rays to ``position`` take the grid walk
+        (:mod:`seaecho.tracing.heightfield`: :attr:`walk` on, a CPU variant, and an
+        estimated walk of at most ``WALK_MAX_CELLS`` cells) rather than the BVH."""
+        if not self.walk or not self.variant.startswith("llvm"):
+            return False
+        z = self.sea.vertices[..., 2]
+        return walk_cells(self.x, self.y, float(z.min()), float(z.max()),
+                          position) <= WALK_MAX_CELLS
 
     def apron_copies(self, centroid: np.ndarray, position: np.ndarray
                      ) -> tuple[list[tuple[int, int]], np.ndarray]:
