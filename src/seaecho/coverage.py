@@ -130,6 +130,41 @@ class TilePlatform:
         return getattr(self._platform, name)
 
 
+class HeldStates:
+    """A platform whose states at the last few scalar times are kept: the tiles of a
+    pulse carry the same state into their frames (:class:`TilePlatform`), computed once
+    (the same arrays, read only by the carrying)."""
+
+    KEEP = 8
+
+    def __init__(self, platform) -> None:
+        self._platform = platform
+        self._held: OrderedDict = OrderedDict()
+
+    def _get(self, kind: str, t):
+        if np.ndim(t) != 0:
+            return getattr(self._platform, kind)(t)
+        key = (kind, float(t))
+        st = self._held.get(key)
+        if st is None:
+            st = getattr(self._platform, kind)(t)
+            self._held[key] = st
+            if len(self._held) > self.KEEP:
+                self._held.popitem(last=False)
+        return st
+
+    def state(self, t):
+        """The platform's true state at ``t`` [s]."""
+        return self._get("state", t)
+
+    def nominal_state(self, t):
+        """The platform's nominal state at ``t`` [s]."""
+        return self._get("nominal_state", t)
+
+    def __getattr__(self, name):
+        return getattr(self._platform, name)
+
+
 def tile_radar(radar_model, frame, seed: int, unit_gain: bool = False):
     """The radar model seen from a tile's frame: its platforms carried by
     :class:`TilePlatform`, a look-at point moved into the frame, the tile's seed, no
@@ -388,6 +423,12 @@ class CoverageSea:
         tracing = self.model.levels[0][1]
         self._static = tuple(o for o in tracing.objects if not getattr(o, "moving", False))
         self._occluders = None
+        # what the tiles share: the platforms' states of a pulse (HeldStates) and, for
+        # the held sea's unit echoes, one tracer per level moved from tile to tile
+        tx = HeldStates(models.radar.tx)
+        rx = tx if models.radar.rx is models.radar.tx else HeldStates(models.radar.rx)
+        self._held_radar = dataclasses.replace(models.radar, tx=tx, rx=rx)
+        self._tracers: dict[int, object] = {}
         #: tiles computed so far (new simulations made), for the benchmarks [-]
         self.tiles_made = 0
         #: facets whose echo the last pulse summed (eq U2, the held sea's path) [-]
@@ -466,7 +507,7 @@ class CoverageSea:
         if self._static:  # traced in the simulation frame (eq T6, _weight)
             tracing = dataclasses.replace(tracing, objects=tuple(
                 o for o in tracing.objects if getattr(o, "moving", False)))
-        radar = tile_radar(self.models.radar, pw.frame(i), pw.seed(i, self.model.seed),
+        radar = tile_radar(self._held_radar, pw.frame(i), pw.seed(i, self.model.seed),
                            unit_gain=unit_gain)
         return dataclasses.replace(self.models, radar=radar, sea=self.model.sea(i),
                                    sea_model=sea_model, tracing=tracing, hulls=None,
@@ -562,13 +603,14 @@ class CoverageSea:
         sim = self._factory(self._tile_models(i, unit_gain=True), self._weight(i, beam=False))
         self.tiles_made += 1
         first = block * self.block
-        sea = sim.sea_echo(first)
+        self._share_tracer(sim, int(self.patchwork.level[i]), first)
+        geo = sim.radar.geometry(first)
+        sea = sim.sea_echo(first, geo)
         echo, facets = sea.echo, sea.facets
         if echo.tau.size != facets.visibility.size:  # the culled facets, one echo each
             raise RuntimeError("unit_echo: the tile's echoes and facets do not match")
         keep = self.radar.window.keep(echo.tau, self.radar.waveform.n_samples)
-        n = incidence_directions(sim.radar.geometry(first), facets.centroid[keep],
-                                 facets.velocity[keep])
+        n = incidence_directions(geo, facets.centroid[keep], facets.velocity[keep])
         unit = UnitEcho.sorted(block, echo.tau[keep], np.asarray(echo.amplitudes)[:, keep],
                                n @ self.patchwork.frame(i).rotation.T)
         held = sum(u.nbytes for u in self._units.values())
@@ -576,6 +618,22 @@ class CoverageSea:
             self._units[i] = unit
         self.making_cpu_s += time.process_time() - start
         return unit
+
+    def _share_tracer(self, sim, level: int, pulse: int) -> None:
+        """Give the tile simulation ``sim`` (a unit echo's, made at ``pulse``) the tracer
+        of its level, moved onto its grid, or keep the one it builds as the level's: one
+        Mitsuba scene per level instead of one per tile, the same occlusion
+        (:meth:`seaecho.tracing.engine.FacetEngine.reuse_tracer`). The tiles' tracers
+        hold only the sea (the static occluders are traced in the simulation frame)."""
+        engine = getattr(sim, "engine", None)
+        if engine is None or engine.mode != "raytraced" or engine.objects:
+            return
+        state = sim.surface_state(pulse)
+        held = self._tracers.get(level)
+        if held is None:
+            self._tracers[level] = engine._get_tracer(state)
+        else:
+            engine.reuse_tracer(held, state)
 
     def gains(self, pulse: int, direction: NDArray[np.float64], geo=None
               ) -> NDArray[np.float64]:
