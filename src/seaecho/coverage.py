@@ -103,6 +103,66 @@ from numpy.typing import NDArray
 from .geometry.patchwork import CACHE_BYTES, CACHE_NODES, TILE_MARGIN_M
 
 
+#: Grid nodes of the tiles of one level made together (:meth:`CoverageSea.unit_echoes`:
+#: their facet model in one kernel) [-]: 2^16, four tiles of 128 x 128.
+BATCH_NODES = 1 << 16
+
+
+def _model_key(model) -> tuple:
+    """A facet model's fields, its arrays and tables by identity (a level's sea model
+    makes a new :class:`~seaecho.scattering.facet.FacetModel` of the same ones each
+    time)."""
+    return tuple(v if isinstance(v, (bool, int, float, complex, str, type(None))) else id(v)
+                 for v in (getattr(model, f.name) for f in dataclasses.fields(model)))
+
+
+def batched_amplitudes(stages) -> list[NDArray[np.complex128]]:
+    """:func:`seaecho.scattering.facet.speckled_facet_amplitudes` of each
+    :class:`seaecho.simulation.SeaStage` of ``stages`` (N_s, 4) [m], those of one facet
+    model, back end and set of inputs (damping, breaking zones, mechanisms) in one
+    evaluation of their facets put end to end.
+
+    Eqs P1-P7 are per facet (each facet's directions, area, draws, damping and breaking
+    fraction), so the facets of several tiles through one kernel get the numbers each
+    tile's own evaluation gives (test). Only the Dr.Jit back end is batched (a
+    :class:`~seaecho.scattering.spectrum_table.BraggSpectrumTable` spectrum; its kernel
+    recomputes the facets' local frames, ``local`` is not read); numpy and the evolving
+    speckle (its draws a callable) take one evaluation per stage.
+    """
+    from .scattering.facet import speckled_facet_amplitudes
+    from .scattering.spectrum_table import BraggSpectrumTable
+
+    out: list = [None] * len(stages)
+    groups: dict[tuple, list[int]] = {}
+    for j, st in enumerate(stages):
+        kw, model = st.kwargs, st.args[4]
+        draws = kw["draws"]
+        if (callable(draws) or not isinstance(draws, dict)
+                or not isinstance(model.spectrum, BraggSpectrumTable)):
+            out[j] = speckled_facet_amplitudes(*st.args, **kw)
+            continue
+        key = (_model_key(model), kw["variant"], kw["precision"],
+               kw["wake_damping"] is None, kw["breaking_fraction"] is None,
+               tuple(sorted(draws)))
+        groups.setdefault(key, []).append(j)
+    for js in groups.values():
+        first = stages[js[0]]
+        cat = [np.concatenate([np.asarray(stages[j].args[a]).reshape(
+            -1, *np.shape(first.args[a])[1:]) for j in js]) for a in range(4)]
+        kw = dict(first.kwargs, local=None, draws={
+            m: np.concatenate([stages[j].kwargs["draws"][m] for j in js])
+            for m in first.kwargs["draws"]})
+        for name in ("wake_damping", "breaking_fraction"):
+            if first.kwargs[name] is not None:
+                kw[name] = np.concatenate([np.asarray(stages[j].kwargs[name], dtype=float)
+                                           for j in js])
+        amp = speckled_facet_amplitudes(*cat, first.args[4], **kw)
+        ends = np.cumsum([len(stages[j].args[3]) for j in js])
+        for j, a in zip(js, np.split(amp, ends[:-1]), strict=True):
+            out[j] = a
+    return out
+
+
 class TilePlatform:
     """A platform seen from a tile's frame (eq T5 of :mod:`seaecho.geometry.patchwork`):
     its states' positions, velocities and body-to-world rotations carried into the
@@ -598,26 +658,64 @@ class CoverageSea:
         if held is not None and held.block == block:
             self._units.move_to_end(i)
             return held
-        self._units.pop(i, None)
+        return self.unit_echoes([i], block)[0]
+
+    def unit_echoes(self, tiles, block: int) -> list[UnitEcho]:
+        """:meth:`unit_echo` of each of ``tiles`` for ``block``: those not held are made
+        in batches of at most :data:`BATCH_NODES` grid nodes of one level, whose facet
+        model runs as one kernel (:func:`batched_amplitudes`: the same numbers as a
+        tile at a time)."""
+        block = int(block)
+        out: dict[int, UnitEcho] = {}
+        todo: dict[int, list[int]] = {}
+        for i in map(int, tiles):
+            held = self._units.get(i)
+            if held is not None and held.block == block:
+                self._units.move_to_end(i)
+                out[i] = held
+            else:
+                todo.setdefault(int(self.patchwork.level[i]), []).append(i)
+        for level, group in sorted(todo.items()):
+            per = max(1, BATCH_NODES // int(self._nodes[group[0]]))
+            for k in range(0, len(group), per):
+                out.update(self._make_units(group[k:k + per], level, block))
+        return [out[int(i)] for i in tiles]
+
+    def _make_units(self, tiles: list[int], level: int, block: int) -> dict[int, UnitEcho]:
+        """The unit echoes (eq U1) of ``tiles`` (of one ``level``) for ``block``: each
+        tile's pipeline up to the facet model (:meth:`seaecho.simulation.Simulation.
+        sea_stage`), the facet model of them all at once, then each tile's radar
+        equation; held within :attr:`cache_bytes`."""
         start = time.process_time()
-        sim = self._factory(self._tile_models(i, unit_gain=True), self._weight(i, beam=False))
-        self.tiles_made += 1
         first = block * self.block
-        self._share_tracer(sim, int(self.patchwork.level[i]), first)
-        geo = sim.radar.geometry(first)
-        sea = sim.sea_echo(first, geo)
-        echo, facets = sea.echo, sea.facets
-        if echo.tau.size != facets.visibility.size:  # the culled facets, one echo each
-            raise RuntimeError("unit_echo: the tile's echoes and facets do not match")
-        keep = self.radar.window.keep(echo.tau, self.radar.waveform.n_samples)
-        n = incidence_directions(geo, facets.centroid[keep], facets.velocity[keep])
-        unit = UnitEcho.sorted(block, echo.tau[keep], np.asarray(echo.amplitudes)[:, keep],
-                               n @ self.patchwork.frame(i).rotation.T)
-        held = sum(u.nbytes for u in self._units.values())
-        if held + unit.nbytes <= self.cache_bytes:  # else used once and dropped
-            self._units[i] = unit
+        made = []
+        for i in tiles:
+            self._units.pop(i, None)
+            sim = self._factory(self._tile_models(i, unit_gain=True),
+                                self._weight(i, beam=False))
+            self.tiles_made += 1
+            self._share_tracer(sim, level, first)
+            geo = sim.radar.geometry(first)
+            made.append((i, sim, geo, sim.sea_stage(first, geo)))
+        staged = [stage for *_, stage in made if not hasattr(stage, "echo")]
+        amps = iter(batched_amplitudes(staged))
+        out = {}
+        for i, sim, geo, stage in made:
+            sea = stage if hasattr(stage, "echo") else sim.sea_finish(stage, next(amps))
+            echo, facets = sea.echo, sea.facets
+            if echo.tau.size != facets.visibility.size:  # the culled facets, one echo each
+                raise RuntimeError("unit_echo: the tile's echoes and facets do not match")
+            keep = self.radar.window.keep(echo.tau, self.radar.waveform.n_samples)
+            n = incidence_directions(geo, facets.centroid[keep], facets.velocity[keep])
+            unit = UnitEcho.sorted(block, echo.tau[keep],
+                                   np.asarray(echo.amplitudes)[:, keep],
+                                   n @ self.patchwork.frame(i).rotation.T)
+            held = sum(u.nbytes for u in self._units.values())
+            if held + unit.nbytes <= self.cache_bytes:  # else used once and dropped
+                self._units[i] = unit
+            out[i] = unit
         self.making_cpu_s += time.process_time() - start
-        return unit
+        return out
 
     def _share_tracer(self, sim, level: int, pulse: int) -> None:
         """Give the tile simulation ``sim`` (a unit echo's, made at ``pulse``) the tracer
@@ -694,8 +792,9 @@ class CoverageSea:
                 and np.array_equal(geo.rx_axes, geo.tx_axes))
         u_max = self._u_max(same)
         parts = []
-        for i in keep:  # each tile's facets in the beam's sector (eq U3)
-            u = self.unit_echo(i, block)
+        # each tile's facets in the beam's sector (eq U3); the tiles not held are made
+        # together (unit_echoes)
+        for i, u in zip(keep, self.unit_echoes(keep, block), strict=True):
             idx = u.sector(geo.tx_axes[:, 1], u_max[0])
             if u_max[1] < u_max[0]:  # the receiver's narrower sector
                 idx = np.intersect1d(idx, u.sector(geo.rx_axes[:, 1], u_max[1]))
@@ -720,6 +819,6 @@ class CoverageSea:
         return int(sum(2 * (ny - 1) * (nx - 1) for ny, nx in n))
 
 
-__all__ = ["CACHE_BYTES", "CACHE_NODES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform",
-           "UnitEcho", "beam_gains", "incidence_directions", "point_bounds", "tile_radar",
-           "unit_gain_antenna"]
+__all__ = ["BATCH_NODES", "CACHE_BYTES", "CACHE_NODES", "TILE_MARGIN_M", "CoverageSea",
+           "HeldStates", "TilePlatform", "UnitEcho", "batched_amplitudes", "beam_gains",
+           "incidence_directions", "point_bounds", "tile_radar", "unit_gain_antenna"]
