@@ -100,12 +100,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-from .geometry.patchwork import CACHE_BYTES, CACHE_NODES, TILE_MARGIN_M
-
-
-#: Grid nodes of the tiles of one level made together (:meth:`CoverageSea.unit_echoes`:
-#: their facet model in one kernel) [-]: 2^16, four tiles of 128 x 128.
-BATCH_NODES = 1 << 16
+from .geometry.patchwork import BATCH_NODES, CACHE_BYTES, CACHE_NODES, TILE_MARGIN_M
 
 
 def _model_key(model) -> tuple:
@@ -453,6 +448,8 @@ class CoverageSea:
         self._factory = factory
         self.cache_nodes = int(cache_nodes)
         self.cache_bytes = int(cache_bytes)
+        #: grid nodes of the tiles of one level made together (:meth:`unit_echoes`)
+        self.batch_nodes = BATCH_NODES
         self._nodes = np.array([np.prod(lv.shape) for lv in self.patchwork.levels]
                                )[self.patchwork.level]
         self._boxes = self.patchwork.boxes(TILE_MARGIN_M)
@@ -676,7 +673,7 @@ class CoverageSea:
             else:
                 todo.setdefault(int(self.patchwork.level[i]), []).append(i)
         for level, group in sorted(todo.items()):
-            per = max(1, BATCH_NODES // int(self._nodes[group[0]]))
+            per = max(1, self.batch_nodes // int(self._nodes[group[0]]))
             for k in range(0, len(group), per):
                 out.update(self._make_units(group[k:k + per], level, block))
         return [out[int(i)] for i in tiles]
@@ -794,7 +791,7 @@ class CoverageSea:
         parts = []
         # each tile's facets in the beam's sector (eq U3); the tiles not held are made
         # together (unit_echoes)
-        for i, u in zip(keep, self.unit_echoes(keep, block), strict=True):
+        for u in self.unit_echoes(keep, block):
             idx = u.sector(geo.tx_axes[:, 1], u_max[0])
             if u_max[1] < u_max[0]:  # the receiver's narrower sector
                 idx = np.intersect1d(idx, u.sector(geo.rx_axes[:, 1], u_max[1]))
