@@ -44,6 +44,13 @@ t_c N_cells + t_f C N_fft log2 N_fft + t_t K, then the figures per value drawn; 
 trace t_r per launch-grid cell, launch (1, or 2 with sea multipath) and source (2
 bistatic: the reciprocal mean of ``seaecho.tracing.sbr`` traces from T and from R).
 
+A radar-wide sea (``[sea] coverage = "radar"``) counts the grid nodes of the tiles the
+beam's bound keeps. Held (eqs U1-U3 of ``seaecho.coverage``), it costs per pulse
+t_h per kept node (the gains and sum), plus each tile's unit echo made once per block
+that meets it (eq M2 of :func:`coverage_cost`), and holds the unit echoes of one pulse's
+tiles besides one batch of tiles in work; evolving, the tile pipeline of every kept
+node at every pulse (t_c) and the tiles beyond the cache made again.
+
 The memory a run may use is the smallest of the memory the system reports available
 (``MemAvailable`` of ``/proc/meminfo``), the cgroup's limit less its usage, and the
 ``--max-memory-gb`` option or the ``SEAECHO_MAX_MEMORY_GB`` environment variable.

@@ -379,8 +379,8 @@ CACHE_NODES = 1 << 19
 CACHE_BYTES = 1 << 29
 #: Grid nodes of the tiles of one level made together (the held sea's unit echoes of
 #: :meth:`seaecho.coverage.CoverageSea.unit_echoes`: their facet model in one kernel)
-#: [-]: 2^15, two tiles of 128 x 128 or 32 of 32 x 32.
-BATCH_NODES = 1 << 15
+#: [-]: 2^13, eight tiles of 32 x 32, two of 64 x 64 (a larger tile alone).
+BATCH_NODES = 1 << 13
 #: Margin of a tile's box in the beam's bound [m] (as the single tile's, sea elevations
 #: and the facets' horizontal displacements stay below it).
 TILE_MARGIN_M = 30.0
