@@ -105,8 +105,10 @@ M_UPSAMPLED = 40.0  #: per upsampled sample of the focusing's block of pulses
 M_IMAGE_FIGURE = 60.0  #: per image pixel and figure panel drawn
 IMAGE_PANELS = 12  #: figure panels of an image (``seaecho.plotting.image``)
 #: per facet of a held radar-wide sea's unit echo (eq U1): its delay, direction and
-#: azimuth (float64), plus per channel its complex amplitude
-M_UNIT_FACET = 40.0
+#: azimuth (40 bytes of float64) and what making the tiles leaves in the allocators
+#: (fitted: the 3 km revolution of ``benchmarks/bench_coverage.py --revolution 1000``
+#: peaked at 598 MB with 0.6 million nodes kept), plus per channel its complex amplitude
+M_UNIT_FACET = 150.0
 M_UNIT_FACET_CHANNEL = 16.0
 M_TRUTH_CELL = 100.0  #: per sea cell of a raw dataset read as the image's truth (sigma
 #: map, elevations, wake mask, the Kelvin amplitude's filter)
@@ -125,12 +127,14 @@ T_TILE = 0.1
 #: A held radar-wide sea (eqs U1-U3 of ``seaecho.coverage``: each tile's unit echo made
 #: once per block of held pulses that meets it, the gains and sum per pulse): a tile made
 #: costs t_u + t_n n (n its grid nodes), a pulse t_h per node of the tiles it keeps.
-#: Fitted to ``benchmarks/bench_coverage.py``'s coastal radar (load 8-9, two cores):
-#: 18, 36 and 92 ms of CPU per tile of 32^2, 64^2 and 128^2 nodes; 41 ms (6 km) and
-#: 64 ms (12 km) of CPU per pulse with 0.5 and 0.7 million nodes kept.
-T_UNIT_TILE = 0.014
-T_UNIT_NODE = 4.7e-6
-T_HELD_NODE = 6.0e-8
+#: Fitted to ``benchmarks/bench_coverage.py``'s coastal radar on two shared cores: its
+#: tiles' relative costs (18, 36 and 92 ms of CPU per tile of 32^2, 64^2 and 128^2
+#: nodes, load 8-9) scaled to the measured 3 km revolution (``--revolution 1000``: 2512
+#: tiles made in 123 s of CPU, 34 ms per pulse besides, 0.48 million nodes kept; load
+#: 6.8), and 53 ms per pulse with 0.72 million nodes kept at 12 km.
+T_UNIT_TILE = 0.021
+T_UNIT_NODE = 7.0e-6
+T_HELD_NODE = 4.0e-8
 T_TARGET = 2.0e-6
 T_PULSE = 2.0e-2
 T_FIGURE = 4.0e-6  #: per pulse, channel and sample drawn
