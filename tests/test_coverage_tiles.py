@@ -119,15 +119,15 @@ def test_held_estimate_makes_every_tile_once_per_revolution():
     assert fixed.making_s == pytest.approx((blocks - 1) * fixed.first_s, rel=1e-3)
 
 
-@pytest.mark.slow  # ~1-2 min: a revolution of the coastal radar's sea to 900 m
+@pytest.mark.slow  # ~1-2 min: a revolution of the coastal radar's sea to 600 m
 def test_held_estimate_against_a_measured_revolution():
     """``seaecho check``'s estimate of a held radar-wide sea against a measured
     revolution (benchmarks/bench_coverage.py --revolution, 32 m tiles of 32^2 nodes,
-    window 300-900 m, 200 pulses): run time within a factor 3 either way (the estimate
+    window 300-600 m, 100 pulses): run time within a factor 3 either way (the estimate
     is an order of magnitude, fitted at loads 8-9), peak memory below the estimate and
     above half of it."""
     out = subprocess.run([sys.executable, str(ROOT / "benchmarks" / "bench_coverage.py"),
-                          "--one", "--grid", "32", "--revolution", "200", "--ranges", "900"],
+                          "--one", "--grid", "32", "--revolution", "100", "--ranges", "600"],
                          capture_output=True, text=True, check=True, cwd=ROOT)
     r = json.loads(out.stdout.strip().splitlines()[-1])
     assert r["tiles_made"] > 0

@@ -793,9 +793,7 @@ class CoverageSea:
     def _release(self) -> None:
         """Return Dr.Jit's cache of freed buffers to the system after a batch of tiles
         and after a pulse: the tiles and the pulse's sectors leave buffers of ever new
-        sizes, which the cache would keep (a 3 km revolution's peak grew from 400 to 437
-        MB in 200 pulses without this, and stayed at 403 MB with it after each batch,
-        for the same CPU time)."""
+        sizes, which the cache would otherwise keep for the rest of the run."""
         from .backend import drjit_namespace
 
         try:
