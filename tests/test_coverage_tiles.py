@@ -119,7 +119,7 @@ def test_held_estimate_makes_every_tile_once_per_revolution():
     assert fixed.making_s == pytest.approx((blocks - 1) * fixed.first_s, rel=1e-3)
 
 
-@pytest.mark.slow  # ~1-2 min: a revolution of the coastal radar's sea to 600 m
+@pytest.mark.slow  # ~1.5 min (70 s of CPU): a revolution of the coastal radar's sea to 600 m
 def test_held_estimate_against_a_measured_revolution():
     """``seaecho check``'s estimate of a held radar-wide sea against a measured
     revolution (benchmarks/bench_coverage.py --revolution, 32 m tiles of 32^2 nodes,
