@@ -19,7 +19,10 @@ coverage is made about once per revolution and block it meets; the sector's shar
 them is its share of the azimuths), plus the tiles of the beam's bound made again at each
 block's start (the warm-up pulse's), plus the per-pulse rest times the revolution's
 pulses: 2500 (the scene: 10 blocks) and 1000 (the speed target's revolution, the same tiles, 4
-blocks). Run it niced:
+blocks). ``--revolution N`` measures instead one whole revolution of N pulses (the antenna
+turning at 60 PRF / N rpm, so that N pulses make 360 deg; the same blocks of 250 pulses)
+and prints it beside the estimate of ``seaecho check`` for the same scene (``--part FIRST
+COUNT``: only those pulses of it, e.g. across a block's first pulse). Run it niced:
 ``nice -n 10 python benchmarks/bench_coverage.py``.
 """
 
@@ -41,13 +44,20 @@ ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "scenes" / "coastal_vts_xband.toml"
 
 
-def coverage_scene(path: Path, grid: int, end_m: float, pulses: int, start_m: float = 300.0):
+def coverage_scene(path: Path, grid: int, end_m: float, pulses: int, start_m: float = 300.0,
+                   revolution: bool = False):
     """The scene file ``path`` with its sea around the radar: finest tiles ``grid`` m of
     ``grid`` nodes, the window [start_m, end_m], ``pulses`` pulses, the sea held over
-    its blocks, no targets."""
+    its blocks, no targets; ``revolution``: the antenna turns once over the ``pulses``
+    (its rate in rpm = 60 PRF / pulses)."""
     from seaecho.config import load_scene
 
     sc = load_scene(path)
+    if revolution:
+        tx = sc.transmitter
+        scan = tx.antenna.scan.model_copy(update={"rate_rpm": 60.0 * sc.radar.prf_hz / pulses})
+        sc = sc.model_copy(update={"transmitter": tx.model_copy(update={
+            "antenna": tx.antenna.model_copy(update={"scan": scan})})})
     return sc.model_copy(update={
         "tracing": sc.tracing.model_copy(update={"subfacet_shadowing": True}),
         "sea": sc.sea.model_copy(update={"coverage": "radar", "size_x_m": float(grid),
@@ -90,19 +100,69 @@ def measure(grid: int, end_m: float, pulses: int) -> dict:
             "load": os.getloadavg()[0]}
 
 
+def revolution(grid: int, end_m: float, pulses: int, part: tuple[int, int] | None = None
+               ) -> dict:
+    """One whole revolution of ``pulses`` pulses, measured (this process): wall and CPU
+    time, tiles made, the CPU making them, peak RSS, the load, and the estimate of
+    ``seaecho check`` (:func:`seaecho.checks.resources.estimate`) for the same scene;
+    ``part`` (first, count): only those pulses of it."""
+    from seaecho.checks.resources import estimate
+    from seaecho.simulation import Simulation
+
+    warnings.simplefilter("ignore")
+    sc = coverage_scene(SCENE, grid, end_m, pulses, revolution=True)
+    est = estimate(sc, figures=False)
+    t0, c0 = time.perf_counter(), time.process_time()
+    sim = Simulation(sc)
+    cov = sim.coverage
+    first, count = part or (0, pulses)
+    for p in range(first, first + count):
+        sim.compress(sim.pulse(p)[None])
+    return {"end_m": end_m, "pulses": pulses, "wall_s": time.perf_counter() - t0,
+            "cpu_s": time.process_time() - c0, "tiles": len(cov),
+            "tiles_made": cov.tiles_made, "making_cpu_s": cov.making_cpu_s,
+            "peak_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+            "estimate_s": est.time_s, "estimate_mb": est.peak_bytes / 2**20,
+            "load": os.getloadavg()[0]}
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--grid", type=int, default=128, help="finest tile nodes (at 1 m)")
     ap.add_argument("--pulses", type=int, default=10, help="consecutive pulses timed")
     ap.add_argument("--ranges", type=float, nargs="+", default=[3000.0, 6000.0, 12000.0],
                     help="window ends [m]")
+    ap.add_argument("--revolution", type=int, default=0, metavar="N",
+                    help="instead: one whole revolution of N pulses (the antenna turning "
+                         "at 60 PRF / N rpm), measured, for each range")
+    ap.add_argument("--part", type=int, nargs=2, metavar=("FIRST", "COUNT"),
+                    help="with --revolution: only COUNT pulses of it from FIRST")
     ap.add_argument("--one", action="store_true", help=argparse.SUPPRESS)
     add_option(ap)
     a = ap.parse_args()
     if a.smoke:
         a.grid, a.pulses, a.ranges = 32, 1, [600.0]
     if a.one:  # a child: one range
-        print(json.dumps(measure(a.grid, a.ranges[0], a.pulses)))
+        print(json.dumps(revolution(a.grid, a.ranges[0], a.revolution, a.part)
+                         if a.revolution else measure(a.grid, a.ranges[0], a.pulses)))
+        return
+    if a.revolution:
+        print(f"finest tiles {a.grid} m x {a.grid} nodes, window from 300 m, one revolution "
+              f"of {a.revolution} pulses, each range in its own process")
+        for end in a.ranges:
+            part = ["--part", *map(str, a.part)] if a.part else []
+            out = subprocess.run([sys.executable, __file__, "--one", "--grid", str(a.grid),
+                                  "--revolution", str(a.revolution), "--ranges", str(end),
+                                  *part], capture_output=True, text=True, check=True)
+            r = json.loads(out.stdout.strip().splitlines()[-1])
+            print(f"window to {end / 1e3:g} km: {r['tiles']} tiles, {r['tiles_made']} made "
+                  f"in {r['making_cpu_s']:.1f} s CPU "
+                  f"({r['making_cpu_s'] / max(r['tiles_made'], 1) * 1e3:.0f} ms each); "
+                  f"{'pulses ' + str(a.part) if a.part else 'revolution'} "
+                  f"{r['wall_s']:.0f} s wall / "
+                  f"{r['cpu_s']:.0f} s CPU (estimate {r['estimate_s']:.0f} s); peak RSS "
+                  f"{r['peak_rss_mb']:.0f} MB (estimate {r['estimate_mb']:.0f} MB); load "
+                  f"{r['load']:.1f}")
         return
     print(f"finest tiles {a.grid} m x {a.grid} nodes, window from 300 m, {a.pulses} "
           "consecutive pulses after a warm-up, each range in its own process")

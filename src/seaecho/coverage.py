@@ -67,12 +67,24 @@ Earth, eq E4): each facet's segment to the antennas, from its centroid carried o
 the tile's frame (eq T5), is traced against it (:meth:`CoverageSea._hidden`), the tile's
 own tracer holding only its waves (and moving objects, in the tile's frame).
 
+Making the tiles of a held sea. The tiles a pulse needs and does not hold are made
+together, in batches of at most :data:`BATCH_NODES` grid nodes of one level
+(:meth:`CoverageSea.unit_echoes`): each tile's pipeline up to its facet model
+(:meth:`seaecho.simulation.Simulation.sea_stage`), the facet model of the batch's facets
+in one Dr.Jit kernel (:func:`batched_amplitudes`: eqs P1-P7 are per facet, so each tile
+gets the numbers of its own evaluation), then each tile's radar equation. The tiles of a
+level share one tracer, moved onto each tile's grid
+(:meth:`seaecho.tracing.engine.FacetEngine.reuse_tracer`: the same occlusion as a new
+one), and the platforms' states of a pulse (:class:`HeldStates`). The bytes are those of
+a tile at a time (tests).
+
 Memory. A held sea keeps the unit-gain echoes of the tiles the beam's bound keeps, at
 most :data:`CACHE_BYTES` in all; an evolving sea keeps the simulations of at most
 :data:`CACHE_NODES` grid nodes. A tile the beam leaves is dropped, one beyond the budget
-is computed and dropped at once, and one tile's facets go through the pipeline at a
-time: a pulse's memory is the budget plus one tile of ``nx x ny`` nodes, whatever the
-window's range (the time grows with the tiles the beam crosses). Which tiles are held
+is computed and dropped at once, and one batch of tiles (:data:`BATCH_NODES` nodes, or
+one larger tile) goes through the pipeline at a time: a pulse's memory is the budget
+plus that batch, whatever the window's range (the time grows with the tiles the beam
+crosses). Which tiles are held
 changes nothing: a tile's unit echo is a pure function of (scene, tile, block), its echo
 at a pulse of (scene, tile, pulse), so pulses stay computable in any order and a Dask
 run writes the serial bytes.
@@ -100,7 +112,62 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-from .geometry.patchwork import CACHE_BYTES, CACHE_NODES, TILE_MARGIN_M
+from .geometry.patchwork import BATCH_NODES, CACHE_BYTES, CACHE_NODES, TILE_MARGIN_M
+
+
+def _model_key(model) -> tuple:
+    """A facet model's fields, its arrays and tables by identity (a level's sea model
+    makes a new :class:`~seaecho.scattering.facet.FacetModel` of the same ones each
+    time)."""
+    return tuple(v if isinstance(v, (bool, int, float, complex, str, type(None))) else id(v)
+                 for v in (getattr(model, f.name) for f in dataclasses.fields(model)))
+
+
+def batched_amplitudes(stages) -> list[NDArray[np.complex128]]:
+    """:func:`seaecho.scattering.facet.speckled_facet_amplitudes` of each
+    :class:`seaecho.simulation.SeaStage` of ``stages`` (N_s, 4) [m], those of one facet
+    model, back end and set of inputs (damping, breaking zones, mechanisms) in one
+    evaluation of their facets put end to end.
+
+    Eqs P1-P7 are per facet (each facet's directions, area, draws, damping and breaking
+    fraction), so the facets of several tiles through one kernel get the numbers each
+    tile's own evaluation gives (test). Only the Dr.Jit back end is batched (a
+    :class:`~seaecho.scattering.spectrum_table.BraggSpectrumTable` spectrum; its kernel
+    recomputes the facets' local frames, ``local`` is not read); numpy and the evolving
+    speckle (its draws a callable) take one evaluation per stage.
+    """
+    from .scattering.facet import speckled_facet_amplitudes
+    from .scattering.spectrum_table import BraggSpectrumTable
+
+    out: list = [None] * len(stages)
+    groups: dict[tuple, list[int]] = {}
+    for j, st in enumerate(stages):
+        kw, model = st.kwargs, st.args[4]
+        draws = kw["draws"]
+        if (callable(draws) or not isinstance(draws, dict)
+                or not isinstance(model.spectrum, BraggSpectrumTable)):
+            out[j] = speckled_facet_amplitudes(*st.args, **kw)
+            continue
+        key = (_model_key(model), kw["variant"], kw["precision"],
+               kw["wake_damping"] is None, kw["breaking_fraction"] is None,
+               tuple(sorted(draws)))
+        groups.setdefault(key, []).append(j)
+    for js in groups.values():
+        first = stages[js[0]]
+        cat = [np.concatenate([np.asarray(stages[j].args[a]).reshape(
+            -1, *np.shape(first.args[a])[1:]) for j in js]) for a in range(4)]
+        kw = dict(first.kwargs, local=None, draws={
+            m: np.concatenate([stages[j].kwargs["draws"][m] for j in js])
+            for m in first.kwargs["draws"]})
+        for name in ("wake_damping", "breaking_fraction"):
+            if first.kwargs[name] is not None:
+                kw[name] = np.concatenate([np.asarray(stages[j].kwargs[name], dtype=float)
+                                           for j in js])
+        amp = speckled_facet_amplitudes(*cat, first.args[4], **kw)
+        ends = np.cumsum([len(stages[j].args[3]) for j in js])
+        for j, a in zip(js, np.split(amp, ends[:-1]), strict=True):
+            out[j] = a
+    return out
 
 
 class TilePlatform:
@@ -125,6 +192,41 @@ class TilePlatform:
     def nominal_state(self, t):
         """The platform's nominal state at ``t`` in the tile's frame."""
         return self._carry(self._platform.nominal_state(t))
+
+    def __getattr__(self, name):
+        return getattr(self._platform, name)
+
+
+class HeldStates:
+    """A platform whose states at the last few scalar times are kept: the tiles of a
+    pulse carry the same state into their frames (:class:`TilePlatform`), computed once
+    (the same arrays, read only by the carrying)."""
+
+    KEEP = 8
+
+    def __init__(self, platform) -> None:
+        self._platform = platform
+        self._held: OrderedDict = OrderedDict()
+
+    def _get(self, kind: str, t):
+        if np.ndim(t) != 0:
+            return getattr(self._platform, kind)(t)
+        key = (kind, float(t))
+        st = self._held.get(key)
+        if st is None:
+            st = getattr(self._platform, kind)(t)
+            self._held[key] = st
+            if len(self._held) > self.KEEP:
+                self._held.popitem(last=False)
+        return st
+
+    def state(self, t):
+        """The platform's true state at ``t`` [s]."""
+        return self._get("state", t)
+
+    def nominal_state(self, t):
+        """The platform's nominal state at ``t`` [s]."""
+        return self._get("nominal_state", t)
 
     def __getattr__(self, name):
         return getattr(self._platform, name)
@@ -358,6 +460,8 @@ class CoverageSea:
         self._factory = factory
         self.cache_nodes = int(cache_nodes)
         self.cache_bytes = int(cache_bytes)
+        #: grid nodes of the tiles of one level made together (:meth:`unit_echoes`)
+        self.batch_nodes = BATCH_NODES
         self._nodes = np.array([np.prod(lv.shape) for lv in self.patchwork.levels]
                                )[self.patchwork.level]
         self._boxes = self.patchwork.boxes(TILE_MARGIN_M)
@@ -388,6 +492,12 @@ class CoverageSea:
         tracing = self.model.levels[0][1]
         self._static = tuple(o for o in tracing.objects if not getattr(o, "moving", False))
         self._occluders = None
+        # what the tiles share: the platforms' states of a pulse (HeldStates) and, for
+        # the held sea's unit echoes, one tracer per level moved from tile to tile
+        tx = HeldStates(models.radar.tx)
+        rx = tx if models.radar.rx is models.radar.tx else HeldStates(models.radar.rx)
+        self._held_radar = dataclasses.replace(models.radar, tx=tx, rx=rx)
+        self._tracers: dict[int, object] = {}
         #: tiles computed so far (new simulations made), for the benchmarks [-]
         self.tiles_made = 0
         #: facets whose echo the last pulse summed (eq U2, the held sea's path) [-]
@@ -466,7 +576,7 @@ class CoverageSea:
         if self._static:  # traced in the simulation frame (eq T6, _weight)
             tracing = dataclasses.replace(tracing, objects=tuple(
                 o for o in tracing.objects if getattr(o, "moving", False)))
-        radar = tile_radar(self.models.radar, pw.frame(i), pw.seed(i, self.model.seed),
+        radar = tile_radar(self._held_radar, pw.frame(i), pw.seed(i, self.model.seed),
                            unit_gain=unit_gain)
         return dataclasses.replace(self.models, radar=radar, sea=self.model.sea(i),
                                    sea_model=sea_model, tracing=tracing, hulls=None,
@@ -557,25 +667,81 @@ class CoverageSea:
         if held is not None and held.block == block:
             self._units.move_to_end(i)
             return held
-        self._units.pop(i, None)
+        return self.unit_echoes([i], block)[0]
+
+    def unit_echoes(self, tiles, block: int) -> list[UnitEcho]:
+        """:meth:`unit_echo` of each of ``tiles`` for ``block``: those not held are made
+        in batches of at most :data:`BATCH_NODES` grid nodes of one level, whose facet
+        model runs as one kernel (:func:`batched_amplitudes`: the same numbers as a
+        tile at a time)."""
+        block = int(block)
+        out: dict[int, UnitEcho] = {}
+        todo: dict[int, list[int]] = {}
+        for i in map(int, tiles):
+            held = self._units.get(i)
+            if held is not None and held.block == block:
+                self._units.move_to_end(i)
+                out[i] = held
+            else:
+                todo.setdefault(int(self.patchwork.level[i]), []).append(i)
+        for level, group in sorted(todo.items()):
+            per = max(1, self.batch_nodes // int(self._nodes[group[0]]))
+            for k in range(0, len(group), per):
+                out.update(self._make_units(group[k:k + per], level, block))
+        return [out[int(i)] for i in tiles]
+
+    def _make_units(self, tiles: list[int], level: int, block: int) -> dict[int, UnitEcho]:
+        """The unit echoes (eq U1) of ``tiles`` (of one ``level``) for ``block``: each
+        tile's pipeline up to the facet model (:meth:`seaecho.simulation.Simulation.
+        sea_stage`), the facet model of them all at once, then each tile's radar
+        equation; held within :attr:`cache_bytes`."""
         start = time.process_time()
-        sim = self._factory(self._tile_models(i, unit_gain=True), self._weight(i, beam=False))
-        self.tiles_made += 1
         first = block * self.block
-        sea = sim.sea_echo(first)
-        echo, facets = sea.echo, sea.facets
-        if echo.tau.size != facets.visibility.size:  # the culled facets, one echo each
-            raise RuntimeError("unit_echo: the tile's echoes and facets do not match")
-        keep = self.radar.window.keep(echo.tau, self.radar.waveform.n_samples)
-        n = incidence_directions(sim.radar.geometry(first), facets.centroid[keep],
-                                 facets.velocity[keep])
-        unit = UnitEcho.sorted(block, echo.tau[keep], np.asarray(echo.amplitudes)[:, keep],
-                               n @ self.patchwork.frame(i).rotation.T)
-        held = sum(u.nbytes for u in self._units.values())
-        if held + unit.nbytes <= self.cache_bytes:  # else used once and dropped
-            self._units[i] = unit
+        made = []
+        for i in tiles:
+            self._units.pop(i, None)
+            sim = self._factory(self._tile_models(i, unit_gain=True),
+                                self._weight(i, beam=False))
+            self.tiles_made += 1
+            self._share_tracer(sim, level, first)
+            geo = sim.radar.geometry(first)
+            made.append((i, sim, geo, sim.sea_stage(first, geo)))
+        staged = [stage for *_, stage in made if not hasattr(stage, "echo")]
+        amps = iter(batched_amplitudes(staged))
+        out = {}
+        for i, sim, geo, stage in made:
+            sea = stage if hasattr(stage, "echo") else sim.sea_finish(stage, next(amps))
+            echo, facets = sea.echo, sea.facets
+            if echo.tau.size != facets.visibility.size:  # the culled facets, one echo each
+                raise RuntimeError("unit_echo: the tile's echoes and facets do not match")
+            keep = self.radar.window.keep(echo.tau, self.radar.waveform.n_samples)
+            n = incidence_directions(geo, facets.centroid[keep], facets.velocity[keep])
+            unit = UnitEcho.sorted(block, echo.tau[keep],
+                                   np.asarray(echo.amplitudes)[:, keep],
+                                   n @ self.patchwork.frame(i).rotation.T)
+            held = sum(u.nbytes for u in self._units.values())
+            if held + unit.nbytes <= self.cache_bytes:  # else used once and dropped
+                self._units[i] = unit
+            out[i] = unit
+        self._release()
         self.making_cpu_s += time.process_time() - start
-        return unit
+        return out
+
+    def _share_tracer(self, sim, level: int, pulse: int) -> None:
+        """Give the tile simulation ``sim`` (a unit echo's, made at ``pulse``) the tracer
+        of its level, moved onto its grid, or keep the one it builds as the level's: one
+        Mitsuba scene per level instead of one per tile, the same occlusion
+        (:meth:`seaecho.tracing.engine.FacetEngine.reuse_tracer`). The tiles' tracers
+        hold only the sea (the static occluders are traced in the simulation frame)."""
+        engine = getattr(sim, "engine", None)
+        if engine is None or engine.mode != "raytraced" or engine.objects:
+            return
+        state = sim.surface_state(pulse)
+        held = self._tracers.get(level)
+        if held is None:
+            self._tracers[level] = engine._get_tracer(state)
+        else:
+            engine.reuse_tracer(held, state)
 
     def gains(self, pulse: int, direction: NDArray[np.float64], geo=None
               ) -> NDArray[np.float64]:
@@ -614,13 +780,27 @@ class CoverageSea:
                 if i not in kept:
                     del held[i]
         if self.cached:
-            return self._raw_cached(pulse, keep)
+            out = self._raw_cached(pulse, keep)
+            self._release()
+            return out
         out = None
         for i in keep:  # a tile at a time: its facets are vectorised
             echo = self.tile(i).sea_echo(pulse).echo
             r = self.radar.receive(pulse, [echo], noise=False)
             out = r if out is None else out + r
         return out
+
+    def _release(self) -> None:
+        """Return Dr.Jit's cache of freed buffers to the system after a batch of tiles
+        and after a pulse: the tiles and the pulse's sectors leave buffers of ever new
+        sizes, which the cache would otherwise keep for the rest of the run."""
+        from .backend import drjit_namespace
+
+        try:
+            xp = drjit_namespace(self.models.variant)
+        except (ImportError, ValueError):  # no Dr.Jit: nothing held
+            return
+        xp.dr.flush_malloc_cache()
 
     def _raw_cached(self, pulse: int, keep: NDArray[np.int64]
                     ) -> NDArray[np.complex128] | None:
@@ -636,8 +816,9 @@ class CoverageSea:
                 and np.array_equal(geo.rx_axes, geo.tx_axes))
         u_max = self._u_max(same)
         parts = []
-        for i in keep:  # each tile's facets in the beam's sector (eq U3)
-            u = self.unit_echo(i, block)
+        # each tile's facets in the beam's sector (eq U3); the tiles not held are made
+        # together (unit_echoes)
+        for u in self.unit_echoes(keep, block):
             idx = u.sector(geo.tx_axes[:, 1], u_max[0])
             if u_max[1] < u_max[0]:  # the receiver's narrower sector
                 idx = np.intersect1d(idx, u.sector(geo.rx_axes[:, 1], u_max[1]))
@@ -662,6 +843,6 @@ class CoverageSea:
         return int(sum(2 * (ny - 1) * (nx - 1) for ny, nx in n))
 
 
-__all__ = ["CACHE_BYTES", "CACHE_NODES", "TILE_MARGIN_M", "CoverageSea", "TilePlatform",
-           "UnitEcho", "beam_gains", "incidence_directions", "point_bounds", "tile_radar",
-           "unit_gain_antenna"]
+__all__ = ["BATCH_NODES", "CACHE_BYTES", "CACHE_NODES", "TILE_MARGIN_M", "CoverageSea",
+           "HeldStates", "TilePlatform", "UnitEcho", "batched_amplitudes", "beam_gains",
+           "incidence_directions", "point_bounds", "tile_radar", "unit_gain_antenna"]

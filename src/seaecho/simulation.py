@@ -186,6 +186,41 @@ class SeaEcho:
         return np.moveaxis(rcs.reshape(f.grid_shape + (4,)).sum(axis=2), -1, 0) / cell_area
 
 
+@dataclass(frozen=True)
+class SeaStage:
+    """A pulse's sea up to the facet model (:meth:`Simulation.sea_stage`).
+
+    Attributes
+    ----------
+    pulse : int
+    geometry : seaecho.radar.system.PulseGeometry
+    state : seaecho.sea.SurfaceState
+    facets : seaecho.geometry.facets.Facets
+        The facets evaluated (a tile's weighted ones only).
+    visibility : ndarray (N,)
+        Their visibility times the tile's weight [-].
+    keep : ndarray or None
+        The indices of those facets among the surface's (a tile's culling).
+    held : dict
+        The block's quantities of those facets (damping, breaking, draws).
+    sigma : bool
+        Whether the echo also returns sigma_mn.
+    args, kwargs : tuple, dict
+        The arguments of :func:`seaecho.scattering.facet.speckled_facet_amplitudes`.
+    """
+
+    pulse: int
+    geometry: object
+    state: object
+    facets: object
+    visibility: NDArray[np.float64]
+    keep: NDArray[np.int64] | None
+    held: dict
+    sigma: bool
+    args: tuple
+    kwargs: dict
+
+
 def _crosses_rectangle(a: NDArray, b: NDArray, x: NDArray, y: NDArray) -> NDArray[np.bool_]:
     """Whether the 2-D segments a -> b (N, 2) [m] meet the rectangle spanned by the grid
     coordinates x, y [m] (Liang-Barsky clipping, vectorised)."""
@@ -587,9 +622,25 @@ class Simulation:
         sigma : bool
             Also return the per-facet sigma_mn (all facets, times visibility).
         """
+        stage = self.sea_stage(pulse, geometry, sigma)
+        if isinstance(stage, SeaEcho):
+            return stage
+        from .scattering.facet import speckled_facet_amplitudes
+
+        return self.sea_finish(stage, speckled_facet_amplitudes(*stage.args, **stage.kwargs))
+
+    def sea_stage(self, pulse: int, geometry=None, sigma: bool = False
+                  ) -> SeaEcho | SeaStage:
+        """:meth:`sea_echo` up to the facet model: the pulse's facets and the arguments
+        of :func:`seaecho.scattering.facet.speckled_facet_amplitudes` (a
+        :class:`SeaStage`; :meth:`sea_finish` completes the echo from its amplitudes),
+        or the echo itself where no facet model is left to evaluate (the fused kernel,
+        no facet in a tile). The facet model is per facet, so the stages of several
+        simulations of one sea model can share one evaluation (the tiles of a
+        radar-wide sea, :mod:`seaecho.coverage`)."""
         if self.sea is None:
             raise ValueError("sea clutter is off in this scene ([radar] sea_clutter)")
-        from .scattering.facet import PRECISION, speckled_facet_amplitudes
+        from .scattering.facet import PRECISION
 
         geo = self.radar.geometry(pulse) if geometry is None else geometry
         st = self.surface_state(pulse)
@@ -628,13 +679,21 @@ class Simulation:
         draws = None if self.evolving else self._host_draws(held)
         if self.evolving:  # eqs D2-D4 evaluated inside the facet kernel
             draws = self._speckle_process(vis.size).draws(float(geo.time))
-        amp = speckled_facet_amplitudes(*args, facets.area * vis, self.sea_model.facet_model,
-                                        draws=draws, wake_damping=damping,
-                                        breaking_fraction=held["breaking"], local=facets,
-                                        variant=self.variant, precision=PRECISION)
-        centres = self.phase_centres(pulse, st)
-        if keep is not None:
-            centres = centres[keep]
+        return SeaStage(pulse, geo, st, facets, vis, keep, held, sigma,
+                        (*args, facets.area * vis, self.sea_model.facet_model),
+                        dict(draws=draws, wake_damping=damping,
+                             breaking_fraction=held["breaking"], local=facets,
+                             variant=self.variant, precision=PRECISION))
+
+    def sea_finish(self, stage: SeaStage, amp: NDArray[np.complex128]) -> SeaEcho:
+        """The echo of a :class:`SeaStage` of :meth:`sea_stage` from its facets'
+        speckled amplitudes ``amp`` (N, 4) [m] (its facet model's)."""
+        from .scattering.facet import PRECISION
+
+        facets, vis, geo = stage.facets, stage.visibility, stage.geometry
+        centres = self.phase_centres(stage.pulse, stage.state)
+        if stage.keep is not None:
+            centres = centres[stage.keep]
         visible = vis > 0
         if visible.all():  # the usual case: no copies
             pos, vel = centres, facets.velocity
@@ -644,9 +703,9 @@ class Simulation:
                                          variant=self.variant, precision=PRECISION,
                                          multipath=True)
         sig = None
-        if sigma:
-            sig = facet_sigma0(self.sea_model, facets, damping, held["breaking"],
-                               variant=self.variant)
+        if stage.sigma:
+            sig = facet_sigma0(self.sea_model, facets, stage.held["damping"],
+                               stage.held["breaking"], variant=self.variant)
         return SeaEcho(echo, sig, facets)
 
     # ------------------------------------------------------ the beam and the tile

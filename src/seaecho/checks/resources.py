@@ -44,6 +44,13 @@ t_c N_cells + t_f C N_fft log2 N_fft + t_t K, then the figures per value drawn; 
 trace t_r per launch-grid cell, launch (1, or 2 with sea multipath) and source (2
 bistatic: the reciprocal mean of ``seaecho.tracing.sbr`` traces from T and from R).
 
+A radar-wide sea (``[sea] coverage = "radar"``) counts the grid nodes of the tiles the
+beam's bound keeps. Held (eqs U1-U3 of ``seaecho.coverage``), it costs per pulse
+t_h per kept node (the gains and sum), plus each tile's unit echo made once per block
+that meets it (eq M2 of :func:`coverage_cost`), and holds the unit echoes of one pulse's
+tiles besides one batch of tiles in work; evolving, the tile pipeline of every kept
+node at every pulse (t_c) and the tiles beyond the cache made again.
+
 The memory a run may use is the smallest of the memory the system reports available
 (``MemAvailable`` of ``/proc/meminfo``), the cgroup's limit less its usage, and the
 ``--max-memory-gb`` option or the ``SEAECHO_MAX_MEMORY_GB`` environment variable.
@@ -97,6 +104,12 @@ M_PIXEL_CHANNEL = 160.0  #: per image pixel and channel (accumulator, image, sig
 M_UPSAMPLED = 40.0  #: per upsampled sample of the focusing's block of pulses
 M_IMAGE_FIGURE = 60.0  #: per image pixel and figure panel drawn
 IMAGE_PANELS = 12  #: figure panels of an image (``seaecho.plotting.image``)
+#: per facet of a held radar-wide sea's unit echo (eq U1): its delay, direction and
+#: azimuth (40 bytes of float64) and what making the tiles leaves in the allocators
+#: (fitted: the 3 km revolution of ``benchmarks/bench_coverage.py --revolution 1000``
+#: peaked at 598 MB with 0.6 million nodes kept), plus per channel its complex amplitude
+M_UNIT_FACET = 150.0
+M_UNIT_FACET_CHANNEL = 16.0
 M_TRUTH_CELL = 100.0  #: per sea cell of a raw dataset read as the image's truth (sigma
 #: map, elevations, wake mask, the Kelvin amplitude's filter)
 #: Margin on the sum, so that the estimate stays above the measured peak.
@@ -111,6 +124,17 @@ T_FFT = 4.0e-9
 #: per tile of a radar-wide sea made (its surface, wake, facet engine and tracer): the
 #: first pulse of scenes/sband_longrange.toml made 562 tiles in 69 s at a load of ~10
 T_TILE = 0.1
+#: A held radar-wide sea (eqs U1-U3 of ``seaecho.coverage``: each tile's unit echo made
+#: once per block of held pulses that meets it, the gains and sum per pulse): a tile made
+#: costs t_u + t_n n (n its grid nodes), a pulse t_h per node of the tiles it keeps.
+#: Fitted to ``benchmarks/bench_coverage.py``'s coastal radar on two shared cores: its
+#: tiles' relative costs (18, 36 and 92 ms of CPU per tile of 32^2, 64^2 and 128^2
+#: nodes, load 8-9) scaled to the measured 3 km revolution (``--revolution 1000``: 2512
+#: tiles made in 123 s of CPU, 34 ms per pulse besides, 0.48 million nodes kept; load
+#: 6.8), and 53 ms per pulse with 0.72 million nodes kept at 12 km.
+T_UNIT_TILE = 0.021
+T_UNIT_NODE = 7.0e-6
+T_HELD_NODE = 4.0e-8
 T_TARGET = 2.0e-6
 T_PULSE = 2.0e-2
 T_FIGURE = 4.0e-6  #: per pulse, channel and sample drawn
@@ -525,8 +549,13 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     cells = nx * ny if sea else 0
     held = cells  # the sea's cells held in memory
     tiles_first = tiles_remade = 0.0  # tiles made at the first pulse and at every pulse
+    unit = None  # a held radar-wide sea's unit echoes (CoverageCost)
     if sea and scene.sea.coverage == "radar":  # the tiles of each pulse (seaecho.coverage)
-        cells, held, tiles_first, tiles_remade = coverage_cells(scene)
+        if coverage_is_held(scene):
+            unit = coverage_cost(scene)
+            cells, held = unit.nodes_per_pulse, unit.nodes_in_work
+        else:
+            cells, held, tiles_first, tiles_remade = coverage_cells(scene)
     n_s, n_fft, _ = window_size(scene)
     c = len(r.channels)
     n_p = r.n_pulses
@@ -552,6 +581,8 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
                         + sum(M_CENTRE * h.centres * min(h.traces, _owned("SIGNATURE_CACHE"))
                               for h in hulls)),
     }
+    if unit is not None:
+        terms["unit echoes"] = unit.held_facets * (M_UNIT_FACET + M_UNIT_FACET_CHANNEL * c)
     worker = sum(terms.values()) - terms["figures"]
     if workers:
         terms["workers"] = workers * worker
@@ -579,6 +610,8 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
         "workers": "--workers (each worker holds the simulation and a block of pulses)",
         "image": "[image].pixel_m and extent_m (pixels), [radar].channels, "
                  "[image].upsample, figures",
+        "unit echoes": "[sea] size_x_m, nx (the tiles' facets), the window's range and "
+                       "the antenna's width (the tiles a pulse keeps), [radar].channels",
     }
     nodes = antenna_nodes(scene)
     n_theta = max((n for _, n in nodes), default=0)
@@ -589,13 +622,18 @@ def estimate(scene, figures: bool = True, *, workers: int | None = None,
     stages = sum(v for k, v in terms.items() if k != "antenna pattern")
     peak = SAFETY * max(stages, terms["process"] + antenna)
     per_pulse = T_PULSE + T_TARGET * k + T_FFT * c * n_fft * math.log2(max(n_fft, 2))
-    if sea:
+    if unit is not None:  # the gains and sum of eq U2
+        per_pulse += T_HELD_NODE * cells
+    elif sea:
         per_pulse += T_CELL[mode] * cells + T_TILE * tiles_remade
     per_pulse += sum(T_TARGET * h.centres for h in hulls)
     start = T_START[mode] + T_CELL_SETUP[mode] * held if sea else T_START["targets"]
     start += T_TILE * tiles_first
     rays = sum(h.grid * h.launches * h.sources * h.traces for h in hulls)
     pulses = n_p * per_pulse + T_RAY * rays
+    if unit is not None:  # the tiles' unit echoes, once per block that meets them
+        start += unit.first_s
+        pulses += unit.making_s
     if workers:
         pulses /= workers
     time_s = start + pulses + (T_FIGURE * n_p * c * n_s if figures else 0.0) + sum(
@@ -633,6 +671,105 @@ def coverage_cells(scene, samples: int = 16) -> tuple[int, int, float, float]:
         remade.append(keep.sum() * max(n - CACHE_NODES, 0) / max(n, 1))
     return (int(np.mean(counts)), min(CACHE_NODES, most) + int(nodes.max()),
             float(tiles[0]), float(np.mean(remade)))
+
+
+def coverage_is_held(scene) -> bool:
+    """Whether a ``coverage = "radar"`` scene takes the held sea's unit echoes (eqs
+    U1-U3 of :mod:`seaecho.coverage`): its sea held within each block
+    (``[scattering] sea_motion``, "auto" resolved by ``seaecho.build.sea_motion``) and
+    no moving ``[[objects]]`` (a velocity, or following the ship)."""
+    from ..build import sea_motion
+
+    moving = any(np.any(np.asarray(o.velocity_m_s, dtype=float) != 0.0) or o.follow_ship
+                 for o in scene.objects)
+    return sea_motion(scene) == "held" and not moving
+
+
+@dataclass(frozen=True)
+class CoverageCost:
+    """The sizes of a held radar-wide sea (:func:`coverage_cost`).
+
+    Attributes
+    ----------
+    nodes_per_pulse : int
+        Grid nodes of the tiles the beam's bound keeps, mean over the sampled pulses [-].
+    nodes_in_work : int
+        Grid nodes through the tile pipeline at once (a batch of one level,
+        ``seaecho.coverage.BATCH_NODES``, or one larger tile) [-].
+    held_facets : float
+        Facets of the unit echoes held (two per node of the pulse that keeps most,
+        within ``seaecho.coverage.CACHE_BYTES``) [-].
+    first_s : float
+        CPU time of the tiles made at the first pulse [s].
+    making_s : float
+        CPU time of the tiles made over the rest of the run [s].
+    tiles_made : float
+        Tiles made over the run [-].
+    """
+
+    nodes_per_pulse: int
+    nodes_in_work: int
+    held_facets: float
+    first_s: float
+    making_s: float
+    tiles_made: float
+
+
+def coverage_cost(scene, samples: int = 16, max_steps: int = 256) -> CoverageCost:
+    """The nodes, held facets and tile-making time of a held radar-wide sea (eqs U1-U3
+    of :mod:`seaecho.coverage`).
+
+    A tile's unit echo is made at the first pulse of each block of held pulses
+    (``[radar] sea_update_pulses``) whose beam's bound keeps it (eq C2). The beam of a
+    block sweeps the azimuths between its first and its last pulse, so the tiles it
+    makes are those it keeps at one pulse plus those whose azimuth interval the sweep
+    crosses; the patchwork is a full annulus around the radar, so these are the share
+    sweep / 2 pi of all its tiles (weighted by each tile's cost, t_u + t_n n): per block
+
+        t_b = sum_(kept at a pulse) c_i + min(sweep_b / (2 pi), 1) sum_(all) c_i       (M2)
+
+    with the kept tiles' mean over ``samples`` pulses spread over the run (the first
+    pulse's alone at the first block, already counted in ``first_s``) and sweep_b the
+    azimuth the transmitting antenna's boresight turns through over the block, summed
+    over at most ``max_steps`` steps of the run. A fixed antenna makes the tiles it keeps
+    once per block; a revolution of B blocks about B times the kept tiles plus all the
+    tiles once.
+    """
+    from ..build import build_radar, coverage_layout, sea_spectrum
+    from ..geometry.patchwork import BATCH_NODES, CACHE_BYTES, TILE_MARGIN_M
+    from ..radar.coverage import two_way_bounds
+    from ..radar.system import RadarSystem
+
+    model = build_radar(scene)
+    pw = coverage_layout(scene, model, sea_spectrum(scene))
+    radar = RadarSystem(model)
+    boxes = pw.boxes(TILE_MARGIN_M)
+    nodes = np.array([np.prod(lv.shape) for lv in pw.levels])[pw.level]
+    cost = T_UNIT_TILE + T_UNIT_NODE * nodes
+    n_p, block = model.n_pulses, int(model.sea_update_pulses)
+    counts, kept_cost, first = [], [], None
+    for p in np.unique(np.linspace(0, n_p - 1, samples).astype(int)):
+        keep = two_way_bounds(radar, int(p), boxes) >= model.sea_gain_floor
+        counts.append(int(nodes[keep].sum()))
+        kept_cost.append(float(cost[keep].sum()))
+        if first is None:
+            first = (float(cost[keep].sum()), int(keep.sum()))
+    # the boresight's azimuth over the run, in at most max_steps steps
+    steps = np.unique(np.linspace(0, n_p - 1, min(n_p, max_steps + 1)).astype(int))
+    axis = np.array([radar.geometry(int(p)).tx_axes[:, 0] for p in steps])
+    turn = np.abs(np.angle(np.exp(1j * np.diff(np.arctan2(axis[:, 1], axis[:, 0])))))
+    sweep = np.zeros(-(-n_p // block))
+    np.add.at(sweep, steps[1:] // block, turn)
+    share = np.minimum(sweep / (2.0 * np.pi), 1.0)
+    mean_kept = float(np.mean(kept_cost))
+    making = (len(sweep) - 1) * mean_kept + float(share.sum()) * float(cost.sum())
+    tiles = first[1] + (len(sweep) - 1) * mean_kept / max(first[0], 1e-300) * first[1] \
+        + float(share.sum()) * len(nodes)
+    most = max(counts)
+    per_facet = M_UNIT_FACET + M_UNIT_FACET_CHANNEL * len(scene.radar.channels)
+    return CoverageCost(int(np.mean(counts)), int(max(min(BATCH_NODES, most), nodes.max())),
+                        min(2.0 * most, CACHE_BYTES / per_facet), first[0], making,
+                        float(tiles))
 
 
 # --------------------------------------------------------------------------- limits

@@ -377,12 +377,16 @@ CACHE_NODES = 1 << 19
 #: path of :class:`seaecho.coverage.CoverageSea`, eqs U1-U2): 512 MiB, the facets of
 #: several pulses' footprints.
 CACHE_BYTES = 1 << 29
+#: Grid nodes of the tiles of one level made together (the held sea's unit echoes of
+#: :meth:`seaecho.coverage.CoverageSea.unit_echoes`: their facet model in one kernel)
+#: [-]: 2^13, eight tiles of 32 x 32, two of 64 x 64 (a larger tile alone).
+BATCH_NODES = 1 << 13
 #: Margin of a tile's box in the beam's bound [m] (as the single tile's, sea elevations
 #: and the facets' horizontal displacements stay below it).
 TILE_MARGIN_M = 30.0
 
 
-__all__ = ["CACHE_BYTES", "CACHE_NODES", "CREST_M", "FACETS_PER_BEAM", "FACETS_PER_PEAK_WAVE",
-           "FACETS_PER_RANGE_CELL", "Level", "MIN_NODES", "Patchwork", "TILE_MARGIN_M",
-           "TileFrame", "band_edges", "ground_range_window", "level_spacings", "max_spacing",
-           "zigzag"]
+__all__ = ["BATCH_NODES", "CACHE_BYTES", "CACHE_NODES", "CREST_M", "FACETS_PER_BEAM",
+           "FACETS_PER_PEAK_WAVE", "FACETS_PER_RANGE_CELL", "Level", "MIN_NODES", "Patchwork",
+           "TILE_MARGIN_M", "TileFrame", "band_edges", "ground_range_window", "level_spacings",
+           "max_spacing", "zigzag"]

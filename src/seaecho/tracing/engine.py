@@ -164,6 +164,13 @@ class FacetEngine:
         """The :class:`~seaecho.tracing.tracer.FacetTracer` (built on first use)."""
         return self._get_tracer(None)
 
+    def _period(self, st) -> tuple[float, float] | None:
+        """The periods of the tracer's periodic apron for the grid of ``st`` [m]: an FFT
+        tile of n nodes, n * spacing; None without the apron."""
+        if not self.periodic_apron:
+            return None
+        return (st.x.size * float(st.x[1] - st.x[0]), st.y.size * float(st.y[1] - st.y[0]))
+
     def _get_tracer(self, st):
         if self._lead is not None:
             return self._lead._get_tracer(st)
@@ -172,14 +179,22 @@ class FacetEngine:
 
             st = self.surface(0.0) if st is None else st
             material = {} if self.frequency_hz is None else {"frequency_hz": self.frequency_hz}
-            period = None
-            if self.periodic_apron:  # an FFT tile: n nodes, period n * spacing
-                period = (st.x.size * float(st.x[1] - st.x[0]),
-                          st.y.size * float(st.y[1] - st.y[0]))
             self._tracer = FacetTracer(st.x, st.y, st.elevation, objects=self.objects,
                                        eps_r=self.eps_r, variant=self._variant,
-                                       period_m=period, **material)
+                                       period_m=self._period(st), **material)
         return self._tracer
+
+    def reuse_tracer(self, tracer, state) -> None:
+        """Take ``tracer`` as this engine's, moved onto the grid of ``state`` (a surface
+        state of this engine's surface): the tracer of another engine of the same grid
+        shape, objects, variant and material (the tiles of one level of a radar-wide
+        sea, :mod:`seaecho.coverage`), which that engine must no longer use. The same
+        occlusion as the tracer this engine would build (the sea scene's vertices are
+        those of ``state``; :meth:`seaecho.tracing.tracer.FacetTracer.move`)."""
+        if self._lead is not None or self._tracer is not None:
+            raise ValueError("reuse_tracer: this engine already has its tracer")
+        tracer.move(state.x, state.y, state.elevation, period_m=self._period(state))
+        self._tracer = tracer
 
     def geometry(self, state) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """Centroids [m], areas [m^2], unit normals [-] and velocities [m/s] of the facets of

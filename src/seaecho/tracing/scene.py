@@ -307,6 +307,19 @@ class SeaScene:
         self._vbuf = buf  # (the mesh still aliases _mesh_buf until it is updated)
         self._stale = True
 
+    def move(self, x: np.ndarray, y: np.ndarray, elevation: np.ndarray) -> None:
+        """Put the mesh on another grid of the same shape: node abscissae ``x`` (nx,),
+        ordinates ``y`` (ny,) [m] and ``elevation`` (ny, nx) [m]; the BVH is rebuilt (the
+        same scene as one built on that grid, without building a new one)."""
+        x, y = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
+        buf = grid_vertices(x, y, elevation, dtype=np.float32)
+        if buf.shape != self._vbuf.shape:
+            raise ValueError(f"grid shaped {buf.shape[:2]}, expected {self._vbuf.shape[:2]}")
+        self.x, self.y = x, y
+        self._params[self._key] = self._mi.Float(buf.ravel())
+        self._params.update()
+        self._vbuf = buf
+
 
 class ObjectScene:
     """Objects (``[[objects]]``) in a Mitsuba scene of their own (for the shadow rays).

@@ -109,6 +109,32 @@ class FacetTracer:
         self._cell = float(cell)
         self._scale_of: tuple[np.ndarray, float] | None = None
 
+    def move(self, x: np.ndarray, y: np.ndarray, elevation: np.ndarray,
+             period_m: tuple[float, float] | None = None) -> None:
+        """Put the sea on another grid of the same shape (node abscissae ``x``, ordinates
+        ``y``, ``elevation`` (ny, nx) [m], the periods ``period_m`` [m] of a periodic sea,
+        as the constructor's): the tracer of a tile of the same level reused for the
+        next one, as a new tracer of that grid traces (its sea scene moved,
+        :meth:`SeaScene.move`); the objects stay."""
+        x, y = np.asarray(x, dtype=np.float64), np.asarray(y, dtype=np.float64)
+        if x.shape != self.x.shape or y.shape != self.y.shape:
+            raise ValueError(f"grid of {y.size} x {x.size} nodes, expected "
+                             f"{self.y.size} x {self.x.size}")
+        if (period_m is None) != (self.period_m is None):
+            raise ValueError("move: a periodic sea stays periodic (period_m)")
+        if period_m is not None:
+            self.period_m = (float(period_m[0]), float(period_m[1]))
+        x_mesh, y_mesh = x, y
+        if self.period_m is not None:
+            x_mesh = np.append(x, x[0] + self.period_m[0])
+            y_mesh = np.append(y, y[0] + self.period_m[1])
+        z = np.asarray(elevation, dtype=np.float64)
+        self.sea.move(x_mesh, y_mesh, self._mesh_elevation(z))
+        self.x, self.y = x, y
+        self._elevation = np.array(z, dtype=np.float64)
+        self._cell = float(min(np.min(np.diff(x)), np.min(np.diff(y))))
+        self._scale_of = None
+
     @property
     def mi_scenes(self) -> list:
         """The Mitsuba scenes every shadow ray is tested against."""
