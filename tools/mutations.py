@@ -54,8 +54,8 @@ S = "src/seaecho/"
 MUTATIONS = [
     # --- the suite used to pass with each of these
     Mutation("echo-without-visibility", S + "simulation.py",
-             "amp = speckled_facet_amplitudes(*args, facets.area * vis, self.sea_model",
-             "amp = speckled_facet_amplitudes(*args, facets.area, self.sea_model",
+             "(*args, facets.area * vis, self.sea_model.facet_model)",
+             "(*args, facets.area, self.sea_model.facet_model)",
              ("tests/test_end_to_end.py",),
              "shadowed facets still echo"),
     Mutation("echo-without-wake-damping", S + "simulation.py",

@@ -431,3 +431,33 @@ def test_each_pulse_of_a_block_reads_its_own_hidden_targets(monkeypatch):
     monkeypatch.setattr(sim.radar, "target_echo", recorded)
     sim.pulses(1, 6)
     assert seen == {p: [i == p % 3 for i in range(3)] for p in range(1, 6)}
+
+
+def test_no_garbage_collection_while_recording_or_replaying(monkeypatch):
+    # A collection inside a recording freed other Dr.Jit arrays there and aborted the
+    # process (a radar-wide sea's tiles): the recording and every replay run with the
+    # cyclic collector held off, and it is back on afterwards.
+    import gc
+
+    from seaecho.radar import replay
+
+    seen = []
+    terms = replay.echo_terms
+
+    def spy(*args, **kwargs):
+        seen.append(gc.isenabled())
+        return terms(*args, **kwargs)
+
+    monkeypatch.setattr(replay, "echo_terms", spy)
+    radar = _radar()
+    radar.freeze = True
+    for i in range(2):
+        p, v, s = _scatterers(50, seed=i)
+        radar.scatterer_echo(radar.geometry(i), p, v, s)
+    assert seen and not any(seen)  # the body ran (recorded) with the collector off
+    assert gc.isenabled()
+    gc.disable()
+    with replay.no_garbage_collection():
+        pass
+    assert not gc.isenabled()  # a collector that was off stays off
+    gc.enable()

@@ -34,8 +34,10 @@ constants of the recording, which belongs to its :class:`RadarSystem`.
 
 from __future__ import annotations
 
+import gc
 import threading
 import weakref
+from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
@@ -44,7 +46,7 @@ from numpy.typing import NDArray
 from ..backend import Boundary, Mat2, Rows
 from .kernels import echo_terms
 
-__all__ = ["FROZEN_LIMIT", "FrozenEchoTerms", "geometry_inputs"]
+__all__ = ["FROZEN_LIMIT", "FrozenEchoTerms", "geometry_inputs", "no_garbage_collection"]
 
 #: Recordings a :class:`FrozenEchoTerms` keeps (one per precision, directions flag and
 #: aliasing of the platform vectors, input types; the oldest is dropped beyond it).
@@ -128,6 +130,21 @@ def _unpacked(xp, packed, keys: list, aliasing: tuple) -> dict:
     return dict(zip(keys, values, strict=True))
 
 
+@contextmanager
+def no_garbage_collection():
+    """Python's cyclic garbage collector held off inside the block (a frozen function's
+    recording or replay): a collection there frees other Dr.Jit arrays (old tiles'
+    buffers, an amplitude upload dropped through its weakref) in the middle of the
+    recording, which aborted the process (found with a radar-wide sea)."""
+    collecting = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if collecting:
+            gc.enable()
+
+
 class FrozenEchoTerms:
     """:func:`seaecho.radar.kernels.scatterer_echo` recorded once, replayed per pulse
     (module docstring).
@@ -183,7 +200,8 @@ class FrozenEchoTerms:
         with self._lock:
             self._bound = (geometry, keys, plain)
             try:
-                t = self._frozen(inputs, precision, bool(directions), aliasing)
+                with no_garbage_collection():
+                    t = self._frozen(inputs, precision, bool(directions), aliasing)
             except RuntimeError as exc:  # a kernel Dr.Jit cannot record: traced from now on
                 self.error = str(exc)
                 return None

@@ -68,7 +68,7 @@ from ..scattering.facet import (
 )
 from ..scattering.spectrum_table import BraggSpectrumTable
 from .kernels import facet_visibility, sea_echo_terms
-from .replay import _BoundGeometry, _view_key
+from .replay import _BoundGeometry, _view_key, no_garbage_collection
 from .system import DeviceEcho, PulseGeometry, RadarSystem, ScattererEcho
 
 __all__ = ["FREEZE", "ResidentSea", "resident_sea"]
@@ -333,7 +333,8 @@ class ResidentSea:
         if self._frozen is None:
             self._frozen = xp.dr.freeze(self._record, warn_after=FREEZE_WARN_AFTER)
         try:
-            return self._frozen({**inputs, "geometry": values}, nx, ny, monostatic)
+            with no_garbage_collection():
+                return self._frozen({**inputs, "geometry": values}, nx, ny, monostatic)
         except RuntimeError as exc:  # a kernel Dr.Jit cannot record: traced from now on
             self.freeze, self._frozen, self.freeze_error = False, None, str(exc)
             return self._terms(xp, inputs, geometry, nx, ny)
