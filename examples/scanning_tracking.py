@@ -280,6 +280,8 @@ def main(argv=None) -> list[Path]:
     n_sweeps = int(run["sweep"].max()) + 1
     names = s["objects"]
     pd = ", ".join(f"{names[o]} {v[0]}/{v[1]}" for o, v in s["pd_object"].items())
+    hidden = ", ".join(f"{names[o]} {v[1]} (plots in {v[0]})"
+                       for o, v in s["hidden_object"].items()) or "none"
     title = (f"coastal_vts_xband, {revs} turns at {PRF_HZ:g} Hz: {len(tracks)} tracks, "
              f"OSPA {mt['ospa']:.1f} m")
     png = figure(run, det, tracks, paths, out, title)
@@ -288,7 +290,9 @@ def main(argv=None) -> list[Path]:
     print(f"plots: {det.sizes['detection']} ({s['false_alarms']} false alarms, "
           f"{s['false_alarms_per_look']:.2f} per sweep, {s['false_alarms_per_km2']:.3f} per "
           f"km^2 and sweep, P_FA per cell {s['pfa_cell']:.2g} at design 1e-6); P_D per "
-          f"object (sweeps): {pd}")
+          f"object (sweeps): {pd}; sweeps where the truth hides an object: {hidden}")
+    print(f"land mask: {det.attrs['cells_blanked']} cells blanked over {n_sweeps} sweeps "
+          f"(margin {det.attrs['land_margin_m']:g} m), {det.attrs['cells_tested']} tested")
     on = det.object_index.values >= 0
     # the false alarms on the sea tile (|x|, |y| <= half its size): their cells over the
     # tile's cells of every sweep

@@ -1173,7 +1173,8 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
            m_of_n: tuple[int, int] | None = None, map_weight: float | None = None,
            truth: Any = None, radar_position_m: ArrayLike | None = None,
            azimuth_gate_deg: float | None = None,
-           stonesoup: PathLike | None = None) -> tuple[xr.Dataset, xr.Dataset]:
+           stonesoup: PathLike | None = None, land_mask: bool | None = None,
+           land_margin_m: float = 0.0) -> tuple[xr.Dataset, xr.Dataset]:
     """Detect targets in a run, a SAR image or PPI sweeps (``seaecho detect``;
     docs/detection.md).
 
@@ -1210,7 +1211,15 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
     azimuth_gate_deg : float, optional
         PPI: the azimuth part of the objects' gates [deg].
     stonesoup : path, optional
-        Directory for the Stone Soup export (:func:`stonesoup_readers`).
+        Directory for the Stone Soup export (:func:`stonesoup_readers`); its truth holds
+        the visible opportunities only.
+    land_mask : bool, optional
+        PPI sweeps of a run with ``[[land]]``: blank the cells whose ground point lies
+        on the land (its ``land_outline`` polygons) or within ``land_margin_m`` of the
+        shore: never tested, no plot (:func:`seaecho.detection.landmask.land_mask`).
+        Default: on where the run has land; False: off.
+    land_margin_m : float
+        The land mask's margin outward from the shore [m] (>= 0; default 0).
 
     Returns
     -------
@@ -1225,7 +1234,9 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
     truth : xarray.Dataset
         Dimension ``opportunity`` (one object in one look, inside the tested cells):
         ``look``, ``time``, ``object``, ``object_index``, ``x_m``, ``y_m``, ``vx_m_s``,
-        ``vy_m_s``, ``snr_db`` (largest SNR estimate in the object's gate).
+        ``vy_m_s``, ``snr_db`` (largest SNR estimate in the object's gate), ``visible``
+        (1 where the truth says the radar can see the object, 0 where it is hidden:
+        behind the land, below the horizon, behind a crest; scored apart).
     """
     import numpy as np
     import xarray as xr
@@ -1239,6 +1250,7 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
     try:
         frames, kind, source = _detection_frames(dataset, channel, truth,
                                                  radar_position_m, azimuth_gate_deg)
+        blanked = _land_blanking(dataset, kind, frames, land_mask, land_margin_m)
         noise, det, text = _detector(kind, frames, cfar, train, guard, rank, map_weight)
         alpha = det.scale(pfa)
         if m_of_n is not None:
@@ -1282,7 +1294,10 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
              "pfa_integrated": float(pfa) if m_of_n is None else float(
                  pfa_m_of_n(pfa, int(m_of_n[0]), int(m_of_n[1]))),
              "position_sigma_m": float(frames[0].extra.get("position_sigma_m", 1.0))
-             if frames else 1.0}
+             if frames else 1.0,
+             "land_mask": int(blanked is not None),
+             "land_margin_m": float(land_margin_m) if blanked is not None else 0.0,
+             "cells_blanked": int(blanked or 0)}
     for k in ("range_sigma_m", "azimuth_sigma_deg", "beamwidth_deg"):  # PPI, profiles
         if frames and k in frames[0].extra:
             attrs[k] = float(frames[0].extra[k])
@@ -1296,11 +1311,50 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
               "y_m": ("opportunity", opps["y_m"], {"units": "m"}),
               "vx_m_s": ("opportunity", vel[:, 0], {"units": "m s-1"}),
               "vy_m_s": ("opportunity", vel[:, 1], {"units": "m s-1"}),
-              "snr_db": ("opportunity", 10.0 * np.log10(opps["snr"]), {"units": "dB"})}
+              "snr_db": ("opportunity", 10.0 * np.log10(opps["snr"]), {"units": "dB"}),
+              "visible": ("opportunity", np.asarray(opps["visible"]).astype(np.int8),
+                          {"units": "1", "long_name": "1: the truth says the radar can "
+                           "see the object (0: hidden, scored apart)"})}
     truth_ds = xr.Dataset(t_cols, attrs=dict(attrs))
     if stonesoup is not None:
         write_stonesoup_dir(detections, truth_ds, stonesoup)
     return detections, truth_ds
+
+
+def _land_blanking(dataset, kind, frames, land_mask, margin_m) -> int | None:
+    """Set the frames' land mask (:func:`detect`'s ``land_mask``): the cells blanked in
+    all, or None when there is no mask."""
+    import numpy as np
+
+    from .detection.landmask import land_mask as mask_of
+    from .io.detections import run_land_outlines
+
+    if land_mask not in (None, True, False):
+        raise SceneError(f"land_mask = {land_mask!r}: allowed true, false or none "
+                         "(default: on where the run has land)")
+    if not (isinstance(margin_m, int | float) and np.isfinite(margin_m) and margin_m >= 0):
+        raise SceneError(f"land_margin_m = {margin_m}: the land mask's margin must be a "
+                         "number >= 0 [m]")
+    if land_mask is False:
+        return None
+    outlines = run_land_outlines(dataset) if hasattr(dataset, "data_vars") else []
+    if not outlines and isinstance(dataset, str | os.PathLike) and Path(dataset).exists():
+        try:
+            with open_dataset(dataset) as ds:
+                outlines = run_land_outlines(ds)
+        except (OSError, ValueError):  # a CfRadial 2 file: no outlines
+            outlines = []
+    if kind != "ppi" or not outlines:
+        if land_mask:
+            raise SceneError(f"land_mask = true: the land mask blanks PPI sweeps of a run "
+                             f"with [[land]]; this dataset has {kind} frames and "
+                             f"{len(outlines)} land outline(s)")
+        return None
+    n = 0
+    for f in frames:
+        f.blanked = mask_of(f.cell_coord, outlines, float(margin_m))
+        n += int(np.broadcast_to(f.blanked, f.power.shape).sum())
+    return n
 
 
 def _object_names(dataset, truth, kind) -> tuple[str, ...]:
@@ -1350,6 +1404,8 @@ def write_stonesoup_dir(detections: xr.Dataset, truth: xr.Dataset,
     """Write :func:`detect`'s tables in the forms Stone Soup's CSV readers take
     (:func:`seaecho.io.detections.write_stonesoup`); returns the paths."""
 
+    import numpy as np
+
     from .io.detections import write_stonesoup
 
     d = Path(directory)
@@ -1367,6 +1423,9 @@ def write_stonesoup_dir(detections: xr.Dataset, truth: xr.Dataset,
     tr = {k: truth[v].values for k, v in (("time_s", "time"), ("object", "object"),
                                           ("x_m", "x_m"), ("y_m", "y_m"),
                                           ("vx_m_s", "vx_m_s"), ("vy_m_s", "vy_m_s"))}
+    if "visible" in truth:  # a hidden object is no truth a tracker could follow
+        seen = np.asarray(truth["visible"].values) > 0
+        tr = {k: np.asarray(v)[seen] for k, v in tr.items()}
     # the plots' position error: the range resolution (range profiles; the arc of a ray
     # spacing at mid range if larger, PPI), half the image's resolution (images)
     sigma = float(detections.attrs.get("position_sigma_m", 1.0))
@@ -1452,7 +1511,8 @@ def score(detections: xr.Dataset | PathLike, truth: xr.Dataset | PathLike | None
                        tru["object_index"], 10.0 ** (np.asarray(tru["snr_db"], float) / 10),
                        n_looks=int(attrs["n_looks"]), cells_tested=int(attrs["cells_tested"]),
                        area_m2=float(attrs["area_m2"]) if str(attrs["area_m2"]) not in
-                       ("", "nan") else float("nan"), snr_bins_db=snr_bins_db)
+                       ("", "nan") else float("nan"), snr_bins_db=snr_bins_db,
+                       opp_visible=tru.get("visible"))
     names = {}
     for i, n in zip(tru["object_index"], tru["object"], strict=True):
         names[int(i)] = str(n)

@@ -37,6 +37,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="range profiles: M of N consecutive pulses")
     p.add_argument("--map-weight", type=float,
                    help="clutter map: weight of the newest scan (default 0.125)")
+    p.add_argument("--no-land-mask", action="store_true",
+                   help="PPI sweeps of a run with [[land]]: test the land's cells too (by "
+                   "default they are blanked: never tested, no plot)")
+    p.add_argument("--land-margin", type=float, default=0.0, metavar="M",
+                   help="the land mask's margin outward from the shore [m] (default 0)")
     p.add_argument("--stonesoup", metavar="DIR",
                    help="also write the detections and the truth as Stone Soup reads them")
     p.set_defaults(func=run)
@@ -64,6 +69,9 @@ def run(args: argparse.Namespace) -> int:
         if len(v) > 2 or min(v) < (1 if name == "train" else 0):
             raise UsageError(f"--{name} {' '.join(map(str, v))}: one or two whole numbers "
                              f"{'>= 1' if name == 'train' else '>= 0'}")
+    if not args.land_margin >= 0.0:
+        raise UsageError(f"--land-margin {args.land_margin}: the land mask's margin must "
+                         "be >= 0 m")
     if args.stonesoup and Path(args.stonesoup).exists() and not Path(args.stonesoup).is_dir():
         raise UsageError(f"--stonesoup {args.stonesoup}: exists and is not a directory")
     try:
@@ -72,7 +80,9 @@ def run(args: argparse.Namespace) -> int:
                             guard=tuple(args.guard) if len(args.guard) > 1 else args.guard[0],
                             rank=args.rank, channel=args.channel,
                             m_of_n=tuple(args.m_of_n) if args.m_of_n else None,
-                            map_weight=args.map_weight)
+                            map_weight=args.map_weight,
+                            land_mask=False if args.no_land_mask else None,
+                            land_margin_m=args.land_margin)
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     paths = write_detections(det, truth, out)
@@ -80,7 +90,9 @@ def run(args: argparse.Namespace) -> int:
     n_fa = int((det["object_index"].values < 0).sum())
     print(f"wrote {paths[0]} ({det.sizes['detection']} detections, {n_fa} false alarms; "
           f"{a['detector']}, P_FA {a['pfa']:g}, alpha {a['alpha']:.4g}; {a['n_looks']} "
-          f"looks, {a['cells_tested']} cells tested)")
+          f"looks, {a['cells_tested']} cells tested"
+          + (f", {a['cells_blanked']} on the land blanked" if a.get("land_mask") else "")
+          + ")")
     print(f"wrote {paths[1]} ({truth.sizes['opportunity']} object opportunities)")
     if args.stonesoup:
         from ..api import write_stonesoup_dir

@@ -39,12 +39,18 @@ class ObjectTruth:
         (object,) names.
     extent_m : ndarray
         (object,) largest dimension of each object [m] (0 for a point target).
+    visible : ndarray of bool, optional
+        (t, object): whether the radar can see each object at each time (the run's
+        ``truth_visible``: in the window, above the horizon, not behind the land or a
+        crest); None: always. An opportunity of a hidden object is scored apart
+        (:func:`seaecho.detection.scoring.score_tables`).
     """
 
     time_s: NDArray
     position_m: NDArray
     names: tuple[str, ...]
     extent_m: NDArray
+    visible: NDArray | None = None
 
     def __post_init__(self):
         pos = np.asarray(self.position_m, dtype=float)
@@ -57,10 +63,23 @@ class ObjectTruth:
         if len(self.names) != pos.shape[1] or np.shape(self.extent_m) != (pos.shape[1],):
             raise ValueError(f"names ({len(self.names)}) and extent_m "
                              f"{np.shape(self.extent_m)}: one per object ({pos.shape[1]})")
+        if self.visible is not None and np.shape(self.visible) != pos.shape[:2]:
+            raise ValueError(f"visible of shape {np.shape(self.visible)}: must be (time, "
+                             f"object) = {pos.shape[:2]}")
 
     def at(self, time_s: NDArray) -> NDArray:
         """(n, object, 3) positions at ``time_s`` [m] (linear in time)."""
         return interpolate_truth(self.time_s, self.position_m, time_s)
+
+    def visible_at(self, time_s: NDArray) -> NDArray:
+        """(n, object) visibility at ``time_s``: that of the latest truth time at or
+        before each (the first before the truth starts); all True without ``visible``."""
+        t = np.asarray(time_s, dtype=float)
+        if self.visible is None:
+            return np.ones((t.size, len(self.names)), bool)
+        k = np.clip(np.searchsorted(np.asarray(self.time_s, dtype=float), t, side="right")
+                    - 1, 0, len(self.time_s) - 1)
+        return np.asarray(self.visible, dtype=bool)[k]
 
     @classmethod
     def empty(cls) -> ObjectTruth:
@@ -98,6 +117,12 @@ class Frame:
     cell_area_m2 : float or ndarray
         Area of each cell [m^2], broadcastable to (rows, cols) (NaN when unknown): the
         sum over the tested cells that have one, per look, is the area a look covers.
+    truth_visible : ndarray of bool, optional
+        (rows, object): whether the radar can see each object at each row's time
+        (:meth:`ObjectTruth.visible_at`); None: always.
+    blanked : ndarray of bool, optional
+        Broadcastable to (rows, cols): cells left untested whatever the detector (the
+        land mask, :func:`seaecho.detection.landmask.land_mask`).
     """
 
     kind: str
@@ -112,6 +137,8 @@ class Frame:
     ndim: int = 1
     cell_area_m2: float | NDArray = float("nan")
     extra: dict = field(default_factory=dict)
+    truth_visible: NDArray | None = None
+    blanked: NDArray | None = None
 
 
 def opportunity_groups(frame: Frame, tested: NDArray, first_group: int = 0,
@@ -197,7 +224,8 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
         ``snr`` (linear), ``n_cells`` and the columns of ``Frame.locate``.
     opportunities : dict
         Per (look, object): ``look``, ``object``, ``time_s``, ``x_m``, ``y_m``,
-        ``snr`` (largest power / noise - 1 in the gate, linear), ``group``.
+        ``snr`` (largest power / noise - 1 in the gate, linear), ``group``,
+        ``visible`` (the truth's, at the opportunity's first row).
     totals : dict
         ``cells_tested``, ``n_looks``, ``area_m2`` (per look), and ``groups`` /
         ``statistic`` per frame for ROC curves.
@@ -207,6 +235,8 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
     cells, looks, areas, next_group = 0, 0, [], 0
     for fr in frames:
         est = noise(fr.power)
+        if fr.blanked is not None:  # the land mask: never tested
+            est = np.where(np.broadcast_to(fr.blanked, est.shape), np.nan, est)
         with np.errstate(divide="ignore", invalid="ignore"):
             stat = fr.power / est
         tested = np.isfinite(stat)
@@ -253,7 +283,9 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
         opp_cols = {"look": table["look"], "object": table["object"],
                     "time_s": fr.time_s[rows_], "x_m": xyz[:, 0], "y_m": xyz[:, 1],
                     "snr": np.maximum(peak - 1.0, 1e-12),
-                    "group": next_group + np.arange(n_g)}
+                    "group": next_group + np.arange(n_g),
+                    "visible": (fr.truth_visible[rows_, table["object"]]
+                                if fr.truth_visible is not None else np.ones(n_g, bool))}
         for k, v in opp_cols.items():
             opp.setdefault(k, []).append(np.asarray(v))
         fr.extra["groups"], fr.extra["statistic"] = groups, stat

@@ -3,8 +3,11 @@ alarms per look and per km^2, P_FA per cell, and ROC curves.
 
 An *opportunity* is one object in one look (a pulse, a sweep or an image) inside the
 tested cells; it is detected when at least one detection of that look belongs to the
-object (:func:`seaecho.detection.association.associate`). A detection that belongs to no
-object is a false alarm; P_FA per cell counts its cells over the tested cells. The ROC
+object (:func:`seaecho.detection.association.associate`). An opportunity whose object the
+truth marks hidden (behind the land, below the horizon, behind a crest: the run's
+``truth_visible``) is no miss: the P_D leave it out and it is counted apart. A detection
+that belongs to no object is a false alarm; P_FA per cell counts its cells over the
+tested cells. The ROC
 sweeps the threshold over a detector's statistic: a cell of the background (tested, in no
 object's gate) crosses with the false-alarm rate, an opportunity is detected when the
 largest statistic in its gate crosses. A detector is any callable ``power -> statistic``
@@ -25,7 +28,8 @@ __all__ = ["opportunity_peaks", "pd_at_pfa", "roc", "roc_from_statistic", "score
 def score_tables(det_look: ArrayLike, det_object: ArrayLike, det_cells: ArrayLike,
                  opp_look: ArrayLike, opp_object: ArrayLike, opp_snr: ArrayLike, *,
                  n_looks: int, cells_tested: int, area_m2: float,
-                 snr_bins_db: ArrayLike = (-np.inf, 0, 5, 10, 15, 20, np.inf)) -> dict:
+                 snr_bins_db: ArrayLike = (-np.inf, 0, 5, 10, 15, 20, np.inf),
+                 opp_visible: ArrayLike | None = None) -> dict:
     """Detection scores from the detection and opportunity tables.
 
     Parameters
@@ -43,22 +47,36 @@ def score_tables(det_look: ArrayLike, det_object: ArrayLike, det_cells: ArrayLik
     snr_bins_db : array_like
         Edges of the SNR bins [dB]; an opportunity is binned by its object's mean SNR
         over all its looks (the mean, not the look's own SNR, which would bias P_D up).
+    opp_visible : array_like of bool, optional
+        (m,) whether the truth says the radar can see the object in that look (default
+        all): a hidden opportunity is left out of every P_D and counted in
+        ``hidden_object``.
 
     Returns
     -------
     dict
-        ``pd_object`` {object: (detected, opportunities, P_D)}, ``pd_snr`` list of
-        (lo_db, hi_db, detected, opportunities, P_D), ``false_alarms``,
-        ``false_alarms_per_look``, ``false_alarms_per_km2`` (per look), ``pfa_cell``,
-        ``detections``, ``pd`` (all opportunities).
+        ``pd_object`` {object: (detected, opportunities, P_D)} over the visible
+        opportunities, ``hidden_object`` {object: (detected, hidden opportunities)},
+        ``pd_snr`` list of (lo_db, hi_db, detected, opportunities, P_D),
+        ``false_alarms``, ``false_alarms_per_look``, ``false_alarms_per_km2`` (per
+        look), ``pfa_cell``, ``detections``, ``pd`` (all visible opportunities).
     """
     dl, do, dc = (np.asarray(a) for a in (det_look, det_object, det_cells))
     ol, oo = np.asarray(opp_look, dtype=np.int64), np.asarray(opp_object, dtype=np.int64)
     snr = np.asarray(opp_snr, dtype=float)
+    seen = np.ones(ol.size, bool) if opp_visible is None else \
+        np.asarray(opp_visible).astype(bool)
+    if seen.shape != ol.shape:
+        raise ValueError(f"opp_visible of shape {seen.shape}: one per opportunity "
+                         f"({ol.size})")
     hit_keys = {(int(a), int(b)) for a, b in zip(dl[do >= 0], do[do >= 0], strict=True)}
-    detected = np.array([(int(a), int(b)) in hit_keys for a, b in zip(ol, oo, strict=True)],
-                        dtype=bool)
+    found = np.array([(int(a), int(b)) in hit_keys for a, b in zip(ol, oo, strict=True)],
+                     dtype=bool)
     out: dict = {"detections": int(dl.size)}
+    out["hidden_object"] = {int(o): (int(found[~seen & (oo == o)].sum()),
+                                     int((~seen & (oo == o)).sum()))
+                            for o in np.unique(oo[~seen])}
+    ol, oo, snr, detected = ol[seen], oo[seen], snr[seen], found[seen]
     objects = np.unique(oo)
     out["pd_object"] = {int(o): (int(detected[oo == o].sum()), int((oo == o).sum()),
                                  float(detected[oo == o].mean())) for o in objects}

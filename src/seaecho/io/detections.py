@@ -56,7 +56,8 @@ from ..geometry.earth import effective_radius, grazing_angle
 
 __all__ = ["STONESOUP_FILES", "antenna_beamwidth", "cfradial_sweeps", "earth_radius",
            "image_frames", "image_stack_frames", "image_truth", "profile_frames",
-           "read_table", "run_sweeps", "run_truth", "stonesoup_readers", "sweep_frames",
+           "read_table", "run_land_outlines", "run_sweeps", "run_truth", "stonesoup_readers",
+           "sweep_frames",
            "bearing_from_azimuth", "MEASUREMENTS",
            "write_stonesoup", "write_table"]
 
@@ -88,7 +89,9 @@ def run_truth(run) -> ObjectTruth:
             if run[v].dims == (dim,) and ("length" in v or "extent" in v):
                 extent = np.nan_to_num(np.asarray(run[v].values, dtype=float))
                 break
-        return ObjectTruth(t, pos, names, extent)
+        visible = (np.asarray(run["truth_visible"].values) > 0
+                   if "truth_visible" in run else None)
+        return ObjectTruth(t, pos, names, extent, visible)
     names, parts, extents = [], [], []
     if "target_position" in run:
         p0 = np.asarray(run["target_position"].values, dtype=float)
@@ -261,6 +264,7 @@ def sweep_frames(power: list[NDArray], azimuth_deg: list[NDArray], time_s: list[
                               np.repeat(u, rng.size, 0), np.tile(rng, n_az))
         cell = ground[:, :2].reshape(n_az, rng.size, 2)
         where = truth.at(t)
+        seen = truth.visible_at(t)
         r_obj = np.linalg.norm(where[..., :2] - rx[:, None, :2], axis=-1)
         gate = 0.5 * np.asarray(truth.extent_m, dtype=float) + np.maximum(
             res, np.nanmedian(r_obj, axis=0) * gate_az if where.shape[1] else res)
@@ -288,7 +292,7 @@ def sweep_frames(power: list[NDArray], azimuth_deg: list[NDArray], time_s: list[
                                 "azimuth_sigma_deg": float(np.rad2deg(
                                     np.deg2rad(beamwidth_deg) if beamwidth_deg is not None
                                     and np.isfinite(beamwidth_deg) else gate_az)
-                                    / np.sqrt(12.0))}))
+                                    / np.sqrt(12.0))}, truth_visible=seen))
     return frames
 
 
@@ -315,6 +319,16 @@ def run_sweeps(run, channel: str | None = None, truth: ObjectTruth | None = None
     for f in frames:
         f.extra["channel"] = ch
     return frames
+
+
+def run_land_outlines(run) -> list[NDArray]:
+    """The shore polygons of a run's ``[[land]]`` (``land_outline``, in the scene's
+    coordinates), one (k, 2) array [m] per piece; empty without land."""
+    if "land_outline" not in run:
+        return []
+    xy = np.asarray(run["land_outline"].values, dtype=float)
+    which = np.asarray(run["land_outline_land"].values)
+    return [xy[which == i] for i in np.unique(which) if (which == i).sum() >= 3]
 
 
 def cfradial_sweeps(path: str | os.PathLike, channel: str | None = None,
