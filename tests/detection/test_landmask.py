@@ -154,3 +154,23 @@ def test_score_tables_hidden_opportunities():
                               [10.0] * 4, n_looks=3, cells_tested=100, area_m2=np.nan)
     assert everything["pd_object"][0] == (2, 3, pytest.approx(2 / 3))
     assert everything["hidden_object"] == {}
+
+
+def test_cli_land_mask_options_and_hidden_in_the_score(tmp_path, capsys):
+    from seaecho.cli import main
+
+    ds, n_land = scanning_run(hidden_sweep=1)
+    run = tmp_path / "scan.nc"
+    ds.to_netcdf(run, engine="h5netcdf")
+    out = tmp_path / "d.csv"
+    assert main(["detect", str(run), "-o", str(out), "--train", "3", "6", "--guard", "1",
+                 "2"]) == 0
+    assert f"{n_land} on the land blanked" in capsys.readouterr().out
+    assert main(["score", str(out)]) == 0
+    assert "buoy: hidden by the truth in 1 look(s), not scored" in capsys.readouterr().out
+    assert main(["detect", str(run), "-o", str(out), "--train", "3", "6", "--guard", "1",
+                 "2", "--no-land-mask"]) == 0
+    assert "blanked" not in capsys.readouterr().out
+    assert main(["detect", str(run), "--land-margin", "-3", "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "--land-margin -3" in err and "Traceback" not in err

@@ -52,10 +52,13 @@ def run(args: argparse.Namespace) -> int:
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     print(f"{s['detector']}, design P_FA {s['pfa_design']:g}: {s['detections']} "
-          f"detections, P_D {s['pd']:.3f} over all opportunities")
+          f"detections, P_D {s['pd']:.3f} over all visible opportunities")
     for o, (hit, n, pd) in s["pd_object"].items():
         print(f"  {s['objects'].get(o, o)}: P_D {pd:.3f} ({hit}/{n}), mean SNR "
               f"{s['object_snr_db'][o]:.1f} dB")
+    for o, (hit, n) in s.get("hidden_object", {}).items():
+        print(f"  {s['objects'].get(o, o)}: hidden by the truth in {n} look(s), not "
+              f"scored ({hit} with a plot)")
     for lo, hi, hit, n, pd in s["pd_snr"]:
         print(f"  SNR [{lo:g}, {hi:g}) dB: P_D {pd:.3f} ({hit}/{n})")
     per_km2 = s["false_alarms_per_km2"]
