@@ -1043,6 +1043,19 @@ MUTATIONS = [
              ("tests/radar/test_replay.py",),
              "a kept pulse geometry keyed on ids of platforms it does not hold (a later "
              "platform may take a freed one's id and be served its geometry)"),
+    Mutation("land-mask-margin-ignored", S + "detection/landmask.py",
+             "hit[s:s + _BLOCK] |= d2 <= margin_m ** 2",
+             "hit[s:s + _BLOCK] |= d2 <= 0.0",
+             ("tests/detection/test_landmask.py",),
+             "the land mask's shore margin dropped (only cells on the land blanked)"),
+    Mutation("land-mask-open-polygon", S + "detection/landmask.py",
+             "a, b = v, np.roll(v, -1, axis=0)", "a, b = v[:-1], v[1:]",
+             ("tests/detection/test_landmask.py",),
+             "the closing edge of a coastline polygon left out of the margin"),
+    Mutation("hidden-sweeps-scored-as-misses", S + "detection/scoring.py",
+             "np.asarray(opp_visible).astype(bool)", "np.ones(ol.size, bool)",
+             ("tests/detection/test_landmask.py",),
+             "opportunities the truth hides counted as misses in the P_D"),
 ]
 
 def _copy_tree(dest: Path) -> None:

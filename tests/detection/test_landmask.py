@@ -42,6 +42,9 @@ def test_cells_inside_outside_and_the_margin():
     far = SQUARE + 250.0
     np.testing.assert_array_equal(land_mask(grid, [ell, far]), [[False, True], [True, True]])
     assert not land_mask(grid, []).any() and land_mask(grid, []).shape == (2, 2)
+    # the margin along every edge, the closing one (last vertex to first) included
+    ring = np.array([[50.0, -3.0], [103.0, 50.0], [50.0, 103.0], [-3.0, 50.0]])
+    np.testing.assert_array_equal(land_mask(ring, [SQUARE], 3.5), [True] * 4)
     with pytest.raises(ValueError, match="margin"):
         land_mask(cells, [SQUARE], -1.0)
 

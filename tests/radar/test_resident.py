@@ -251,6 +251,7 @@ def test_device_echo_goes_through_cufinufft_on_array_pointers(monkeypatch):
     monkeypatch.setitem(sys.modules, "cufinufft", types.SimpleNamespace(Plan=_FakePlan))
     monkeypatch.setattr(backend, "cuda_synchronize", lambda: None)
     monkeypatch.setattr(echo_mod, "_CUDA_PLANS", {})
+    monkeypatch.setattr(_FakePlan, "made", 0)  # plans made by other tests' stand-ins
     fused, ref = _pair(_scene())
     gpu_like = copy.copy(fused._resident.xp)
     gpu_like.name = "cuda"  # the same Dr.Jit arrays, the GPU's code path
