@@ -113,9 +113,10 @@ def bench_case(k: int, n: int, c: int, repeat: int, pool, rng) -> None:
               + (f"   x{base / wm:.2f} wall" if name != cases[0][0] else ""))
 
 
-def sim2_pulse():
-    """(tau, per-channel amplitudes, pulse spectrum, window) of the sea echo of one pulse of
-    Simulation 2 (the fused kernel's output, as ``RadarSystem.receive`` gets it)."""
+def sim2_pulse(path=None, pulse: int = 40):
+    """(tau, per-channel amplitudes, pulse spectrum, window) of the sea echo (the largest
+    scatterer set) of one pulse of a scene, Simulation 2 by default (the fused kernel's
+    output, as ``RadarSystem.receive`` gets it)."""
     import warnings
     from pathlib import Path
 
@@ -123,7 +124,9 @@ def sim2_pulse():
     from seaecho.config import load_scene
     from seaecho.simulation import Simulation
 
-    path = Path(__file__).resolve().parents[1] / "scenes" / "paper_sim2_sar_128m_wind55.toml"
+    if path is None:
+        path = Path(__file__).resolve().parents[1] / "scenes" / \
+            "paper_sim2_sar_128m_wind55.toml"
     got = []
     inner = system.accumulate
 
@@ -136,7 +139,7 @@ def sim2_pulse():
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            Simulation(load_scene(path), base_dir=path.parent).pulse(40)
+            Simulation(load_scene(path), base_dir=path.parent).pulse(pulse)
     finally:
         system.accumulate = inner
     return max(got, key=lambda g: g[0].size)  # the sea (the other set: the hull)

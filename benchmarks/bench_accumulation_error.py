@@ -22,31 +22,10 @@ from pathlib import Path
 
 import numpy as np
 from _smoke import GRID, add_option, small_scene
+from bench_accumulate import sim2_pulse
 
 ROOT = Path(__file__).resolve().parents[1]
 SIM2 = ROOT / "scenes" / "paper_sim2_sar_128m_wind55.toml"
-
-
-def sea_pulse(path: Path, pulse: int):
-    """(tau, amplitudes, pulse spectrum, window) of the largest scatterer set of a pulse."""
-    import seaecho.radar.system as system
-    from seaecho.config import load_scene
-    from seaecho.simulation import Simulation
-
-    got = []
-    inner = system.accumulate
-
-    def grab(tau, amplitudes, spec, window, *args, **kwargs):
-        got.append((np.array(tau), [np.array(a) for a in amplitudes], np.asarray(spec),
-                    window))
-        return inner(tau, amplitudes, spec, window, *args, **kwargs)
-
-    system.accumulate = grab
-    try:
-        Simulation(load_scene(path), base_dir=path.parent).pulse(pulse)
-    finally:
-        system.accumulate = inner
-    return max(got, key=lambda g: g[0].size)
 
 
 def main() -> None:
@@ -57,7 +36,7 @@ def main() -> None:
     from seaecho.radar.echo import accumulate
 
     path = small_scene(SIM2, grid=GRID) if args.smoke else SIM2
-    tau, rows, spec, window = sea_pulse(path, 0 if args.smoke else 40)
+    tau, rows, spec, window = sim2_pulse(path, 0 if args.smoke else 40)
     d = accumulate(tau, rows, spec, window, precision="double")
     s = accumulate(tau, rows, spec, window, precision="single")
     d, s = np.atleast_2d(d), np.atleast_2d(s)
