@@ -416,7 +416,24 @@ MUTATIONS = [
              "return np.exp(-(psi**2)) * net_growth_rate(k, 0.0, u10)",
              "return np.exp(-(psi**2) / 2.0) * net_growth_rate(k, 0.0, u10)",
              ("tests/ocean/test_kudryavtsev.py",),
-             "the Gaussian angular form (Dinnat et al.'s KHCC03 eq 20) twice as wide"),
+             "KHCC03's Gaussian angular form (eq KU2, their eq 20) twice as wide"),
+    Mutation("khcc03-spectrum-k05-angular", S + "ocean/kudryavtsev.py",
+             'SPECTRUM_ANGULAR = "gaussian"', 'SPECTRUM_ANGULAR = "cos"',
+             ("tests/ocean/test_kudryavtsev.py",),
+             "the KHCC03 spectrum with K05's cos phi |cos phi| (eq KU2') instead of its "
+             "own angular form"),
+    Mutation("khcc03-registered-k05-angular", S + "ocean/spectra.py",
+             "fetch: float | None = None, angular: str = SPECTRUM_ANGULAR",
+             'fetch: float | None = None, angular: str = "cos"',
+             ("tests/ocean/test_kudryavtsev.py",),
+             "the registered 'kudryavtsev' spectrum with K05's angular form"),
+    Mutation("khcc03-gaussian-gross-rate", S + "ocean/kudryavtsev.py",
+             "return np.exp(-(psi**2)) * net_growth_rate(k, 0.0, u10)",
+             "return (np.exp(-(psi**2)) * wind_growth_rate(k, 0.0, u10)\n"
+             "                - 4.0 * NU_SEA_WATER * k**2 / angular_frequency(k))",
+             ("tests/ocean/test_kudryavtsev.py",),
+             "eq KU2's Gaussian on the wind input alone, the viscous loss unscaled (the "
+             "commented-out line of the KHCC03 code)"),
     # --- detection (docs/detection.md)
     Mutation("ca-cfar-law-exponent", S + "detection/theory.py",
              "return (1.0 + np.asarray(alpha, dtype=float) / n) ** (-float(n))",

@@ -66,7 +66,7 @@ from ..warnings import ValidityWarning
 # The spectra defined in their own modules register themselves on import.
 from . import romeiser as _romeiser  # noqa: F401  (Romeiser et al. 1997)
 from .dispersion import CAPILLARY_WAVENUMBER, angular_frequency, phase_speed
-from .kudryavtsev import short_wave_omni_saturation, total_saturation
+from .kudryavtsev import SPECTRUM_ANGULAR, short_wave_omni_saturation, total_saturation
 from .registry import (
     K_FLOOR,
     OMNI_SPECTRA,
@@ -349,7 +349,7 @@ def elfouhaily(k: ArrayLike, u19_5: float, fetch: float | None = None) -> NDArra
 
 @register_spectrum("kudryavtsev")
 def kudryavtsev(
-    k: ArrayLike, u19_5: float, fetch: float | None = None, angular: str = "cos"
+    k: ArrayLike, u19_5: float, fetch: float | None = None, angular: str = SPECTRUM_ANGULAR
 ) -> NDArray[np.float64]:
     """Kudryavtsev et al. (2003) omnidirectional spectrum: Elfouhaily's long waves and the
     short waves of the energy balance (:mod:`seaecho.ocean.kudryavtsev`, eqs KU1-KU10).
@@ -367,16 +367,18 @@ def kudryavtsev(
     fetch : float or None
         Fetch [m] of the long waves (None: fully developed, Omega_c = 0.84).
     angular : str
-        Angular form of the short waves' growth rate (``"cos"``, K05 eq 17, the registered
-        spectrum's; ``"gaussian"``, Dinnat et al.'s KHCC03 eq 20: a sensitivity study,
+        Angular form of the short waves' net growth rate (``"gaussian"``, KHCC03 eq 20,
+        eq KU2, the registered spectrum's; ``"cos"``, K05 eq 17, eq KU2', without K05's
+        generation of short waves by breaking: a sensitivity study;
         :data:`seaecho.ocean.kudryavtsev.ANGULAR_FORMS`).
 
     Returns
     -------
     ndarray
         S_1d [m^3]; the saturation ``k^3 S_1d`` at the X-band Bragg wavenumber 384 rad/m
-        is 1.4e-3 at U10 = 7 m/s and 6.7e-3 at 12.5 m/s (Elfouhaily et al.: 6.8e-3 and
-        1.7e-2; Romeiser et al.: 1.6e-3 and 3.2e-3).
+        is 2.2e-3 at U10 = 7 m/s and 8.4e-3 at 12.5 m/s (with K05's angular form: 1.4e-3
+        and 6.7e-3; Elfouhaily et al.: 6.8e-3 and 1.7e-2; Romeiser et al.: 1.6e-3 and
+        3.2e-3).
 
     References
     ----------
