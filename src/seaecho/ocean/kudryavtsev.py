@@ -111,8 +111,9 @@ in the form above. No code was copied.
 
 **The angular form** (KU2 against KU2'). Both transcriptions of the KHCC03 code (Dinnat's,
 whose comments carry over the original's ``% eq (20)`` on the line ``exp(-theta^2)``, and
-the Python port) multiply the downwind *net* growth rate by ``exp(-phi^2)``; both keep
-the literal ``exp(-phi^2) beta - 4 nu k^2 / omega`` as a commented-out line. The
+the Python port) multiply the downwind *net* growth rate by ``exp(-phi^2)``; Dinnat's
+keeps the literal ``exp(-phi^2) beta - 4 nu k^2 / omega`` as a commented-out line (the
+port its first factor, ``exp(-phi^2) beta``). The
 ``cos phi |cos phi|`` of KU2' is K05's eq 17 as stereoid and OceanSAR
 (``oceansar/spec/kudryatvtsev05.py``, "Equation (17) in Kudryavtsev 2005") transcribe it,
 in the model that also generates short waves by breaking (the source that fills the
@@ -126,11 +127,12 @@ within -2.2 to +0.3 dB of the Python port's (-0.6 to +0.3 dB from 7 m/s).
 
 **Where the sources differ** (docs/ocean.md):
 
-* The tuning functions: Dinnat's code reads ``f`` and ``phi_pc`` from tables, the Python
-  port computes them from error functions (``phi_pc`` from 2 to 10 ``k_gamma``, "p_l = 2
-  recommended after Mouche et al.'s comparison with radar data", ``f`` the normalised
-  integral of a band filter; 0.5 at 0.41 ``k_gamma``, not 0.25). The analytic forms KU6
-  and KU9 are those of the open text (K05, Yurovskaya et al.) and of stereoid.
+* The tuning functions: Dinnat's code reads ``f`` and ``phi_pc`` from tables (its ``f``
+  0.5 at 0.41 ``k_gamma``, not 0.25), the Python port computes them from error functions
+  (``phi_pc`` from 2 to 10 ``k_gamma``, 2 rather than 1.5 after a comparison with radar
+  data by Mouche et al., its comment says; ``f`` the normalised integral of a band
+  filter, 0.5 at 0.31 ``k_gamma``). The analytic forms KU6 and KU9 are those of the open
+  text (K05, Yurovskaya et al.) and of stereoid.
 * The generation of short waves by the breaking of longer ones (K05's source ``Q_wb``,
   their eq 20, solved by iteration from the asymptotes of K05 eqs 24-26) is **not
   implemented**: its form and constant are not settled by the readable sources. The open
