@@ -15,6 +15,9 @@ at U19.5 = 5, 8 and 12 m/s (seeds 1 and 2), crosswind and downwind at 8 m/s (see
 Per case and channel: the rms width of the clutter Doppler spectrum (eq DP2 of
 docs/dynamics.md) in Hz and as line-of-sight velocity ``lambda w / 2`` [m/s]; the
 composite-surface width ``sqrt(sigma_orb^2 + 4 p+ p- f_B^2)`` (``sea_doppler.py``); the
+power-weighted mean width of a single 0.75 m range cell's spectrum over the 0.19 s
+(``sea_doppler.cell_width_hz``: without the spread of the centroids from cell to cell,
+which widens the clutter spectrum summed over the cells); the
 sea's ``H_s / T_p`` (significant height over peak period of the wave spectrum) and the
 ratio of the velocity width to it, which Hicks et al. (1960) found constant for X-band
 clutter (the proportionality of the width to H/T, quoted second-hand; its coefficient
@@ -111,6 +114,8 @@ def width_comparison(outdir: str = "docs/figures", cases=WIDTH_CASES,
                "width_vv_m_s": round(float(vv.mean()) * lam / 2.0, 4),
                "width_hh_m_s": round(float(hh.mean()) * lam / 2.0, 4),
                "composite_width_hz": round(float(r["composite_width_hz"].mean()), 2),
+               "cell_width_vv_hz": round(float(r["cell_width_vv_hz"].mean()), 2),
+               "cell_width_hh_hz": round(float(r["cell_width_hh_hz"].mean()), 2),
                "hicks_ratio_vv": round(float(vv.mean()) * lam / 2.0 / scale, 3),
                "hicks_ratio_hh": round(float(hh.mean()) * lam / 2.0 / scale, 3),
                "published": "; ".join(matching_measurements(g, u10)) or "none"}
@@ -118,8 +123,10 @@ def width_comparison(outdir: str = "docs/figures", cases=WIDTH_CASES,
         print(f"{g:4.0f} deg, U19.5 {u:4.1f}, {LOOKS[look]:5s}: VV {row['width_vv_hz']:5.1f}"
               f" Hz ({row['width_vv_m_s']:.2f} m/s), HH {row['width_hh_hz']:5.1f} Hz "
               f"({row['width_hh_m_s']:.2f} m/s), composite {row['composite_width_hz']:5.1f}"
-              f" Hz, H_s/T_p {scale:.3f} m/s, ratio VV {row['hicks_ratio_vv']:.2f}, HH "
-              f"{row['hicks_ratio_hh']:.2f}  ({time.perf_counter() - t:.0f} s)", flush=True)
+              f" Hz, one cell VV {row['cell_width_vv_hz']:5.1f}, HH "
+              f"{row['cell_width_hh_hz']:5.1f} Hz, H_s/T_p {scale:.3f} m/s, ratio VV "
+              f"{row['hicks_ratio_vv']:.2f}, HH {row['hicks_ratio_hh']:.2f}  "
+              f"({time.perf_counter() - t:.0f} s)", flush=True)
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     path = out / name
@@ -136,18 +143,20 @@ def markdown(path: Path) -> str:
     with open(path) as fh:
         rows = list(csv.DictReader(fh))
     lines = ["| grazing [deg] | U19.5 (U10) [m/s] | look | H_s / T_p [m/s] | VV width [Hz] "
-             "(m/s) | HH width [Hz] (m/s) | composite [Hz] | width / (H_s/T_p) VV, HH | "
-             "published width (conditions of) |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "(m/s) | HH width [Hz] (m/s) | composite [Hz] | one cell VV, HH [Hz] | "
+             "width / (H_s/T_p) VV, HH | published width (conditions of) |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    def pm(r, c):  # the half-range of the seeds' widths, where there are two
+        return f" ± {float(r[f'width_{c}_spread_hz']):.1f}" if int(r["n_seeds"]) > 1 else ""
+
     for r in rows:
-        pm = lambda c: (f" ± {float(r[f'width_{c}_spread_hz']):.1f}"  # noqa: E731
-                        if int(r["n_seeds"]) > 1 else "")
         lines.append(
             f"| {float(r['grazing_deg']):g} | {float(r['u19_5_m_s']):g} "
             f"({float(r['u10_m_s']):.1f}) | {LOOKS[float(r['look_deg'])]} | "
-            f"{float(r['hs_over_tp_m_s']):.3f} | {float(r['width_vv_hz']):.1f}{pm('vv')} "
-            f"({float(r['width_vv_m_s']):.2f}) | {float(r['width_hh_hz']):.1f}{pm('hh')} "
+            f"{float(r['hs_over_tp_m_s']):.3f} | {float(r['width_vv_hz']):.1f}{pm(r, 'vv')} "
+            f"({float(r['width_vv_m_s']):.2f}) | {float(r['width_hh_hz']):.1f}{pm(r, 'hh')} "
             f"({float(r['width_hh_m_s']):.2f}) | {float(r['composite_width_hz']):.1f} | "
+            f"{float(r['cell_width_vv_hz']):.1f}, {float(r['cell_width_hh_hz']):.1f} | "
             f"{float(r['hicks_ratio_vv']):.2f}, {float(r['hicks_ratio_hh']):.2f} | "
             f"not found ({r['published']}) |")
     return "\n".join(lines)
