@@ -15,14 +15,17 @@ published width law that could be read:
   line-of-sight velocity) does not change with the sea state.
 
 Tolerances: the published scatter of the proportionality was not read. The composite
-model's ratio (a deterministic integral) is held to 3 %; the simulated ratios, each from
-one realisation of a 128 m tile for 0.19 s, to 15 % of their mean over the winds (the
-realisation scatter of a width, up to about 10 % between seeds 1 and 2 in
-``docs/figures/dynamics_doppler_widths.csv``, plus 5 %).
+model's ratio (a deterministic integral) is held to 3 %; the simulated ratios (the mean
+of seeds 1 and 2 of a 128 m tile for 0.19 s per wind) to 15 % of their mean over the
+winds: the half-range of the two seeds' VV widths, up to 10 %
+(``docs/figures/dynamics_doppler_widths.csv``), plus 5 %.
 
-Known disagreement, kept visible (strict xfail): HH at 3 deg grazing, where the breaking
-zones dominate, widens faster than H_s / T_p (ratio 1.9 at U19.5 = 5 and 8 m/s, 3.2 at
-12 m/s; docs/dynamics.md).
+What the simulation gives (docs/dynamics.md, "Doppler widths against measurements"):
+VV follows H_s / T_p at 3, 10 and 30 deg grazing (ratios within 8 % of their mean over
+U19.5 = 5-12 m/s). HH is not tested at 3 deg, where one tile is too small for its
+breaking-dominated width (the two seeds differ by 41 % of their mean at 12 m/s). Known
+disagreement, kept visible (strict xfail): HH at 10 deg widens more slowly than H_s / T_p
+(ratios 2.87, 2.19, 1.96 at 5, 8, 12 m/s: +23 % and -16 % of their mean).
 """
 
 from __future__ import annotations
@@ -92,7 +95,7 @@ def test_composite_orbital_width_is_proportional_to_h_over_t():
 def width_rows(tmp_path_factory):
     from doppler_widths import width_comparison
 
-    cases = tuple((g, u, 0.0, (1,)) for g in (3.0, 10.0) for u in WINDS)
+    cases = tuple((g, u, 0.0, (1, 2)) for g in (3.0, 10.0) for u in WINDS)
     path = width_comparison(str(tmp_path_factory.mktemp("widths")), cases=cases)
     with open(path) as fh:
         rows = [{k: (v if k == "published" else float(v)) for k, v in r.items()}
@@ -105,21 +108,21 @@ def _ratios(rows, grazing_deg, ch):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("grazing_deg, ch", [(10.0, "vv"), (10.0, "hh"), (3.0, "vv")])
-def test_simulated_width_is_proportional_to_h_over_t(width_rows, grazing_deg, ch):
+@pytest.mark.parametrize("grazing_deg", [3.0, 10.0])
+def test_simulated_vv_width_is_proportional_to_h_over_t(width_rows, grazing_deg):
     # Hicks et al. (1960): the width grows as H/T. Measured (docs/figures/
-    # dynamics_doppler_widths.csv, seeds 1-2): VV at 10 deg 2.1-2.4, HH 2.3-2.8, VV at
-    # 3 deg 2.7-2.9 over U19.5 = 5-12 m/s
-    ratios = _ratios(width_rows, grazing_deg, ch)
+    # dynamics_doppler_widths.csv): VV width / (H_s / T_p) 2.90, 2.72, 2.48 at 3 deg and
+    # 2.14, 2.24, 2.19 at 10 deg for U19.5 = 5, 8, 12 m/s
+    ratios = _ratios(width_rows, grazing_deg, "vv")
     assert _spread(ratios) < SIMULATED_TOL, ratios
     # and the widths grow with the wind (the orbital velocities; Walker 2001)
-    w = [width_rows[(grazing_deg, u)][f"width_{ch}_hz"] for u in WINDS]
+    w = [width_rows[(grazing_deg, u)]["width_vv_hz"] for u in WINDS]
     assert w[0] < w[1] < w[2]
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="HH at 3 deg grazing, where the breaking zones "
-                   "dominate, widens faster than H_s/T_p: width/(H_s/T_p) 1.9, 1.9, 3.2 at "
-                   "U19.5 = 5, 8, 12 m/s (docs/dynamics.md)")
-def test_simulated_hh_width_at_3_deg_is_proportional_to_h_over_t(width_rows):
-    assert _spread(_ratios(width_rows, 3.0, "hh")) < SIMULATED_TOL
+@pytest.mark.xfail(strict=True, reason="HH at 10 deg grazing widens more slowly than "
+                   "H_s/T_p: width/(H_s/T_p) 2.87, 2.19, 1.96 at U19.5 = 5, 8, 12 m/s, +23 % "
+                   "and -16 % of their mean for 15 % allowed (docs/dynamics.md)")
+def test_simulated_hh_width_at_10_deg_is_proportional_to_h_over_t(width_rows):
+    assert _spread(_ratios(width_rows, 10.0, "hh")) < SIMULATED_TOL
