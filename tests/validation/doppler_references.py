@@ -46,7 +46,8 @@ a proportionality without its coefficient:
 * :func:`hicks_velocity_scale_m_s` - Hicks et al. (1960). The spectrum of X-band
   radiation backscattered from the sea surface. *J. Geophys. Res.* 65(3), 825,
   doi:10.1029/JZ065i003p00825: a coherent X-band radar, more than 200 recorded clutter
-  samples, spectra averaged over patches 3750 feet long (abstract, read on scite.ai).
+  samples, spectra averaged over patches 3750 feet long (abstract, truncated, read on
+  scite.ai).
   That they "empirically established the proportionality of the spectrum width to H/T"
   (H the wave height, T the wave period) is quoted from a citing article's statement on
   the same page, with "in order to adequately explain the total spectrum width, it is
