@@ -26,11 +26,7 @@ import time
 import warnings
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import numpy as np
 
 from seaecho.config import parse_scene  # noqa: E402
 from seaecho.constants import C0  # noqa: E402
@@ -86,6 +82,15 @@ def scene(u, look_deg, inc_deg, model, size=128.0, n=128, seed=1, update=8,
     })
 
 
+def orbital_doppler_spread_hz(spectrum, q, k_min: float, k_max: float):
+    """Doppler spread [Hz] of the orbital velocities of the waves k_min < K < k_max
+    [rad/m] seen along the scattering vector(s) ``q`` [rad/m], shape (..., 3):
+    ``sqrt(q^T C q) / (2 pi)``, ``C`` their velocity covariance (eq U2; Thompson 1989)."""
+    c = orbital_velocity_covariance(spectrum, k_min, k_max)
+    q = np.asarray(q, dtype=float)
+    return np.sqrt(np.einsum("...i,ij,...j->...", q, c, q)) / (2 * np.pi)
+
+
 def composite_prediction(sim, inc_deg, look_deg):
     """Bragg centroid (plus the surface drift's ``q . U / 2 pi``, eq C1) and
     composite-model width [Hz] at the tile centre (monostatic)."""
@@ -99,8 +104,7 @@ def composite_prediction(sim, inc_deg, look_deg):
     f_b = float(bragg_frequency(np.hypot(*kb)))
     p = float(travel_fraction(spec, kb[0], kb[1], float(u10_from_u19_5(spec.u19_5))))
     lx = sim.sea.x[-1] - sim.sea.x[0] + (sim.sea.x[1] - sim.sea.x[0])
-    c = orbital_velocity_covariance(spec, np.pi / lx, m.k_cut)
-    s_orb = np.sqrt(q @ c @ q) / (2 * np.pi)
+    s_orb = float(orbital_doppler_spread_hz(spec, q, np.pi / lx, m.k_cut))
     # the surface drift of [sea] wind_drift (eq C1: every line moves by q . U / 2 pi)
     dyn = m.dynamics
     f_u = 0.0 if dyn is None else float(kb @ np.asarray(dyn.current, float)) / (2 * np.pi)
@@ -108,19 +112,41 @@ def composite_prediction(sim, inc_deg, look_deg):
             f_b, p)
 
 
-def run_case(u, look, inc, model, **kw):
+def run_spectra(u, look, inc, model, **kw):
+    """The case's simulation, Doppler frequencies [Hz], range-Doppler PSD (eq DP1, all
+    pulses in one CPI, (C, N, S)) and clutter cells (within 20 dB of the strongest)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         sim = Simulation(scene(u, look, inc, model, **kw))
         rc = np.array([sim.compress(sim.pulse(p)) for p in range(sim.radar.n_pulses)])
     f, psd = range_doppler(rc, sim.radar.prf)
-    cells = clutter_cells(psd, 20.0)
+    return sim, f, psd, clutter_cells(psd, 20.0)
+
+
+def run_case(u, look, inc, model, **kw):
+    sim, f, psd, cells = run_spectra(u, look, inc, model, **kw)
     spec = doppler_spectrum(f, psd, cells)
     cen, wid = doppler_moments(f, spec)
     return sim, f, spec, cen, wid
 
 
+def cell_width_hz(f, psd, cells):
+    """Power-weighted mean over the clutter ``cells`` of each range cell's own rms
+    Doppler width (eq DP2 of the cell's spectrum) [Hz], per channel: the width of one
+    resolution cell over the CPI, without the spread of the centroids from cell to cell
+    that widens the clutter spectrum summed over the cells."""
+    p = np.asarray(psd)[..., np.asarray(cells, dtype=bool)]  # (C, N, S')
+    _, w = doppler_moments(f, np.moveaxis(p, 1, -1))  # (C, S')
+    power = p.sum(axis=1)
+    return (w * power).sum(axis=-1) / power.sum(axis=-1)
+
+
 def main(outdir: str = "docs/figures") -> Path:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
     out = Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     rows = []

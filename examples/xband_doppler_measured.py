@@ -62,10 +62,11 @@ from doppler_references import (  # noqa: E402
     cdop_hz,
     xband_wave_doppler_m_s,
 )
-from sea_doppler import F, composite_prediction, run_case  # noqa: E402
+from sea_doppler import F, cell_width_hz, composite_prediction, run_spectra  # noqa: E402
 
 from seaecho.constants import C0  # noqa: E402
 from seaecho.ocean.wind import SURFACE_DRIFT_OVER_U10, u10_from_u19_5  # noqa: E402
+from seaecho.processing.doppler import doppler_moments, doppler_spectrum  # noqa: E402
 from seaecho.scattering.dynamics import bragg_frequency  # noqa: E402
 
 GRAZING_DEG = 10.0
@@ -92,17 +93,22 @@ def simulate(u19_5: float, grazing_deg: float = GRAZING_DEG, n_pulses: int = N_P
              spreading: str | None = None, wind_drift: str | None = None
              ) -> dict[str, float]:
     """Centroid and rms width [Hz] of the HH and VV clutter Doppler spectra, and the
-    composite model's Bragg centroid ``(2 p+ - 1) f_B`` [Hz] (``sea_doppler.py``);
+    composite model's Bragg centroid ``(2 p+ - 1) f_B`` [Hz] and width
+    ``sqrt(sigma_orb^2 + 4 p+ p- f_B^2)`` [Hz] (``sea_doppler.py``), and the mean
+    width of a single range cell's spectrum (``sea_doppler.cell_width_hz``) [Hz];
     ``look_deg`` 0: the radar looks upwind; ``spreading`` None: the default
     ``[sea] spreading``."""
-    sim, _, _, cen, wid = run_case(u19_5, look_deg, 90.0 - grazing_deg, model, size=size,
-                                   n=n, n_pulses=n_pulses, motion=None, seed=seed,
-                                   freq_hz=freq_hz, spreading=spreading,
-                                   wind_drift=wind_drift)
-    b_cen = composite_prediction(sim, 90.0 - grazing_deg, look_deg)[0]
+    sim, f, psd, cells = run_spectra(u19_5, look_deg, 90.0 - grazing_deg, model,
+                                     size=size, n=n, n_pulses=n_pulses, motion=None,
+                                     seed=seed, freq_hz=freq_hz, spreading=spreading,
+                                     wind_drift=wind_drift)
+    cen, wid = doppler_moments(f, doppler_spectrum(f, psd, cells))
+    cell = cell_width_hz(f, psd, cells)
+    b_cen, b_wid = composite_prediction(sim, 90.0 - grazing_deg, look_deg)[:2]
     return {"centroid_hh_hz": float(cen[0]), "centroid_vv_hz": float(cen[1]),
             "width_hh_hz": float(wid[0]), "width_vv_hz": float(wid[1]),
-            "bragg_centroid_hz": float(b_cen)}
+            "bragg_centroid_hz": float(b_cen), "composite_width_hz": float(b_wid),
+            "cell_width_hh_hz": float(cell[0]), "cell_width_vv_hz": float(cell[1])}
 
 
 def horizontal_velocity_m_s(f_hz, freq_hz: float, incidence_deg: float):

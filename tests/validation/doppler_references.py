@@ -36,6 +36,23 @@ published form with the published coefficients; none is used by seaecho itself.
   along-track InSAR current retrieval: the abstract's Bragg value (~0.2 m/s) is the X-band
   Bragg phase speed at 20-45 deg incidence (0.23-0.28 m/s), a horizontal speed, and CDOP
   read the same way gives 0.147 U10 upwind at 35 deg (VV, 7.6 m/s), the same 15 %.
+
+Doppler *widths* (``tests/validation/test_doppler_widths.py``, docs/dynamics.md "Doppler
+widths against measurements"): no published X-band sea-clutter width was found as a
+number (:data:`WIDTH_MEASUREMENTS` lists what was read, and the conditions at which a
+future comparison should be made). The one published width *law* that could be read is
+a proportionality without its coefficient:
+
+* :func:`hicks_velocity_scale_m_s` - Hicks et al. (1960). The spectrum of X-band
+  radiation backscattered from the sea surface. *J. Geophys. Res.* 65(3), 825,
+  doi:10.1029/JZ065i003p00825: a coherent X-band radar, more than 200 recorded clutter
+  samples, spectra averaged over patches 3750 feet long (abstract, truncated, read on
+  scite.ai).
+  That they "empirically established the proportionality of the spectrum width to H/T"
+  (H the wave height, T the wave period) is quoted from a citing article's statement on
+  the same page, with "in order to adequately explain the total spectrum width, it is
+  necessary to take into account the fluctuations of wind-drift velocity": second-hand;
+  the coefficient, the polarisation and the grazing angles of the data were not read.
 """
 
 from __future__ import annotations
@@ -145,3 +162,53 @@ def xband_wave_doppler_m_s(u10_m_s, phi_deg):
     cos(phi)`` (Elyouncha et al. 2021; ``phi_deg`` 0: the radar looks upwind)."""
     return XBAND_WAVE_DOPPLER_FRACTION * np.asarray(u10_m_s, dtype=float) * np.cos(
         np.radians(phi_deg))
+
+
+def hicks_velocity_scale_m_s(significant_height_m, peak_period_s):
+    """The sea's velocity scale H/T [m/s] to which Hicks et al. (1960) found the X-band
+    clutter spectrum's width proportional (second-hand, module docstring); here H the
+    significant wave height [m] and T the peak period [s] of the wave spectrum. The
+    coefficient of the proportionality was not read, so only ratios of widths at
+    different sea states can be compared with it."""
+    return np.asarray(significant_height_m, dtype=float) / np.asarray(peak_period_s,
+                                                                      dtype=float)
+
+
+#: Published X-band (and nearby) sea-clutter Doppler measurements whose *widths* a
+#: comparison should use, with their conditions as read (abstracts and first pages only;
+#: none gave a width as a number). Keys: source, band, grazing angles [deg], winds
+#: [m/s], polarisations, looks, what was read and where; ``short`` a name for tables.
+WIDTH_MEASUREMENTS = (
+    {"short": "Hicks et al. 1960",
+     "source": "Hicks et al. (1960), J. Geophys. Res. 65(3), 825", "band": "X",
+     "grazing_deg": None, "wind_m_s": None, "pols": None, "looks": None,
+     "read": "abstract and a citing statement (scite.ai): width proportional to H/T"},
+    {"short": "Hwang et al. 2008",
+     "source": "Hwang, Sletten & Toporkov (2008), J. Geophys. Res. 113, C09017",
+     "band": "X", "grazing_deg": (1.4, 5.5), "wind_m_s": (7.0, 15.0), "pols": "HH, VV",
+     "looks": None, "read": "abstract: Doppler velocity ratios, no width"},
+    {"short": "Lee et al. 1996",
+     "source": "Lee et al. (1996), IEEE Trans. Antennas Propag. 44(3), 333-340",
+     "band": "X", "grazing_deg": "small", "wind_m_s": (3.8, 10.3), "pols": "HH, VV",
+     "looks": None, "read": "abstract: speed of fast scatterers rises with wind, no width"},
+    {"short": "LOGAN 1993",
+     "source": "Rino et al. (1997), IEEE J. Oceanic Eng. 22, 18-26 (LOGAN 1993)",
+     "band": "X", "grazing_deg": "low", "wind_m_s": None, "pols": None, "looks": None,
+     "read": "abstract: high-resolution Doppler spectra of sea spikes, no width"},
+    {"short": "Rosenberg 2014",
+     "source": "Rosenberg (2014), IEEE Trans. Aerosp. Electron. Syst. 50(1), 406-417",
+     "band": "X", "grazing_deg": (15.0, 45.0), "wind_m_s": None, "pols": "quad",
+     "looks": "all", "read": "abstract: two-component (Bragg, non-Bragg) model, no width"},
+    {"short": "Johnsen 2015",
+     "source": "Johnsen (2015), IEEE Radar Conf., doi:10.1109/RADARCONF.2015.7411864",
+     "band": "X", "grazing_deg": (3.0, 56.0), "wind_m_s": None, "pols": None,
+     "looks": "all", "read": "abstract: Doppler widths vs sea state studied, no number"},
+    {"short": "DSTO-TR-2864",
+     "source": "Whitrow (2013), DSTO-TR-2864", "band": "X", "grazing_deg": "low",
+     "wind_m_s": None, "pols": None, "looks": None,
+     "read": "first pages: Bragg, whitecap, spike bandwidths deduced; table not read"},
+    {"short": "North Truro",
+     "source": "Chan (1990), DREO Report 1051 (North Truro data)", "band": "X, S, L",
+     "grazing_deg": None, "wind_m_s": "sea state 2", "pols": None,
+     "looks": "up/cross-swell", "read": "first page: spectra differ with band, no width"},
+)
