@@ -11,7 +11,8 @@ revolutions affordable here: a PRF of 500 Hz in place of 1 kHz (0.29 deg per pul
 8 revolutions (20 s; ``--quick``: 4). Each sweep goes through ``seaecho.detect`` (2-D
 CA-CFAR on the PPI, azimuth x range, train 4 x 8, guard 3 x 2, P_FA 1e-6 per cell;
 the cells on the scene's coast and headland, and within 15 m of their shore, blanked by
-the land mask),
+the land mask and left out of the CFAR's training windows, ``--no-land-censor``: kept in
+them),
 which writes the plots and the truth for Stone Soup (``--stonesoup``; an object the
 truth hides, such as the fishing boat behind the headland, is scored apart and is no
 truth for the tracker);
@@ -23,7 +24,8 @@ without a plot make the tracks. The metrics compare tracks and truth at the end 
 sweep (each predicted there from its last state): OSPA and GOSPA (c = 50 m, p = 1) and
 the SIAP completeness, ambiguity, spuriousness and position accuracy (tracks assigned to
 a truth within 50 m for 2 scans). Then (not with ``--quick``) the same run through
-GO- and OS-CFAR and a four-plot initiation, as a table. ``--run FILE`` keeps the run
+GO- and OS-CFAR and a four-plot initiation, as a table (``--table``: with ``--quick``
+too). ``--run FILE`` keeps the run
 (read again if it exists). Writes ``scanning_tracking.png`` and prints the numbers
 docs/detection.md quotes.
 """
@@ -250,7 +252,13 @@ def main(argv=None) -> list[Path]:
     ap.add_argument("--out", default="docs/figures", help="output folder")
     ap.add_argument("--run", help="the run's netCDF file: read if it exists (same scene), "
                     "else written")
+    ap.add_argument("--no-land-censor", action="store_true",
+                    help="leave the land's cells in the CFAR windows (the detector before "
+                    "land censoring)")
+    ap.add_argument("--table", action="store_true",
+                    help="the detector x initiation table with --quick too")
     args = ap.parse_args(argv)
+    censor = not args.no_land_censor
     revs = args.revolutions or (4 if args.quick else 8)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -268,7 +276,8 @@ def main(argv=None) -> list[Path]:
     cpu, wall = time.process_time() - t_cpu, time.perf_counter() - t_wall
     sweep_end = [datetime(1970, 1, 1) + timedelta(seconds=float(t)) for t in
                  run["time"].groupby(run["sweep"]).max().values]
-    det, s, tracks, paths, mt, meas = track_and_score(run, "ca", 3, sweep_end, scan_s)
+    det, s, tracks, paths, mt, meas = track_and_score(run, "ca", 3, sweep_end, scan_s,
+                                                      censor)
     # the plots' errors against the truth, in bearing and range (the model's noise)
     by_id = {p.id: p for p in paths}
     err_b, err_r = [], []
@@ -299,7 +308,10 @@ def main(argv=None) -> list[Path]:
           f"km^2 and sweep, P_FA per cell {s['pfa_cell']:.2g} at design 1e-6); P_D per "
           f"object (sweeps): {pd}; sweeps where the truth hides an object: {hidden}")
     print(f"land mask: {det.attrs['cells_blanked']} cells blanked over {n_sweeps} sweeps "
-          f"(margin {det.attrs['land_margin_m']:g} m), {det.attrs['cells_tested']} tested")
+          f"(margin {det.attrs['land_margin_m']:g} m), {det.attrs['cells_tested']} tested; "
+          + (f"land censoring: {det.attrs['cells_censored']} tested with the land left out "
+             f"of their window, {det.attrs['cells_short']} untested (less than half their "
+             "window on the sea)" if det.attrs["land_censor"] else "no land censoring"))
     on = det.object_index.values >= 0
     # the false alarms on the sea tile (|x|, |y| <= half its size): their cells over the
     # tile's cells of every sweep
@@ -325,13 +337,13 @@ def main(argv=None) -> list[Path]:
           f"accuracy {mt['position_accuracy_m']:.2f} m, velocity accuracy "
           f"{mt['velocity_accuracy_m_s']:.2f} m/s, longest segment "
           f"{mt['longest_segment']:.2f}")
-    if not args.quick:  # the same run through other detectors and confirmations
+    if args.table or not args.quick:  # the same run through other detectors, initiations
         print("detector | initiation | false alarms | tracks | OSPA [m] | GOSPA [m] | "
               "completeness | spuriousness | position accuracy [m]")
         for cfar in ("ca", "go", "os"):
             for min_points in (3, 4):
                 det_v, s_v, tr_v, _, m_v, _ = track_and_score(run, cfar, min_points,
-                                                              sweep_end, scan_s)
+                                                              sweep_end, scan_s, censor)
                 print(f"{cfar.upper()}-CFAR | {min_points} plots | {s_v['false_alarms']} | "
                       f"{len(tr_v)} | {m_v['ospa']:.1f} | {m_v['gospa']:.1f} | "
                       f"{m_v['completeness']:.2f} | {m_v['spuriousness']:.2f} | "
@@ -353,12 +365,15 @@ def tile_cells(run, half_m: float) -> int:
     return int(((np.abs(x) <= half_m) & (np.abs(y) <= half_m)).sum())
 
 
-def track_and_score(run, cfar: str, min_points: int, sweep_end, scan_s: float):
-    """Detect (``cfar`` at P_FA 1e-6), export, track and score at the sweep ends:
+def track_and_score(run, cfar: str, min_points: int, sweep_end, scan_s: float,
+                    censor: bool = True):
+    """Detect (``cfar`` at P_FA 1e-6; the land censored out of the CFAR's windows
+    unless ``censor`` is False), export, track and score at the sweep ends:
     (detections, scores, tracks, truth paths, metrics, plots by object)."""
     with tempfile.TemporaryDirectory() as tmp:
         det, truth = seaecho.detect(run, cfar=cfar, pfa=1e-6, train=(4, 8), guard=(3, 2),
-                                    land_margin_m=LAND_MARGIN_M, stonesoup=tmp)
+                                    land_margin_m=LAND_MARGIN_M, land_censor=censor,
+                                    stonesoup=tmp)
         s = seaecho.score(det, truth)
         detections, truths = seaecho.stonesoup_readers(tmp)
         trk, predictor = tracker(detections, scan_s, min_points)

@@ -1667,8 +1667,12 @@ def roc(datasets: Any, detector: Any, *, channel: str | None = None,
     """
     import numpy as np
 
-    from .detection import (opportunity_groups, opportunity_peaks, opportunity_visible,
-                            roc_from_statistic)
+    from .detection import (
+        opportunity_groups,
+        opportunity_peaks,
+        opportunity_visible,
+        roc_from_statistic,
+    )
 
     def f_names(frame, item):
         return list(truth.names) if truth is not None else list(

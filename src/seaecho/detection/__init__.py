@@ -10,8 +10,7 @@ from .association import associate, ground_point, half_path, interpolate_truth, 
 from .cfar import CFAR, KINDS, Censored
 from .clutter_map import ClutterMap, m_of_n
 from .footprint import clutter_cell_area, half_power_width
-from .frames import (Frame, ObjectTruth, detect_frames, opportunity_groups,
-                     opportunity_visible)
+from .frames import Frame, ObjectTruth, detect_frames, opportunity_groups, opportunity_visible
 from .plots import extract_plots
 from .scoring import opportunity_peaks, pd_at_pfa, roc, roc_from_statistic, score_tables
 
