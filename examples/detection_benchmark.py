@@ -104,8 +104,10 @@ def main(argv=None) -> list[Path]:
         # the visible opportunities: one the truth hides (behind a crest) is no miss
         seen = c["opportunity_visible"]
         peaks, objs = c["opportunity_peak"][seen], c["opportunity_object"][seen]
-        pd_obj = [float(np.mean(peaks[objs == n] > thr)) for n in names]
-        row = {"detector": name, "pd_all": float(np.mean(peaks > thr)),
+        pd_obj = [float(np.mean(peaks[objs == n] > thr)) if (objs == n).any() else np.nan
+                  for n in names]  # (a target hidden in every look: no P_D)
+        row = {"detector": name,
+               "pd_all": float(np.mean(peaks > thr)) if peaks.size else np.nan,
                **{f"pd_{n}": p for n, p in zip(names, pd_obj, strict=True)}}
         if name in ("CA", "GO", "SO", "OS"):
             measured = []
