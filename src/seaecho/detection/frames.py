@@ -124,7 +124,8 @@ class Frame:
         (:meth:`ObjectTruth.visible_at`); None: always.
     blanked : ndarray of bool, optional
         Broadcastable to (rows, cols): cells left untested whatever the detector (the
-        land mask, :func:`seaecho.detection.landmask.land_mask`).
+        land mask, :func:`seaecho.detection.landmask.land_mask`), and kept out of the
+        training windows by a censored detector (:func:`detect_frames`' ``censored``).
     """
 
     kind: str

@@ -9,6 +9,7 @@ symbol          meaning                                                         
 ==============  ================================================================  ======
 N               training cells of a cell-averaging CFAR                          ``n``
 n               training cells of one half (leading or lagging) of a GO/SO CFAR   ``n_half``
+m, n            the two halves of a censored GO/SO window (D9)                   ``n_half, n_lag``
 k               rank of the order statistic of an OS-CFAR (1 = smallest)          ``k``
 alpha           threshold multiplier on the detector's noise estimate             ``alpha``
 S               signal-to-noise ratio of the cell under test (linear)             ``snr``
