@@ -9,7 +9,8 @@ targets of 0.001 to 0.1 m^2 at 0.5 m height spread in range across the tile; one
 every 50 ms (the clutter's speckle decorrelates between pulses), 16 pulses. Scenes: wind
 U19.5 = 6 and 10 m/s; seeds 1-3 (``--quick``: one scene, one seed, 8 pulses). The range
 profiles (HH) of all runs are pooled: ``seaecho.roc`` sweeps each detector's threshold
-(P_FA over the background cells, P_D over the opportunities: a target in a pulse) and
+(P_FA over the background cells, P_D over the opportunities: a target in a pulse; one
+the truth hides, behind a crest, is left out) and
 ``seaecho.detect`` runs each CFAR at its design P_FA = 1e-3 (measured P_FA per cell).
 Writes ``detection_roc.png`` (ROC curves), ``detection_pd.png`` (P_D per target at
 P_FA = 1e-3) and ``detection_benchmark.csv``; prints the tables docs/detection.md quotes.
@@ -100,9 +101,13 @@ def main(argv=None) -> list[Path]:
         # the threshold of the pooled background's P_FA = 1e-3 (the ROC's point)
         ok = c["pfa"] <= PFA
         thr = float(c["threshold"][ok].min()) if ok.any() else float("inf")
-        peaks, objs = c["opportunity_peak"], c["opportunity_object"]
-        pd_obj = [float(np.mean(peaks[objs == n] > thr)) for n in names]
-        row = {"detector": name, "pd_all": float(np.mean(peaks > thr)),
+        # the visible opportunities: one the truth hides (behind a crest) is no miss
+        seen = c["opportunity_visible"]
+        peaks, objs = c["opportunity_peak"][seen], c["opportunity_object"][seen]
+        pd_obj = [float(np.mean(peaks[objs == n] > thr)) if (objs == n).any() else np.nan
+                  for n in names]  # (a target hidden in every look: no P_D)
+        row = {"detector": name,
+               "pd_all": float(np.mean(peaks > thr)) if peaks.size else np.nan,
                **{f"pd_{n}": p for n, p in zip(names, pd_obj, strict=True)}}
         if name in ("CA", "GO", "SO", "OS"):
             measured = []
@@ -151,8 +156,12 @@ def main(argv=None) -> list[Path]:
             w.writerow({k: (f"{v:.4f}" if isinstance(v, float) and np.isfinite(v) else
                             "" if isinstance(v, float) else v) for k, v in row.items()})
     c0 = next(iter(curves.values()))
+    hidden = c0["opportunity_object"][~c0["opportunity_visible"]]
     print(f"{len(runs)} runs x {n_pulses} pulses simulated in {t_sim:.0f} s; "
-          f"{c0['n_background']} background cells, {c0['n_opportunities']} opportunities")
+          f"{c0['n_background']} background cells, {c0['n_opportunities']} visible "
+          f"opportunities, {c0['n_hidden']} hidden by the truth ("
+          + (", ".join(f"{n} {int((hidden == n).sum())}" for n in names
+                       if (hidden == n).any()) or "none") + ")")
     head = "| detector | " + " | ".join(names) + " | all | P_FA at design 1e-3 | P_D at design |"
     print(head)
     print("|" + "---|" * (len(names) + 4))

@@ -139,6 +139,9 @@ def main(argv=None) -> list[Path]:
     plt.close(fig)
     print(f"{det.sizes['detection']} plots ({int(fa.sum())} false alarms), P_D per boat "
           + ", ".join(f"{s['objects'][o]} {v[2]:.2f}" for o, v in s['pd_object'].items())
+          + " (looks the truth hides, scored apart: "
+          + (", ".join(f"{s['objects'][o]} {v[1]}" for o, v in s['hidden_object'].items())
+             or "none") + ")"
           + f"; {len(tracks)} tracks for {len(paths)} boats; mean OSPA {o_mean:.2f} m, "
           f"mean GOSPA {g_mean:.2f} m (c = 10 m, p = 1)")
     return [png]

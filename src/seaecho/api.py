@@ -1174,7 +1174,8 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
            truth: Any = None, radar_position_m: ArrayLike | None = None,
            azimuth_gate_deg: float | None = None,
            stonesoup: PathLike | None = None, land_mask: bool | None = None,
-           land_margin_m: float = 0.0) -> tuple[xr.Dataset, xr.Dataset]:
+           land_margin_m: float = 0.0, land_censor: bool | None = None,
+           censor_min_fraction: float = 0.5) -> tuple[xr.Dataset, xr.Dataset]:
     """Detect targets in a run, a SAR image or PPI sweeps (``seaecho detect``;
     docs/detection.md).
 
@@ -1220,6 +1221,16 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
         Default: on where the run has land; False: off.
     land_margin_m : float
         The land mask's margin outward from the shore [m] (>= 0; default 0).
+    land_censor : bool, optional
+        Land-censored CFAR: the land mask's cells are also left out of every training
+        window, each estimate uses the sea cells its window keeps, with the threshold
+        multiplier of the design P_FA for that number of cells
+        (:meth:`seaecho.detection.CFAR.censored`). Default: on wherever the land mask
+        is on (a sliding-window CFAR); False: the land stays in the windows; True
+        refuses a detection without the land mask.
+    censor_min_fraction : float
+        Land censoring: a cell whose window keeps fewer than this fraction of its
+        training cells is not tested (counted in ``cells_short``); in (0, 1].
 
     Returns
     -------
@@ -1230,7 +1241,9 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
         estimate, minus one), ``n_cells``, ``object`` (name, '' for a false alarm),
         ``object_index`` (-1); attributes: the detector, ``alpha``, ``cells_tested``,
         ``n_looks``, ``area_m2`` (per look; NaN when unknown), ``position_sigma_m`` (a
-        plot's position error, the Stone Soup measurement noise).
+        plot's position error, the Stone Soup measurement noise), ``land_mask``,
+        ``cells_blanked``, ``land_censor``, ``cells_censored`` (tested with a window
+        that lost land cells), ``cells_short`` (left untested: too few sea cells).
     truth : xarray.Dataset
         Dimension ``opportunity`` (one object in one look, inside the tested cells):
         ``look``, ``time``, ``object``, ``object_index``, ``x_m``, ``y_m``, ``vx_m_s``,
@@ -1252,6 +1265,7 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
                                                  radar_position_m, azimuth_gate_deg)
         blanked = _land_blanking(dataset, kind, frames, land_mask, land_margin_m)
         noise, det, text = _detector(kind, frames, cfar, train, guard, rank, map_weight)
+        censored = _land_censoring(det, blanked, land_censor, censor_min_fraction, pfa)
         alpha = det.scale(pfa)
         if m_of_n is not None:
             if kind != "profile":
@@ -1260,7 +1274,8 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
             if len(m_of_n) != 2:
                 raise ValueError(f"m_of_n = {m_of_n}: give (M, N)")
         dets, opps, totals = detect_frames(frames, noise, alpha,
-                                           integrate=tuple(m_of_n) if m_of_n else None)
+                                           integrate=tuple(m_of_n) if m_of_n else None,
+                                           censored=censored)
     except ValueError as exc:
         if isinstance(exc, SceneError):
             raise
@@ -1297,7 +1312,11 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
              if frames else 1.0,
              "land_mask": int(blanked is not None),
              "land_margin_m": float(land_margin_m) if blanked is not None else 0.0,
-             "cells_blanked": int(blanked or 0)}
+             "cells_blanked": int(blanked or 0),
+             "land_censor": int(censored is not None),
+             "censor_min_fraction": float(censor_min_fraction) if censored else 0.0,
+             "cells_censored": int(totals["cells_censored"]),
+             "cells_short": int(totals["cells_short"])}
     for k in ("range_sigma_m", "azimuth_sigma_deg", "beamwidth_deg"):  # PPI, profiles
         if frames and k in frames[0].extra:
             attrs[k] = float(frames[0].extra[k])
@@ -1355,6 +1374,33 @@ def _land_blanking(dataset, kind, frames, land_mask, margin_m) -> int | None:
         f.blanked = mask_of(f.cell_coord, outlines, float(margin_m))
         n += int(np.broadcast_to(f.blanked, f.power.shape).sum())
     return n
+
+
+def _land_censoring(det, blanked, land_censor, min_fraction, pfa):
+    """:func:`detect`'s ``land_censor``: the censored estimate of ``det`` (a callable
+    ``(power, exclude) -> Censored`` at ``pfa``), or None."""
+    import functools
+
+    from .detection import CFAR
+
+    if land_censor not in (None, True, False):
+        raise SceneError(f"land_censor = {land_censor!r}: allowed true, false or none "
+                         "(default: on wherever the land mask is on)")
+    if not (isinstance(min_fraction, int | float) and not isinstance(min_fraction, bool)
+            and 0.0 < min_fraction <= 1.0):
+        raise SceneError(f"censor_min_fraction = {min_fraction!r}: the fraction of a "
+                         "window's training cells a land-censored estimate needs must be "
+                         "in (0, 1]")
+    if land_censor is False:
+        return None
+    if blanked is None or not isinstance(det, CFAR):
+        if land_censor:
+            why = "no land mask (PPI sweeps of a run with [[land]], land_mask not false)" \
+                if blanked is None else "a clutter map has no training window"
+            raise SceneError(f"land_censor = true: it leaves the land mask's cells out of "
+                             f"a sliding-window CFAR's training cells; here {why}")
+        return None
+    return functools.partial(det.censored, pfa=pfa, min_fraction=float(min_fraction))
 
 
 def _object_names(dataset, truth, kind) -> tuple[str, ...]:
@@ -1611,16 +1657,22 @@ def roc(datasets: Any, detector: Any, *, channel: str | None = None,
     -------
     dict
         ``threshold``, ``pfa`` (fraction of the background's tested cells above: cells
-        beyond every object's exclusion zone), ``pd`` (fraction of the opportunities,
-        an object in a look, whose largest statistic in its gate is above),
-        ``n_background``,
-        ``n_opportunities``, and per opportunity ``opportunity_object`` (name) and
-        ``opportunity_peak`` (largest statistic in the gate): P_D per object at any
-        threshold.
+        beyond every object's exclusion zone), ``pd`` (fraction of the visible
+        opportunities, an object in a look, whose largest statistic in its gate is
+        above; one the truth hides is left out, as in :func:`score`),
+        ``n_background``, ``n_opportunities`` (visible), ``n_hidden``, and per
+        opportunity (hidden ones included) ``opportunity_object`` (name),
+        ``opportunity_peak`` (largest statistic in the gate) and
+        ``opportunity_visible``: P_D per object at any threshold.
     """
     import numpy as np
 
-    from .detection import opportunity_groups, opportunity_peaks, roc_from_statistic
+    from .detection import (
+        opportunity_groups,
+        opportunity_peaks,
+        opportunity_visible,
+        roc_from_statistic,
+    )
 
     def f_names(frame, item):
         return list(truth.names) if truth is not None else list(
@@ -1629,7 +1681,7 @@ def roc(datasets: Any, detector: Any, *, channel: str | None = None,
     if not callable(detector):
         raise SceneError(f"detector = {detector!r}: a callable power -> statistic")
     items = datasets if isinstance(datasets, list | tuple) else [datasets]
-    stats, groups, n, objects = [], [], 0, []
+    stats, groups, n, objects, seen = [], [], 0, [], []
     for item in items:
         try:
             frames = _detection_frames(item, channel, truth, None, None)[0]
@@ -1642,14 +1694,18 @@ def roc(datasets: Any, detector: Any, *, channel: str | None = None,
                                  f"{f.power.shape}: one statistic per cell")
             g, table = opportunity_groups(f, np.isfinite(stat), n, exclusion)
             n += table["look"].size
+            seen.append(opportunity_visible(f, table))
             objects.append(np.asarray(f_names(f, item))[table["object"]]
                            if table["object"].size else np.zeros(0, str))
             stats.append(stat.ravel())
             groups.append(g.ravel())
     stat, g = np.concatenate(stats), np.concatenate(groups)
-    out = roc_from_statistic(stat, g, n, thresholds)
+    visible = np.concatenate(seen) if seen else np.zeros(0, bool)
+    out = roc_from_statistic(stat, g, n, thresholds, visible)
     out["n_background"] = int(((g == -1) & np.isfinite(stat)).sum())
-    out["n_opportunities"] = int(n)
+    out["n_opportunities"] = int(visible.sum())
+    out["n_hidden"] = int((~visible).sum())
     out["opportunity_object"] = np.concatenate(objects) if objects else np.zeros(0, str)
     out["opportunity_peak"] = opportunity_peaks(stat, g, n)
+    out["opportunity_visible"] = visible
     return out

@@ -437,3 +437,41 @@ def test_cli_detect_on_a_stack_of_images(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "more than 40 images" in err and "Traceback" not in err
     assert not (tmp_path / "e.csv").exists()
+
+
+def test_hidden_objects_scored_apart_on_range_profiles_and_in_the_roc():
+    # the truth hides the 17 dB target in the second half of the pulses (as behind a
+    # crest): those looks are no misses of P_D, nor of the ROC; the same rule as sweeps
+    ds, _ = synthetic_run(n_pulses=400)
+    pos = np.asarray(ds.target_position.values)
+    ds["truth_position"] = (("pulse", "object", "xyz"), np.tile(pos, (400, 1, 1)))
+    visible = np.ones((400, 3), np.int8)
+    visible[200:, 2] = 0
+    ds["truth_visible"] = (("pulse", "object"), visible)
+    ds = ds.assign_coords(object=list(ds.target.values))
+    det, tr = seaecho.detect(ds, cfar="ca", pfa=1e-4, train=8, guard=2)
+    hidden = tr.visible.values == 0
+    assert hidden.sum() == 200 and (tr.object_index.values[hidden] == 2).all()
+    s = seaecho.score(det, tr)
+    assert s["pd_object"][2][1] == 200 and s["hidden_object"][2][1] == 200
+    assert s["pd_object"][0][1] == 400
+    # the ROC: the hidden looks are left out of P_D (its peaks still listed)
+    curve = seaecho.roc(ds, CFAR("ca", 8, 2))
+    assert curve["n_opportunities"] == 1000 and curve["n_hidden"] == 200
+    assert curve["opportunity_visible"].sum() == 1000
+    peaks = curve["opportunity_peak"][curve["opportunity_visible"]]
+    t = curve["threshold"][len(curve["threshold"]) // 2]
+    k = int(np.searchsorted(curve["threshold"], t))
+    assert curve["pd"][k] == pytest.approx((peaks > curve["threshold"][k]).mean())
+
+
+def test_hidden_object_of_a_given_truth_on_an_image():
+    img = _image(np.random.default_rng(7), target=(30, 40))
+    own, t_mid = seaecho.io.detections.image_truth(img)
+    hidden = ObjectTruth(own.time_s, own.position_m, own.names, own.extent_m,
+                         visible=np.zeros((1, 1), bool))
+    det, tr = seaecho.detect(img, cfar="ca", pfa=1e-4, train=6, guard=2, truth=hidden)
+    assert tr.visible.values.tolist() == [0]
+    s = seaecho.score(det, tr)
+    assert s["pd_object"] == {} and s["hidden_object"] == {0: (1, 1)}
+    assert seaecho.roc(img, CFAR("ca", (6, 6), (2, 2)), truth=hidden)["n_hidden"] == 1

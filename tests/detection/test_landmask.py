@@ -112,11 +112,58 @@ def test_ppi_land_blanked_by_default_and_on_request_off():
     on_land = (np.hypot(off.x_m, off.y_m) > 880) & (off.azimuth_deg > 25) & \
         (off.azimuth_deg < 65)
     assert int(on_land.sum()) >= 2  # the land's echo: plots without the mask
-    assert off.attrs["cells_tested"] == det.attrs["cells_tested"] + n_land
+    # land censoring (on with the mask) leaves untested the few cells whose window keeps
+    # less than half its sea cells; without it every sea cell is tested
+    assert det.attrs["land_censor"] == 1 and det.attrs["cells_short"] > 0
+    assert off.attrs["cells_tested"] == det.attrs["cells_tested"] + n_land + \
+        det.attrs["cells_short"]
+    kept, _ = _detect(ds, land_censor=False)
+    assert kept.attrs["land_censor"] == 0 and kept.attrs["cells_short"] == 0
+    assert off.attrs["cells_tested"] == kept.attrs["cells_tested"] + n_land
     # a margin blanks more cells; the buoy, far from the land, stays
     wide, _ = _detect(ds, land_margin_m=60.0)
     assert wide.attrs["cells_blanked"] > n_land
     assert (wide.object.values == "buoy").sum() == 2
+
+
+def _boat_beside_the_land(ds, power=300.0):
+    """Add a boat 25 dB over the noise on the 44 deg ray, five gates short of the land
+    (gate 49; the land starts at gate 54 there), to both sweeps and to the truth."""
+    r = np.asarray(ds["range"].values)
+    ground = np.sqrt(r[49] ** 2 - 15.0 ** 2)
+    boat = np.array([ground * np.sin(np.deg2rad(44.0)), ground * np.cos(np.deg2rad(44.0)),
+                     0.0])
+    ray = np.asarray(ds.tx_antenna_axes.values[:, :, 0])
+    on = np.abs(np.rad2deg(np.arctan2(ray[:, 0], ray[:, 1])) - 44.0) < 0.5
+    z = ds["compressed"].values.copy()
+    z[on, 0, 49] = np.sqrt(power)
+    pos = np.concatenate([ds.truth_position.values,
+                          np.tile(boat, (ds.sizes["pulse"], 1, 1))], axis=1)
+    vis = np.concatenate([ds.truth_visible.values, np.ones((ds.sizes["pulse"], 1), np.int8)],
+                         axis=1)
+    ds = ds.drop_vars(["truth_position", "truth_visible", "object"])
+    ds["compressed"] = (("pulse", "channel", "fast_time"), z)
+    ds["truth_position"] = (("pulse", "object", "xyz"), pos)
+    ds["truth_visible"] = (("pulse", "object"), vis)
+    return ds.assign_coords(object=["buoy", "boat"])
+
+
+def test_boat_beside_the_land_found_with_land_censoring_masked_without():
+    # the boat's training window (9 rays x 17 gates less the guard: N = 138) holds 36
+    # land cells, ~900 x the noise on average: in the window they lift a CA-CFAR's
+    # threshold far above the boat (masking); left out (the 102 sea cells averaged, alpha
+    # for 102 cells) the boat is found in both sweeps
+    ds = _boat_beside_the_land(scanning_run()[0])
+    det, tr = _detect(ds)
+    assert det.attrs["land_censor"] == 1 and det.attrs["cells_censored"] > 0
+    assert (det.object.values == "boat").sum() == 2
+    s = seaecho.score(det, tr)
+    assert s["pd_object"][1] == (2, 2, 1.0)
+    plain, tr0 = _detect(ds, land_censor=False)
+    assert (plain.object.values == "boat").sum() == 0
+    assert seaecho.score(plain, tr0)["pd_object"][1] == (0, 2, 0.0)
+    # the censored estimate is the sea's: the false alarms stay those of the noise
+    assert (det.object_index.values < 0).sum() <= 2
 
 
 def test_no_land_no_mask_and_bad_options():
@@ -127,6 +174,17 @@ def test_no_land_no_mask_and_bad_options():
         _detect(ds, land_mask=True)
     with pytest.raises(SceneError, match="land_margin_m"):
         _detect(scanning_run()[0], land_margin_m=-5.0)
+    # land censoring needs the land mask and a sliding window; its fraction in (0, 1]
+    with pytest.raises(SceneError, match="land_censor = true"):
+        _detect(ds, land_censor=True)
+    with pytest.raises(SceneError, match="land_censor = true"):
+        _detect(scanning_run()[0], land_censor=True, land_mask=False)
+    with pytest.raises(SceneError, match="land_censor = 'yes'"):
+        _detect(ds, land_censor="yes")
+    land = scanning_run()[0]
+    for bad in (0.0, 1.5, float("nan"), True):
+        with pytest.raises(SceneError, match="censor_min_fraction"):
+            _detect(land, censor_min_fraction=bad)
 
 
 def test_hidden_object_scored_apart_and_left_out_of_the_stonesoup_truth(tmp_path):
@@ -168,7 +226,8 @@ def test_cli_land_mask_options_and_hidden_in_the_score(tmp_path, capsys):
     out = tmp_path / "d.csv"
     assert main(["detect", str(run), "-o", str(out), "--train", "3", "6", "--guard", "1",
                  "2"]) == 0
-    assert f"{n_land} on the land blanked" in capsys.readouterr().out
+    printed = capsys.readouterr().out
+    assert f"{n_land} on the land blanked" in printed and "land censored" in printed
     assert main(["score", str(out)]) == 0
     assert "buoy: hidden by the truth in 1 look(s), not scored" in capsys.readouterr().out
     assert main(["detect", str(run), "-o", str(out), "--train", "3", "6", "--guard", "1",
@@ -177,3 +236,9 @@ def test_cli_land_mask_options_and_hidden_in_the_score(tmp_path, capsys):
     assert main(["detect", str(run), "--land-margin", "-3", "-o", str(out)]) == 2
     err = capsys.readouterr().err
     assert "--land-margin -3" in err and "Traceback" not in err
+    assert main(["detect", str(run), "-o", str(out), "--train", "3", "6", "--guard", "1",
+                 "2", "--no-land-censor"]) == 0
+    assert "land censored" not in capsys.readouterr().out
+    assert main(["detect", str(run), "--censor-min-fraction", "0", "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert "--censor-min-fraction 0" in err and "Traceback" not in err

@@ -42,6 +42,13 @@ def register(sub: argparse._SubParsersAction) -> None:
                    "default they are blanked: never tested, no plot)")
     p.add_argument("--land-margin", type=float, default=0.0, metavar="M",
                    help="the land mask's margin outward from the shore [m] (default 0)")
+    p.add_argument("--no-land-censor", action="store_true",
+                   help="leave the land mask's cells in the CFAR's training windows (by "
+                   "default they are left out: each estimate averages the sea cells of its "
+                   "window, with the threshold for that number of cells)")
+    p.add_argument("--censor-min-fraction", type=float, default=0.5, metavar="F",
+                   help="land censoring: cells whose window keeps fewer than this fraction "
+                   "of its training cells are not tested (default 0.5; in (0, 1])")
     p.add_argument("--stonesoup", metavar="DIR",
                    help="also write the detections and the truth as Stone Soup reads them")
     p.set_defaults(func=run)
@@ -72,6 +79,10 @@ def run(args: argparse.Namespace) -> int:
     if not args.land_margin >= 0.0:
         raise UsageError(f"--land-margin {args.land_margin}: the land mask's margin must "
                          "be >= 0 m")
+    if not 0.0 < args.censor_min_fraction <= 1.0:
+        raise UsageError(f"--censor-min-fraction {args.censor_min_fraction}: the fraction of "
+                         "a window's training cells a land-censored estimate needs must be "
+                         "in (0, 1]")
     if args.stonesoup and Path(args.stonesoup).exists() and not Path(args.stonesoup).is_dir():
         raise UsageError(f"--stonesoup {args.stonesoup}: exists and is not a directory")
     try:
@@ -82,7 +93,9 @@ def run(args: argparse.Namespace) -> int:
                             m_of_n=tuple(args.m_of_n) if args.m_of_n else None,
                             map_weight=args.map_weight,
                             land_mask=False if args.no_land_mask else None,
-                            land_margin_m=args.land_margin)
+                            land_margin_m=args.land_margin,
+                            land_censor=False if args.no_land_censor else None,
+                            censor_min_fraction=args.censor_min_fraction)
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     paths = write_detections(det, truth, out)
@@ -92,7 +105,9 @@ def run(args: argparse.Namespace) -> int:
           f"{a['detector']}, P_FA {a['pfa']:g}, alpha {a['alpha']:.4g}; {a['n_looks']} "
           f"looks, {a['cells_tested']} cells tested"
           + (f", {a['cells_blanked']} on the land blanked" if a.get("land_mask") else "")
-          + ")")
+          + (f"; land censored: {a['cells_censored']} cells with sea-only windows, "
+             f"{a['cells_short']} with too little sea untested" if a.get("land_censor")
+             else "") + ")")
     print(f"wrote {paths[1]} ({truth.sizes['opportunity']} object opportunities)")
     if args.stonesoup:
         from ..api import write_stonesoup_dir

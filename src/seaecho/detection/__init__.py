@@ -7,15 +7,16 @@ and writing tables is :mod:`seaecho.io.detections`; :func:`seaecho.detect` and
 """
 
 from .association import associate, ground_point, half_path, interpolate_truth, nearest_object
-from .cfar import CFAR, KINDS
+from .cfar import CFAR, KINDS, Censored
 from .clutter_map import ClutterMap, m_of_n
 from .footprint import clutter_cell_area, half_power_width
-from .frames import Frame, ObjectTruth, detect_frames, opportunity_groups
+from .frames import Frame, ObjectTruth, detect_frames, opportunity_groups, opportunity_visible
 from .plots import extract_plots
 from .scoring import opportunity_peaks, pd_at_pfa, roc, roc_from_statistic, score_tables
 
-__all__ = ["CFAR", "KINDS", "ClutterMap", "Frame", "ObjectTruth", "associate",
+__all__ = ["CFAR", "KINDS", "Censored", "ClutterMap", "Frame", "ObjectTruth", "associate",
            "clutter_cell_area", "detect_frames", "half_power_width",
            "extract_plots", "ground_point", "nearest_object", "opportunity_groups",
-           "half_path", "interpolate_truth", "m_of_n", "opportunity_peaks", "pd_at_pfa",
+           "half_path", "interpolate_truth", "m_of_n", "opportunity_peaks",
+           "opportunity_visible", "pd_at_pfa",
            "roc", "roc_from_statistic", "score_tables"]

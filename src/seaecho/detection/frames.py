@@ -19,10 +19,12 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .association import interpolate_truth, nearest_object
+from .cfar import Censored
 from .clutter_map import m_of_n
 from .plots import extract_plots
 
-__all__ = ["Frame", "ObjectTruth", "detect_frames", "opportunity_groups"]
+__all__ = ["Frame", "ObjectTruth", "detect_frames", "opportunity_groups",
+           "opportunity_visible"]
 
 
 @dataclass(frozen=True)
@@ -122,7 +124,8 @@ class Frame:
         (:meth:`ObjectTruth.visible_at`); None: always.
     blanked : ndarray of bool, optional
         Broadcastable to (rows, cols): cells left untested whatever the detector (the
-        land mask, :func:`seaecho.detection.landmask.land_mask`).
+        land mask, :func:`seaecho.detection.landmask.land_mask`), and kept out of the
+        training windows by a censored detector (:func:`detect_frames`' ``censored``).
     """
 
     kind: str
@@ -200,8 +203,22 @@ def opportunity_groups(frame: Frame, tested: NDArray, first_group: int = 0,
     return groups, {"look": cat(rec_look), "object": cat(rec_obj), "row": cat(rec_row)}
 
 
+def opportunity_visible(frame: Frame, table: dict[str, NDArray]) -> NDArray:
+    """Whether the truth lets the radar see each opportunity of
+    :func:`opportunity_groups`'s ``table``: the frame's ``truth_visible`` at the
+    opportunity's first row (the row that first puts the object in the tested cells);
+    all True without it. The one rule for every product: an opportunity the truth hides
+    is scored apart (:func:`seaecho.detection.scoring.score_tables`, and the ROC's P_D
+    leaves it out)."""
+    n = table["look"].size
+    if frame.truth_visible is None or not n:
+        return np.ones(n, bool)
+    return np.asarray(frame.truth_visible, dtype=bool)[table["row"], table["object"]]
+
+
 def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
-                  alpha: float, *, integrate: tuple[int, int] | None = None
+                  alpha: float, *, integrate: tuple[int, int] | None = None,
+                  censored: Callable[[NDArray, NDArray], Censored] | None = None
                   ) -> tuple[dict[str, NDArray], dict[str, NDArray], dict]:
     """Run a detector on frames: plots, their objects, and the opportunities.
 
@@ -216,6 +233,11 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
     integrate : (M, N), optional
         M-of-N over consecutive rows (pulses) before the plots: a cell of row i is
         declared when it crossed in at least M of rows i - N + 1 .. i.
+    censored : callable, optional
+        ``(power, exclude) -> Censored``: for frames with ``blanked`` cells, the
+        estimate and per-cell alpha with those cells left out of the training windows
+        (:meth:`seaecho.detection.cfar.CFAR.censored` at the design P_FA); without it
+        the blanked cells are only left untested.
 
     Returns
     -------
@@ -225,23 +247,33 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
     opportunities : dict
         Per (look, object): ``look``, ``object``, ``time_s``, ``x_m``, ``y_m``,
         ``snr`` (largest power / noise - 1 in the gate, linear), ``group``,
-        ``visible`` (the truth's, at the opportunity's first row).
+        ``visible`` (the truth's, at the opportunity's first row:
+        :func:`opportunity_visible`).
     totals : dict
-        ``cells_tested``, ``n_looks``, ``area_m2`` (per look), and ``groups`` /
-        ``statistic`` per frame for ROC curves.
+        ``cells_tested``, ``n_looks``, ``area_m2`` (per look), ``cells_censored``
+        (tested with a window that lost cells) and ``cells_short`` (left untested: too
+        few cells kept), and ``groups`` / ``statistic`` per frame for ROC curves.
     """
     det: dict[str, list] = {}
     opp: dict[str, list] = {}
     cells, looks, areas, next_group = 0, 0, [], 0
+    n_censored = n_short = 0
     for fr in frames:
-        est = noise(fr.power)
-        if fr.blanked is not None:  # the land mask: never tested
-            est = np.where(np.broadcast_to(fr.blanked, est.shape), np.nan, est)
+        thr = alpha
+        if fr.blanked is not None and censored is not None:  # land kept out of windows
+            c = censored(fr.power, fr.blanked)
+            est, thr = c.noise, c.alpha
+            n_censored += c.n_censored
+            n_short += int(c.short.sum())
+        else:
+            est = noise(fr.power)
+            if fr.blanked is not None:  # the land mask: never tested
+                est = np.where(np.broadcast_to(fr.blanked, est.shape), np.nan, est)
         with np.errstate(divide="ignore", invalid="ignore"):
             stat = fr.power / est
-        tested = np.isfinite(stat)
+        tested = np.isfinite(stat) & np.isfinite(thr)
         with np.errstate(invalid="ignore"):
-            hits = stat > alpha
+            hits = fr.power > thr * est
         if integrate is not None:
             m, n = integrate
             mofn = m_of_n(hits, m, n, axis=0)
@@ -284,8 +316,7 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
                     "time_s": fr.time_s[rows_], "x_m": xyz[:, 0], "y_m": xyz[:, 1],
                     "snr": np.maximum(peak - 1.0, 1e-12),
                     "group": next_group + np.arange(n_g),
-                    "visible": (fr.truth_visible[rows_, table["object"]]
-                                if fr.truth_visible is not None else np.ones(n_g, bool))}
+                    "visible": opportunity_visible(fr, table)}
         for k, v in opp_cols.items():
             opp.setdefault(k, []).append(np.asarray(v))
         fr.extra["groups"], fr.extra["statistic"] = groups, stat
@@ -297,5 +328,6 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
     detections = {k: v[order] for k, v in detections.items()}
     finite = [a for a in areas if np.isfinite(a)]
     totals = {"cells_tested": cells, "n_looks": looks,
-              "area_m2": float(np.mean(finite)) if finite else float("nan")}
+              "area_m2": float(np.mean(finite)) if finite else float("nan"),
+              "cells_censored": n_censored, "cells_short": n_short}
     return detections, opportunities, totals

@@ -127,8 +127,8 @@ def opportunity_peaks(statistic: ArrayLike, groups: ArrayLike, n_groups: int) ->
 
 
 def roc(detector: Callable[[NDArray], NDArray], power: ArrayLike, groups: ArrayLike,
-        n_groups: int, thresholds: ArrayLike | None = None
-        ) -> dict[str, NDArray]:
+        n_groups: int, thresholds: ArrayLike | None = None,
+        visible: ArrayLike | None = None) -> dict[str, NDArray]:
     """Receiver operating characteristic of a detector, by sweeping its threshold.
 
     Parameters
@@ -146,28 +146,40 @@ def roc(detector: Callable[[NDArray], NDArray], power: ArrayLike, groups: ArrayL
     thresholds : array_like, optional
         Thresholds on the statistic; default 400 quantiles of the background's and the
         opportunities' statistics.
+    visible : array_like of bool, optional
+        (n_groups,) whether the truth lets the radar see each opportunity (default
+        all): a hidden one is left out of P_D (its cells stay out of the background).
 
     Returns
     -------
     dict
         ``threshold``, ``pfa`` (fraction of background cells above), ``pd`` (fraction of
-        opportunities whose peak is above), each sorted by increasing threshold.
+        the visible opportunities whose peak is above), each sorted by increasing
+        threshold.
     """
     stat = np.asarray(detector(np.asarray(power, dtype=float)), dtype=float)
     if stat.shape != np.shape(groups):
         raise ValueError(f"the detector returned shape {stat.shape}, the power has "
                          f"{np.shape(groups)}: a detector maps each cell to one statistic")
-    return roc_from_statistic(stat, groups, n_groups, thresholds)
+    return roc_from_statistic(stat, groups, n_groups, thresholds, visible)
 
 
 def roc_from_statistic(statistic: ArrayLike, groups: ArrayLike, n_groups: int,
-                       thresholds: ArrayLike | None = None) -> dict[str, NDArray]:
+                       thresholds: ArrayLike | None = None,
+                       visible: ArrayLike | None = None) -> dict[str, NDArray]:
     """:func:`roc` from a statistic already computed (same arguments, ``statistic`` in
     place of the detector and the power)."""
     stat = np.asarray(statistic, dtype=float)
     g = np.asarray(groups)
     background = np.sort(stat[(g == -1) & np.isfinite(stat)])
-    peaks = np.sort(opportunity_peaks(stat, g, n_groups))
+    peaks = opportunity_peaks(stat, g, n_groups)
+    if visible is not None:
+        seen = np.asarray(visible).astype(bool)
+        if seen.shape != (n_groups,):
+            raise ValueError(f"visible of shape {seen.shape}: one per opportunity "
+                             f"({n_groups})")
+        peaks = peaks[seen]  # a hidden opportunity is no miss (score_tables' rule)
+    peaks = np.sort(peaks)
     if thresholds is None:
         both = np.concatenate([background, peaks[np.isfinite(peaks)]])
         thresholds = np.unique(np.quantile(both, np.linspace(0, 1, 400))) if both.size \

@@ -9,6 +9,7 @@ symbol          meaning                                                         
 ==============  ================================================================  ======
 N               training cells of a cell-averaging CFAR                          ``n``
 n               training cells of one half (leading or lagging) of a GO/SO CFAR   ``n_half``
+m, n            the two halves of a censored GO/SO window (D9)                   ``n_half, n_lag``
 k               rank of the order statistic of an OS-CFAR (1 = smallest)          ``k``
 alpha           threshold multiplier on the detector's noise estimate             ``alpha``
 S               signal-to-noise ratio of the cell under test (linear)             ``snr``
@@ -180,47 +181,84 @@ def pfa_ca_k(alpha: ArrayLike, n: int, nu: float, texture: str = "independent",
     return np.exp(special.logsumexp(log_w + n * np.log(np.maximum(phi, 1e-300)), axis=-1))
 
 
-def _pfa_so_sum(t: NDArray, n_half: int) -> NDArray:
-    """E[exp(-t min(X, Y))] with X, Y independent Gamma(n, 1) (the SO sum statistic)."""
-    j = np.arange(n_half, dtype=float)
-    # C(n - 1 + j, j) in logs: exact for any n without overflow
-    log_c = special.gammaln(n_half + j) - special.gammaln(n_half) - special.gammaln(j + 1.0)
-    t = np.asarray(t, dtype=float)[..., None]
-    return 2.0 * np.exp(log_c - (n_half + j) * np.log(2.0 + t)).sum(axis=-1)
+def _pfa_so_sum(alpha: ArrayLike, m: int, n: int) -> NDArray:
+    """E[exp(-alpha min(A, B))], A and B the means of m and n independent unit
+    exponentials (the SO statistic; eq D9).
+
+    A has the density m^m t^(m-1) e^(-m t) / (m - 1)! and P(B > t) = sum_{j<n} e^(-n t)
+    (n t)^j / j!, so E[e^(-alpha A) 1(A < B)] = sum_{j<n} C(m - 1 + j, j) m^m n^j
+    (alpha + m + n)^-(m + j), and the same with m, n swapped for B < A. For m = n it is
+    Gandhi & Kassam's sum with T = alpha / n (eq D3).
+    """
+    a = np.asarray(alpha, dtype=float)[..., None]
+
+    def below(p: int, q: int) -> NDArray:  # E[e^(-alpha A) 1(A < B)], A of p, B of q cells
+        j = np.arange(q, dtype=float)
+        # C(p - 1 + j, j) in logs: exact for any p without overflow
+        log_c = special.gammaln(p + j) - special.gammaln(p) - special.gammaln(j + 1.0)
+        return np.exp(log_c + p * np.log(p) + j * np.log(q)
+                      - (p + j) * np.log(a + p + q)).sum(axis=-1)
+
+    return below(m, n) + below(n, m)
 
 
-def pfa_so(alpha: ArrayLike, n_half: int) -> NDArray:
+def _halves(n_half: int, n_lag: int | None) -> tuple[int, int]:
+    m, n = int(n_half), int(n_half if n_lag is None else n_lag)
+    if m < 1 or n < 1:
+        raise ValueError(f"n_half = {n_half}, n_lag = {n_lag}: each half needs at least "
+                         "one training cell")
+    return m, n
+
+
+def pfa_so(alpha: ArrayLike, n_half: int, n_lag: int | None = None) -> NDArray:
     """False-alarm probability of a smallest-of CFAR (Gandhi & Kassam 1988, sec. III).
 
     .. math:: P_{FA} = 2 \\sum_{j=0}^{n-1} \\binom{n-1+j}{j} (2 + T)^{-(n+j)},
               \\quad T = \\alpha / n
+
+    With halves of m and n cells (a window censored unevenly, the land cells left out),
+    the estimate is the smaller of the mean of m and the mean of n cells, and
+
+    .. math:: P_{FA} = \\sum_{j<n} \\binom{m-1+j}{j} \\frac{m^m n^j}{(\\alpha+m+n)^{m+j}}
+              + \\sum_{i<m} \\binom{n-1+i}{i} \\frac{n^n m^i}{(\\alpha+m+n)^{n+i}}
+
+    (eq D9, :func:`_pfa_so_sum`: the order statistics of two independent gamma
+    variables; the first form at m = n).
 
     Parameters
     ----------
     alpha : array_like
         Threshold multiplier on the smaller of the two half means [-].
     n_half : int
-        Training cells n of each half.
+        Training cells n of each half (the leading half's m with ``n_lag``).
+    n_lag : int, optional
+        Training cells of the lagging half, if not ``n_half``.
     """
-    return _pfa_so_sum(np.asarray(alpha, dtype=float) / n_half, n_half)
+    return _pfa_so_sum(alpha, *_halves(n_half, n_lag))
 
 
-def pfa_go(alpha: ArrayLike, n_half: int) -> NDArray:
+def pfa_go(alpha: ArrayLike, n_half: int, n_lag: int | None = None) -> NDArray:
     """False-alarm probability of a greatest-of CFAR (Gandhi & Kassam 1988, sec. III).
 
-    Since max + min = X + Y, E[e^{-T max}] + E[e^{-T min}] = 2 (1 + T)^{-n}:
+    Since max + min = A + B, E[e^{-alpha max}] + E[e^{-alpha min}] = E[e^{-alpha A}] +
+    E[e^{-alpha B}], each half's mean a CA estimate (eq D1):
 
-    .. math:: P_{FA} = 2 (1 + T)^{-n} - P_{FA,SO}, \\quad T = \\alpha / n
+    .. math:: P_{FA} = (1 + \\alpha / m)^{-m} + (1 + \\alpha / n)^{-n} - P_{FA,SO}
+
+    (2 (1 + T)^{-n} - P_SO with T = alpha / n for equal halves, eq D2; halves of m and n
+    cells: eq D9's P_SO).
 
     Parameters
     ----------
     alpha : array_like
         Threshold multiplier on the larger of the two half means [-].
     n_half : int
-        Training cells n of each half.
+        Training cells n of each half (the leading half's m with ``n_lag``).
+    n_lag : int, optional
+        Training cells of the lagging half, if not ``n_half``.
     """
-    t = np.asarray(alpha, dtype=float) / n_half
-    return 2.0 * (1.0 + t) ** (-float(n_half)) - _pfa_so_sum(t, n_half)
+    m, n = _halves(n_half, n_lag)
+    return pfa_ca(alpha, m) + pfa_ca(alpha, n) - _pfa_so_sum(alpha, m, n)
 
 
 def pfa_os(alpha: ArrayLike, n: int, k: int) -> NDArray:

@@ -199,7 +199,7 @@ def profile_frames(run, channel: str | None = None,
                 "cell_area_m2": cell}
 
     return [Frame("profile", power, pulses.copy(), t, rng[None, :, None], r_obj, gate,
-                  locate, where, ndim=1, cell_area_m2=area,
+                  locate, where, ndim=1, cell_area_m2=area, truth_visible=truth.visible_at(t),
                   extra={"position_sigma_m": res, "channel": ch,
                          "beamwidth_deg": float(np.rad2deg(theta))})]
 
@@ -432,6 +432,7 @@ def image_frames(img, channel: str | None = None,
 
     return [Frame("image", power, np.zeros(y.size, np.int64), np.full(y.size, t_mid), cell,
                   where[..., :2], gate, locate, where, ndim=2, cell_area_m2=pixel * pixel,
+                  truth_visible=truth.visible_at(np.full(y.size, t_mid)),
                   extra={"position_sigma_m": res / 2.0, "channel": ch})]
 
 
