@@ -387,13 +387,8 @@ class CFAR(RatioDetector):
         fp_all = self.footprints[0]
         full = ok & (n_all == self.n_train)
         out = np.full(power.shape, np.nan)
-        if full.any():
-            x, wrap = self._pad(power)
-            r = ndimage.rank_filter(x, self.rank - 1, footprint=self._window(x, fp_all),
-                                    mode="constant", cval=0.0)
-            if wrap:
-                r = r[..., wrap[0]:r.shape[-2] - wrap[0], :]
-            out[full] = r[full]
+        if full.any():  # whole windows: the uncensored estimate's rank filter
+            out[full] = self.noise(power)[full]
         part = np.nonzero(ok & ~full)
         if part[0].size:
             vals = np.where(excl, np.inf, power)
