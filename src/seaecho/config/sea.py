@@ -41,7 +41,7 @@ class SeaConfig(Section):
         "Elfouhaily's long waves; docs/ocean.md). Default 'kudryavtsev': at X band (sea "
         "states 2-5, 5-30 deg grazing) its HH and VV stay within 3.4 dB and its VV/HH within "
         "2.9 dB of Nathanson's table and the GIT and NRL models, where 'elfouhaily' puts VV "
-        "2.8-6.4 dB and VV/HH 2.7-7.2 dB above them (docs/scattering.md, \"Choice of the "
+        "2.7-6.4 dB and VV/HH 2.8-7.2 dB above them (docs/scattering.md, \"Choice of the "
         "default\")",
     )
     spreading: SpreadingName = Field(
