@@ -122,7 +122,9 @@ def test_xband_vv_against_nathanson_known_excess(ss, grazing):
     visible: VV/HH is therefore 8-12 dB where Nathanson gives 4-7 dB. What causes it is
     examined by the two tests below and in docs/scattering.md ("X-band VV: diagnosis"):
     it is the E97 spectrum's level at the X-band Bragg waves; with the RAW97 spectrum VV
-    is within 0.6 dB of the published models (tests at the end of this file)."""
+    is within 0.6 dB of the published models (tests at the end of this file). E97 was the
+    default spectrum; the default is now K03, whose values
+    ``test_default_sea_xband_against_published_models`` holds."""
     u10 = SEA_STATE_WIND[ss]
     ours = _db(_seaecho("two-scale+breaking", 9.3e9, u10, [90.0 - grazing])[0, 3])
     ref = NATHANSON_XBAND[("V", ss)][grazing]
