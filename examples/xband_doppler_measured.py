@@ -3,9 +3,10 @@ grazing, and C and X band at moderate incidence against published Doppler model 
 
 Run: ``python examples/xband_doppler_measured.py [OUTDIR] [--grazing DEG | --gmf |
 --breaking]`` (default ``docs/figures``, 10 deg).
-Monostatic 10 GHz radar 1 km from the tile, looking upwind at 10 deg grazing, the default
-sea (Elfouhaily spectrum, Longuet-Higgins spreading with s = 1: the waves travel with the
-wind) on a 128 m tile with a 1 m grid, the default scattering model (``blend+breaking``) and
+Monostatic 10 GHz radar 1 km from the tile, looking upwind at 10 deg grazing, the sea of
+``sea_doppler.py`` (Elfouhaily spectrum, the default Longuet-Higgins spreading with s = 1:
+the waves travel with the wind) on a 128 m tile with a 1 m grid, the default scattering
+model (``blend+breaking``) and
 the default sea motion (``"auto"``: the sea is renewed within the run, so it evolves),
 geometry every 8 pulses, PRF 500 Hz, 96 pulses, wind U19.5 = 5, 8 and 12 m/s. Prints, per
 wind and channel, the clutter Doppler centroid and rms width (eq DP2 of docs/dynamics.md),

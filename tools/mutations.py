@@ -434,6 +434,14 @@ MUTATIONS = [
              ("tests/ocean/test_kudryavtsev.py",),
              "eq KU2's Gaussian on the wind input alone, the viscous loss unscaled (the "
              "commented-out line of the KHCC03 code)"),
+    # --- the default spectrum of [sea] (config/sea.py; docs/scattering.md, "Choice of the
+    #     default")
+    Mutation("default-spectrum-e97", S + "config/sea.py",
+             'spectrum: SpectrumName = Field(\n        "kudryavtsev",',
+             'spectrum: SpectrumName = Field(\n        "elfouhaily",',
+             ("tests/scattering/test_validation_gmf.py",),
+             "a scene that names no spectrum gets Elfouhaily's again (X-band VV 2.7-6.4 dB "
+             "above the published models)"),
     # --- detection (docs/detection.md)
     Mutation("ca-cfar-law-exponent", S + "detection/theory.py",
              "return (1.0 + np.asarray(alpha, dtype=float) / n) ** (-float(n))",
