@@ -15,7 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .ocean.spectra import DirectionalSpectrum
-from .ocean.surface import SeaSurface
+from .ocean.surface import SeaSurface, _kinematics_scratch
 
 
 class LazySlopes:
@@ -111,20 +111,30 @@ def surface_kinematics(surface: SeaSurface, t: float, acceleration: bool = True
     """:class:`SurfaceKinematics` of a :class:`~seaecho.ocean.surface.SeaSurface` at ``t``.
 
     Uses the realisation's travelling-wave amplitudes (``plus`` along +K, ``minus`` along
-    -K) and its dispersion relation, five inverse FFTs (two without ``acceleration``,
-    whose attribute is then None: the same displacement).
+    -K) and its dispersion relation: the inverse real FFTs of ``j (K / K) coth(K d) z``
+    (two) and of ``-omega^2`` times those and ``z`` (three more with ``acceleration``,
+    else the attribute is None and the displacement the same), batched in one transform
+    whose spectra are written into pooled scratch arrays
+    (``ocean.surface._kinematics_scratch``); only the fields returned are new arrays.
+    ``displacement`` and ``acceleration`` are views of one (k, ny, nx) array with the
+    component axis moved last.
     """
     plus, minus = surface._travelling(t)
-    z_hat = plus + minus
     jx, jy = _displacement_factors(surface)
-    dx_hat = jx * z_hat  # j (K_x / K) coth(K d) z
-    dy_hat = jy * z_hat
-    w2 = -surface._omega ** 2
-    irfft = surface._irfft
-    disp = np.moveaxis(irfft(np.stack([dx_hat, dy_hat])), 0, -1)  # one batched FFT
-    if not acceleration:
-        return SurfaceKinematics(t=float(t), displacement=disp, acceleration=None)
-    acc = np.stack([irfft(w2 * dx_hat), irfft(w2 * dy_hat), irfft(w2 * z_hat)], axis=-1)
+    n = 5 if acceleration else 2
+    with _kinematics_scratch(surface._a.shape) as w:
+        z_hat = np.add(plus, minus, out=w["z_hat"])
+        spectra = w["spectra"][:n]
+        np.multiply(jx, z_hat, out=spectra[0])  # j (K_x / K) coth(K d) z
+        np.multiply(jy, z_hat, out=spectra[1])
+        if acceleration:  # -omega^2 (D_x, D_y, z)
+            w2 = _minus_omega_squared(surface)
+            np.multiply(w2, spectra[0], out=spectra[2])
+            np.multiply(w2, spectra[1], out=spectra[3])
+            np.multiply(w2, z_hat, out=spectra[4])
+        fields = surface._irfft_scratch(spectra)  # one batched transform
+    disp = np.moveaxis(fields[:2], 0, -1)
+    acc = np.moveaxis(fields[2:], 0, -1) if acceleration else None
     return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc)
 
 
@@ -146,12 +156,24 @@ def _displacement_factors(surface: SeaSurface) -> tuple[NDArray, NDArray]:
     return out
 
 
+def _minus_omega_squared(surface: SeaSurface) -> NDArray[np.float64]:
+    """``-omega^2`` of a surface's half plane [rad^2/s^2], made once per surface."""
+    out = _W2.get(surface)
+    if out is None:
+        out = -surface._omega ** 2
+        _W2[surface] = out
+    return out
+
+
+_W2: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def vertical_acceleration(surface: SeaSurface, t: float) -> NDArray[np.float64]:
     """The particles' vertical acceleration a_z = -omega^2 z of the wind sea at ``t``
     [m/s^2], shape (ny, nx): ``surface_kinematics(surface, t).acceleration[..., 2]``, bit
     for bit, by one inverse FFT instead of five (Lamb 1932, art. 228-229)."""
     plus, minus = surface._travelling(t)
-    return surface._irfft(-surface._omega ** 2 * (plus + minus))
+    return surface._irfft_scratch(-surface._omega ** 2 * (plus + minus))
 
 
 #: Grids with at least this many nodes compute the ship's wake on a second thread [-].
