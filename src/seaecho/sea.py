@@ -99,43 +99,52 @@ class SurfaceKinematics:
         Horizontal particle displacement (D_x, D_y) [m].
     acceleration : ndarray (ny, nx, 3) or None
         Particle acceleration (a_x, a_y, a_z) [m/s^2] (None when not asked for).
+    acceleration_z : ndarray (ny, nx) or None
+        The vertical acceleration a_z [m/s^2]: ``acceleration[..., 2]`` where that is
+        given, alone with ``acceleration="vertical"``, else None.
     """
 
     t: float
     displacement: NDArray[np.float64]
     acceleration: NDArray[np.float64] | None
+    acceleration_z: NDArray[np.float64] | None = None
 
 
-def surface_kinematics(surface: SeaSurface, t: float, acceleration: bool = True
+def surface_kinematics(surface: SeaSurface, t: float, acceleration: bool | str = True
                        ) -> SurfaceKinematics:
     """:class:`SurfaceKinematics` of a :class:`~seaecho.ocean.surface.SeaSurface` at ``t``.
 
     Uses the realisation's travelling-wave amplitudes (``plus`` along +K, ``minus`` along
     -K) and its dispersion relation: the inverse real FFTs of ``j (K / K) coth(K d) z``
-    (two) and of ``-omega^2`` times those and ``z`` (three more with ``acceleration``,
-    else the attribute is None and the displacement the same), batched in one transform
-    whose spectra are written into pooled scratch arrays
-    (``ocean.surface._kinematics_scratch``); only the fields returned are new arrays.
-    ``displacement`` and ``acceleration`` are views of one (k, ny, nx) array with the
-    component axis moved last.
+    (two) and of ``-omega^2`` times those and ``z`` (three more with ``acceleration``;
+    ``"vertical"``: the one of ``z``, for ``acceleration_z`` alone; False: none, the
+    acceleration attributes None), batched in one transform whose spectra are written
+    into pooled scratch arrays (``ocean.surface._kinematics_scratch``); only the fields
+    returned are new arrays, views of one (k, ny, nx) array with the component axis moved
+    last. Every field has the bytes of its own inverse FFT whatever else is asked for.
     """
-    plus, minus = surface._travelling(t)
+    if acceleration not in (True, False, "vertical"):
+        raise ValueError(f"acceleration = {acceleration!r}: allowed True, False, 'vertical'")
     jx, jy = _displacement_factors(surface)
-    n = 5 if acceleration else 2
+    full = acceleration is True
+    n = 5 if full else 3 if acceleration == "vertical" else 2
     with _kinematics_scratch(surface._a.shape) as w:
+        plus, minus = surface._travelling_into(t, w)
         z_hat = np.add(plus, minus, out=w["z_hat"])
         spectra = w["spectra"][:n]
         np.multiply(jx, z_hat, out=spectra[0])  # j (K_x / K) coth(K d) z
         np.multiply(jy, z_hat, out=spectra[1])
-        if acceleration:  # -omega^2 (D_x, D_y, z)
+        if n > 2:  # -omega^2 ([D_x, D_y,] z)
             w2 = _minus_omega_squared(surface)
-            np.multiply(w2, spectra[0], out=spectra[2])
-            np.multiply(w2, spectra[1], out=spectra[3])
-            np.multiply(w2, z_hat, out=spectra[4])
+            if full:
+                np.multiply(w2, spectra[0], out=spectra[2])
+                np.multiply(w2, spectra[1], out=spectra[3])
+            np.multiply(w2, z_hat, out=spectra[n - 1])
         fields = surface._irfft_scratch(spectra)  # one batched transform
     disp = np.moveaxis(fields[:2], 0, -1)
-    acc = np.moveaxis(fields[2:], 0, -1) if acceleration else None
-    return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc)
+    acc = np.moveaxis(fields[2:], 0, -1) if full else None
+    return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc,
+                             acceleration_z=fields[n - 1] if n > 2 else None)
 
 
 _FACTORS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
@@ -279,9 +288,11 @@ class Sea:
     def y(self) -> NDArray[np.float64]:
         return self.surface.y
 
-    def kinematics(self, t: float = 0.0, acceleration: bool = True) -> SurfaceKinematics:
+    def kinematics(self, t: float = 0.0, acceleration: bool | str = True
+                   ) -> SurfaceKinematics:
         """Particle displacement and acceleration of the wind sea at ``t`` [s]
-        (:func:`surface_kinematics`; the displacement alone without ``acceleration``).
+        (:func:`surface_kinematics`; the displacement alone without ``acceleration``, and
+        the vertical acceleration only with ``"vertical"``).
         From then on the surface keeps its last time's travelling waves for the sea state
         of that time (``SeaSurface.share_travelling``)."""
         self.surface.share_travelling = True

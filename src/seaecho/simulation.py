@@ -553,17 +553,17 @@ class Simulation:
                                              self.block > 1 else None}}
         if breaking is not None:
             area = self.engine.geometry(state)[1]
-            acc_z = to_facets(kin.acceleration[..., 2]).reshape(-1)
+            acc_z = to_facets(kin.acceleration_z).reshape(-1)
             q["breaking"] = breaking_placement(-acc_z, area, breaking.q)
         return q
 
     def _kinematics(self, t: float):
         """The particles' kinematics of the fused kernel's evolving block at ``t`` [s]
-        (:meth:`seaecho.sea.Sea.kinematics`): the acceleration only where a pulse of a
-        block is after its surface time (``sea_update_pulses > 1``) or the breaking zones
-        are placed by it."""
-        return self.sea.kinematics(t, acceleration=self.block > 1
-                                   or self.sea_model.breaking is not None)
+        (:meth:`seaecho.sea.Sea.kinematics`): the acceleration where a pulse of a block is
+        after its surface time (``sea_update_pulses > 1``), else its vertical component
+        alone where the breaking zones are placed by it."""
+        vertical = "vertical" if self.sea_model.breaking is not None else False
+        return self.sea.kinematics(t, acceleration=True if self.block > 1 else vertical)
 
     def phase_centres(self, pulse: int, state) -> NDArray[np.float64]:
         """Phase centres of the facets at ``pulse``'s emission time [m], shape (N, 3).

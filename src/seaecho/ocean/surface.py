@@ -191,7 +191,8 @@ class _kinematics_scratch(_scratch):
 
     def _make(self) -> dict:
         e = np.empty
-        return dict(z_hat=e(self.shape, np.complex128),
+        return dict(phase=e(self.shape, np.complex128), plus=e(self.shape, np.complex128),
+                    z_hat=e(self.shape, np.complex128),
                     spectra=e((5, *self.shape), np.complex128))
 
 
