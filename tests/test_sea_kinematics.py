@@ -129,6 +129,8 @@ def test_each_field_is_the_inverse_fft_of_its_spectrum(kw):
     assert alone.acceleration_z is None
     assert vertical.acceleration_z.tobytes() == want_a[2].tobytes()
     assert vertical_acceleration(s, t).tobytes() == want_a[2].tobytes()
+    assert surface_kinematics(s, t, np.bool_(True)).acceleration.tobytes() == \
+        full.acceleration.tobytes()
     with pytest.raises(ValueError, match="acceleration"):
         surface_kinematics(s, t, acceleration="horizontal")
 

@@ -123,11 +123,12 @@ def surface_kinematics(surface: SeaSurface, t: float, acceleration: bool | str =
     returned are new arrays, views of one (k, ny, nx) array with the component axis moved
     last. Every field has the bytes of its own inverse FFT whatever else is asked for.
     """
-    if acceleration not in (True, False, "vertical"):
+    vertical = isinstance(acceleration, str)
+    if vertical and acceleration != "vertical":
         raise ValueError(f"acceleration = {acceleration!r}: allowed True, False, 'vertical'")
     jx, jy = _displacement_factors(surface)
-    full = acceleration is True
-    n = 5 if full else 3 if acceleration == "vertical" else 2
+    full = not vertical and bool(acceleration)
+    n = 5 if full else 3 if vertical else 2
     with _kinematics_scratch(surface._a.shape) as w:
         plus, minus = surface._travelling_into(t, w)
         z_hat = np.add(plus, minus, out=w["z_hat"])

@@ -181,9 +181,9 @@ class _scratch:
 
 class _kinematics_scratch(_scratch):
     """Scratch arrays of the particles' kinematics (:func:`seaecho.sea.
-    surface_kinematics`) on a half plane of ``shape``: ``z_hat`` and a stack of five
-    float64 spectra (``with _kinematics_scratch(shape) as w``), pooled as
-    :class:`_scratch`'s."""
+    surface_kinematics`) on a half plane of ``shape``: the travelling waves' (for
+    :meth:`SeaSurface._travelling_into`), ``z_hat`` and a stack of five float64 spectra
+    (``with _kinematics_scratch(shape) as w``), pooled as :class:`_scratch`'s."""
 
     def __init__(self, shape: tuple[int, int]) -> None:
         super().__init__(shape, np.complex128)
