@@ -170,3 +170,32 @@ def test_returned_fields_survive_later_calls_and_threads():
         serial = surface_kinematics(s, t, acceleration="vertical")
         assert out[t].displacement.tobytes() == serial.displacement.tobytes()
         assert out[t].acceleration_z.tobytes() == serial.acceleration_z.tobytes()
+
+
+def test_evolving_pulses_use_the_kinematics_computed_ahead(monkeypatch):
+    # Simulation.pulses starts the next pulse's sea state and kinematics on threads
+    # (prefetch_surface) before the current pulse reads its own (_block_quantities): each
+    # surface's kinematics is computed once, on a thread but for the first pulse's; the
+    # bytes of such pulses are those of each pulse alone (test_simulation.py, the next
+    # sea computed ahead)
+    from seaecho.simulation import Simulation
+    from test_simulation import _raytraced_scene
+
+    sim = Simulation(_raytraced_scene(0.0, sea_update_pulses=1))
+    assert sim.evolving and sim._resident is not None
+    times = []
+    kinematics = sim.sea.kinematics
+
+    def spy(t, acceleration=True):
+        times.append((t, threading.current_thread() is threading.main_thread()))
+        return kinematics(t, acceleration)
+
+    monkeypatch.setattr(sim.sea, "kinematics", spy)
+    for p in range(4):  # as Simulation.pulses orders them
+        state = sim.surface_state(p)
+        sim.prefetch_surface(p + 1)
+        held = sim._block_quantities(p, state, 1)
+        assert held["t"] == state.t
+    sim._kinematics_ahead[sim.surface_time(4)].result()  # started by pulse 3
+    assert len({t for t, _ in times}) == len(times) == 5  # once per surface
+    assert sorted(main for _, main in times) == [False] * 4 + [True]
