@@ -1,7 +1,7 @@
 """Per-stage profile of a Simulation 2 pulse: wall time and CPU time of each stage.
 
 Run: ``python benchmarks/profile_pulse.py [--pulses 8] [--refresh 0.1] [--update 160]
-[--motion held|evolving]``.
+[--motion held|evolving] [--model blend+breaking]``.
 
 The stages are the functions a pulse calls, timed by wrapping them (whatever is present
 in this version of the code: the same script profiles the reference path and the fused
@@ -148,6 +148,10 @@ def main() -> None:
     ap.add_argument("--motion", choices=["auto", "held", "evolving"], default=None,
                     help="[scattering] sea_motion (default: the scene's; 'auto' evolves "
                     "a sea renewed within the run, e.g. --update 1)")
+    ap.add_argument("--model", default=None,
+                    help="[scattering] model (default: the scene's; 'blend+breaking' places "
+                    "breaking zones on the vertical acceleration, which an evolving sea "
+                    "then synthesises with the displacement)")
     ap.add_argument("--no-ship", action="store_true",
                     help="without the ship (its wake and hull): OceanSAR's job")
     ap.add_argument("--channels", default=None,
@@ -181,9 +185,11 @@ def main() -> None:
             update={"refresh_interval_s": args.refresh})
     if args.grid:
         update["sea"] = scene.sea.model_copy(update={"nx": args.grid})
-    if args.motion is not None:
-        update["scattering"] = scene.scattering.model_copy(
-            update={"sea_motion": args.motion})
+    scattering = {} if args.motion is None else {"sea_motion": args.motion}
+    if args.model is not None:
+        scattering["model"] = args.model
+    if scattering:
+        update["scattering"] = scene.scattering.model_copy(update=scattering)
     scene = scene.model_copy(update=update)
     timer = Timer()
     found = install(timer)
@@ -222,6 +228,7 @@ def main() -> None:
     print(f"profile_pulse: {SIM2.stem}, {scene.sea.nx}^2 sea, refresh_interval_s = "
           f"{args.refresh:g}, sea_update_pulses = {args.update}, {motion} sea, "
           f"{'no ship, ' if args.no_ship else ''}{','.join(scene.radar.channels)}, "
+          f"{scene.scattering.model}, "
           f"{n} pulses, "
           f"{path}, "
           f"NUFFT {args.nufft_precision}; "

@@ -1111,6 +1111,15 @@ MUTATIONS = [
              "np.asarray(opp_visible).astype(bool)", "np.ones(ol.size, bool)",
              ("tests/detection/test_landmask.py",),
              "opportunities the truth hides counted as misses in the P_D"),
+    Mutation("kinematics-deep-water-always", S + "sea.py",
+             "coth = 1.0 if surface.depth is None else 1.0 / np.tanh(k * surface.depth)",
+             "coth = 1.0", ("tests/test_sea_kinematics.py",),
+             "the horizontal displacement without coth(K d) in finite depth (Lamb art. 228)"),
+    Mutation("kinematics-vertical-acceleration-of-dx", S + "sea.py",
+             "np.multiply(w2, z_hat, out=spectra[n - 1])",
+             "np.multiply(w2, spectra[0], out=spectra[n - 1])",
+             ("tests/test_sea_kinematics.py",),
+             "a_z synthesised from D_x's spectrum in the batched transform"),
 ]
 
 def _copy_tree(dest: Path) -> None:

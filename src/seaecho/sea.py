@@ -15,7 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .ocean.spectra import DirectionalSpectrum
-from .ocean.surface import SeaSurface
+from .ocean.surface import SeaSurface, _kinematics_scratch
 
 
 class LazySlopes:
@@ -99,33 +99,53 @@ class SurfaceKinematics:
         Horizontal particle displacement (D_x, D_y) [m].
     acceleration : ndarray (ny, nx, 3) or None
         Particle acceleration (a_x, a_y, a_z) [m/s^2] (None when not asked for).
+    acceleration_z : ndarray (ny, nx) or None
+        The vertical acceleration a_z [m/s^2]: ``acceleration[..., 2]`` where that is
+        given, alone with ``acceleration="vertical"``, else None.
     """
 
     t: float
     displacement: NDArray[np.float64]
     acceleration: NDArray[np.float64] | None
+    acceleration_z: NDArray[np.float64] | None = None
 
 
-def surface_kinematics(surface: SeaSurface, t: float, acceleration: bool = True
+def surface_kinematics(surface: SeaSurface, t: float, acceleration: bool | str = True
                        ) -> SurfaceKinematics:
     """:class:`SurfaceKinematics` of a :class:`~seaecho.ocean.surface.SeaSurface` at ``t``.
 
     Uses the realisation's travelling-wave amplitudes (``plus`` along +K, ``minus`` along
-    -K) and its dispersion relation, five inverse FFTs (two without ``acceleration``,
-    whose attribute is then None: the same displacement).
+    -K) and its dispersion relation: the inverse real FFTs of ``j (K / K) coth(K d) z``
+    (two) and of ``-omega^2`` times those and ``z`` (three more with ``acceleration``;
+    ``"vertical"``: the one of ``z``, for ``acceleration_z`` alone; False: none, the
+    acceleration attributes None), batched in one transform whose spectra are written
+    into pooled scratch arrays (``ocean.surface._kinematics_scratch``); only the fields
+    returned are new arrays, views of one (k, ny, nx) array with the component axis moved
+    last. Every field has the bytes of its own inverse FFT whatever else is asked for.
     """
-    plus, minus = surface._travelling(t)
-    z_hat = plus + minus
+    vertical = isinstance(acceleration, str)
+    if vertical and acceleration != "vertical":
+        raise ValueError(f"acceleration = {acceleration!r}: allowed True, False, 'vertical'")
     jx, jy = _displacement_factors(surface)
-    dx_hat = jx * z_hat  # j (K_x / K) coth(K d) z
-    dy_hat = jy * z_hat
-    w2 = -surface._omega ** 2
-    irfft = surface._irfft
-    disp = np.moveaxis(irfft(np.stack([dx_hat, dy_hat])), 0, -1)  # one batched FFT
-    if not acceleration:
-        return SurfaceKinematics(t=float(t), displacement=disp, acceleration=None)
-    acc = np.stack([irfft(w2 * dx_hat), irfft(w2 * dy_hat), irfft(w2 * z_hat)], axis=-1)
-    return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc)
+    full = not vertical and bool(acceleration)
+    n = 5 if full else 3 if vertical else 2
+    with _kinematics_scratch(surface._a.shape) as w:
+        plus, minus = surface._travelling_into(t, w)
+        z_hat = np.add(plus, minus, out=w["z_hat"])
+        spectra = w["spectra"][:n]
+        np.multiply(jx, z_hat, out=spectra[0])  # j (K_x / K) coth(K d) z
+        np.multiply(jy, z_hat, out=spectra[1])
+        if n > 2:  # -omega^2 ([D_x, D_y,] z)
+            w2 = _minus_omega_squared(surface)
+            if full:
+                np.multiply(w2, spectra[0], out=spectra[2])
+                np.multiply(w2, spectra[1], out=spectra[3])
+            np.multiply(w2, z_hat, out=spectra[n - 1])
+        fields = surface._irfft_scratch(spectra)  # one batched transform
+    disp = np.moveaxis(fields[:2], 0, -1)
+    acc = np.moveaxis(fields[2:], 0, -1) if full else None
+    return SurfaceKinematics(t=float(t), displacement=disp, acceleration=acc,
+                             acceleration_z=fields[n - 1] if n > 2 else None)
 
 
 _FACTORS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
@@ -146,12 +166,24 @@ def _displacement_factors(surface: SeaSurface) -> tuple[NDArray, NDArray]:
     return out
 
 
+def _minus_omega_squared(surface: SeaSurface) -> NDArray[np.float64]:
+    """``-omega^2`` of a surface's half plane [rad^2/s^2], made once per surface."""
+    out = _W2.get(surface)
+    if out is None:
+        out = -surface._omega ** 2
+        _W2[surface] = out
+    return out
+
+
+_W2: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def vertical_acceleration(surface: SeaSurface, t: float) -> NDArray[np.float64]:
     """The particles' vertical acceleration a_z = -omega^2 z of the wind sea at ``t``
     [m/s^2], shape (ny, nx): ``surface_kinematics(surface, t).acceleration[..., 2]``, bit
     for bit, by one inverse FFT instead of five (Lamb 1932, art. 228-229)."""
     plus, minus = surface._travelling(t)
-    return surface._irfft(-surface._omega ** 2 * (plus + minus))
+    return surface._irfft_scratch(-surface._omega ** 2 * (plus + minus))
 
 
 #: Grids with at least this many nodes compute the ship's wake on a second thread [-].
@@ -257,9 +289,11 @@ class Sea:
     def y(self) -> NDArray[np.float64]:
         return self.surface.y
 
-    def kinematics(self, t: float = 0.0, acceleration: bool = True) -> SurfaceKinematics:
+    def kinematics(self, t: float = 0.0, acceleration: bool | str = True
+                   ) -> SurfaceKinematics:
         """Particle displacement and acceleration of the wind sea at ``t`` [s]
-        (:func:`surface_kinematics`; the displacement alone without ``acceleration``).
+        (:func:`surface_kinematics`; the displacement alone without ``acceleration``, and
+        the vertical acceleration only with ``"vertical"``).
         From then on the surface keeps its last time's travelling waves for the sea state
         of that time (``SeaSurface.share_travelling``)."""
         self.surface.share_travelling = True

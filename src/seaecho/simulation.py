@@ -285,8 +285,9 @@ class Simulation:
         self._lazy_slopes = False  # sea states' slopes synthesised when read (LazySlopes)
         # (time, job) of the sea state computed ahead on a thread (prefetch_surface)
         self._prefetch: tuple[float, object] | None = None
-        # (time, job) of the evolving block's kinematics computed ahead (fused kernel)
-        self._kinematics_ahead: tuple[float, object] | None = None
+        # {time: job} of the evolving blocks' kinematics computed ahead (fused kernel):
+        # the next pulse's is started before this pulse reads its own, so two are kept
+        self._kinematics_ahead: dict[float, object] = {}
         # Per-sea-state quantities, computed once per block of held pulses and reused by
         # its pulses: (block, {"damping": ..., "draws": ...}). A pulse's result still
         # depends only on (scene, pulse): the cache holds what the block index determines.
@@ -435,7 +436,10 @@ class Simulation:
 
         self._prefetch = (t, ThreadJob(self.sea.state, t))
         if self.evolving and self._resident is not None:  # the block's kinematics too
-            self._kinematics_ahead = (t, ThreadJob(self._kinematics, t))
+            kept = self._state_cache[0] if self._state_cache is not None else None
+            self._kinematics_ahead = {s: job for s, job in self._kinematics_ahead.items()
+                                      if s == kept}
+            self._kinematics_ahead[t] = ThreadJob(self._kinematics, t)
 
     def surface_state_at(self, t: float):
         """Sea state held at time ``t`` [s]: that of the pulse emitted at or before t
@@ -542,9 +546,9 @@ class Simulation:
         from .geometry.mesh import to_facets
 
         breaking = self.sea_model.breaking
-        ahead, self._kinematics_ahead = self._kinematics_ahead, None
-        if ahead is not None and ahead[0] == state.t:  # computed on a thread (prefetch)
-            kin = ahead[1].result()
+        ahead = self._kinematics_ahead.pop(state.t, None)
+        if ahead is not None:  # computed on a thread (prefetch)
+            kin = ahead.result()
         else:
             kin = self._kinematics(state.t)
         q = {"damping": _block_damping(state), "draws": None, "breaking": None,
@@ -553,17 +557,17 @@ class Simulation:
                                              self.block > 1 else None}}
         if breaking is not None:
             area = self.engine.geometry(state)[1]
-            acc_z = to_facets(kin.acceleration[..., 2]).reshape(-1)
+            acc_z = to_facets(kin.acceleration_z).reshape(-1)
             q["breaking"] = breaking_placement(-acc_z, area, breaking.q)
         return q
 
     def _kinematics(self, t: float):
         """The particles' kinematics of the fused kernel's evolving block at ``t`` [s]
-        (:meth:`seaecho.sea.Sea.kinematics`): the acceleration only where a pulse of a
-        block is after its surface time (``sea_update_pulses > 1``) or the breaking zones
-        are placed by it."""
-        return self.sea.kinematics(t, acceleration=self.block > 1
-                                   or self.sea_model.breaking is not None)
+        (:meth:`seaecho.sea.Sea.kinematics`): the acceleration where a pulse of a block is
+        after its surface time (``sea_update_pulses > 1``), else its vertical component
+        alone where the breaking zones are placed by it."""
+        vertical = "vertical" if self.sea_model.breaking is not None else False
+        return self.sea.kinematics(t, acceleration=True if self.block > 1 else vertical)
 
     def phase_centres(self, pulse: int, state) -> NDArray[np.float64]:
         """Phase centres of the facets at ``pulse``'s emission time [m], shape (N, 3).

@@ -150,14 +150,16 @@ def test_fused_path_refuses_missing_draws():
 
 
 @pytest.mark.parametrize("update, model", [
-    (3, "blend+breaking"), pytest.param(1, "blend", marks=pytest.mark.slow)])
+    (3, "blend+breaking"), pytest.param(1, "blend", marks=pytest.mark.slow),
+    pytest.param(1, "blend+breaking", marks=pytest.mark.slow)])
 def test_fused_evolving_pulse_equals_the_reference_path_bit_for_bit(update, model):
     # sea_motion = "evolving" (docs/dynamics.md): the kernel evaluates the speckle of the
     # pulse's time (eqs D2-D4, EvolvingSpeckle.draws) and carries the phase centres from
     # the surface's time (eq D1: r + D + v dt + a dt^2 / 2 from the nodes' displacement
     # and acceleration) with the reference path's functions, so the same bytes. Pulses
     # 1 and 5 are 1 and 2 ms after their surface (acceleration used) with update 3;
-    # breaking zones placed on the block's downward acceleration.
+    # breaking zones placed on the block's downward acceleration (with update 1 its
+    # vertical component alone, Simulation._kinematics).
     fused, ref = _pair(_scene(scattering={"sea_motion": "evolving", "model": model},
                               radar={"sea_update_pulses": update}))
     assert fused.evolving and ref.evolving

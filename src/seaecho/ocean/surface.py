@@ -163,17 +163,37 @@ class _scratch:
             if free:
                 self.w = free.pop()
                 return self.w
-        e = np.empty
-        self.w = dict(phase=e(self.shape, np.complex128), plus=e(self.shape, np.complex128),
-                      z_hat=e(self.shape, np.complex128), z_c=e(self.shape, self.c),
-                      diff=e(self.shape, self.c), spectra=e((5, *self.shape), self.c))
+        self.w = self._make()
         return self.w
+
+    def _make(self) -> dict:
+        e = np.empty
+        return dict(phase=e(self.shape, np.complex128), plus=e(self.shape, np.complex128),
+                    z_hat=e(self.shape, np.complex128), z_c=e(self.shape, self.c),
+                    diff=e(self.shape, self.c), spectra=e((5, *self.shape), self.c))
 
     def __exit__(self, *exc) -> None:
         with _SCRATCH_LOCK:
             free = _SCRATCH.setdefault(self.key, [])
             if len(free) < _SCRATCH_KEEP:
                 free.append(self.w)
+
+
+class _kinematics_scratch(_scratch):
+    """Scratch arrays of the particles' kinematics (:func:`seaecho.sea.
+    surface_kinematics`) on a half plane of ``shape``: the travelling waves' (for
+    :meth:`SeaSurface._travelling_into`), ``z_hat`` and a stack of five float64 spectra
+    (``with _kinematics_scratch(shape) as w``), pooled as :class:`_scratch`'s."""
+
+    def __init__(self, shape: tuple[int, int]) -> None:
+        super().__init__(shape, np.complex128)
+        self.key = (*self.key, "kinematics")
+
+    def _make(self) -> dict:
+        e = np.empty
+        return dict(phase=e(self.shape, np.complex128), plus=e(self.shape, np.complex128),
+                    z_hat=e(self.shape, np.complex128),
+                    spectra=e((5, *self.shape), np.complex128))
 
 
 @dataclass(frozen=True)
@@ -334,6 +354,16 @@ class SeaSurface:
         ny, nx = self.shape
         return scipy.fft.irfft2(spec, s=(ny, nx), axes=(-2, -1), norm="forward", workers=-1)
 
+    def _irfft_scratch(self, spec: NDArray[np.complexfloating]) -> NDArray[np.floating]:
+        """:meth:`_irfft` of ``spec``, the same bytes, with ``spec`` (a scratch array)
+        overwritten by the inverse complex FFT along y: pocketfft's ``irfft2`` does that
+        transform first (with the unit factor of ``norm="forward"``) into a temporary
+        array of the spectra's size, whose pages the kernel would fault in and zero at
+        every call; here only the output is new."""
+        ny, nx = self.shape
+        spec = scipy.fft.ifft(spec, axis=-2, norm="forward", overwrite_x=True, workers=-1)
+        return scipy.fft.irfft(spec, n=nx, axis=-1, norm="forward", workers=-1)
+
     def _travelling(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
         """The two travelling waves' spectra at ``t`` [s] (eq 12'): ``a e^{-j omega t}``
         and ``b e^{+j omega t}``, read-only. With :attr:`share_travelling` the last
@@ -359,7 +389,8 @@ class SeaSurface:
 
     def _travelling_at(self, t: float) -> tuple[NDArray[np.complex128], NDArray[np.complex128]]:
         if self._omega_current is None:
-            phase = np.exp(self._minus_j_omega() * t)  # Eq. 15 evolution, exp(-j omega t)
+            phase = self._minus_j_omega() * t
+            np.exp(phase, out=phase)  # Eq. 15 evolution, exp(-j omega t)
             out = (self._a * phase, self._b * np.conj(phase))
         else:  # eq C1: each wave at its Doppler-shifted frequency
             w_plus, w_minus = self._omega_current
@@ -413,7 +444,7 @@ class SeaSurface:
     def elevation(self, t: float = 0.0) -> NDArray[np.float64]:
         """z(x, y, t) [m], shape (ny, nx)."""
         plus, minus = self._travelling(t)
-        return self._irfft(plus + minus)
+        return self._irfft_scratch(plus + minus)
 
     def fields(self, t: float = 0.0, slopes: bool = True) -> SurfaceFields:
         """Elevation, slopes and surface velocity at time t [s].
@@ -422,7 +453,8 @@ class SeaSurface:
         ``precision`` (module docstring); every array returned is float64. The spectra
         in between are written into scratch arrays kept between calls
         (:func:`_scratch`: no fresh pages to fault in at every time), with the same
-        operations, hence the same numbers, as fresh arrays. ``slopes=False`` leaves the
+        operations, hence the same numbers, as fresh arrays, and the transforms work in
+        them (:meth:`_irfft_scratch`). ``slopes=False`` leaves the
         slopes out (None; three transforms instead of five): :meth:`slopes` gives the
         same arrays later.
         """
@@ -441,7 +473,7 @@ class SeaSurface:
             spectra = w["spectra"][:2]
             np.multiply(jkx, z_c, out=spectra[0])  # dz/dx
             np.multiply(jky, z_c, out=spectra[1])  # dz/dy
-            derived = self._irfft(spectra)
+            derived = self._irfft_scratch(spectra)
         return derived[0].astype(np.float64), derived[1].astype(np.float64)
 
     def _travelling_into(self, t: float, w: dict):
@@ -472,8 +504,6 @@ class SeaSurface:
         """:meth:`fields` with the scratch arrays ``w`` (:func:`_scratch`)."""
         plus, minus = self._travelling_into(t, w)
         z_c = self._spectrum_z(plus, minus, w)
-        z_hat = w["z_hat"]
-        elevation = self._irfft(z_hat)
         jkx, jky, jw, ux, uy = self._derivatives
         c = jkx.dtype
         diff = np.subtract(plus, minus, out=w["phase"])  # wave along +K minus along -K
@@ -495,7 +525,9 @@ class SeaSurface:
             spectra[2] += ux * gain * z_u  # u: D = j (K_x/K) coth z, D-rate - U . grad D
             spectra[3] += uy * gain * z_u
             spectra[4] += z_u  # dz/dt at the node: w - U . grad z
-        derived = self._irfft(spectra if slopes else spectra[2:])
+        derived = self._irfft_scratch(spectra if slopes else spectra[2:])
+        # last: the transform overwrites z_hat, which is z_c in double precision
+        elevation = self._irfft_scratch(w["z_hat"])
         velocity = np.empty((*self.shape, 3))
         for i in range(3):
             velocity[..., i] = derived[i - 3]
