@@ -196,6 +196,9 @@ def test_scene_with_ships_and_presets_reads_back_from_its_json():
 
 
 @pytest.mark.slow
+# the example's 2 m grid leaves X-band Bragg roughness unresolved (k h = 7): warned, as
+# every marine-scale grid here is (docs/scattering.md, "Validity warnings")
+@pytest.mark.filterwarnings("ignore::seaecho.scattering.validity.SPMValidityWarning")
 def test_traffic_picture_example_runs(tmp_path):
     # docs/targets.md quotes this script's numbers and shows its figures
     import importlib
