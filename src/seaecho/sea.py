@@ -146,12 +146,23 @@ def _displacement_factors(surface: SeaSurface) -> tuple[NDArray, NDArray]:
     return out
 
 
-def vertical_acceleration(surface: SeaSurface, t: float) -> NDArray[np.float64]:
+def vertical_acceleration(surface: SeaSurface, t: float, k_max: float | None = None
+                          ) -> NDArray[np.float64]:
     """The particles' vertical acceleration a_z = -omega^2 z of the wind sea at ``t``
     [m/s^2], shape (ny, nx): ``surface_kinematics(surface, t).acceleration[..., 2]``, bit
-    for bit, by one inverse FFT instead of five (Lamb 1932, art. 228-229)."""
+    for bit, by one inverse FFT instead of five (Lamb 1932, art. 228-229).
+
+    ``k_max`` [rad/m]: that of the waves ``|K| < k_max`` only (the long waves that
+    modulate breaking, eq BR7 of :mod:`seaecho.scattering.breaking`); None, or a
+    ``k_max`` above every wavenumber of the grid, gives the whole sea's, bit for bit.
+    """
     plus, minus = surface._travelling(t)
-    return surface._irfft(-surface._omega ** 2 * (plus + minus))
+    spec = -surface._omega ** 2 * (plus + minus)
+    if k_max is not None:
+        k2 = surface._kx ** 2 + surface._ky ** 2
+        if float(np.max(k2)) >= k_max * k_max:
+            spec = np.where(k2 < k_max * k_max, spec, 0.0)
+    return surface._irfft(spec)
 
 
 #: Grids with at least this many nodes compute the ship's wake on a second thread [-].
@@ -265,10 +276,11 @@ class Sea:
         self.surface.share_travelling = True
         return surface_kinematics(self.surface, t, acceleration)
 
-    def vertical_acceleration(self, t: float = 0.0) -> NDArray[np.float64]:
-        """Vertical particle acceleration of the wind sea at ``t`` [m/s^2]
-        (:func:`vertical_acceleration`)."""
-        return vertical_acceleration(self.surface, t)
+    def vertical_acceleration(self, t: float = 0.0, k_max: float | None = None
+                              ) -> NDArray[np.float64]:
+        """Vertical particle acceleration of the wind sea at ``t`` [m/s^2], of the waves
+        ``|K| < k_max`` [rad/m] if given (:func:`vertical_acceleration`)."""
+        return vertical_acceleration(self.surface, t, k_max)
 
     def _ship_fields(self, t: float):
         """The Kelvin wakes' summed fields (or None) and the combined turbulent-wake mask

@@ -60,7 +60,7 @@ from .conventions import CHANNELS
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import facet_gaussians
-from .scattering.breaking import breaking_placement
+from .scattering.breaking import breaking_placement, modulating_wavenumber_limit
 
 #: Names of the 2x2 scattering channels, (h, v) order flattened.
 POLARISATIONS = CHANNELS
@@ -88,14 +88,19 @@ def _block_damping(state) -> NDArray[np.float64] | None:
 def breaking_fraction(sea_model, sea, state, area: NDArray) -> NDArray[np.float64]:
     """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
 
-    Downward acceleration of the wind sea at the state's time (linear kinematics,
-    :meth:`seaecho.sea.Sea.vertical_acceleration`) averaged over each facet's vertices; the
-    facets of largest value, of areas ``area`` [m^2], cover the fraction q of KHCC03
-    (:func:`seaecho.scattering.breaking.breaking_placement`).
+    Downward acceleration at the state's time of the long waves that modulate breaking,
+    ``|K| < k_mod = k_wb / 10`` (eq BR7 of :mod:`seaecho.scattering.breaking`: ten times
+    longer than the shortest breakers; linear kinematics,
+    :meth:`seaecho.sea.Sea.vertical_acceleration`), averaged over each facet's vertices;
+    the facets of largest value, of areas ``area`` [m^2], cover the fraction q of KHCC03
+    (:func:`seaecho.scattering.breaking.breaking_placement`). The shorter resolved waves
+    are breakers themselves, whose speed the fronts' velocity counts: they do not place
+    the zones, so their orbital velocity averages out over them (eq BR8).
     """
     from .geometry.mesh import to_facets
 
-    acc = to_facets(sea.vertical_acceleration(state.t)).reshape(-1)
+    k_mod = modulating_wavenumber_limit(sea_model.breaking.k_wb)  # eq BR7
+    acc = to_facets(sea.vertical_acceleration(state.t, k_mod)).reshape(-1)
     return breaking_placement(-acc, area, sea_model.breaking.q)
 
 
@@ -455,8 +460,8 @@ class Simulation:
         the breaking zones from the ``"speckle-tilt"`` and ``"breaking"`` streams of the
         block. They are drawn in one kernel on the scene's Dr.Jit back end and stay there
         (numpy copies for the reference path, :meth:`_host_draws`). The breaking zones sit
-        on the facets of largest downward acceleration of the block's surface, covering
-        the fraction q of KHCC03 (:func:`seaecho.scattering.breaking.breaking_placement`).
+        on the facets of largest downward acceleration of the block's long waves, covering
+        the fraction q of KHCC03 (:func:`breaking_fraction`).
         """
 
         block = pulse // self.block
@@ -530,17 +535,15 @@ class Simulation:
              "breaking": None, "t": float(state.t), "centre": centre, "velocity": velocity,
              "acceleration": acc}
         if self.sea_model.breaking is not None:
-            q["breaking"] = breaking_placement(-acc[:, 2], area, self.sea_model.breaking.q)
+            q["breaking"] = breaking_fraction(self.sea_model, self.sea, state, area)
         return q
 
     def _evolving_block_fused(self, state) -> dict:
         """:meth:`_evolving_block` for the fused kernel (``radar.resident``), which
         computes the phase centres from the nodes' displacement and acceleration (the same
         facet means and operations): those node fields (the acceleration only where a
-        pulse of the block is after its surface time, ``sea_update_pulses > 1``, or the
-        breaking zones need it), the wake damping and the breaking placement."""
-        from .geometry.mesh import to_facets
-
+        pulse of the block is after its surface time, ``sea_update_pulses > 1``), the wake
+        damping and the breaking placement (:func:`breaking_fraction`)."""
         breaking = self.sea_model.breaking
         ahead, self._kinematics_ahead = self._kinematics_ahead, None
         if ahead is not None and ahead[0] == state.t:  # computed on a thread (prefetch)
@@ -552,18 +555,16 @@ class Simulation:
                                              "acceleration": kin.acceleration if
                                              self.block > 1 else None}}
         if breaking is not None:
-            area = self.engine.geometry(state)[1]
-            acc_z = to_facets(kin.acceleration[..., 2]).reshape(-1)
-            q["breaking"] = breaking_placement(-acc_z, area, breaking.q)
+            q["breaking"] = breaking_fraction(self.sea_model, self.sea, state,
+                                              self.engine.geometry(state)[1])
         return q
 
     def _kinematics(self, t: float):
         """The particles' kinematics of the fused kernel's evolving block at ``t`` [s]
         (:meth:`seaecho.sea.Sea.kinematics`): the acceleration only where a pulse of a
-        block is after its surface time (``sea_update_pulses > 1``) or the breaking zones
-        are placed by it."""
-        return self.sea.kinematics(t, acceleration=self.block > 1
-                                   or self.sea_model.breaking is not None)
+        block is after its surface time (``sea_update_pulses > 1``; the breaking zones
+        are placed by the long waves' own, :func:`breaking_fraction`)."""
+        return self.sea.kinematics(t, acceleration=self.block > 1)
 
     def phase_centres(self, pulse: int, state) -> NDArray[np.float64]:
         """Phase centres of the facets at ``pulse``'s emission time [m], shape (N, 3).
@@ -602,10 +603,9 @@ class Simulation:
     def breaking_fraction(self, state) -> NDArray[np.float64]:
         """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
 
-        Downward acceleration of the wind sea at the state's time (linear kinematics,
-        :meth:`seaecho.sea.Sea.vertical_acceleration`) averaged over each facet's vertices; the
-        facets of largest value cover the fraction q of KHCC03
-        (:func:`seaecho.scattering.breaking.breaking_placement`).
+        :func:`breaking_fraction`: the downward acceleration of the long waves that
+        modulate breaking (eq BR7), averaged over each facet's vertices; the facets of
+        largest value cover the fraction q of KHCC03.
         """
         return breaking_fraction(self.sea_model, self.sea, state,
                                  self.engine.geometry(state)[1])
