@@ -111,6 +111,27 @@ laboratory, Rapp & Melville 1990). The speckle of
 the breaking component is independent of the Bragg and specular speckle (distinct
 scatterers).
 
+``c(k)`` is the linear phase speed, i.e. the fronts' speed *relative to the water*. The
+waves longer than the breakers carry them with their orbital velocity, and breaking is
+modulated by them (K05), so the breakers' mean Doppler velocity is, in Hansen et al.
+(2012), eq 19 plus a long-wave term, eq 5: the covariance of the modulated fraction of
+breaking zones with the long waves' orbital velocity, over the waves ``k < k_wb / 10``.
+Per facet (``seaecho.simulation``) the zones sit on the facets of largest downward
+acceleration of those long waves,
+
+.. math::
+    X = -a_z\\big|_{|K| < k_{mod}},\\qquad k_{mod} = B_{MOD}\\, k_{wb} = k_{wb}/10   (BR7)
+
+(:func:`modulating_wavenumber_limit`; Phillips' criterion ``-a_z > gamma g`` applied to
+the modulating waves, the threshold set by ``q``: :func:`breaking_placement`), and ride
+on the facets' orbital velocity, to which the fronts' velocity is added. Their mean
+orbital velocity is eq BR8 (:func:`placement_orbital_velocity`; 0.70 m/s along the wind
+at U10 = 7.6 m/s), the counterpart of K05's linear term, eq BR9
+(:func:`breaking_modulation_velocity`; 0.48 m/s). The resolved waves shorter than
+``k_mod`` are breakers themselves (``k < k_wb``), counted in the fronts' velocity: they
+are not in ``X`` and their orbital velocity averages out over the zones (placed by the
+whole resolved sea, as before, the zones rode on it too: +0.12 m/s on a 0.25 m grid).
+
 References
 ----------
 .. [1] Kudryavtsev, V., Hauser, D., Caudal, G. and Chapron, B. (2003). A semiempirical
@@ -132,6 +153,8 @@ References
    Dagestad, K.-F. and Mouche, A. A. (2012). Simulation of radar backscatter and Doppler
    shifts of wave-current interaction in the presence of strong tidal current. *Remote
    Sens. Environ.* 120, 113-122.
+.. [8] Johnson, N. L., Kotz, S. and Balakrishnan, N. (1994). *Continuous Univariate
+   Distributions*, vol. 1, 2nd ed., Wiley, ch. 13 (the truncated normal's mean).
 """
 
 from __future__ import annotations

@@ -32,8 +32,11 @@ unresolved waves are advected by the resolved orbital velocity (Thompson 1989; R
   (eq BR4): waves travelling against the wind get no wind input (D3).
 * Specular points: none beyond the facet's motion (a specular point's Doppler is the
   vertical velocity of the surface at it, Barrick 1968's geometric optics).
-* Breaking zones: the breakers' Lambda-weighted mean phase speed ``c_br`` along the
-  wind, ``f = q . (c_br u_wind) / (2 pi)`` (KHCC03; :func:`breaking_statistics`).
+* Breaking zones: the breakers' Lambda-weighted mean velocity ``c_br`` along the wind,
+  relative to the water, ``f = q . (c_br u_wind) / (2 pi)`` (Hansen et al. 2012 eq 19;
+  :func:`breaking_statistics`); the long waves' orbital velocity is the facet's, on
+  which the zones are placed by the long waves (eqs BR7-BR8 of
+  :mod:`seaecho.scattering.breaking`).
 
 **Current** (eq C1 of :mod:`seaecho.ocean.dispersion`). On a uniform surface current U
 the facets stay on the fixed grid (the resolved sea is advected through them,
