@@ -7,8 +7,7 @@ crosswind (x2) and downwind. The simulation's sigma0 is the sum over the facets 
 surface realisation (Elfouhaily spectrum and spreading, 256 m tile, 1 m grid: the
 unresolved waves are carried statistically, and sigma0 does not depend on the grid,
 docs/scattering.md) of area x visibility x sigma_mn (eqs P1-P7: blend, unresolved-tilt
-average, breaking zones on the crests of largest downward acceleration of the long
-waves, eq BR7), per unit
+average, breaking zones on the crests of largest downward acceleration), per unit
 horizontal area, for a distant radar (plane wave); visibility: the facing test times
 Smith's shadowing (analytic facets), so that the low-grazing fall-off of shadowing is in
 it. Beside it: the mean-plane two-scale + breaking model (``seaecho sigma``), Nathanson's
@@ -42,10 +41,7 @@ from seaecho.geometry.mesh import to_facets  # noqa: E402
 from seaecho.ocean.seawater import sea_water_permittivity  # noqa: E402
 from seaecho.ocean.spectra import DirectionalSpectrum  # noqa: E402
 from seaecho.ocean.wind import u19_5_from_u10  # noqa: E402
-from seaecho.scattering.breaking import (  # noqa: E402
-    breaking_placement,
-    modulating_wavenumber_limit,
-)
+from seaecho.scattering.breaking import breaking_placement  # noqa: E402
 from seaecho.scattering.facet import facet_sigma  # noqa: E402
 from seaecho.scattering.models import sea_sigma  # noqa: E402
 from seaecho.warnings import ValidityWarning  # noqa: E402
@@ -79,10 +75,7 @@ def simulated(u10: float, seed: int = 1, spectrum: str = "elfouhaily",
     sea = build_sea(sc)
     model = build_sea_model(sc, f_hz)
     st = sea.state(0.0)
-    # the simulation's index (seaecho.simulation.breaking_fraction, eq BR7): the downward
-    # acceleration of the long waves that modulate breaking
-    k_mod = modulating_wavenumber_limit(model.breaking.k_wb)
-    acc = to_facets(sea.vertical_acceleration(0.0, k_mod)).reshape(-1)
+    acc = to_facets(sea.kinematics(0.0).acceleration[..., 2]).reshape(-1)
     out = np.zeros((grazing_deg.size, 4))
     apparent = np.zeros((grazing_deg.size, 4))
     two_ray = None

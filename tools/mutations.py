@@ -148,12 +148,12 @@ MUTATIONS = [
              ("tests/scattering/test_breaking.py",),
              "the breaking zones drift at the fronts' mean speed, not their mean velocity "
              "(Hansen et al. 2012 eq 19)"),
-    Mutation("breaking-placed-by-whole-sea", S + "simulation.py",
-             "acc = to_facets(sea.vertical_acceleration(state.t, k_mod)).reshape(-1)",
+    Mutation("breaking-placed-by-long-waves", S + "simulation.py",
              "acc = to_facets(sea.vertical_acceleration(state.t)).reshape(-1)",
+             "acc = to_facets(sea.vertical_acceleration(state.t, 2.09)).reshape(-1)",
              ("tests/scattering/test_breaking_doppler.py",),
-             "the breaking zones placed by the whole resolved sea's acceleration: they ride on "
-             "the orbital velocity of the breakers themselves (eq BR7)"),
+             "the breaking zones placed by the long waves' acceleration alone: off the "
+             "resolved crests, on the short waves' faces (eq P7)"),
     Mutation("breaking-index-band-ignored", S + "sea.py",
              "            spec = np.where(k2 < k_max * k_max, spec, 0.0)\n",
              "            pass\n",

@@ -60,7 +60,7 @@ from .conventions import CHANNELS
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import facet_gaussians
-from .scattering.breaking import breaking_placement, modulating_wavenumber_limit
+from .scattering.breaking import breaking_placement
 
 #: Names of the 2x2 scattering channels, (h, v) order flattened.
 POLARISATIONS = CHANNELS
@@ -88,19 +88,17 @@ def _block_damping(state) -> NDArray[np.float64] | None:
 def breaking_fraction(sea_model, sea, state, area: NDArray) -> NDArray[np.float64]:
     """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
 
-    Downward acceleration at the state's time of the long waves that modulate breaking,
-    ``|K| < k_mod = k_wb / 10`` (eq BR7 of :mod:`seaecho.scattering.breaking`: ten times
-    longer than the shortest breakers; linear kinematics,
-    :meth:`seaecho.sea.Sea.vertical_acceleration`), averaged over each facet's vertices;
-    the facets of largest value, of areas ``area`` [m^2], cover the fraction q of KHCC03
-    (:func:`seaecho.scattering.breaking.breaking_placement`). The shorter resolved waves
-    are breakers themselves, whose speed the fronts' velocity counts: they do not place
-    the zones, so their orbital velocity averages out over them (eq BR8).
+    Downward acceleration of the wind sea at the state's time (linear kinematics,
+    :meth:`seaecho.sea.Sea.vertical_acceleration`) averaged over each facet's vertices; the
+    facets of largest value, of areas ``area`` [m^2], cover the fraction q of KHCC03
+    (:func:`seaecho.scattering.breaking.breaking_placement`): the crests of the resolved
+    waves, where the long waves that modulate breaking (eq BR7) have theirs. The zones'
+    mean orbital velocity is eq BR8 (:func:`seaecho.scattering.breaking.
+    placement_orbital_velocity`).
     """
     from .geometry.mesh import to_facets
 
-    k_mod = modulating_wavenumber_limit(sea_model.breaking.k_wb)  # eq BR7
-    acc = to_facets(sea.vertical_acceleration(state.t, k_mod)).reshape(-1)
+    acc = to_facets(sea.vertical_acceleration(state.t)).reshape(-1)
     return breaking_placement(-acc, area, sea_model.breaking.q)
 
 
@@ -460,7 +458,7 @@ class Simulation:
         the breaking zones from the ``"speckle-tilt"`` and ``"breaking"`` streams of the
         block. They are drawn in one kernel on the scene's Dr.Jit back end and stay there
         (numpy copies for the reference path, :meth:`_host_draws`). The breaking zones sit
-        on the facets of largest downward acceleration of the block's long waves, covering
+        on the facets of largest downward acceleration of the block's surface, covering
         the fraction q of KHCC03 (:func:`breaking_fraction`).
         """
 
@@ -563,7 +561,8 @@ class Simulation:
         """The particles' kinematics of the fused kernel's evolving block at ``t`` [s]
         (:meth:`seaecho.sea.Sea.kinematics`): the acceleration only where a pulse of a
         block is after its surface time (``sea_update_pulses > 1``; the breaking zones
-        are placed by the long waves' own, :func:`breaking_fraction`)."""
+        are placed by :func:`breaking_fraction`'s one-FFT vertical acceleration, bit for
+        bit the kinematics' own)."""
         return self.sea.kinematics(t, acceleration=self.block > 1)
 
     def phase_centres(self, pulse: int, state) -> NDArray[np.float64]:
@@ -603,9 +602,9 @@ class Simulation:
     def breaking_fraction(self, state) -> NDArray[np.float64]:
         """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
 
-        :func:`breaking_fraction`: the downward acceleration of the long waves that
-        modulate breaking (eq BR7), averaged over each facet's vertices; the facets of
-        largest value cover the fraction q of KHCC03.
+        :func:`breaking_fraction`: the downward acceleration of the wind sea (one inverse
+        FFT), averaged over each facet's vertices; the facets of largest value cover the
+        fraction q of KHCC03.
         """
         return breaking_fraction(self.sea_model, self.sea, state,
                                  self.engine.geometry(state)[1])

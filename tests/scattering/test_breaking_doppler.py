@@ -70,35 +70,42 @@ def test_band_limited_acceleration_limits():
     np.testing.assert_allclose(low + high, full, atol=1e-12 * np.abs(full).max())
 
 
-def test_zones_do_not_carry_the_orbital_velocity_of_the_breakers_themselves():
+def test_zones_ride_on_the_resolved_waves_orbital_velocity_as_br8_says():
     # Eq BR8 on a realisation (X band, U19.5 = 8 m/s upwind, Longuet-Higgins waves that
     # travel with the wind; 64 m tile on a 0.25 m grid, which resolves breakers down to
-    # 0.5 m). Placed by the long waves (k < k_mod), the zones' mean orbital velocity
-    # along the wind is the long waves' (BR8: 0.70 m/s for the full spectrum; the 64 m
-    # tile lacks the longest waves: 0.61 measured) and the resolved waves shorter than
-    # k_mod, breakers themselves, average out (measured within 0.01 m/s). Placed by the
-    # whole resolved sea's acceleration (the previous law) the zones sat on the crests of
-    # those short waves and rode on their orbital velocity too (+0.12-0.14 m/s), on top
-    # of the fronts' speed that counts them already.
+    # 0.5 m). Placed as the simulation places them (the whole resolved sea's -a_z), the
+    # zones' mean orbital velocity along the wind is BR8's (0.66 m/s for the full
+    # spectrum; the 64 m tile lacks the longest waves), of which the resolved waves
+    # shorter than k_mod, breakers themselves, give 0.12 m/s (measured 0.12-0.13): the
+    # part that rides on the fronts' velocity that counts them already (docs/dynamics.md).
+    # Placed by the long waves alone (eq BR7 as an index), that part averages out.
     u19_5 = 8.0
     _, st, k_mod = _stats(u19_5)
     spec = DirectionalSpectrum("elfouhaily", "longuet-higgins", u19_5)
     n, size = 256, 64.0
+    k_nyq = np.pi * n / size
     surf = SeaSurface(spec, (size, size), (n, n), np.random.default_rng(1))
     kx = 2 * np.pi * np.fft.fftfreq(n, size / n)
     kk = np.hypot(kx[None, : n // 2 + 1], kx[:, None])
-    u_all, u_short = [], []
+    u_all, u_short, u_short_long_index = [], [], []
     for t in (0.0, 7.0):
         u = surf.fields(t, slopes=False).velocity[..., 0]  # along the wind (+x)
         short = np.fft.irfft2(np.where(kk > k_mod, np.fft.rfft2(u), 0.0), s=(n, n))
-        index = -vertical_acceleration(surf, t, k_mod).ravel()
-        on = breaking_placement(index, np.ones(index.size), st.q) > 0
-        u_all.append(u.ravel()[on].mean())
-        u_short.append(short.ravel()[on].mean())
-    expected = placement_orbital_velocity(spec, st.q, k_mod, 0.0)
-    assert expected == pytest.approx(0.70, abs=0.01)
-    assert np.mean(u_all) == pytest.approx(expected, rel=0.25)
-    assert abs(np.mean(u_short)) < 0.03
+        for k_index, out in ((None, (u_all, u_short)), (k_mod, (u_short_long_index,))):
+            index = -vertical_acceleration(surf, t, k_index).ravel()
+            on = breaking_placement(index, np.ones(index.size), st.q) > 0
+            if k_index is None:
+                out[0].append(u.ravel()[on].mean())
+                out[1].append(short.ravel()[on].mean())
+            else:
+                out[0].append(short.ravel()[on].mean())
+    total = placement_orbital_velocity(spec, st.q, k_nyq, 0.0)
+    long_part = placement_orbital_velocity(spec, st.q, k_nyq, 0.0, k_velocity=k_mod)
+    assert total == pytest.approx(0.66, abs=0.01)
+    assert total - long_part == pytest.approx(0.12, abs=0.01)
+    assert np.mean(u_all) == pytest.approx(total, rel=0.25)
+    assert np.mean(u_short) == pytest.approx(total - long_part, abs=0.03)
+    assert abs(np.mean(u_short_long_index)) < 0.03
 
 
 def _dopRIM_cartesian(spec, u10, direction):
@@ -142,9 +149,11 @@ def test_modulation_velocity_against_a_cartesian_sum_and_its_symmetries():
 
 @pytest.mark.parametrize("u19_5, placed, linear", [(8.0, 0.70, 0.48), (12.0, 0.88, 0.67)])
 def test_placement_doppler_against_the_k05_linear_modulation(u19_5, placed, linear):
-    # The quantile placement (BR8) against K05 / Hansen et al.'s linear modulation (BR9)
-    # at the winds of the low-grazing comparison (docs/dynamics.md): the placement's
-    # long-wave Doppler is 1.3-1.45 times the linear MTF's (0.70 and 0.88 m/s for 0.48
+    # The quantile placement (BR8, here on the waves k < k_mod, which is within 1 % of
+    # the simulation's on its 1 m grids: 0.70 and 0.87 m/s) against K05 / Hansen et al.'s
+    # linear modulation (BR9) at the winds of the low-grazing comparison
+    # (docs/dynamics.md): the placement's long-wave Doppler is 1.3-1.45 times the
+    # linear MTF's (0.70 and 0.88 m/s for 0.48
     # and 0.67 at U19.5 = 8 and 12 m/s; the linear MTF, |M_h| sigma(k zeta) = 2.3, is
     # past its range and would make the fraction negative on a third of the sea); with
     # the fronts' mean velocity (eq 19, 0.97-1.01 m/s) the breakers' Doppler of the two
@@ -160,10 +169,12 @@ def test_placement_doppler_against_the_k05_linear_modulation(u19_5, placed, line
     assert (c + p) / (c + m) == pytest.approx(1.0, abs=0.15)
 
 
-def test_simulation_places_the_zones_by_the_long_waves():
-    # The simulation's placement (held and evolving seas, both kernels) is eq BR7's: the
-    # facets of largest downward acceleration of the waves k < k_mod, not of the whole
-    # resolved sea (a 0.25 m grid, where the two differ)
+def test_simulation_places_the_zones_on_the_resolved_crests():
+    # The simulation's placement (held and evolving seas, both kernels): the facets of
+    # largest downward acceleration of the whole resolved sea, i.e. on the crests of the
+    # resolved (breaking) waves, where BR5 puts the zones' plane; not of the long waves
+    # alone (eq BR7 as an index: a 0.25 m grid, where the two differ), which would put
+    # them on the short waves' faces (docs/scattering.md, eq P7)
     from types import SimpleNamespace
 
     from seaecho.geometry.mesh import to_facets
@@ -178,6 +189,6 @@ def test_simulation_places_the_zones_by_the_long_waves():
     area = np.ones(long_waves.size)
     got = breaking_fraction(SimpleNamespace(breaking=st), Sea(surf), SimpleNamespace(t=t),
                             area)
-    assert np.array_equal(got, breaking_placement(-long_waves, area, st.q))
     whole = to_facets(vertical_acceleration(surf, t)).reshape(-1)
-    assert not np.array_equal(got, breaking_placement(-whole, area, st.q))
+    assert np.array_equal(got, breaking_placement(-whole, area, st.q))
+    assert not np.array_equal(got, breaking_placement(-long_waves, area, st.q))

@@ -686,28 +686,34 @@ def _polar_band(spectrum, k_max: float, n_k: int = 1500, n_psi: int = 360):
     return k, psi, dens, wk[:, None] * (2.0 * np.pi / n_psi)
 
 
-def placement_orbital_velocity(spectrum, q: float, k_mod: float, direction: float,
-                               depth: float | None = None) -> float:
+def placement_orbital_velocity(spectrum, q: float, k_index: float, direction: float,
+                               depth: float | None = None,
+                               k_velocity: float | None = None) -> float:
     r"""Mean orbital velocity along ``direction`` of the surface the breaking zones cover
     [m/s], for the placement of :func:`breaking_placement` on the index of eq BR7.
 
-    The index ``X = -a_z`` of the waves ``K < k_mod`` and the horizontal particle
-    velocity ``u_e`` along the unit vector of azimuth ``direction`` are jointly Gaussian
-    on a linear sea; covering the fraction ``q`` of largest ``X`` (``X > x_q sigma_X``,
-    ``x_q = sqrt(2) erfcinv(2 q)``) selects, on average (the conditional mean of a
-    bivariate normal beyond a threshold, the inverse Mills ratio; Johnson, Kotz &
-    Balakrishnan 1994, ch. 13),
+    The index ``X = -a_z`` of the waves ``K < k_index`` (the grid's resolved sea for the
+    simulation's placement, ``pi / dx``) and the horizontal particle velocity ``u_e``
+    along the unit vector of azimuth ``direction`` of the waves ``K < k_velocity`` are
+    jointly Gaussian on a linear sea; covering the fraction ``q`` of largest ``X``
+    (``X > x_q sigma_X``, ``x_q = sqrt(2) erfcinv(2 q)``) selects, on average (the
+    conditional mean of a bivariate normal beyond a threshold, the inverse Mills ratio;
+    Johnson, Kotz & Balakrishnan 1994, ch. 13),
 
     .. math::
         \langle u_e \rangle_q = \frac{\mathrm{cov}(u_e, X)}{\sigma_X}
         \frac{\varphi(x_q)}{q},\quad
-        \mathrm{cov}(u_e, X) = \int_{K<k_{mod}} \omega^3 \coth(Kd) \cos(\psi -
+        \mathrm{cov}(u_e, X) = \int_{K<k_v} \omega^3 \coth(Kd) \cos(\psi -
         \psi_e)\, \Psi\, d^2K,\quad
-        \sigma_X^2 = \int_{K<k_{mod}} \omega^4\, \Psi\, d^2K            (BR8)
+        \sigma_X^2 = \int_{K<k_{index}} \omega^4\, \Psi\, d^2K            (BR8)
 
     (linear waves: ``-a_z = omega^2 z`` and ``u = omega coth(Kd) z`` along the travel
-    direction, in phase; Lamb 1932, art. 228). The waves shorter than ``k_mod`` are
-    independent of ``X``: their velocities average out over the zones.
+    direction, in phase; Lamb 1932, art. 228; ``k_v = min(k_velocity, k_index)``: the
+    waves outside the index are independent of it and average out over the zones).
+    ``k_velocity = k_mod`` (eq BR7) gives the part of the long waves that modulate
+    breaking, the counterpart of eq BR9; the rest, the resolved waves shorter than
+    ``k_mod``, are breakers themselves (``k < k_wb``), whose speed the fronts' velocity
+    already counts.
 
     Parameters
     ----------
@@ -715,12 +721,14 @@ def placement_orbital_velocity(spectrum, q: float, k_mod: float, direction: floa
         The sea's spectrum (its ``wind_direction`` places ``psi``).
     q : float
         Fraction of the area covered [-], in (0, 1).
-    k_mod : float
-        Upper wavenumber of the index [rad/m] (:func:`modulating_wavenumber_limit`).
+    k_index : float
+        Upper wavenumber of the index [rad/m].
     direction : float
         Azimuth of the velocity component [rad], CCW from +x.
     depth : float or None
         Water depth [m] (None: deep water).
+    k_velocity : float or None
+        Upper wavenumber of the velocity [rad/m] (None: ``k_index``).
     """
     from scipy.special import erfcinv
 
@@ -728,13 +736,14 @@ def placement_orbital_velocity(spectrum, q: float, k_mod: float, direction: floa
 
     if not (0.0 < q < 1.0):
         raise ValueError(f"q = {q!r}: must lie in (0, 1)")
-    k, psi, dens, w = _polar_band(spectrum, k_mod)
+    k, psi, dens, w = _polar_band(spectrum, k_index)
     om = angular_frequency(k, depth)[:, None]
     coth = horizontal_to_vertical_ratio(k, depth)
     coth = np.broadcast_to(np.asarray(coth, dtype=float), k.shape)[:, None]
     cos_e = np.cos(psi + spectrum.wind_direction - direction)[None, :]
+    in_v = (k < (k_index if k_velocity is None else k_velocity))[:, None]
     # Eq BR8.
-    cov = float(np.sum(om ** 3 * coth * cos_e * dens * w))
+    cov = float(np.sum(np.where(in_v, om ** 3 * coth * cos_e * dens * w, 0.0)))
     sigma = math.sqrt(float(np.sum(om ** 4 * dens * w)))
     x_q = math.sqrt(2.0) * float(erfcinv(2.0 * q))
     return cov / sigma * math.exp(-0.5 * x_q * x_q) / math.sqrt(2.0 * math.pi) / q
