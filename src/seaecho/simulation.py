@@ -60,7 +60,7 @@ from .conventions import CHANNELS
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import facet_gaussians
-from .scattering.breaking import breaking_placement
+from .scattering.breaking import breaking_placement, modulating_wavenumber_limit
 
 #: Names of the 2x2 scattering channels, (h, v) order flattened.
 POLARISATIONS = CHANNELS
@@ -100,6 +100,17 @@ def breaking_fraction(sea_model, sea, state, area: NDArray) -> NDArray[np.float6
 
     acc = to_facets(sea.vertical_acceleration(state.t)).reshape(-1)
     return breaking_placement(-acc, area, sea_model.breaking.q)
+
+
+def breaker_short_velocity(sea_model, sea, state) -> NDArray[np.float64]:
+    """Per facet, the velocity of the resolved waves shorter than the breakers' modulating
+    waves, ``|K| >= k_mod`` (eq BR7), at the state's time [m/s], shape (N, 3): the part
+    of the facets' velocity that the breaking zones' Doppler leaves out (eq BR10 of
+    :mod:`seaecho.scattering.breaking`; :meth:`seaecho.sea.Sea.band_velocity`)."""
+    from .geometry.mesh import to_facets
+
+    k_mod = modulating_wavenumber_limit(sea_model.breaking.k_wb)
+    return np.ascontiguousarray(to_facets(sea.band_velocity(state.t, k_mod)).reshape(-1, 3))
 
 
 def facet_sigma0(sea_model, facets, damping: NDArray | None, breaking: NDArray | None,
@@ -534,6 +545,7 @@ class Simulation:
              "acceleration": acc}
         if self.sea_model.breaking is not None:
             q["breaking"] = breaking_fraction(self.sea_model, self.sea, state, area)
+            q["breaker_short"] = breaker_short_velocity(self.sea_model, self.sea, state)
         return q
 
     def _evolving_block_fused(self, state) -> dict:
@@ -555,6 +567,7 @@ class Simulation:
         if breaking is not None:
             q["breaking"] = breaking_fraction(self.sea_model, self.sea, state,
                                               self.engine.geometry(state)[1])
+            q["breaker_short"] = breaker_short_velocity(self.sea_model, self.sea, state)
         return q
 
     def _kinematics(self, t: float):
@@ -649,7 +662,8 @@ class Simulation:
             _, *hidden = self.engine.occlusion(geo.time, st)
             draws, motion = held["draws"], None
             if self.evolving:  # eqs D1-D4 of the pulse's time, in the kernel
-                draws = self._speckle_process(n).draws(float(geo.time))
+                draws = self._speckle_process(n).draws(float(geo.time),
+                                                       held.get("breaker_short"))
                 motion = dict(held["motion"],
                               dt=float(self.radar.emission_time(pulse)) - held["t"])
             echo = self._resident.echo(geo, st, hidden, draws, held["damping"],
@@ -677,7 +691,8 @@ class Simulation:
         args = (facets.n_i, facets.n_s, facets.normal)
         draws = None if self.evolving else self._host_draws(held)
         if self.evolving:  # eqs D2-D4 evaluated inside the facet kernel
-            draws = self._speckle_process(vis.size).draws(float(geo.time))
+            draws = self._speckle_process(vis.size).draws(float(geo.time),
+                                                          held.get("breaker_short"))
         return SeaStage(pulse, geo, st, facets, vis, keep, held, sigma,
                         (*args, facets.area * vis, self.sea_model.facet_model),
                         dict(draws=draws, wake_damping=damping,

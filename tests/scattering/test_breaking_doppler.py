@@ -33,7 +33,7 @@ from seaecho.scattering.breaking import (
     placement_orbital_velocity,
     wind_growth_rate,
 )
-from seaecho.sea import vertical_acceleration
+from seaecho.sea import band_velocity, vertical_acceleration
 
 K = 2 * np.pi * 10e9 / C0  # 10 GHz
 
@@ -68,6 +68,23 @@ def test_band_limited_acceleration_limits():
     assert np.abs(spec_low[kk >= 2.0]).max() < 1e-10 * np.abs(spec_low).max()
     high = np.fft.irfft2(np.where(kk >= 2.0, np.fft.rfft2(full), 0.0), s=(64, 64))
     np.testing.assert_allclose(low + high, full, atol=1e-12 * np.abs(full).max())
+
+
+def test_band_velocity_is_the_short_waves_part_of_the_surface_velocity():
+    # Eq BR10's velocity: the waves |K| >= k_min of the surface velocity; with the
+    # complementary band (computed here on numpy's own FFT grid) it adds up to the whole
+    # (linear waves), and k_min = 0 is the whole velocity
+    spec = DirectionalSpectrum("elfouhaily", "longuet-higgins", 8.0)
+    surf = SeaSurface(spec, (32.0, 32.0), (64, 64), np.random.default_rng(5))
+    v = surf.fields(0.7, slopes=False).velocity
+    np.testing.assert_allclose(band_velocity(surf, 0.7, 0.0), v, atol=1e-12)
+    short = band_velocity(surf, 0.7, 2.0)
+    kx = 2 * np.pi * np.fft.fftfreq(64, 0.5)
+    kk = np.hypot(kx[None, :33], kx[:, None])
+    spectra = np.fft.rfft2(np.moveaxis(v, -1, 0))  # (3, 64, 33)
+    low = np.moveaxis(np.fft.irfft2(np.where(kk < 2.0, spectra, 0.0), s=(64, 64)), 0, -1)
+    np.testing.assert_allclose(low + short, v, atol=1e-12)
+    assert np.abs(short).max() > 0.05 * np.abs(v).max()
 
 
 def test_zones_ride_on_the_resolved_waves_orbital_velocity_as_br8_says():

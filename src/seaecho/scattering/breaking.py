@@ -115,22 +115,31 @@ scatterers).
 waves longer than the breakers carry them with their orbital velocity, and breaking is
 modulated by them (K05), so the breakers' mean Doppler velocity is, in Hansen et al.
 (2012), eq 19 plus a long-wave term, eq 5: the covariance of the modulated fraction of
-breaking zones with the long waves' orbital velocity, over the waves ``k < k_wb / 10``.
-Per facet (``seaecho.simulation``) the zones sit on the facets of largest downward
-acceleration of those long waves,
+breaking zones with the orbital velocity of the waves that modulate breaking,
 
 .. math::
-    X = -a_z\\big|_{|K| < k_{mod}},\\qquad k_{mod} = B_{MOD}\\, k_{wb} = k_{wb}/10   (BR7)
+    |K| < k_{mod} = B_{MOD}\\, k_{wb} = k_{wb}/10                                 (BR7)
 
-(:func:`modulating_wavenumber_limit`; Phillips' criterion ``-a_z > gamma g`` applied to
-the modulating waves, the threshold set by ``q``: :func:`breaking_placement`), and ride
-on the facets' orbital velocity, to which the fronts' velocity is added. Their mean
-orbital velocity is eq BR8 (:func:`placement_orbital_velocity`; 0.70 m/s along the wind
-at U10 = 7.6 m/s), the counterpart of K05's linear term, eq BR9
+(:func:`modulating_wavenumber_limit`: ten times longer than the shortest breakers).
+Per facet (``seaecho.simulation``) the zones sit on the facets of largest downward
+acceleration of the resolved sea (Phillips' criterion, the threshold set by ``q``:
+:func:`breaking_placement`), i.e. on the resolved crests, where the long waves have
+theirs; their mean orbital velocity is eq BR8 (:func:`placement_orbital_velocity`;
+0.70 m/s along the wind at U10 = 7.6 m/s on a 1 m grid, of which 0.65 from the waves
+``k < k_mod``), the counterpart of K05's linear term, eq BR9
 (:func:`breaking_modulation_velocity`; 0.48 m/s). The resolved waves shorter than
-``k_mod`` are breakers themselves (``k < k_wb``), counted in the fronts' velocity: they
-are not in ``X`` and their orbital velocity averages out over the zones (placed by the
-whole resolved sea, as before, the zones rode on it too: +0.12 m/s on a 0.25 m grid).
+``k_mod`` are breakers themselves (``k < k_wb``), counted in the fronts' velocity: the
+zones' Doppler leaves their orbital velocity out,
+
+.. math::
+    f_{wb} = \\mathbf q \\cdot (\\mathbf v - \\mathbf v_{|K| \\ge k_{mod}}
+    + c_{br}\\,\\hat{\\mathbf u} + \\mathbf U) / 2\\pi                               (BR10)
+
+(``v`` the facet's velocity, eq D1; ``v_|K|>=k_mod`` the band of the resolved surface's
+velocity above ``k_mod`` at the facet, :func:`seaecho.sea.band_velocity`; ``U`` the
+surface drift, eq C1; :meth:`seaecho.scattering.dynamics.EvolvingSpeckle.draws`), so that
+they ride on the long waves only (before, on every resolved wave: +0.05 m/s on a 1 m
+grid, +0.12 m/s on a 0.25 m one at U10 = 7.6 m/s).
 
 References
 ----------
