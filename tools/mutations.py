@@ -164,6 +164,18 @@ MUTATIONS = [
              ("tests/scattering/test_breaking_doppler.py",),
              "the breakers modulated by waves 4 (not 10) times longer than the shortest "
              "breakers (Hansen et al. 2012 eq 5)"),
+    Mutation("breakers-ride-on-short-waves", S + "scattering/dynamics.py",
+             "                if short is not None:  # eq BR10: not the short waves' orbital "
+             "velocity\n",
+             "                if False:\n",
+             ("tests/scattering/test_dynamics.py",),
+             "eq BR10 dropped: the breaking zones ride on the orbital velocity of the "
+             "resolved breakers, which the fronts' velocity already counts"),
+    Mutation("band-velocity-low-band", S + "sea.py",
+             "spec = np.where(k2 >= k_min * k_min, spec, 0.0)",
+             "spec = np.where(k2 < k_min * k_min, spec, 0.0)",
+             ("tests/scattering/test_breaking_doppler.py",),
+             "eq BR10 takes out the long waves' velocity instead of the short ones'"),
     Mutation("breaking-mtf-sign", S + "scattering/breaking.py",
              "M_K = -4.5\n", "M_K = 4.5\n",
              ("tests/scattering/test_breaking_doppler.py",),
