@@ -124,8 +124,14 @@ def test_composite_bragg_centroid_within_published_spread_of_cdop_upwind():
 # --- fast: the full simulation, one small case ------------------------------------------
 
 #: allowance for one realisation of a 64 m tile over 48 pulses [Hz]: two standard
-#: deviations of the HH centroid over seeds 1-4 (40.2-48.0 Hz, sd 3.2 Hz)
-SMALL_TILE_ALLOWANCE_HZ = 6.5
+#: deviations of the HH centroid over seeds 1-8 (43.8-60.7 Hz, mean 50.6, sd 6.5 Hz, with
+#: the breaking zones riding on the long waves only, eq BR10; the allowance was 6.5 Hz,
+#: from seeds 1-4 of an older version, 40.2-48.0 Hz; the version before BR10 gave
+#: 46.2-55.6 Hz over seeds 1-4, seed 1 moving from 55.6 to 60.3 Hz with BR10, seeds 2-4
+#: by -1.6 to 0 Hz: a handful of breaking crests carry much of the echo)
+SMALL_TILE_ALLOWANCE_HZ = 13.0
+#: the same for VV (31.9-47.3 Hz over seeds 1-8, sd 5.0 Hz)
+SMALL_TILE_ALLOWANCE_VV_HZ = 10.0
 
 
 def test_xband_upwind_centroids_against_tandem_x_quick():
@@ -140,9 +146,10 @@ def test_xband_upwind_centroids_against_tandem_x_quick():
     assert abs(hh - ref) < _tol_hz(F) + SMALL_TILE_ALLOWANCE_HZ
     # |DC_VV| < |DC_HH| (Elyouncha et al.: the polarisation difference is negative)
     assert hh > vv
-    # VV: the known shortfall (docs/dynamics.md), above the Bragg line and below the
-    # published value
-    assert sim["bragg_centroid_hz"] < vv < ref
+    # VV: above the Bragg line; the known shortfall (docs/dynamics.md: 0.83 of the
+    # published value over three 128 m realisations, the slow test below) is not
+    # resolved by one 64 m realisation (seed 1: 44.7 Hz for 43.4; seeds 1-8: mean 38.6)
+    assert sim["bragg_centroid_hz"] < vv < ref + SMALL_TILE_ALLOWANCE_VV_HZ
 
 
 # --- slow: the comparison of docs/dynamics.md --------------------------------------------
