@@ -178,12 +178,46 @@ def _minus_omega_squared(surface: SeaSurface) -> NDArray[np.float64]:
 _W2: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
-def vertical_acceleration(surface: SeaSurface, t: float) -> NDArray[np.float64]:
+def vertical_acceleration(surface: SeaSurface, t: float, k_max: float | None = None
+                          ) -> NDArray[np.float64]:
     """The particles' vertical acceleration a_z = -omega^2 z of the wind sea at ``t``
     [m/s^2], shape (ny, nx): ``surface_kinematics(surface, t).acceleration[..., 2]``, bit
-    for bit, by one inverse FFT instead of five (Lamb 1932, art. 228-229)."""
+    for bit, by one inverse FFT instead of five (Lamb 1932, art. 228-229).
+
+    ``k_max`` [rad/m]: that of the waves ``|K| < k_max`` only (the long waves that
+    modulate breaking, eq BR7 of :mod:`seaecho.scattering.breaking`); None, or a
+    ``k_max`` above every wavenumber of the grid, gives the whole sea's, bit for bit.
+    """
     plus, minus = surface._travelling(t)
-    return surface._irfft_scratch(-surface._omega ** 2 * (plus + minus))
+    spec = -surface._omega ** 2 * (plus + minus)
+    if k_max is not None:
+        k2 = surface._kx ** 2 + surface._ky ** 2
+        if float(np.max(k2)) >= k_max * k_max:
+            spec = np.where(k2 < k_max * k_max, spec, 0.0)
+    return surface._irfft_scratch(spec)
+
+
+def band_velocity(surface: SeaSurface, t: float, k_min: float,
+                  velocity: NDArray[np.float64] | None = None) -> NDArray[np.float64]:
+    """The wind sea's surface velocity (u, v, w) at ``t`` of the waves ``|K| >= k_min``
+    [m/s], shape (ny, nx, 3): :meth:`SeaSurface.fields`' velocity (orbital, less the
+    current's advection on a current, eq C1; ``velocity``, if given, is that field, of
+    the same time), band-passed on the grid's own wavenumbers.
+
+    The breaking zones ride on the waves longer than the breakers; the resolved waves
+    shorter than ``k_mod`` (eq BR7 of :mod:`seaecho.scattering.breaking`) are breakers
+    themselves, whose speed the fronts' velocity already counts: this is the part of the
+    facets' velocity that the breaking zones' Doppler leaves out (eq BR10).
+    """
+    import scipy.fft
+
+    v = surface.fields(t, slopes=False).velocity if velocity is None else velocity
+    ny, nx = surface.shape
+    k2 = surface._kx ** 2 + surface._ky ** 2
+    spec = scipy.fft.rfft2(np.moveaxis(v, -1, 0), axes=(-2, -1), workers=-1)
+    spec = np.where(k2 >= k_min * k_min, spec, 0.0)
+    out = scipy.fft.irfft2(spec, s=(ny, nx), axes=(-2, -1), workers=-1)
+    return np.moveaxis(out, 0, -1)
 
 
 #: Grids with at least this many nodes compute the ship's wake on a second thread [-].
@@ -299,10 +333,19 @@ class Sea:
         self.surface.share_travelling = True
         return surface_kinematics(self.surface, t, acceleration)
 
-    def vertical_acceleration(self, t: float = 0.0) -> NDArray[np.float64]:
-        """Vertical particle acceleration of the wind sea at ``t`` [m/s^2]
-        (:func:`vertical_acceleration`)."""
-        return vertical_acceleration(self.surface, t)
+    def band_velocity(self, t: float, k_min: float, state: SurfaceState | None = None
+                      ) -> NDArray[np.float64]:
+        """The wind sea's surface velocity of the waves ``|K| >= k_min`` [rad/m] at ``t``
+        [s] [m/s], (ny, nx, 3) (:func:`band_velocity`); from ``state``'s velocity (of the
+        same time) where it is the wind sea's alone (no Kelvin wake), saving its synthesis."""
+        own = state is not None and not self._wakes and state.t == t
+        return band_velocity(self.surface, t, k_min, state.velocity if own else None)
+
+    def vertical_acceleration(self, t: float = 0.0, k_max: float | None = None
+                              ) -> NDArray[np.float64]:
+        """Vertical particle acceleration of the wind sea at ``t`` [m/s^2], of the waves
+        ``|K| < k_max`` [rad/m] if given (:func:`vertical_acceleration`)."""
+        return vertical_acceleration(self.surface, t, k_max)
 
     def _ship_fields(self, t: float):
         """The Kelvin wakes' summed fields (or None) and the combined turbulent-wake mask
@@ -370,4 +413,4 @@ class Sea:
 
 
 __all__ = ["THREAD_MIN_NODES", "LazySlopes", "Sea", "SurfaceKinematics", "SurfaceState",
-           "surface_kinematics", "vertical_acceleration"]
+           "band_velocity", "surface_kinematics", "vertical_acceleration"]

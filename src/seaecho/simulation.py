@@ -60,7 +60,7 @@ from .conventions import CHANNELS
 from .processing.range_compression import range_compress
 from .radar.system import RadarSystem, ScattererEcho
 from .rng import facet_gaussians
-from .scattering.breaking import breaking_placement
+from .scattering.breaking import breaking_placement, modulating_wavenumber_limit
 
 #: Names of the 2x2 scattering channels, (h, v) order flattened.
 POLARISATIONS = CHANNELS
@@ -85,18 +85,38 @@ def _block_damping(state) -> NDArray[np.float64] | None:
     return wake_damping(state) if np.any(state.wake_mask) else None
 
 
-def breaking_fraction(sea_model, sea, state, area: NDArray) -> NDArray[np.float64]:
+def breaking_fraction(sea_model, sea, state, area: NDArray,
+                      acceleration_z: NDArray | None = None) -> NDArray[np.float64]:
     """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
 
     Downward acceleration of the wind sea at the state's time (linear kinematics,
-    :meth:`seaecho.sea.Sea.vertical_acceleration`) averaged over each facet's vertices; the
+    :meth:`seaecho.sea.Sea.vertical_acceleration`, or the nodes' ``acceleration_z`` [m/s^2]
+    of :meth:`seaecho.sea.Sea.kinematics` at that time where already computed: the same
+    bytes) averaged over each facet's vertices; the
     facets of largest value, of areas ``area`` [m^2], cover the fraction q of KHCC03
-    (:func:`seaecho.scattering.breaking.breaking_placement`).
+    (:func:`seaecho.scattering.breaking.breaking_placement`): the crests of the resolved
+    waves, where the long waves that modulate breaking (eq BR7) have theirs. The zones'
+    mean orbital velocity is eq BR8 (:func:`seaecho.scattering.breaking.
+    placement_orbital_velocity`).
     """
     from .geometry.mesh import to_facets
 
-    acc = to_facets(sea.vertical_acceleration(state.t)).reshape(-1)
+    if acceleration_z is None:
+        acceleration_z = sea.vertical_acceleration(state.t)
+    acc = to_facets(acceleration_z).reshape(-1)
     return breaking_placement(-acc, area, sea_model.breaking.q)
+
+
+def breaker_short_velocity(sea_model, sea, state) -> NDArray[np.float64]:
+    """Per facet, the velocity of the resolved waves shorter than the breakers' modulating
+    waves, ``|K| >= k_mod`` (eq BR7), at the state's time [m/s], shape (N, 3): the part
+    of the facets' velocity that the breaking zones' Doppler leaves out (eq BR10 of
+    :mod:`seaecho.scattering.breaking`; :meth:`seaecho.sea.Sea.band_velocity`)."""
+    from .geometry.mesh import to_facets
+
+    k_mod = modulating_wavenumber_limit(sea_model.breaking.k_wb)
+    return np.ascontiguousarray(to_facets(sea.band_velocity(state.t, k_mod, state)
+                                          ).reshape(-1, 3))
 
 
 def facet_sigma0(sea_model, facets, damping: NDArray | None, breaking: NDArray | None,
@@ -460,7 +480,7 @@ class Simulation:
         block. They are drawn in one kernel on the scene's Dr.Jit back end and stay there
         (numpy copies for the reference path, :meth:`_host_draws`). The breaking zones sit
         on the facets of largest downward acceleration of the block's surface, covering
-        the fraction q of KHCC03 (:func:`seaecho.scattering.breaking.breaking_placement`).
+        the fraction q of KHCC03 (:func:`breaking_fraction`).
         """
 
         block = pulse // self.block
@@ -534,17 +554,16 @@ class Simulation:
              "breaking": None, "t": float(state.t), "centre": centre, "velocity": velocity,
              "acceleration": acc}
         if self.sea_model.breaking is not None:
-            q["breaking"] = breaking_placement(-acc[:, 2], area, self.sea_model.breaking.q)
+            q["breaking"] = breaking_fraction(self.sea_model, self.sea, state, area)
+            q["breaker_short"] = breaker_short_velocity(self.sea_model, self.sea, state)
         return q
 
     def _evolving_block_fused(self, state) -> dict:
         """:meth:`_evolving_block` for the fused kernel (``radar.resident``), which
         computes the phase centres from the nodes' displacement and acceleration (the same
         facet means and operations): those node fields (the acceleration only where a
-        pulse of the block is after its surface time, ``sea_update_pulses > 1``, or the
-        breaking zones need it), the wake damping and the breaking placement."""
-        from .geometry.mesh import to_facets
-
+        pulse of the block is after its surface time, ``sea_update_pulses > 1``), the wake
+        damping and the breaking placement (:func:`breaking_fraction`)."""
         breaking = self.sea_model.breaking
         ahead = self._kinematics_ahead.pop(state.t, None)
         if ahead is not None:  # computed on a thread (prefetch)
@@ -556,9 +575,10 @@ class Simulation:
                                              "acceleration": kin.acceleration if
                                              self.block > 1 else None}}
         if breaking is not None:
-            area = self.engine.geometry(state)[1]
-            acc_z = to_facets(kin.acceleration_z).reshape(-1)
-            q["breaking"] = breaking_placement(-acc_z, area, breaking.q)
+            q["breaking"] = breaking_fraction(self.sea_model, self.sea, state,
+                                              self.engine.geometry(state)[1],
+                                              kin.acceleration_z)
+            q["breaker_short"] = breaker_short_velocity(self.sea_model, self.sea, state)
         return q
 
     def _kinematics(self, t: float):
@@ -606,10 +626,9 @@ class Simulation:
     def breaking_fraction(self, state) -> NDArray[np.float64]:
         """Fraction of each facet covered by breaking zones on a surface state, shape (N,).
 
-        Downward acceleration of the wind sea at the state's time (linear kinematics,
-        :meth:`seaecho.sea.Sea.vertical_acceleration`) averaged over each facet's vertices; the
-        facets of largest value cover the fraction q of KHCC03
-        (:func:`seaecho.scattering.breaking.breaking_placement`).
+        :func:`breaking_fraction`: the downward acceleration of the wind sea (one inverse
+        FFT), averaged over each facet's vertices; the facets of largest value cover the
+        fraction q of KHCC03.
         """
         return breaking_fraction(self.sea_model, self.sea, state,
                                  self.engine.geometry(state)[1])
@@ -654,7 +673,8 @@ class Simulation:
             _, *hidden = self.engine.occlusion(geo.time, st)
             draws, motion = held["draws"], None
             if self.evolving:  # eqs D1-D4 of the pulse's time, in the kernel
-                draws = self._speckle_process(n).draws(float(geo.time))
+                draws = self._speckle_process(n).draws(float(geo.time),
+                                                       held.get("breaker_short"))
                 motion = dict(held["motion"],
                               dt=float(self.radar.emission_time(pulse)) - held["t"])
             echo = self._resident.echo(geo, st, hidden, draws, held["damping"],
@@ -682,7 +702,8 @@ class Simulation:
         args = (facets.n_i, facets.n_s, facets.normal)
         draws = None if self.evolving else self._host_draws(held)
         if self.evolving:  # eqs D2-D4 evaluated inside the facet kernel
-            draws = self._speckle_process(vis.size).draws(float(geo.time))
+            draws = self._speckle_process(vis.size).draws(float(geo.time),
+                                                          held.get("breaker_short"))
         return SeaStage(pulse, geo, st, facets, vis, keep, held, sigma,
                         (*args, facets.area * vis, self.sea_model.facet_model),
                         dict(draws=draws, wake_damping=damping,

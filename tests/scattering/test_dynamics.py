@@ -238,3 +238,40 @@ def test_bragg_lines_on_a_current_are_doppler_shifted():
     f_b = float(bragg_frequency(k_b))
     assert _bragg_series(1.0, current=(-0.5, 0.0)) == pytest.approx(f_b + shift, abs=0.1)
     assert _bragg_series(0.0, current=(-0.5, 0.0)) == pytest.approx(-f_b + shift, abs=0.1)
+
+
+def _breaking_series(breaker, short=None, prf=200.0, n=128):
+    """Coherent sum over flat facets wholly covered by breaking zones (eq P7, q_f = 1) of
+    the VV amplitude with the evolving draws (monostatic, 45 deg, radar towards -x)."""
+    m = 100
+    theta = np.radians(45.0)
+    n_i, n_s = frames.directions_from_angles(np.full(m, theta), np.zeros(m),
+                                             np.full(m, theta), np.full(m, np.pi))
+    normal = np.tile([0.0, 0.0, 1.0], (m, 1))
+    sp = EvolvingSpeckle(_dynamics(breaker=breaker), seed=2, n_facets=m, breaking=True)
+    model = FacetModel(K, EPS, _constant_table(1e-8), 0.01, 0.01, 0.0, model="spm",
+                       breaking_tilt=0.0)
+    short = None if short is None else np.tile(short, (m, 1))
+    out = []
+    for p in range(n):
+        a = speckled_facet_amplitudes(n_i, n_s, normal, np.ones(m), model,
+                                      draws=sp.draws(p / prf, short), backend="numpy",
+                                      breaking_fraction=np.ones(m))
+        out.append(a[:, 3].sum())
+    spec = np.abs(np.fft.fftshift(np.fft.fft(np.array(out) * np.hanning(n)))) ** 2
+    f = np.fft.fftshift(np.fft.fftfreq(n, 1 / prf))
+    i = int(np.argmax(spec))
+    y0, y1, y2 = np.log(spec[i - 1: i + 2])
+    return f[i] + 0.5 * (y0 - y2) / (y0 - 2 * y1 + y2) * (f[1] - f[0])
+
+
+def test_breakers_ride_on_the_long_waves_only():
+    # Eq BR10: the breaking zones' line is q . (c_br - v_short) / 2 pi, the fronts'
+    # velocity on the facet's motion less the orbital velocity of the resolved waves
+    # shorter than the modulating ones (breakers themselves, counted in c_br). Fronts at
+    # 1 m/s towards the radar: 2 (1.0) sin(45 deg) / lambda = 47.2 Hz; with 0.3 m/s of
+    # short-wave velocity towards it taken out, 33.0 Hz. Within 0.1 Hz.
+    per_m_s = 2 * np.sin(np.radians(45.0)) * K / (2 * np.pi)
+    assert _breaking_series((-1.0, 0.0, 0.0)) == pytest.approx(per_m_s, abs=0.1)
+    assert _breaking_series((-1.0, 0.0, 0.0), (-0.3, 0.0, 0.0)) == pytest.approx(
+        0.7 * per_m_s, abs=0.1)

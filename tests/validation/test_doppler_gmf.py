@@ -24,13 +24,15 @@ own realisations (three seeds of a 128 m tile for 0.19 s each).
 
 Known disagreements, kept visible (strict xfails; docs/dynamics.md gives the numbers): on
 the default sea (Longuet-Higgins spreading) with the default surface drift (3 % of U10
-where the sea evolves: AMS Glossary of Meteorology; Wu 1975), 18 of the 20
+where the sea evolves: AMS Glossary of Meteorology; Wu 1975), 17 of the 20
 moderate-incidence comparisons agree (14 without the drift); VV at C band and 5 m/s is
-0.65 of CDOP and HH at C band and 12 m/s 1.33 of it (no hydrodynamic modulation of the
-short waves by the long ones; the sub-facet waves' tilt uncorrelated with their orbital
-velocity); the Bragg line alone (what a centro-symmetric spreading leaves) is a quarter
+0.64 of CDOP, HH at C band and 12 m/s 1.31 of it and VV at X band downwind 0.75 of the
+published value (no hydrodynamic modulation of the short waves by the long ones; the
+sub-facet waves' tilt uncorrelated with their orbital velocity); the Bragg line alone
+(what a centro-symmetric spreading leaves) is a quarter
 of CDOP. At low grazing the breaking
-zones speed the HH centroid up 2.9-3.6x for the measured ~1.5x (VV: 1.5x, as measured).
+zones speed the HH centroid up 3.0-3.5x for the measured ~1.5x (VV: 1.5x, as measured),
+while they move as the published model's breakers do (Hansen et al. 2012 eqs 5 and 19).
 """
 
 from __future__ import annotations
@@ -123,8 +125,14 @@ def test_composite_bragg_centroid_within_published_spread_of_cdop_upwind():
 # --- fast: the full simulation, one small case ------------------------------------------
 
 #: allowance for one realisation of a 64 m tile over 48 pulses [Hz]: two standard
-#: deviations of the HH centroid over seeds 1-4 (40.2-48.0 Hz, sd 3.2 Hz)
-SMALL_TILE_ALLOWANCE_HZ = 6.5
+#: deviations of the HH centroid over seeds 1-8 (43.8-60.7 Hz, mean 50.6, sd 6.5 Hz, with
+#: the breaking zones riding on the long waves only, eq BR10; the allowance was 6.5 Hz,
+#: from seeds 1-4 of an older version, 40.2-48.0 Hz; the version before BR10 gave
+#: 46.2-55.6 Hz over seeds 1-4, seed 1 moving from 55.6 to 60.3 Hz with BR10, seeds 2-4
+#: by -1.6 to 0 Hz: a handful of breaking crests carry much of the echo)
+SMALL_TILE_ALLOWANCE_HZ = 13.0
+#: the same for VV (31.9-47.3 Hz over seeds 1-8, sd 5.0 Hz)
+SMALL_TILE_ALLOWANCE_VV_HZ = 10.0
 
 
 def test_xband_upwind_centroids_against_tandem_x_quick():
@@ -139,9 +147,10 @@ def test_xband_upwind_centroids_against_tandem_x_quick():
     assert abs(hh - ref) < _tol_hz(F) + SMALL_TILE_ALLOWANCE_HZ
     # |DC_VV| < |DC_HH| (Elyouncha et al.: the polarisation difference is negative)
     assert hh > vv
-    # VV: the known shortfall (docs/dynamics.md), above the Bragg line and below the
-    # published value
-    assert sim["bragg_centroid_hz"] < vv < ref
+    # VV: above the Bragg line; the known shortfall (docs/dynamics.md: 0.83 of the
+    # published value over three 128 m realisations, the slow test below) is not
+    # resolved by one 64 m realisation (seed 1: 44.7 Hz for 43.4; seeds 1-8: mean 38.6)
+    assert sim["bragg_centroid_hz"] < vv < ref + SMALL_TILE_ALLOWANCE_VV_HZ
 
 
 # --- slow: the comparison of docs/dynamics.md --------------------------------------------
@@ -164,9 +173,10 @@ def gmf_rows(tmp_path_factory):
 
 #: (band, U19.5, look, channel) where the simulated centroid falls short of the published
 #: one by more than the tolerance (docs/dynamics.md): VV at C band and 5 m/s upwind (with
-#: the default surface drift; six cases before it), and where it exceeds it: HH at C band
-#: and 12 m/s upwind
-SHORT = {("C", 5.0, 0.0, "vv")}
+#: the default surface drift; six cases before it) and VV at X band downwind (0.75 of the
+#: published value, 0.9 Hz outside since the breakers ride on the long waves only, eq
+#: BR10; 0.4 Hz inside before), and where it exceeds it: HH at C band and 12 m/s upwind
+SHORT = {("C", 5.0, 0.0, "vv"), ("X", 8.0, 180.0, "vv")}
 OVER = {("C", 12.0, 0.0, "hh")}
 
 
@@ -227,14 +237,52 @@ def test_breaking_speeds_up_both_polarisations_at_low_grazing(breaking_rows):
 @pytest.mark.slow
 def test_breaking_speeds_vv_up_about_fifty_percent(breaking_rows):
     # "about 50% faster": read here as 1.25-1.75 (the abstract gives no scatter); with the
-    # default surface drift and the breakers' mean velocity VV gives 1.52-1.55
+    # default surface drift and the breakers' mean velocity VV gives 1.55-1.56
     for r in breaking_rows:
         assert 1.25 < r["ratio_vv"] < 1.75
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="the breaking zones sit on the sharpest crests of the "
-                   "resolved waves: HH speeds up 2.9-3.6x for the measured ~1.5x "
+def test_breaking_zones_move_at_the_fronts_velocity_plus_the_long_waves_orbital(
+        breaking_rows):
+    # HH at 3 deg grazing is the breaking zones' (docs/scattering.md: +17 dB over the
+    # regular surface), so its centroid is their Doppler (eq BR10): the fronts' mean
+    # velocity relative to the water (Hansen et al. 2012 eq 19), plus the mean orbital
+    # velocity where the zones sit of the long waves (k < k_wb / 10; eq BR8, closed form
+    # on a Gaussian sea, the zones placed on the 1 m grid's crests), plus the surface
+    # drift: 1.84 and 2.18 m/s at U10 = 7.6 and 11.3 m/s (measured 1.86 and 2.23). For
+    # comparison (docs/dynamics.md): K05's linear modulation (BR9) gives 1.68 and 2.02,
+    # and Hwang, Sletten & Toporkov (2008, C02003) measured X-band sea spikes at low
+    # grazing moving at 2.0-2.6 m/s for winds of 7-14.5 m/s.
+    from xband_doppler_measured import F
+
+    from seaecho.ocean.wind import SURFACE_DRIFT_OVER_U10
+    from seaecho.scattering.breaking import (
+        breaking_statistics,
+        modulating_wavenumber_limit,
+        placement_orbital_velocity,
+    )
+
+    k_r = 2.0 * np.pi * F / C0
+    for r in breaking_rows:
+        u10 = float(u10_from_u19_5(r["u19_5_m_s"]))
+        st = breaking_statistics(u10, k_r)
+        spec = DirectionalSpectrum("elfouhaily", "longuet-higgins", r["u19_5_m_s"])
+        k_grid = np.pi / 1.0  # the comparison's 1 m grid
+        orbital = placement_orbital_velocity(spec, st.q, k_grid, 0.0,
+                                             k_velocity=modulating_wavenumber_limit(st.k_wb))
+        budget = st.mean_velocity + orbital + SURFACE_DRIFT_OVER_U10 * u10
+        grazing = np.radians(r["grazing_deg"])
+        v_hh = C0 / F * r["centroid_hh_breaking_hz"] / 2.0 / np.cos(grazing)
+        assert v_hh == pytest.approx(budget, rel=0.06)
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="the breaking zones move as the published model's "
+                   "(Hansen et al. 2012 eqs 5 and 19; 1.9-2.2 m/s, near the 2.0-2.6 m/s of "
+                   "sea spikes measured by Hwang et al. 2008), but the simulated HH without "
+                   "breaking is the Bragg line, drift and tilt alone (0.5-0.7 m/s): HH "
+                   "speeds up 3.0-3.5x (3.52, 2.99) for the measured ~1.5x "
                    "(docs/dynamics.md)")
 def test_breaking_speeds_hh_up_about_fifty_percent(breaking_rows):
     for r in breaking_rows:

@@ -111,6 +111,36 @@ laboratory, Rapp & Melville 1990). The speckle of
 the breaking component is independent of the Bragg and specular speckle (distinct
 scatterers).
 
+``c(k)`` is the linear phase speed, i.e. the fronts' speed *relative to the water*. The
+waves longer than the breakers carry them with their orbital velocity, and breaking is
+modulated by them (K05), so the breakers' mean Doppler velocity is, in Hansen et al.
+(2012), eq 19 plus a long-wave term, eq 5: the covariance of the modulated fraction of
+breaking zones with the orbital velocity of the waves that modulate breaking,
+
+.. math::
+    |K| < k_{mod} = B_{MOD}\\, k_{wb} = k_{wb}/10                                 (BR7)
+
+(:func:`modulating_wavenumber_limit`: ten times longer than the shortest breakers).
+Per facet (``seaecho.simulation``) the zones sit on the facets of largest downward
+acceleration of the resolved sea (Phillips' criterion, the threshold set by ``q``:
+:func:`breaking_placement`), i.e. on the resolved crests, where the long waves have
+theirs; their mean orbital velocity is eq BR8 (:func:`placement_orbital_velocity`;
+0.70 m/s along the wind at U10 = 7.6 m/s on a 1 m grid, of which 0.65 from the waves
+``k < k_mod``), the counterpart of K05's linear term, eq BR9
+(:func:`breaking_modulation_velocity`; 0.48 m/s). The resolved waves shorter than
+``k_mod`` are breakers themselves (``k < k_wb``), counted in the fronts' velocity: the
+zones' Doppler leaves their orbital velocity out,
+
+.. math::
+    f_{wb} = \\mathbf q \\cdot (\\mathbf v - \\mathbf v_{|K| \\ge k_{mod}}
+    + c_{br}\\,\\hat{\\mathbf u} + \\mathbf U) / 2\\pi                               (BR10)
+
+(``v`` the facet's velocity, eq D1; ``v_|K|>=k_mod`` the band of the resolved surface's
+velocity above ``k_mod`` at the facet, :func:`seaecho.sea.band_velocity`; ``U`` the
+surface drift, eq C1; :meth:`seaecho.scattering.dynamics.EvolvingSpeckle.draws`), so that
+they ride on the long waves only (before, on every resolved wave: +0.05 m/s on a 1 m
+grid, +0.12 m/s on a 0.25 m one at U10 = 7.6 m/s).
+
 References
 ----------
 .. [1] Kudryavtsev, V., Hauser, D., Caudal, G. and Chapron, B. (2003). A semiempirical
@@ -132,6 +162,8 @@ References
    Dagestad, K.-F. and Mouche, A. A. (2012). Simulation of radar backscatter and Doppler
    shifts of wave-current interaction in the presence of strong tidal current. *Remote
    Sens. Environ.* 120, 113-122.
+.. [8] Johnson, N. L., Kotz, S. and Balakrishnan, N. (1994). *Continuous Univariate
+   Distributions*, vol. 1, 2nd ed., Wiley, ch. 13 (the truncated normal's mean).
 """
 
 from __future__ import annotations
@@ -167,6 +199,12 @@ C_Q = 10.5
 B_R = 0.1
 #: Shortest breakers counted [rad/m]: wavelength 0.3 m (K05, above eq 19).
 K_WB_MAX = 2.0 * np.pi / 0.3
+#: The long waves that modulate breaking are at least 1 / B_MOD times longer than the
+#: shortest breakers, ``k < k_mod = B_MOD k_wb`` [-] (Hansen et al. 2012 eq 5, breaking
+#: term; the integration limit of the DopRIM implementation, eq BR9).
+B_MOD = 0.1
+#: Hydrodynamic modulation constant of the short waves m_k [-] (Hansen et al. 2012).
+M_K = -4.5
 
 
 # --- wind and waves (BR4) -----------------------------------------------------------
@@ -635,7 +673,146 @@ def breaking_placement_sorted(b: NDArray, a: NDArray, q: float) -> NDArray:
     return out
 
 
+def modulating_wavenumber_limit(k_wb: float) -> float:
+    """``k_mod = B_MOD k_wb`` [rad/m]: the long waves that modulate breaking (eq BR7).
+
+    Hansen et al. (2012) eq 5 integrates the breakers' modulation over the waves at least
+    ten times longer than the shortest breakers (the DopRIM implementation's limit
+    ``k < k_wb / 10``); shorter resolved waves are breakers themselves (``k < k_wb``,
+    eq BR3), whose speed the fronts' velocity already counts.
+    """
+    return float(B_MOD * k_wb)
+
+
+def _polar_band(spectrum, k_max: float, n_k: int = 1500, n_psi: int = 360):
+    """Log-spaced K up to ``k_max`` from 1/50 of the spectral peak and travel directions
+    psi relative to the wind [rad], with ``S_1d D`` [m^3/rad] (``Psi d^2K = S_1d D dK
+    dpsi``) and the quadrature weights of ``dK dpsi``."""
+    k = np.geomspace(spectrum.peak_wavenumber() / 50.0, k_max, n_k)
+    psi = np.linspace(-np.pi, np.pi, n_psi, endpoint=False)
+    dens = spectrum.omni(k)[:, None] * spectrum.spread(k[:, None], psi[None, :])
+    wk = np.gradient(k)
+    return k, psi, dens, wk[:, None] * (2.0 * np.pi / n_psi)
+
+
+def placement_orbital_velocity(spectrum, q: float, k_index: float, direction: float,
+                               depth: float | None = None,
+                               k_velocity: float | None = None) -> float:
+    r"""Mean orbital velocity along ``direction`` of the surface the breaking zones cover
+    [m/s], for the placement of :func:`breaking_placement` on the index of eq BR7.
+
+    The index ``X = -a_z`` of the waves ``K < k_index`` (the grid's resolved sea for the
+    simulation's placement, ``pi / dx``) and the horizontal particle velocity ``u_e``
+    along the unit vector of azimuth ``direction`` of the waves ``K < k_velocity`` are
+    jointly Gaussian on a linear sea; covering the fraction ``q`` of largest ``X``
+    (``X > x_q sigma_X``, ``x_q = sqrt(2) erfcinv(2 q)``) selects, on average (the
+    conditional mean of a bivariate normal beyond a threshold, the inverse Mills ratio;
+    Johnson, Kotz & Balakrishnan 1994, ch. 13),
+
+    .. math::
+        \langle u_e \rangle_q = \frac{\mathrm{cov}(u_e, X)}{\sigma_X}
+        \frac{\varphi(x_q)}{q},\quad
+        \mathrm{cov}(u_e, X) = \int_{K<k_v} \omega^3 \coth(Kd) \cos(\psi -
+        \psi_e)\, \Psi\, d^2K,\quad
+        \sigma_X^2 = \int_{K<k_{index}} \omega^4\, \Psi\, d^2K            (BR8)
+
+    (linear waves: ``-a_z = omega^2 z`` and ``u = omega coth(Kd) z`` along the travel
+    direction, in phase; Lamb 1932, art. 228; ``k_v = min(k_velocity, k_index)``: the
+    waves outside the index are independent of it and average out over the zones).
+    ``k_velocity = k_mod`` (eq BR7) gives the part of the long waves that modulate
+    breaking, the counterpart of eq BR9; the rest, the resolved waves shorter than
+    ``k_mod``, are breakers themselves (``k < k_wb``), whose speed the fronts' velocity
+    already counts.
+
+    Parameters
+    ----------
+    spectrum : DirectionalSpectrum
+        The sea's spectrum (its ``wind_direction`` places ``psi``).
+    q : float
+        Fraction of the area covered [-], in (0, 1).
+    k_index : float
+        Upper wavenumber of the index [rad/m].
+    direction : float
+        Azimuth of the velocity component [rad], CCW from +x.
+    depth : float or None
+        Water depth [m] (None: deep water).
+    k_velocity : float or None
+        Upper wavenumber of the velocity [rad/m] (None: ``k_index``).
+    """
+    from scipy.special import erfcinv
+
+    from ..ocean.dispersion import angular_frequency, horizontal_to_vertical_ratio
+
+    if not (0.0 < q < 1.0):
+        raise ValueError(f"q = {q!r}: must lie in (0, 1)")
+    k, psi, dens, w = _polar_band(spectrum, k_index)
+    om = angular_frequency(k, depth)[:, None]
+    coth = horizontal_to_vertical_ratio(k, depth)
+    coth = np.broadcast_to(np.asarray(coth, dtype=float), k.shape)[:, None]
+    cos_e = np.cos(psi + spectrum.wind_direction - direction)[None, :]
+    in_v = (k < (k_index if k_velocity is None else k_velocity))[:, None]
+    # Eq BR8.
+    cov = float(np.sum(np.where(in_v, om ** 3 * coth * cos_e * dens * w, 0.0)))
+    sigma = math.sqrt(float(np.sum(om ** 4 * dens * w)))
+    x_q = math.sqrt(2.0) * float(erfcinv(2.0 * q))
+    return cov / sigma * math.exp(-0.5 * x_q * x_q) / math.sqrt(2.0 * math.pi) / q
+
+
+def breaking_modulation_velocity(spectrum, u10: float, k_radar: float,
+                                 direction: float) -> float:
+    r"""Long-wave part of the breakers' Doppler velocity at grazing incidence [m/s]:
+    the breaking term of Hansen et al. (2012) eq 5 with K05's modulation transfer function.
+
+    The breaking zones' fraction is modulated by the long waves, ``q (1 + M_h k zeta)``,
+    and the zones ride on their orbital velocity: their mean velocity along the unit
+    vector of azimuth ``direction`` gains
+
+    .. math::
+        c_{wb} = -\int_{K<k_{mod}} \mathrm{Re}\,M_h \cos(\psi - \psi_e)\, c\, K^2
+        \Psi\, d^2K,\quad
+        M_h = \frac{m_k}{4}(n + 1)(1 + 2\cos^2(\psi - \psi_e))
+        \frac{1 - i\tau}{1 + \tau^2},\quad
+        \tau = \frac{n \beta_{wb} \omega_{wb}}{\omega}                      (BR9)
+
+    (``m_k = -9/2``, ``n = 5``, ``beta_wb`` the wind growth rate of eq BR4 at ``k_wb``
+    along the wind, ``k_mod`` of eq BR7) to add to the fronts' mean velocity
+    (:attr:`BreakingStatistics.mean_velocity`, Hansen et al. eq 19). The tilt term and the
+    imaginary (relaxation) term of eq 5 carry ``1 / tan(theta)`` and are left out: at
+    grazing incidence the front term of eq BR2 does not depend on the incidence (the tilt
+    MTF vanishes) and ``tau / tan(theta)`` is below 1 % at 3 deg grazing. Eq 5 and the
+    constants were read in the open DopRIM implementation (stereoid project), which
+    names them after the article; the article itself was not available.
+
+    Parameters
+    ----------
+    spectrum : DirectionalSpectrum
+    u10 : float
+        Wind speed at 10 m [m/s].
+    k_radar : float
+        Radar wavenumber [rad/m].
+    direction : float
+        Azimuth of the velocity component (e.g. towards the radar) [rad].
+
+    References
+    ----------
+    .. [1] Hansen et al. (2012), eqs 5 and 19; K05 (the MTF of the breaking zones).
+    """
+    from ..ocean.dispersion import angular_frequency
+
+    k_wb = breaking_wavenumber_limit(k_radar)
+    k, psi, dens, w = _polar_band(spectrum, modulating_wavenumber_limit(k_wb))
+    beta_wb = float(wind_growth_rate(k_wb, 0.0, u10))
+    om = angular_frequency(k)[:, None]
+    tau = N_GRAVITY * beta_wb * float(angular_frequency(k_wb)) / om
+    cos_e = np.cos(psi + spectrum.wind_direction - direction)[None, :]
+    # Eq BR9 (real part of M_h).
+    re_m = M_K / 4.0 * (N_GRAVITY + 1.0) * (1.0 + 2.0 * cos_e ** 2) / (1.0 + tau ** 2)
+    return float(np.sum(-re_m * cos_e * (om / k[:, None]) * k[:, None] ** 2 * dens * w))
+
+
 __all__ = [
+    "B_MOD", "M_K", "breaking_modulation_velocity", "modulating_wavenumber_limit",
+    "placement_orbital_velocity",
     "B_R", "C_Q", "EPS_WB", "FRICTION_LAW", "K_WB_MAX", "N_GRAVITY", "S_WB2", "THETA_WB",
     "BreakingStatistics", "FacetBreaking", "add_breaking", "breaking_amplitude",
     "breaking_placement",

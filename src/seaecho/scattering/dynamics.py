@@ -32,8 +32,11 @@ unresolved waves are advected by the resolved orbital velocity (Thompson 1989; R
   (eq BR4): waves travelling against the wind get no wind input (D3).
 * Specular points: none beyond the facet's motion (a specular point's Doppler is the
   vertical velocity of the surface at it, Barrick 1968's geometric optics).
-* Breaking zones: the breakers' Lambda-weighted mean phase speed ``c_br`` along the
-  wind, ``f = q . (c_br u_wind) / (2 pi)`` (KHCC03; :func:`breaking_statistics`).
+* Breaking zones: the breakers' Lambda-weighted mean velocity ``c_br`` along the wind,
+  relative to the water, ``f = q . (c_br u_wind) / (2 pi)`` (Hansen et al. 2012 eq 19;
+  :func:`breaking_statistics`); the long waves' orbital velocity is the facet's, on
+  which the zones are placed by the long waves (eqs BR7-BR8 of
+  :mod:`seaecho.scattering.breaking`).
 
 **Current** (eq C1 of :mod:`seaecho.ocean.dispersion`). On a uniform surface current U
 the facets stay on the fixed grid (the resolved sea is advected through them,
@@ -415,9 +418,24 @@ class EvolvingSpeckle:
         self._device[id(buf)] = (buf, out)
         return out
 
-    def draws(self, t: float) -> Callable:
+    def draws(self, t: float, breaker_short: NDArray | None = None) -> Callable:
         """The ``draws`` callable of :func:`seaecho.scattering.facet.speckled_facet_amplitudes`
-        at time ``t`` [s]: evaluates eqs D2-D4 inside the facet kernel."""
+        at time ``t`` [s]: evaluates eqs D2-D4 inside the facet kernel.
+
+        ``breaker_short`` (N, 3) [m/s]: per facet, the velocity of the resolved waves
+        shorter than the breakers' modulating waves, which the breaking zones' Doppler
+        leaves out (eq BR10 of :mod:`seaecho.scattering.breaking`: they ride on the
+        longer waves only; the shorter are breakers, counted in ``c_br``); None: none.
+        """
+        short = None
+        if breaker_short is not None and self.breaking:  # the block's, copied once
+            last = getattr(self, "_short", None)
+            if last is None or last[0] is not breaker_short:
+                b = np.asarray(breaker_short, dtype=float)
+                last = (breaker_short,
+                        tuple(aligned(np.ascontiguousarray(b[:, i])) for i in range(3)))
+                self._short = last
+            short = last[1]
 
         def make(xp, io, ctx):
             d = ctx["n_s"] - ctx["n_i"]
@@ -455,6 +473,9 @@ class EvolvingSpeckle:
                     1.0 / (2.0 * math.pi))
                 if moving:  # the breakers drift with the water too
                     f_w = f_w + f_u
+                if short is not None:  # eq BR10: not the short waves' orbital velocity
+                    sx, sy, sz = (self._wrap(xp, a) for a in short)
+                    f_w = f_w - (q.x * sx + q.y * sy + q.z * sz) * (1.0 / (2.0 * math.pi))
                 out["breaking"] = self.process_values("breaking", t, f_w, sigma_f, xp)
             return out
 
