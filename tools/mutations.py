@@ -149,8 +149,8 @@ MUTATIONS = [
              "the breaking zones drift at the fronts' mean speed, not their mean velocity "
              "(Hansen et al. 2012 eq 19)"),
     Mutation("breaking-placed-by-long-waves", S + "simulation.py",
-             "acc = to_facets(sea.vertical_acceleration(state.t)).reshape(-1)",
-             "acc = to_facets(sea.vertical_acceleration(state.t, 2.09)).reshape(-1)",
+             "        acceleration_z = sea.vertical_acceleration(state.t)\n",
+             "        acceleration_z = sea.vertical_acceleration(state.t, 2.09)\n",
              ("tests/scattering/test_breaking_doppler.py",),
              "the breaking zones placed by the long waves' acceleration alone: off the "
              "resolved crests, on the short waves' faces (eq P7)"),
