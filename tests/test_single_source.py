@@ -33,8 +33,11 @@ def _modules() -> dict[str, ast.Module]:
 
 @functools.cache
 def _code(name: str) -> str:
-    """The module's code without docstrings (ast.unparse drops comments)."""
-    tree = ast.parse(ast.unparse(_modules()[name]))
+    """The module's code without docstrings (ast.unparse drops comments).
+
+    A tree of its own, parsed again from the file (the shared one of :func:`_modules` is
+    left whole): the same code as unparsing that one, for one unparse less per module."""
+    tree = ast.parse((SRC / name).read_text())
     for node in ast.walk(tree):
         body = getattr(node, "body", None)
         if (isinstance(body, list) and body and isinstance(body[0], ast.Expr)

@@ -39,6 +39,7 @@ from __future__ import annotations
 
 import copy
 import dataclasses
+import functools
 import os
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -324,7 +325,7 @@ def build_sea_model(scene, frequency: float | None = None,
             f"{f / 1e9:g} GHz: the facets carry no sub-facet slopes; use a spacing above "
             f"{np.pi / k_cut:.4g} m")
     eps_r = complex(sea_water_permittivity(f, cfg.temperature_c, cfg.salinity_psu))
-    table = BraggSpectrumTable(spectrum.height_spectrum, k_min=band.k_grid, k_max=k_max)
+    table = _bragg_table(spectrum, band.k_grid, float(k_max))
     opts = scene.scattering
     mss_u, mss_c = band.mss_upwind, band.mss_crosswind
     quadrature = None
@@ -355,6 +356,18 @@ def build_sea_model(scene, frequency: float | None = None,
                     roughness_height_variance=height_variance(spectrum, band.k_grid, k_max),
                     bragg_spectrum=table, tilt=quadrature, breaking=breaking,
                     dynamics=dynamics)
+
+
+@functools.lru_cache(maxsize=8)
+def _bragg_table(spectrum: DirectionalSpectrum, k_min: float, k_max: float
+                 ) -> BraggSpectrumTable:
+    """The sea state's tabulated height spectrum on ``k_min <= K <= k_max`` [rad/m] (eq
+    T2 of :mod:`seaecho.scattering.spectrum_table`), made once per process for the same
+    (frozen) spectrum and band: a table is never modified after it is made, and making it
+    evaluates the spectrum at 368 640 wavenumbers, most of :func:`build_sea_model`'s time
+    on a small grid (a run and its check, a multistatic scene's receivers, the seeds of
+    one sea state each build the same table)."""
+    return BraggSpectrumTable(spectrum.height_spectrum, k_min=k_min, k_max=k_max)
 
 
 def sea_motion(scene) -> str:

@@ -542,6 +542,8 @@ CAPS = {
     # a level in [-300, 0] dB (its validator's range) or 'off'
     ("RadarConfig", "sea_gain_floor_db"): st.one_of(
         st.floats(-300.0, 0.0, allow_nan=False), st.just("off")),
+    # (0, 600] rpm and not 0 rad/s once converted (its validator)
+    ("ScanConfig", "rate_rpm"): st.floats(1.0e-300, 600.0),
     # each component within [-5, 5] m/s (its validator's range)
     ("SeaConfig", "current_m_s"): st.tuples(st.floats(-5.0, 5.0, allow_nan=False),
                                             st.floats(-5.0, 5.0, allow_nan=False)),

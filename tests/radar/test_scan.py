@@ -206,6 +206,9 @@ def test_random_transmit_phase_is_seeded_and_uniform():
     ({"scan": {"mode": "sector", "rate_rpm": 20.0, "sector_deg": (1e-300, 0.0)}},
      "must be at least 0.01 deg wide"),
     ({"scan": {"mode": "fixed", "rate_rpm": 20.0}}, "takes no"),
+    # 5e-324 rpm is > 0 but 0 rad/s, which the run refused after check had accepted it
+    # (found by the fuzzing suite)
+    ({"scan": {"mode": "rotating", "rate_rpm": 5e-324}}, "rate_rpm = 5e-324: 0 rad/s"),
 ])
 def test_bad_scan_is_refused(antenna, message):
     d = _coastal()

@@ -81,9 +81,9 @@ def _sigma0(z_fine, n, tilt):
 
 def test_sigma0_is_grid_independent_from_0_1_to_2_m(elevation):
     new = np.array([_sigma0(elevation, n, True) for n in GRIDS])
-    old = np.array([_sigma0(elevation, n, False) for n in GRIDS])
+    old = np.array([_sigma0(elevation, n, False) for n in (GRIDS[0], GRIDS[-1])])
     # The paper's facet model drifts (the failure this fixes stays visible): HV and HH
-    # fall with the grid spacing.
+    # fall with the grid spacing (the finest and the coarsest grid compared).
     assert old[0, 1] - old[-1, 1] > 3.0
     assert old[0, 0] - old[-1, 0] > 1.0
     # Two scales done right: the 0.1 m grid within 0.25 dB (co-pol), 0.5 dB (cross-pol).

@@ -33,10 +33,11 @@ def test_calibration_trihedral_is_the_radar_equation(tmp_path):
     # 0.5 m trihedral is P_t G^2 lambda^2 sigma / ((4 pi)^3 r^4) with sigma = 4 pi a^4 /
     # (3 lambda^2) (Knott et al. 1993, table 6.1; Skolnik 2008, eq 23.1) within 0.3 dB,
     # at the apex's range (the triple bounce's phase centre) within 0.1 m; HH = -VV in
-    # the FSA bases (odd bounce), cross-polar 20 dB below.
+    # the FSA bases (odd bounce), cross-polar 20 dB below. Without the figures (half the
+    # run's time; the same two figures of a run are tests/cli/test_run.py's).
     out = tmp_path / "tri.nc"
     assert main(["run", str(SCENES / "calibration_trihedral.toml"), "-o", str(out),
-                 "--pulses", "2", "-q"]) == 0
+                 "--pulses", "2", "-q", "--no-figures"]) == 0
     scene = load_scene(SCENES / "calibration_trihedral.toml")
     radar = RadarSystem(build_radar(scene))
     geo = radar.geometry(0)

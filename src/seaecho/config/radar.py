@@ -30,6 +30,7 @@ doi:10.1109/RADAR.2006.1631862.
 
 from __future__ import annotations
 
+import math
 from typing import Literal
 
 from pydantic import Field, field_validator, model_validator
@@ -131,6 +132,9 @@ class ScanConfig(Section):
             return self
         if self.rate_rpm is None:
             raise ValueError(f"mode '{self.mode}' needs rate_rpm")
+        if not 2.0 * math.pi * self.rate_rpm / 60.0 > 0.0:  # the run's rad/s (build.py)
+            raise ValueError(f"rate_rpm = {self.rate_rpm!r}: 0 rad/s once converted (too "
+                             "small for float64); allowed 0 < rate_rpm <= 600 rpm")
         if self.mode == "rotating" and self.sector_deg is not None:
             raise ValueError("sector_deg is only used with mode 'sector'")
         if self.mode == "sector":
