@@ -123,7 +123,7 @@ def level_extent(gain: Callable[[NDArray], NDArray], level_db: float) -> float:
 
 def compressed_extent(pulse: ArrayLike, reference: ArrayLike, level_db: float, *,
                       oversample: int = 8, reach: int = 2048) -> float:
-    """Farthest delay from its peak where a point echo's compressed pulse is still within
+    r"""Farthest delay from its peak where a point echo's compressed pulse is still within
     ``level_db`` of the peak [samples].
 
     The echo of a point at a fractional delay x is the pulse band-limited to the sampling

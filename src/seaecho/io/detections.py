@@ -50,8 +50,12 @@ from numpy.typing import NDArray
 
 from ..constants import C0
 from ..detection.association import ground_point, half_path
-from ..detection.footprint import (clutter_cell_area, compressed_extent, half_power_width,
-                                   level_extent)
+from ..detection.footprint import (
+    clutter_cell_area,
+    compressed_extent,
+    half_power_width,
+    level_extent,
+)
 from ..detection.frames import Frame, ObjectTruth
 from ..geometry.earth import effective_radius, grazing_angle
 
