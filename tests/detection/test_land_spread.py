@@ -23,7 +23,7 @@ LOG2_DB = 20.0 * np.log10(2.0)  # 6.02 dB
 
 def _gaussian(theta3_rad):
     # one-way Gaussian beam of half-power width theta3: G = exp(-4 ln 2 a^2 / theta3^2)
-    # (Skolnik 2001, section 9.x's Gaussian approximation of a main lobe)
+    # (a Gaussian main lobe, the usual approximation of a pencil beam; Skolnik 2001, ch. 9)
     return lambda d: np.exp(-4.0 * np.log(2.0) * np.arctan2(d[..., 1], d[..., 0]) ** 2
                             / theta3_rad ** 2)
 
