@@ -12,7 +12,7 @@ revolutions affordable here: a PRF of 500 Hz in place of 1 kHz (0.29 deg per pul
 8 revolutions (20 s; ``--quick``: 4). Each sweep goes through ``seaecho.detect`` (2-D
 CA-CFAR on the PPI, azimuth x range, train 4 x 8, guard 3 x 2, P_FA 1e-6 per cell;
 the cells on the scene's coast and headland and those their echo spreads onto (the
-two-way beam and the compressed pulse down to -60 dB, ``--land-spread-db X``; plus
+two-way beam and the compressed pulse down to -65 dB, ``--land-spread-db X``; plus
 ``--land-margin M`` from the shore, default 0) blanked by the land mask and left out of
 the CFAR's training windows, ``--no-land-censor``: kept in them),
 which writes the plots and the truth for Stone Soup (``--stonesoup``; an object the

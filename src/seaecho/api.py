@@ -1079,7 +1079,7 @@ DETECTORS = ("ca", "go", "so", "os", "map")
 #: peak out to which the land's echo is taken to spread onto the sea (docs/detection.md,
 #: "Land blanking": the land's contrast over the sea clutter, chosen on the coastal
 #: scanning example)
-LAND_SPREAD_DB = 60.0
+LAND_SPREAD_DB = 65.0
 
 
 def _detection_frames(dataset, channel, truth, radar_position_m, azimuth_gate_deg):

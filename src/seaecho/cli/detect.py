@@ -45,7 +45,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--land-spread-db", type=float, default=None, metavar="X",
                    help="the land mask also blanks the sea the land's echo spreads onto: "
                    "the azimuths where the run's two-way antenna pattern is above -X dB, "
-                   "the compressed pulse's tails above -X dB in range (default 60; > 0)")
+                   "the compressed pulse's tails above -X dB in range (default 65; > 0)")
     p.add_argument("--no-land-spread", action="store_true",
                    help="blank the land (and --land-margin) only, not its echo's spread")
     p.add_argument("--no-land-censor", action="store_true",

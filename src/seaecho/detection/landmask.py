@@ -7,8 +7,8 @@ waterline, the chart's error). A blanked cell is not tested: it yields no plot, 
 in no false-alarm rate and no opportunity (docs/detection.md, "Land blanking"). The
 same cells are kept out of the training windows of the sea next to the shore by a
 land-censored CFAR (:meth:`seaecho.detection.cfar.CFAR.censored`), so that the land does
-not lift the threshold over a target beside it; the margin must then cover the spread of
-the land's echo onto the sea, which the land in the windows used to mask.
+not lift the threshold over a target beside it; the blanking must then cover the spread
+of the land's echo onto the sea, which the land in the windows used to mask.
 
 The test is geometric, per cell: inside one of the polygons (even-odd rule of
 :class:`matplotlib.path.Path`), or within ``margin_m`` of one of their edges (the
