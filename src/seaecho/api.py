@@ -1231,8 +1231,9 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
     land_spread_db : float or None
         The land mask also blanks the sea cells the land's echo spreads onto: within the
         azimuth where the run's two-way antenna pattern is above -``land_spread_db`` dB
-        (its sidelobes included) and the compressed pulse's c / (2 B) in range of a land
-        cell, a dilation of the mask by whole rays and gates
+        (its sidelobes included) and the range where its compressed pulse is (main lobe,
+        c / (2 B), and band-limited tails) of a land cell, a dilation of the mask by
+        whole rays and gates
         (:func:`seaecho.io.detections.land_spread`,
         :func:`seaecho.detection.landmask.spread`). A level > 0 dB (default
         :data:`LAND_SPREAD_DB`), or None: no spread.
