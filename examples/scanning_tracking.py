@@ -2,7 +2,7 @@
 multi-target tracker on bearing and range, scored by OSPA, GOSPA and SIAP.
 
 Run: ``python examples/scanning_tracking.py [--quick] [--revolutions N] [--out DIR]
-[--land-margin M] [--no-land-censor] [--table]``
+[--land-margin M] [--land-spread-db X] [--no-land-censor] [--table] [--spread-table]``
 (default ``docs/figures``); needs Stone Soup (``pip install 'seaecho[tracking]'``).
 The scene is ``scenes/coastal_vts_xband.toml`` (a VTS radar 35 m up on the coast, 1.0 deg
 fan beam turning at 24 rpm, 100 ns pulse, sea state 4 on a 256 m tile 2 km north, two
@@ -11,9 +11,10 @@ revolutions affordable here: a PRF of 500 Hz in place of 1 kHz (0.29 deg per pul
 3.5 pulses per beamwidth; the sea renewed every 125 pulses, 0.25 s as in the scene);
 8 revolutions (20 s; ``--quick``: 4). Each sweep goes through ``seaecho.detect`` (2-D
 CA-CFAR on the PPI, azimuth x range, train 4 x 8, guard 3 x 2, P_FA 1e-6 per cell;
-the cells on the scene's coast and headland, and within 60 m of their shore
-(``--land-margin M``), blanked by the land mask and left out of the CFAR's training
-windows, ``--no-land-censor``: kept in them),
+the cells on the scene's coast and headland and those their echo spreads onto (the
+two-way beam and the compressed pulse down to -65 dB, ``--land-spread-db X``; plus
+``--land-margin M`` from the shore, default 0) blanked by the land mask and left out of
+the CFAR's training windows, ``--no-land-censor``: kept in them),
 which writes the plots and the truth for Stone Soup (``--stonesoup``; an object the
 truth hides, such as the fishing boat behind the headland, is scored apart and is no
 truth for the tracker);
@@ -26,7 +27,9 @@ sweep (each predicted there from its last state): OSPA and GOSPA (c = 50 m, p = 
 the SIAP completeness, ambiguity, spuriousness and position accuracy (tracks assigned to
 a truth within 50 m for 2 scans). Then (not with ``--quick``) the same run through
 GO- and OS-CFAR and a four-plot initiation, as a table (``--table``: with ``--quick``
-too). ``--run FILE`` keeps the run
+too). ``--spread-table``: the CA-CFAR's false alarms near the shore, the cells blanked and
+the objects' P_D for several levels of the land's spread (docs/detection.md's choice of
+the default). ``--run FILE`` keeps the run
 (read again if it exists). Writes ``scanning_tracking.png`` and prints the numbers
 docs/detection.md quotes.
 """
@@ -47,20 +50,18 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import seaecho  # noqa: E402
+from seaecho.api import LAND_SPREAD_DB  # noqa: E402
 from seaecho.warnings import SeaechoWarning  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "scenes" / "coastal_vts_xband.toml"
 PRF_HZ = 500.0
 C_M = 50.0  # OSPA / GOSPA cut-off and the SIAP association distance [m]
-# the land mask's margin: with the land censored out of the CFAR's windows nothing else
-# hides the shore's echo where it spreads onto the sea (the 100 ns pulse's 15 m, the fan
-# beam's azimuth width and sidelobes): the quick run's false alarms within 100 m of the
-# shore number 365, 120, 24, 4 and 0 for margins of 15, 30, 45, 60 and 90 m
-# (docs/detection.md); 60 m keeps the sea but for a few of them. Without censoring 15 m,
-# one range resolution, sufficed: the land in the windows masked the rest (and the boats
-# beside it)
-LAND_MARGIN_M = 60.0
+# the land mask's margin from the shore (the chart's error): none here, the spread of
+# the land's echo (seaecho.detect's land_spread_db) blanks the sea it reaches
+LAND_MARGIN_M = 0.0
+#: levels [dB] of --spread-table (None: no spread)
+SPREAD_LEVELS = (None, 30.0, 40.0, 50.0, 55.0, 60.0, 65.0, 70.0)
 
 
 def scene(revolutions: int):
@@ -263,6 +264,11 @@ def main(argv=None) -> list[Path]:
                     "land censoring)")
     ap.add_argument("--land-margin", type=float, default=LAND_MARGIN_M, metavar="M",
                     help=f"the land mask's margin [m] (default {LAND_MARGIN_M:g})")
+    ap.add_argument("--land-spread-db", type=float, default=LAND_SPREAD_DB,
+                    metavar="X", help="the level of the land's echo spread [dB] (default "
+                    f"{LAND_SPREAD_DB:g})")
+    ap.add_argument("--spread-table", action="store_true",
+                    help="false alarms near the shore against the level of the spread")
     ap.add_argument("--table", action="store_true",
                     help="the detector x initiation table with --quick too")
     args = ap.parse_args(argv)
@@ -285,7 +291,8 @@ def main(argv=None) -> list[Path]:
     sweep_end = [datetime(1970, 1, 1) + timedelta(seconds=float(t)) for t in
                  run["time"].groupby(run["sweep"]).max().values]
     det, s, tracks, paths, mt, meas = track_and_score(run, "ca", 3, sweep_end, scan_s,
-                                                      censor, args.land_margin)
+                                                      censor, args.land_margin,
+                                                      args.land_spread_db)
     # the plots' errors against the truth, in bearing and range (the model's noise)
     by_id = {p.id: p for p in paths}
     err_b, err_r = [], []
@@ -316,7 +323,10 @@ def main(argv=None) -> list[Path]:
           f"km^2 and sweep, P_FA per cell {s['pfa_cell']:.2g} at design 1e-6); P_D per "
           f"object (sweeps): {pd}; sweeps where the truth hides an object: {hidden}")
     print(f"land mask: {det.attrs['cells_blanked']} cells blanked over {n_sweeps} sweeps "
-          f"(margin {det.attrs['land_margin_m']:g} m), {det.attrs['cells_tested']} tested; "
+          f"(margin {det.attrs['land_margin_m']:g} m; the land's echo spread at "
+          f"-{det.attrs['land_spread_db']:g} dB: {det.attrs['land_spread_azimuth_deg']:.3f} deg"
+          f" = {det.attrs['land_spread_rays']} rays, {det.attrs['land_spread_range_m']:.1f} m"
+          f" = {det.attrs['land_spread_gates']} gates), {det.attrs['cells_tested']} tested; "
           + (f"land censoring: {det.attrs['cells_censored']} tested with the land left out "
              f"of their window, {det.attrs['cells_short']} untested (less than half their "
              "window on the sea)" if det.attrs["land_censor"] else "no land censoring"))
@@ -351,12 +361,54 @@ def main(argv=None) -> list[Path]:
         for cfar in ("ca", "go", "os"):
             for min_points in (3, 4):
                 det_v, s_v, tr_v, _, m_v, _ = track_and_score(
-                    run, cfar, min_points, sweep_end, scan_s, censor, args.land_margin)
+                    run, cfar, min_points, sweep_end, scan_s, censor, args.land_margin,
+                    args.land_spread_db)
                 print(f"{cfar.upper()}-CFAR | {min_points} plots | {s_v['false_alarms']} | "
                       f"{len(tr_v)} | {m_v['ospa']:.1f} | {m_v['gospa']:.1f} | "
                       f"{m_v['completeness']:.2f} | {m_v['spuriousness']:.2f} | "
                       f"{m_v['position_accuracy_m']:.2f}")
+    if args.spread_table:
+        spread_table(run, censor, args.land_margin)
     return [png]
+
+
+def shore_distance(run, x_m, y_m):
+    """Distance of each point (x_m, y_m) to the nearest edge of the run's land outlines
+    [m]."""
+    from seaecho.io.detections import run_land_outlines
+
+    p = np.stack([np.asarray(x_m, float), np.asarray(y_m, float)], -1)
+    best = np.full(p.shape[0], np.inf)
+    for v in run_land_outlines(run):
+        ab = np.roll(v, -1, axis=0) - v
+        q = p[:, None] - v[None]
+        t = np.clip((q * ab).sum(-1) / (ab ** 2).sum(-1), 0.0, 1.0)
+        best = np.minimum(best, np.sqrt(((q - t[..., None] * ab) ** 2).sum(-1)).min(1))
+    return best
+
+
+def spread_table(run, censor: bool, margin_m: float) -> None:
+    """The CA-CFAR (the script's window, P_FA 1e-6) at each level of SPREAD_LEVELS: the
+    extents, the cells blanked, the sea area tested per sweep, the false alarms (within
+    50 and 100 m of the shore) and the P_D of the objects in sight."""
+    print("land spread [dB] | azimuth [deg] (rays) | range [m] (gates) | cells blanked | "
+          "area tested per sweep [km^2] | false alarms | within 50 m | within 100 m | "
+          "objects in sight detected [sweeps]")
+    for level in SPREAD_LEVELS:
+        det, truth = seaecho.detect(run, cfar="ca", pfa=1e-6, train=(4, 8), guard=(3, 2),
+                                    land_margin_m=margin_m, land_censor=censor,
+                                    land_spread_db=level)
+        s = seaecho.score(det, truth)
+        fa = det.object_index.values < 0
+        d = shore_distance(run, det.x_m.values[fa], det.y_m.values[fa])
+        a = det.attrs
+        found = sum(v[0] for v in s["pd_object"].values())
+        looks = sum(v[1] for v in s["pd_object"].values())
+        print(f"{'none' if level is None else f'{level:g}'} | "
+              f"{a['land_spread_azimuth_deg']:.2f} ({a['land_spread_rays']}) | "
+              f"{a['land_spread_range_m']:.1f} ({a['land_spread_gates']}) | "
+              f"{a['cells_blanked']} | {a['area_m2'] / 1e6:.2f} | {int(fa.sum())} | "
+              f"{int((d < 50).sum())} | {int((d < 100).sum())} | {found}/{looks}")
 
 
 def tile_cells(run, half_m: float) -> int:
@@ -374,15 +426,18 @@ def tile_cells(run, half_m: float) -> int:
 
 
 def track_and_score(run, cfar: str, min_points: int, sweep_end, scan_s: float,
-                    censor: bool = True, margin_m: float = LAND_MARGIN_M):
-    """Detect (``cfar`` at P_FA 1e-6; the land, ``margin_m`` round it, blanked and
+                    censor: bool = True, margin_m: float = LAND_MARGIN_M,
+                    spread_db: float | None = None):
+    """Detect (``cfar`` at P_FA 1e-6; the land, ``margin_m`` round it and its echo's
+    spread at -``spread_db`` dB (default seaecho.detect's), blanked and
     censored out of the CFAR's windows unless ``censor`` is False), export, track and
     score at the sweep ends: (detections, scores, tracks, truth paths, metrics, plots
     by object)."""
     with tempfile.TemporaryDirectory() as tmp:
         det, truth = seaecho.detect(run, cfar=cfar, pfa=1e-6, train=(4, 8), guard=(3, 2),
                                     land_margin_m=margin_m, land_censor=censor,
-                                    stonesoup=tmp)
+                                    land_spread_db=LAND_SPREAD_DB
+                                    if spread_db is None else spread_db, stonesoup=tmp)
         s = seaecho.score(det, truth)
         detections, truths = seaecho.stonesoup_readers(tmp)
         trk, predictor = tracker(detections, scan_s, min_points)

@@ -1075,6 +1075,11 @@ def ppi(dataset: xr.Dataset, path: PathLike | None = None):
 #: CFAR kinds :func:`detect` takes: the sliding windows of seaecho.detection.cfar and the
 #: clutter map ('map', scan to scan).
 DETECTORS = ("ca", "go", "so", "os", "map")
+#: :func:`detect`'s default ``land_spread_db``: the level [dB] below the two-way beam's
+#: peak out to which the land's echo is taken to spread onto the sea (docs/detection.md,
+#: "Land blanking": the land's contrast over the sea clutter, chosen on the coastal
+#: scanning example)
+LAND_SPREAD_DB = 65.0
 
 
 def _detection_frames(dataset, channel, truth, radar_position_m, azimuth_gate_deg):
@@ -1175,7 +1180,8 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
            azimuth_gate_deg: float | None = None,
            stonesoup: PathLike | None = None, land_mask: bool | None = None,
            land_margin_m: float = 0.0, land_censor: bool | None = None,
-           censor_min_fraction: float = 0.5) -> tuple[xr.Dataset, xr.Dataset]:
+           censor_min_fraction: float = 0.5,
+           land_spread_db: float | None = LAND_SPREAD_DB) -> tuple[xr.Dataset, xr.Dataset]:
     """Detect targets in a run, a SAR image or PPI sweeps (``seaecho detect``;
     docs/detection.md).
 
@@ -1220,7 +1226,17 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
         shore: never tested, no plot (:func:`seaecho.detection.landmask.land_mask`).
         Default: on where the run has land; False: off.
     land_margin_m : float
-        The land mask's margin outward from the shore [m] (>= 0; default 0).
+        The land mask's margin outward from the shore [m] (>= 0; default 0): the chart's
+        error, added to the spread of the land's echo.
+    land_spread_db : float or None
+        The land mask also blanks the sea cells the land's echo spreads onto: within the
+        azimuth where the run's two-way antenna pattern is above -``land_spread_db`` dB
+        (its sidelobes included) and the range where its compressed pulse is (main lobe,
+        c / (2 B), and band-limited tails) of a land cell, a dilation of the mask by
+        whole rays and gates
+        (:func:`seaecho.io.detections.land_spread`,
+        :func:`seaecho.detection.landmask.spread`). A level > 0 dB (default
+        :data:`LAND_SPREAD_DB`), or None: no spread.
     land_censor : bool, optional
         Land-censored CFAR: the land mask's cells are also left out of every training
         window, each estimate uses the sea cells its window keeps, with the threshold
@@ -1263,7 +1279,8 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
     try:
         frames, kind, source = _detection_frames(dataset, channel, truth,
                                                  radar_position_m, azimuth_gate_deg)
-        blanked = _land_blanking(dataset, kind, frames, land_mask, land_margin_m)
+        blanked, spread_attrs = _land_blanking(dataset, kind, frames, land_mask,
+                                               land_margin_m, land_spread_db)
         noise, det, text = _detector(kind, frames, cfar, train, guard, rank, map_weight)
         censored = _land_censoring(det, blanked, land_censor, censor_min_fraction, pfa)
         alpha = det.scale(pfa)
@@ -1312,7 +1329,7 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
              if frames else 1.0,
              "land_mask": int(blanked is not None),
              "land_margin_m": float(land_margin_m) if blanked is not None else 0.0,
-             "cells_blanked": int(blanked or 0),
+             "cells_blanked": int(blanked or 0), **spread_attrs,
              "land_censor": int(censored is not None),
              "censor_min_fraction": float(censor_min_fraction) if censored else 0.0,
              "cells_censored": int(totals["cells_censored"]),
@@ -1340,13 +1357,25 @@ def detect(dataset: xr.Dataset | PathLike, *, cfar: str = "ca", pfa: float = 1e-
     return detections, truth_ds
 
 
-def _land_blanking(dataset, kind, frames, land_mask, margin_m) -> int | None:
-    """Set the frames' land mask (:func:`detect`'s ``land_mask``): the cells blanked in
-    all, or None when there is no mask."""
+def _land_blanking(dataset, kind, frames, land_mask, margin_m, spread_db
+                   ) -> tuple[int | None, dict]:
+    """Set the frames' land mask (:func:`detect`'s ``land_mask``, ``land_margin_m`` and
+    ``land_spread_db``): (the cells blanked in all, or None when there is no mask; the
+    detections' attributes of the spread)."""
     import numpy as np
 
     from .detection.landmask import land_mask as mask_of
-    from .io.detections import run_land_outlines
+    from .detection.landmask import spread, spread_bins
+    from .io.detections import land_spread, run_land_outlines
+
+    no_spread = {"land_spread_db": 0.0, "land_spread_azimuth_deg": 0.0,
+                 "land_spread_range_m": 0.0, "land_spread_rays": 0, "land_spread_gates": 0}
+    if spread_db is not None and not (
+            isinstance(spread_db, int | float) and not isinstance(spread_db, bool)
+            and np.isfinite(spread_db) and spread_db > 0):
+        raise SceneError(f"land_spread_db = {spread_db!r}: the level below the two-way "
+                         "beam's peak out to which the land's echo spreads must be a number "
+                         "> 0 dB, or none (no spread)")
 
     if land_mask not in (None, True, False):
         raise SceneError(f"land_mask = {land_mask!r}: allowed true, false or none "
@@ -1355,25 +1384,48 @@ def _land_blanking(dataset, kind, frames, land_mask, margin_m) -> int | None:
         raise SceneError(f"land_margin_m = {margin_m}: the land mask's margin must be a "
                          "number >= 0 [m]")
     if land_mask is False:
-        return None
-    outlines = run_land_outlines(dataset) if hasattr(dataset, "data_vars") else []
+        return None, no_spread
+    extent = None  # (azimuth [rad], range [m]) of the land's echo spread
+
+    def read(ds):
+        nonlocal extent
+        found = run_land_outlines(ds)
+        if found and spread_db is not None and kind == "ppi":
+            extent = land_spread(ds, float(spread_db))
+        return found
+
+    outlines = read(dataset) if hasattr(dataset, "data_vars") else []
     if not outlines and isinstance(dataset, str | os.PathLike) and Path(dataset).exists():
         try:
             with open_dataset(dataset) as ds:
-                outlines = run_land_outlines(ds)
-        except (OSError, ValueError):  # a CfRadial 2 file: no outlines
+                outlines = read(ds)
+        except OSError:  # a CfRadial 2 file: no outlines
+            outlines = []
+        except ValueError as exc:
+            if "land_spread_db" in str(exc):
+                raise
             outlines = []
     if kind != "ppi" or not outlines:
         if land_mask:
             raise SceneError(f"land_mask = true: the land mask blanks PPI sweeps of a run "
                              f"with [[land]]; this dataset has {kind} frames and "
                              f"{len(outlines)} land outline(s)")
-        return None
-    n = 0
+        return None, no_spread
+    n, attrs = 0, dict(no_spread)
     for f in frames:
         f.blanked = mask_of(f.cell_coord, outlines, float(margin_m))
+        if extent is not None:
+            rays = spread_bins(float(np.rad2deg(extent[0])), f.extra["azimuth_step_deg"])
+            gates = spread_bins(extent[1], f.extra["range_step_m"])
+            f.blanked = spread(np.broadcast_to(f.blanked, f.power.shape), rays, gates,
+                               bool(f.extra.get("circular")))
+            attrs = {"land_spread_db": float(spread_db),
+                     "land_spread_azimuth_deg": float(np.rad2deg(extent[0])),
+                     "land_spread_range_m": float(extent[1]),
+                     "land_spread_rays": max(rays, attrs["land_spread_rays"]),
+                     "land_spread_gates": max(gates, attrs["land_spread_gates"])}
         n += int(np.broadcast_to(f.blanked, f.power.shape).sum())
-    return n
+    return n, attrs
 
 
 def _land_censoring(det, blanked, land_censor, min_fraction, pfa):

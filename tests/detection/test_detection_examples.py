@@ -56,8 +56,9 @@ def test_sar_calibration_image_targets(tmp_path):
 @pytest.mark.slow
 def test_scanning_tracking_quick(tmp_path, capsys):
     # 4 revolutions of the coastal VTS scene at 500 Hz, its coast and headland blanked
-    # by the land mask and censored out of the CFAR's windows (60 m margin; 45 false
-    # alarms before censoring with 15 m, 48 now): every object in sight seen in every
+    # by the land mask with their echo's spread (65 dB) and censored out of the CFAR's
+    # windows (45 false
+    # alarms before censoring with 15 m, 46 now): every object in sight seen in every
     # sweep, the
     # tracks scored by OSPA, GOSPA and SIAP at the sweep ends. The fishing boat lies
     # behind the wooded headland ([[land]] "headland", 40 m high, between it and the

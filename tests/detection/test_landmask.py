@@ -95,6 +95,9 @@ def scanning_run(land=True, hidden_sweep=None, seed=5):
 
 
 def _detect(ds, **kw):
+    # the mask and the censoring alone: these synthetic runs record no antenna, whose
+    # echo's spread test_land_spread.py blanks
+    kw.setdefault("land_spread_db", None)
     return seaecho.detect(ds, cfar="ca", pfa=1e-6, train=(3, 6), guard=(1, 2), **kw)
 
 
@@ -225,7 +228,7 @@ def test_cli_land_mask_options_and_hidden_in_the_score(tmp_path, capsys):
     ds.to_netcdf(run, engine="h5netcdf")
     out = tmp_path / "d.csv"
     assert main(["detect", str(run), "-o", str(out), "--train", "3", "6", "--guard", "1",
-                 "2"]) == 0
+                 "2", "--no-land-spread"]) == 0
     printed = capsys.readouterr().out
     assert f"{n_land} on the land blanked" in printed and "land censored" in printed
     assert main(["score", str(out)]) == 0
@@ -237,7 +240,7 @@ def test_cli_land_mask_options_and_hidden_in_the_score(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "--land-margin -3" in err and "Traceback" not in err
     assert main(["detect", str(run), "-o", str(out), "--train", "3", "6", "--guard", "1",
-                 "2", "--no-land-censor"]) == 0
+                 "2", "--no-land-censor", "--no-land-spread"]) == 0
     assert "land censored" not in capsys.readouterr().out
     assert main(["detect", str(run), "--censor-min-fraction", "0", "-o", str(out)]) == 2
     err = capsys.readouterr().err

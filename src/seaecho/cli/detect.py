@@ -42,6 +42,12 @@ def register(sub: argparse._SubParsersAction) -> None:
                    "default they are blanked: never tested, no plot)")
     p.add_argument("--land-margin", type=float, default=0.0, metavar="M",
                    help="the land mask's margin outward from the shore [m] (default 0)")
+    p.add_argument("--land-spread-db", type=float, default=None, metavar="X",
+                   help="the land mask also blanks the sea the land's echo spreads onto: "
+                   "the azimuths where the run's two-way antenna pattern is above -X dB, "
+                   "the compressed pulse's tails above -X dB in range (default 65; > 0)")
+    p.add_argument("--no-land-spread", action="store_true",
+                   help="blank the land (and --land-margin) only, not its echo's spread")
     p.add_argument("--no-land-censor", action="store_true",
                    help="leave the land mask's cells in the CFAR's training windows (by "
                    "default they are left out: each estimate averages the sea cells of its "
@@ -55,7 +61,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from ..api import detect, write_detections
+    from ..api import LAND_SPREAD_DB, detect, write_detections
     from . import UsageError
 
     sources = [Path(d) for d in args.dataset]
@@ -79,6 +85,12 @@ def run(args: argparse.Namespace) -> int:
     if not args.land_margin >= 0.0:
         raise UsageError(f"--land-margin {args.land_margin}: the land mask's margin must "
                          "be >= 0 m")
+    if args.land_spread_db is not None and (args.no_land_spread
+                                            or not args.land_spread_db > 0.0):
+        raise UsageError(f"--land-spread-db {args.land_spread_db:g}: the level below the "
+                         "two-way beam's peak out to which the land's echo spreads must be "
+                         "> 0 dB" + (" (and not with --no-land-spread)"
+                                     if args.no_land_spread else ""))
     if not 0.0 < args.censor_min_fraction <= 1.0:
         raise UsageError(f"--censor-min-fraction {args.censor_min_fraction}: the fraction of "
                          "a window's training cells a land-censored estimate needs must be "
@@ -95,7 +107,10 @@ def run(args: argparse.Namespace) -> int:
                             land_mask=False if args.no_land_mask else None,
                             land_margin_m=args.land_margin,
                             land_censor=False if args.no_land_censor else None,
-                            censor_min_fraction=args.censor_min_fraction)
+                            censor_min_fraction=args.censor_min_fraction,
+                            land_spread_db=None if args.no_land_spread else
+                            LAND_SPREAD_DB if args.land_spread_db is None
+                            else args.land_spread_db)
     except ValueError as exc:
         raise UsageError(str(exc)) from None
     paths = write_detections(det, truth, out)
@@ -105,6 +120,8 @@ def run(args: argparse.Namespace) -> int:
           f"{a['detector']}, P_FA {a['pfa']:g}, alpha {a['alpha']:.4g}; {a['n_looks']} "
           f"looks, {a['cells_tested']} cells tested"
           + (f", {a['cells_blanked']} on the land blanked" if a.get("land_mask") else "")
+          + (f" (its echo's spread at -{a['land_spread_db']:g} dB: {a['land_spread_rays']} "
+             f"rays, {a['land_spread_gates']} gates)" if a.get("land_spread_db") else "")
           + (f"; land censored: {a['cells_censored']} cells with sea-only windows, "
              f"{a['cells_short']} with too little sea untested" if a.get("land_censor")
              else "") + ")")

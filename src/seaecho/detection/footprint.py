@@ -28,7 +28,16 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
-__all__ = ["clutter_cell_area", "half_power_width"]
+__all__ = ["clutter_cell_area", "compressed_extent", "half_power_width", "level_extent"]
+
+
+def _azimuth_cut(gain: Callable[[NDArray], NDArray]) -> Callable[[ArrayLike], NDArray]:
+    """``a -> G`` of a pattern along its azimuth plane (x-y of the antenna frame) [rad]."""
+    def g(a):
+        a = np.asarray(a, dtype=float)
+        return np.asarray(gain(np.stack([np.cos(a), np.sin(a), np.zeros_like(a)], -1)),
+                          dtype=float)
+    return g
 
 
 def half_power_width(gain: Callable[[NDArray], NDArray]) -> float:
@@ -47,11 +56,7 @@ def half_power_width(gain: Callable[[NDArray], NDArray]) -> float:
         its boresight value (found on a grid, then by Brent's method); 2 pi for a pattern
         that never falls to half in azimuth (omnidirectional), taken symmetric.
     """
-    def g(a):
-        a = np.asarray(a, dtype=float)
-        return np.asarray(gain(np.stack([np.cos(a), np.sin(a), np.zeros_like(a)], -1)),
-                          dtype=float)
-
+    g = _azimuth_cut(gain)
     peak = float(g(0.0))
     if not peak > 0:
         raise ValueError(f"gain at boresight = {peak}: no beam to measure")
@@ -62,6 +67,123 @@ def half_power_width(gain: Callable[[NDArray], NDArray]) -> float:
     i = int(below[0])
     a_h = brentq(lambda x: float(g(x)) - 0.5 * peak, a[i - 1], a[i], xtol=1e-13)
     return 2.0 * a_h
+
+
+def level_extent(gain: Callable[[NDArray], NDArray], level_db: float) -> float:
+    """Farthest azimuth off boresight where a pattern is still within ``level_db`` of its
+    boresight value [rad].
+
+    The angular spread of a strong echo through the beam: a scatterer whose echo exceeds
+    the background by X dB still shows above it wherever the (two-way) pattern is above
+    -X dB, main lobe and sidelobes alike. Pass the two-way pattern G_t G_r for a radar's
+    echo (:func:`seaecho.io.detections.land_spread`).
+
+    Parameters
+    ----------
+    gain : callable
+        ``d_local (..., 3) -> G`` in the antenna frame (x boresight, y along the width,
+        z up), evaluated along the azimuth plane (z = 0), both sides of the boresight.
+    level_db : float
+        X > 0 [dB]: the level below the boresight value.
+
+    Returns
+    -------
+    float
+        a_X = max |a| over the azimuths a in [-pi, pi] with G(a) >= 10^(-X/10) G(0) (the
+        outermost crossing, found on a grid of 2^19 + 1 azimuths, then by Brent's
+        method): beyond a_X the pattern stays below the level. pi where it never falls
+        below (an omnidirectional pattern). For a Gaussian beam whose one-way half-power
+        width is theta_3, G_t G_r = exp(-8 ln 2 a^2 / theta_3^2) gives a_X = (theta_3 / 2)
+        sqrt(X / (20 log10 2)) (``tests/detection/test_land_spread.py``).
+    """
+    if not (np.isfinite(level_db) and level_db > 0):
+        raise ValueError(f"level_db = {level_db}: the level below the boresight must be a "
+                         "number > 0 dB")
+    g = _azimuth_cut(gain)
+    peak = float(g(0.0))
+    if not peak > 0:
+        raise ValueError(f"gain at boresight = {peak}: no beam to measure")
+    floor = peak * 10.0 ** (-level_db / 10.0)
+    a = np.linspace(-np.pi, np.pi, (1 << 19) + 1)
+    above = g(a) >= floor
+    if above.all():
+        return float(np.pi)
+    extent = 0.0
+    for side in (1, -1):  # the outermost crossing on each side of the boresight
+        half = a[a.size // 2:] if side > 0 else -a[:a.size // 2 + 1][::-1]
+        up = above[a.size // 2:] if side > 0 else above[:a.size // 2 + 1][::-1]
+        i = int(np.flatnonzero(up)[-1])
+        if i == half.size - 1:
+            return float(np.pi)
+        x = brentq(lambda t, s=side: float(g(s * t)) - floor, half[i], half[i + 1],
+                   xtol=1e-13)
+        extent = max(extent, x)
+    return float(extent)
+
+
+def compressed_extent(pulse: ArrayLike, reference: ArrayLike, level_db: float, *,
+                      oversample: int = 8, reach: int = 2048) -> float:
+    r"""Farthest delay from its peak where a point echo's compressed pulse is still within
+    ``level_db`` of the peak [samples].
+
+    The echo of a point at a fractional delay x is the pulse band-limited to the sampling
+    rate, sum_m s_m sinc(t - m - x) (the simulator's eq E2 of :mod:`seaecho.radar.echo`),
+    and the matched filter with the reference h (the pulse times its range weighting,
+    eq C1 of :mod:`seaecho.processing.range_compression`) gives at output sample k
+
+    .. math:: y(u) = \sum_j a_j\,\mathrm{sinc}(u - j),\quad
+              a_j = \sum_n h_n^*\,s_{n+j},\quad u = k - x                            (F2)
+
+    (Whittaker-Shannon: y is band-limited and its samples at whole u are the discrete
+    correlation a). Its main lobe spans c / (2 B) each side (B the bandwidth: 1 / T for
+    a plain pulse of length T), and its tails decay as a power of u (as u^-3 for a
+    two-sample rectangular pulse, whose a = (1, 2, 1) vanishes at the band's edge): a
+    strong echo shows above the noise in the gates its tails reach.
+
+    Parameters
+    ----------
+    pulse, reference : array_like
+        s_n, h_n: the transmitted pulse and the matched filter's reference samples.
+    level_db : float
+        X > 0 [dB] below the peak of |y|^2.
+    oversample : int
+        Points per sample of the evaluation grid (band-limited interpolation by FFT).
+    reach : int
+        Samples searched beyond the correlation's own length; the extent is capped there.
+
+    Returns
+    -------
+    float
+        max |u - u_peak| with |y(u)|^2 >= 10^(-X/10) max |y|^2 [samples].
+    """
+    from scipy.fft import fft, ifft, next_fast_len
+
+    if not (np.isfinite(level_db) and level_db > 0):
+        raise ValueError(f"level_db = {level_db}: the level below the peak must be a "
+                         "number > 0 dB")
+    s = np.asarray(pulse, dtype=complex).ravel()
+    h = np.asarray(reference, dtype=complex).ravel()
+    # a_j for j = -(len(h) - 1) .. len(s) - 1: the correlation of eq F2
+    a = np.correlate(s, h, mode="full")
+    half = a.size + int(reach)
+    n = int(next_fast_len(4 * half))
+    buf = np.zeros(n, complex)
+    buf[:a.size] = a
+    spec = fft(buf)
+    m = n * int(oversample)
+    wide = np.zeros(m, complex)  # the band |f| < f_s / 2 kept, zeros outside: eq F2's sinc
+    k = n // 2
+    wide[:k] = spec[:k]
+    wide[m - (n - k):] = spec[k:]
+    if n % 2 == 0:  # the Nyquist bin split between +-f_s / 2
+        wide[k] *= 0.5
+        wide[m - k] = wide[k]
+    y = np.abs(ifft(wide) * oversample) ** 2
+    u = np.arange(m) / oversample
+    u = np.where(u < n / 2, u, u - n)  # the periodic extension folded about 0
+    peak = int(np.argmax(y))
+    above = np.flatnonzero(y >= y[peak] * 10.0 ** (-level_db / 10.0))
+    return float(min(np.max(np.abs(u[above] - u[peak])), half))
 
 
 def clutter_cell_area(slant_range_m: ArrayLike, range_extent_m: ArrayLike,

@@ -7,12 +7,17 @@ waterline, the chart's error). A blanked cell is not tested: it yields no plot, 
 in no false-alarm rate and no opportunity (docs/detection.md, "Land blanking"). The
 same cells are kept out of the training windows of the sea next to the shore by a
 land-censored CFAR (:meth:`seaecho.detection.cfar.CFAR.censored`), so that the land does
-not lift the threshold over a target beside it; the margin must then cover the spread of
-the land's echo onto the sea, which the land in the windows used to mask.
+not lift the threshold over a target beside it; the blanking must then cover the spread
+of the land's echo onto the sea, which the land in the windows used to mask.
 
 The test is geometric, per cell: inside one of the polygons (even-odd rule of
 :class:`matplotlib.path.Path`), or within ``margin_m`` of one of their edges (the
-distance from a point to a segment). No physics law is involved.
+distance from a point to a segment). The land's echo spreads past its cells by the
+radar's own resolution: in azimuth over the two-way beam, in range over the compressed
+pulse; :func:`spread` blanks the sea cells it reaches, a dilation of the mask on the
+polar grid by a number of rays and gates (:func:`spread_bins`; the extents from the
+run's antenna and waveform, :func:`seaecho.io.detections.land_spread`). No physics law
+is involved here.
 """
 
 from __future__ import annotations
@@ -22,7 +27,7 @@ from collections.abc import Sequence
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["land_mask"]
+__all__ = ["land_mask", "spread", "spread_bins"]
 
 #: cells per block of the distance-to-edges test (bounds its (cells, edges) arrays)
 _BLOCK = 1 << 16
@@ -78,3 +83,58 @@ def land_mask(cell_xy_m: ArrayLike, outlines_m: Sequence[ArrayLike],
                 hit[s:s + _BLOCK] |= d2 <= margin_m ** 2
         out[near] |= hit
     return out.reshape(xy.shape[:-1])
+
+
+def spread_bins(extent: float, spacing: float) -> int:
+    """Bins of ``spacing`` a land cell's echo reaches on each side, out to ``extent``
+    (same unit) from the land: floor(extent / spacing + 1/2).
+
+    A land cell holds land anywhere within half a bin of its centre, so its echo reaches
+    the centres within ``extent`` + spacing / 2 of it: the nearest whole number of bins
+    to extent / spacing (0 for an extent under half a bin).
+    """
+    if not (np.isfinite(extent) and extent >= 0 and np.isfinite(spacing) and spacing > 0):
+        raise ValueError(f"extent = {extent}, spacing = {spacing}: need extent >= 0 and "
+                         "spacing > 0")
+    return int(np.floor(extent / spacing + 0.5 + 1e-9))
+
+
+def spread(mask: ArrayLike, azimuth_bins: int, range_bins: int,
+           circular: bool = False) -> NDArray[np.bool_]:
+    """The cells within ``azimuth_bins`` rays and ``range_bins`` gates of a masked cell.
+
+    A binary dilation of the (azimuth, range) mask by the rectangle of (2 azimuth_bins
+    + 1) x (2 range_bins + 1) cells (:func:`scipy.ndimage.maximum_filter`, separable);
+    along azimuth it wraps when ``circular`` (a full revolution: the last ray beside the
+    first), else it stops at the first and last rays, as it does at the first and last
+    gates. More rays than the sweep holds cover the whole ring.
+
+    Parameters
+    ----------
+    mask : array_like of bool
+        (azimuth, range) cells blanked.
+    azimuth_bins, range_bins : int
+        Cells each side reached along azimuth (rows) and range (columns), >= 0.
+    circular : bool
+        Whether the rows close a revolution.
+
+    Returns
+    -------
+    ndarray of bool
+        (azimuth, range) the mask and its spread.
+    """
+    from scipy.ndimage import maximum_filter
+
+    m = np.asarray(mask, dtype=bool)
+    if m.ndim != 2:
+        raise ValueError(f"mask of shape {m.shape}: an (azimuth, range) grid")
+    na, nr = int(azimuth_bins), int(range_bins)
+    if na < 0 or nr < 0:
+        raise ValueError(f"azimuth_bins = {na}, range_bins = {nr}: need >= 0")
+    if (na == 0 and nr == 0) or not m.any():
+        return m.copy()
+    if circular and 2 * na + 1 >= m.shape[0]:  # the whole ring at the land's gates
+        return maximum_filter(np.broadcast_to(m.any(axis=0), m.shape), size=(1, 2 * nr + 1),
+                              mode="constant", cval=False)
+    return maximum_filter(m, size=(2 * na + 1, 2 * nr + 1),
+                          mode=("wrap" if circular else "constant", "constant"), cval=False)

@@ -50,11 +50,17 @@ from numpy.typing import NDArray
 
 from ..constants import C0
 from ..detection.association import ground_point, half_path
-from ..detection.footprint import clutter_cell_area, half_power_width
+from ..detection.footprint import (
+    clutter_cell_area,
+    compressed_extent,
+    half_power_width,
+    level_extent,
+)
 from ..detection.frames import Frame, ObjectTruth
 from ..geometry.earth import effective_radius, grazing_angle
 
 __all__ = ["STONESOUP_FILES", "antenna_beamwidth", "cfradial_sweeps", "earth_radius",
+           "land_spread",
            "image_frames", "image_stack_frames", "image_truth", "profile_frames",
            "read_table", "run_land_outlines", "run_sweeps", "run_truth", "stonesoup_readers",
            "sweep_frames",
@@ -140,6 +146,51 @@ def antenna_beamwidth(ds, prefix: str = "rx") -> float:
         return half_power_width(read_antenna(ds, prefix, wavelength).gain_local)
     except (KeyError, ValueError):
         return float("nan")
+
+
+def land_spread(ds, level_db: float) -> tuple[float, float]:
+    """How far a strong echo spreads past its own cell on a scanning run's PPI, down to
+    ``level_db`` below its peak: (azimuth half-extent [rad], range half-extent [m])
+    (docs/detection.md, "Land blanking").
+
+    Azimuth: :func:`seaecho.detection.footprint.level_extent` of the two-way pattern
+    G_t G_r of the run's antennas along their azimuth plane (eq A1 of
+    :mod:`seaecho.radar.antennas` with the width's illumination, eqs A4-A5; the receive
+    antenna taken along the transmit antenna's azimuth plane, as a monostatic radar's
+    co-located antennas are; the transmit antenna twice where the run records no receive
+    antenna). Range: :func:`seaecho.detection.footprint.compressed_extent` of the run's
+    ``transmitted_pulse`` through its matched filter (the scene's ``range_weighting``),
+    times the sample spacing c / (2 f_s).
+
+    Raises
+    ------
+    ValueError
+        The run does not describe its transmit antenna (``tx_antenna_*``) or its pulse
+        (``transmitted_pulse``, ``sampling_rate_hz``).
+    """
+    from ..processing.range_compression import weighting_window
+    from .product import read_antenna
+
+    missing = [v for v in ("tx_antenna_pattern", "transmitted_pulse") if v not in ds]
+    fs = float(ds.attrs.get("sampling_rate_hz", 0.0) or 0.0)
+    if missing or not (np.isfinite(fs) and fs > 0):
+        raise ValueError(f"land_spread_db = {level_db:g}: the spread of the land's echo "
+                         "needs the run's antenna and pulse (tx_antenna_*, "
+                         "transmitted_pulse, sampling_rate_hz > 0: docs/products.md); this "
+                         f"dataset lacks {', '.join(missing) or 'sampling_rate_hz'}: give "
+                         "land_spread_db = none (--no-land-spread)")
+    wavelength = float(ds.attrs.get("wavelength_m", 0.0) or 0.0) or \
+        C0 / float(ds.attrs.get("carrier_frequency_hz", np.nan))
+    tx = read_antenna(ds, "tx", wavelength)
+    rx = read_antenna(ds, "rx", wavelength) if "rx_antenna_pattern" in ds else tx
+    azimuth = level_extent(lambda d: tx.gain_local(d) * rx.gain_local(d), level_db)
+    radar = json.loads(ds.attrs.get("scene_json", "{}") or "{}").get("radar") or {}
+    pulse = np.asarray(ds["transmitted_pulse"].values)
+    w = weighting_window(radar.get("range_weighting", "none") or "none", pulse.size,
+                         int(radar.get("taylor_nbar", 5) or 5),
+                         float(radar.get("taylor_sidelobe_db", 35.0) or 35.0))
+    samples = compressed_extent(pulse, w * pulse, level_db)
+    return azimuth, samples * C0 / (2.0 * fs)
 
 
 def earth_radius(ds) -> float:
@@ -286,7 +337,8 @@ def sweep_frames(power: list[NDArray], azimuth_deg: list[NDArray], time_s: list[
         frames.append(Frame("ppi", p, np.full(n_az, i), t, np.nan_to_num(cell, nan=1e30),
                             where[..., :2], np.atleast_1d(gate), locate, where, ndim=2,
                             cell_area_m2=cell_area, extra={
-                                "circular": circular, "position_sigma_m": max(
+                                "circular": circular, "azimuth_step_deg": np.rad2deg(step),
+                                "range_step_m": dr, "position_sigma_m": max(
                                     res, float(np.median(rng)) * step),
                                 "range_sigma_m": res / np.sqrt(12.0),
                                 "azimuth_sigma_deg": float(np.rad2deg(
