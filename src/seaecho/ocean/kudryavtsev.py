@@ -121,8 +121,9 @@ cross-wind directions, where ``cos phi |cos phi|`` has no wind input). The spect
 is KHCC03's, without that source, so its angular form is KHCC03's (KU2, the default
 :data:`SPECTRUM_ANGULAR`); K05's (KU2', ``angular="cos"``) stays available, and is the
 form of K05's breaking statistics (:mod:`seaecho.scattering.breaking`, which uses
-:func:`net_growth_rate` with its default ``"cos"``). Omnidirectional, KU2 is 0.5-6.5 dB
-above KU2' at 110-384 rad/m and 4.5-15 m/s (most at light wind and 384 rad/m), and
+:func:`net_growth_rate` with its default ``"cos"``). Omnidirectional, KU2 is 0.7-5.1 dB
+above KU2' at 110-384 rad/m and U10 = 4.5-15 m/s (5.1 dB at 4.5 m/s and 384 rad/m, below
+1.2 dB from 10 m/s; ``tests/ocean/test_kudryavtsev.py``), and
 within -2.2 to +0.3 dB of the Python port's (-0.6 to +0.3 dB from 7 m/s).
 
 **Where the sources differ** (docs/ocean.md):

@@ -34,9 +34,11 @@ unresolved waves are advected by the resolved orbital velocity (Thompson 1989; R
   vertical velocity of the surface at it, Barrick 1968's geometric optics).
 * Breaking zones: the breakers' Lambda-weighted mean velocity ``c_br`` along the wind,
   relative to the water, ``f = q . (c_br u_wind) / (2 pi)`` (Hansen et al. 2012 eq 19;
-  :func:`breaking_statistics`); the long waves' orbital velocity is the facet's, on
-  which the zones are placed by the long waves (eqs BR7-BR8 of
-  :mod:`seaecho.scattering.breaking`).
+  :func:`breaking_statistics`), less the orbital velocity of the resolved waves shorter
+  than the breakers' modulating waves (``breaker_short`` of :meth:`EvolvingSpeckle.draws`,
+  eq BR10 of :mod:`seaecho.scattering.breaking`): the zones, placed on the resolved
+  crests (the facets of largest downward acceleration), ride on the facet's velocity of
+  the long waves only (eqs BR7-BR8).
 
 **Current** (eq C1 of :mod:`seaecho.ocean.dispersion`). On a uniform surface current U
 the facets stay on the fixed grid (the resolved sea is advected through them,
