@@ -273,7 +273,7 @@ def detect_frames(frames: list[Frame], noise: Callable[[NDArray], NDArray],
             stat = fr.power / est
         tested = np.isfinite(stat) & np.isfinite(thr)
         with np.errstate(invalid="ignore"):
-            hits = fr.power > thr * est
+            hits = stat > thr  # the statistic CFAR.detect and the ROC compare, bit for bit
         if integrate is not None:
             m, n = integrate
             mofn = m_of_n(hits, m, n, axis=0)
