@@ -115,7 +115,7 @@ def breaker_short_velocity(sea_model, sea, state) -> NDArray[np.float64]:
     from .geometry.mesh import to_facets
 
     k_mod = modulating_wavenumber_limit(sea_model.breaking.k_wb)
-    return np.ascontiguousarray(to_facets(sea.band_velocity(state.t, k_mod, state)
+    return np.ascontiguousarray(to_facets(sea.band_velocity(state.t, k_mod)
                                           ).reshape(-1, 3))
 
 
