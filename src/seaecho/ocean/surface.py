@@ -496,10 +496,8 @@ class SeaSurface:
                 np.copyto(block, 0.0, where=low)
                 spectra[:, rows, :cols] = block
             derived = self._irfft_scratch(spectra)
-        out = np.empty((*self.shape, 3))
-        for i in range(3):
-            out[..., i] = derived[i]
-        return out
+        # (ny, nx, 3) with the components' planes apart, as the facets' means read them
+        return np.moveaxis(derived.astype(np.float64, copy=False), 0, -1)
 
     def _travelling_into(self, t: float, w: dict):
         """The travelling waves of :meth:`_travelling` at ``t``, in the scratch arrays
