@@ -15,7 +15,13 @@ runs them):
   one worker, one full-plane complex ``ifft2`` of the two fields packed as ``D_x + j D_y``
   (their Hermitian spectra combined: the real and imaginary parts of the output), and
   ``irfft2`` in float32; with each one's largest difference from the first, relative to
-  the field's largest value.
+  the field's largest value;
+- eq BR10's band velocity (``Sea.band_velocity``, the waves ``|K| >= k_mod`` = 2.09 rad/m
+  of 10 GHz), the code before (forward ``rfft2`` of the state's three velocity fields,
+  band-pass, ``irfft2``) and now (the band's spectra from the travelling waves, one
+  batched inverse transform in scratch), measured alternately, with their largest
+  difference relative to the velocity's largest value; "shared": the travelling waves
+  of that time already made (as after ``Sea.kinematics`` in a simulation).
 
 The load average is printed: on a shared machine compare alternately (docs/performance.md).
 """
@@ -24,6 +30,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import pickle
 import time
 from pathlib import Path
 
@@ -145,6 +152,48 @@ def main() -> None:
         err = np.abs(out.astype(np.float64) - ref).max() / scale
         print(f"  {label:32s} {cpu_ms(fn, args.repeat):8.2f}   largest difference "
               f"{err:.1e} of max |D| = {scale:.3f} m")
+    bench_band_velocity(sea, args.repeat)
+
+
+def band_velocity_before(surface, v, k_min: float):
+    """Eq BR10's band velocity as the code before computed it: forward transforms of the
+    state's velocity ``v`` (ny, nx, 3), band-pass, inverse transforms."""
+    ny, nx = surface.shape
+    k2 = surface._kx ** 2 + surface._ky ** 2
+    spec = scipy.fft.rfft2(np.moveaxis(v, -1, 0), axes=(-2, -1), workers=-1)
+    spec = np.where(k2 >= k_min * k_min, spec, 0.0)
+    out = scipy.fft.irfft2(spec, s=(ny, nx), axes=(-2, -1), workers=-1)
+    return np.moveaxis(out, 0, -1)
+
+
+def bench_band_velocity(sea, repeat: int) -> None:
+    """Eq BR10's band velocity before and now, alternately (CPU ms, median)."""
+    surface, k_mod = sea.surface, 2.09
+    if not hasattr(surface, "band_velocity"):  # older code
+        return
+    t = 0.61
+    v = sea.state(t).velocity
+    ref = band_velocity_before(surface, v, k_mod)
+    now = sea.band_velocity(t, k_mod)
+    scale = np.abs(v).max()
+    print(f"  eq BR10 band velocity, k_mod = {k_mod} rad/m: largest difference now - "
+          f"before {np.abs(now - ref).max() / scale:.1e} of max |v| = {scale:.3f} m/s")
+    clock = iter(range(1, 10**9))
+    times: dict[str, list[float]] = {"before": [], "now, shared": [], "now, fresh": []}
+    fresh = pickle.loads(pickle.dumps(surface))  # a copy that keeps no time's waves
+    fresh.share_travelling = False
+    for _ in range(repeat + 1):
+        for label, fn in (("before", lambda: band_velocity_before(surface, v, k_mod)),
+                          ("now, shared", lambda: sea.band_velocity(t, k_mod))):
+            c = time.process_time()
+            fn()
+            times[label].append(time.process_time() - c)
+        tf = t + 1e-3 * next(clock)  # a time whose travelling waves are not kept
+        c = time.process_time()
+        fresh.band_velocity(tf, k_mod)
+        times["now, fresh"].append(time.process_time() - c)
+    for label, ts in times.items():
+        print(f"  {'band velocity, ' + label:32s} {1e3 * np.median(ts[1:]):8.2f}")
 
 
 if __name__ == "__main__":

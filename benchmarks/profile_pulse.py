@@ -48,6 +48,7 @@ STAGES = [
     ("seaecho.wake.turbulent", "turbulent_wake_mask", "turbulent wake mask", 2),
     ("seaecho.simulation", "Simulation._block_quantities", "speckle draws + wake mask", 1),
     ("seaecho.sea", "Sea.kinematics", "particle kinematics (evolving)", 2),
+    ("seaecho.sea", "Sea.band_velocity", "breakers' band velocity (eq BR10)", 2),
     ("seaecho.scattering.dynamics", "EvolvingSpeckle.anchor", "speckle anchors (evolving)",
      2),
     ("seaecho.scattering.facet", "speckle_draws", "speckle draws (numpy)", 2),

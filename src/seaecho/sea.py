@@ -197,27 +197,20 @@ def vertical_acceleration(surface: SeaSurface, t: float, k_max: float | None = N
     return surface._irfft_scratch(spec)
 
 
-def band_velocity(surface: SeaSurface, t: float, k_min: float,
-                  velocity: NDArray[np.float64] | None = None) -> NDArray[np.float64]:
+def band_velocity(surface: SeaSurface, t: float, k_min: float) -> NDArray[np.float64]:
     """The wind sea's surface velocity (u, v, w) at ``t`` of the waves ``|K| >= k_min``
     [m/s], shape (ny, nx, 3): :meth:`SeaSurface.fields`' velocity (orbital, less the
-    current's advection on a current, eq C1; ``velocity``, if given, is that field, of
-    the same time), band-passed on the grid's own wavenumbers.
+    current's advection on a current, eq C1) band-limited on the grid's own wavenumbers,
+    synthesised from the travelling waves' spectra with the same factors
+    (:meth:`SeaSurface.band_velocity`: three inverse transforms in one call, no forward
+    one).
 
     The breaking zones ride on the waves longer than the breakers; the resolved waves
     shorter than ``k_mod`` (eq BR7 of :mod:`seaecho.scattering.breaking`) are breakers
     themselves, whose speed the fronts' velocity already counts: this is the part of the
     facets' velocity that the breaking zones' Doppler leaves out (eq BR10).
     """
-    import scipy.fft
-
-    v = surface.fields(t, slopes=False).velocity if velocity is None else velocity
-    ny, nx = surface.shape
-    k2 = surface._kx ** 2 + surface._ky ** 2
-    spec = scipy.fft.rfft2(np.moveaxis(v, -1, 0), axes=(-2, -1), workers=-1)
-    spec = np.where(k2 >= k_min * k_min, spec, 0.0)
-    out = scipy.fft.irfft2(spec, s=(ny, nx), axes=(-2, -1), workers=-1)
-    return np.moveaxis(out, 0, -1)
+    return surface.band_velocity(t, k_min)
 
 
 #: Grids with at least this many nodes compute the ship's wake on a second thread [-].
@@ -333,13 +326,10 @@ class Sea:
         self.surface.share_travelling = True
         return surface_kinematics(self.surface, t, acceleration)
 
-    def band_velocity(self, t: float, k_min: float, state: SurfaceState | None = None
-                      ) -> NDArray[np.float64]:
+    def band_velocity(self, t: float, k_min: float) -> NDArray[np.float64]:
         """The wind sea's surface velocity of the waves ``|K| >= k_min`` [rad/m] at ``t``
-        [s] [m/s], (ny, nx, 3) (:func:`band_velocity`); from ``state``'s velocity (of the
-        same time) where it is the wind sea's alone (no Kelvin wake), saving its synthesis."""
-        own = state is not None and not self._wakes and state.t == t
-        return band_velocity(self.surface, t, k_min, state.velocity if own else None)
+        [s] [m/s], (ny, nx, 3) (:func:`band_velocity`)."""
+        return band_velocity(self.surface, t, k_min)
 
     def vertical_acceleration(self, t: float = 0.0, k_max: float | None = None
                               ) -> NDArray[np.float64]:

@@ -107,16 +107,25 @@ def breaking_fraction(sea_model, sea, state, area: NDArray,
     return breaking_placement(-acc, area, sea_model.breaking.q)
 
 
-def breaker_short_velocity(sea_model, sea, state) -> NDArray[np.float64]:
+def breaker_short_velocity(sea_model, sea, state, band: NDArray | None = None
+                           ) -> NDArray[np.float64]:
     """Per facet, the velocity of the resolved waves shorter than the breakers' modulating
     waves, ``|K| >= k_mod`` (eq BR7), at the state's time [m/s], shape (N, 3): the part
     of the facets' velocity that the breaking zones' Doppler leaves out (eq BR10 of
-    :mod:`seaecho.scattering.breaking`; :meth:`seaecho.sea.Sea.band_velocity`)."""
+    :mod:`seaecho.scattering.breaking`; :meth:`seaecho.sea.Sea.band_velocity`). ``band``:
+    that velocity at the nodes (:func:`breaker_band_velocity` of the state's time) where
+    already computed, the same bytes."""
     from .geometry.mesh import to_facets
 
-    k_mod = modulating_wavenumber_limit(sea_model.breaking.k_wb)
-    return np.ascontiguousarray(to_facets(sea.band_velocity(state.t, k_mod, state)
-                                          ).reshape(-1, 3))
+    if band is None:
+        band = breaker_band_velocity(sea_model, sea, state.t)
+    return np.ascontiguousarray(to_facets(band).reshape(-1, 3))
+
+
+def breaker_band_velocity(sea_model, sea, t: float) -> NDArray[np.float64]:
+    """The nodes' velocity of the waves ``|K| >= k_mod`` (eq BR7) at ``t`` [s] [m/s],
+    (ny, nx, 3): :meth:`seaecho.sea.Sea.band_velocity` (eq BR10)."""
+    return sea.band_velocity(t, modulating_wavenumber_limit(sea_model.breaking.k_wb))
 
 
 def facet_sigma0(sea_model, facets, damping: NDArray | None, breaking: NDArray | None,
@@ -567,9 +576,9 @@ class Simulation:
         breaking = self.sea_model.breaking
         ahead = self._kinematics_ahead.pop(state.t, None)
         if ahead is not None:  # computed on a thread (prefetch)
-            kin = ahead.result()
+            kin, band = ahead.result()
         else:
-            kin = self._kinematics(state.t)
+            kin, band = self._kinematics(state.t)
         q = {"damping": _block_damping(state), "draws": None, "breaking": None,
              "t": float(state.t), "motion": {"displacement": kin.displacement,
                                              "acceleration": kin.acceleration if
@@ -578,16 +587,22 @@ class Simulation:
             q["breaking"] = breaking_fraction(self.sea_model, self.sea, state,
                                               self.engine.geometry(state)[1],
                                               kin.acceleration_z)
-            q["breaker_short"] = breaker_short_velocity(self.sea_model, self.sea, state)
+            q["breaker_short"] = breaker_short_velocity(self.sea_model, self.sea, state,
+                                                        band)
         return q
 
     def _kinematics(self, t: float):
         """The particles' kinematics of the fused kernel's evolving block at ``t`` [s]
         (:meth:`seaecho.sea.Sea.kinematics`): the acceleration where a pulse of a block is
         after its surface time (``sea_update_pulses > 1``), else its vertical component
-        alone where the breaking zones are placed by it."""
-        vertical = "vertical" if self.sea_model.breaking is not None else False
-        return self.sea.kinematics(t, acceleration=True if self.block > 1 else vertical)
+        alone where the breaking zones are placed by it; and with the breaking zones the
+        nodes' band velocity of eq BR10 (:func:`breaker_band_velocity`, else None) right
+        after, on the same thread, from the travelling waves the kinematics made."""
+        breaking = self.sea_model.breaking is not None
+        kin = self.sea.kinematics(t, acceleration=True if self.block > 1 else
+                                  "vertical" if breaking else False)
+        return kin, (breaker_band_velocity(self.sea_model, self.sea, t) if breaking
+                     else None)
 
     def phase_centres(self, pulse: int, state) -> NDArray[np.float64]:
         """Phase centres of the facets at ``pulse``'s emission time [m], shape (N, 3).

@@ -476,6 +476,29 @@ class SeaSurface:
             derived = self._irfft_scratch(spectra)
         return derived[0].astype(np.float64), derived[1].astype(np.float64)
 
+    def band_velocity(self, t: float, k_min: float) -> NDArray[np.float64]:
+        """The surface velocity (u, v, w) of :meth:`fields` at ``t`` [s] of the waves
+        ``|K| >= k_min`` [rad/m] alone [m/s], shape (ny, nx, 3): its spectra
+        (:meth:`_velocity_spectra`, the same factors) with the waves ``|K| < k_min``
+        zeroed, in one batched inverse transform (:meth:`_irfft_scratch`), in the type
+        of ``precision``. ``k_min = 0`` gives :meth:`fields`' velocity, bit for bit."""
+        jkx = self._derivatives[0]
+        with _scratch(self._a.shape, jkx.dtype) as w:
+            plus, minus = self._travelling_into(t, w)
+            z_c = self._spectrum_z(plus, minus, w)
+            spectra = self._velocity_spectra(plus, minus, z_c, w)
+            # the band |K| < k_min: rows |K_y| < k_min, columns K_x < k_min (corners)
+            rows = np.flatnonzero(np.abs(self._ky[:, 0]) < k_min)
+            cols = int(np.count_nonzero(self._kx[0] < k_min))
+            if rows.size and cols:
+                low = self._kx[:, :cols] ** 2 + self._ky[rows] ** 2 < k_min * k_min
+                block = spectra[:, rows, :cols]
+                np.copyto(block, 0.0, where=low)
+                spectra[:, rows, :cols] = block
+            derived = self._irfft_scratch(spectra)
+        # (ny, nx, 3) with the components' planes apart, as the facets' means read them
+        return np.moveaxis(derived.astype(np.float64, copy=False), 0, -1)
+
     def _travelling_into(self, t: float, w: dict):
         """The travelling waves of :meth:`_travelling` at ``t``, in the scratch arrays
         ``w`` where nothing keeps them."""
@@ -504,27 +527,12 @@ class SeaSurface:
         """:meth:`fields` with the scratch arrays ``w`` (:func:`_scratch`)."""
         plus, minus = self._travelling_into(t, w)
         z_c = self._spectrum_z(plus, minus, w)
-        jkx, jky, jw, ux, uy = self._derivatives
-        c = jkx.dtype
-        diff = np.subtract(plus, minus, out=w["phase"])  # wave along +K minus along -K
-        if c != diff.dtype:
-            diff = w["diff"]
-            np.copyto(diff, w["phase"], casting="same_kind")
+        jkx, jky = self._derivatives[:2]
         spectra = w["spectra"]
         if slopes:
             np.multiply(jkx, z_c, out=spectra[0])  # dz/dx
             np.multiply(jky, z_c, out=spectra[1])  # dz/dy
-        np.multiply(ux, diff, out=spectra[2])  # u
-        np.multiply(uy, diff, out=spectra[3])  # v
-        np.multiply(jw, diff, out=spectra[4])  # w = dz/dt
-        if self._omega_current is not None:  # Eulerian rates: minus U . grad (eq C1)
-            k_u = (-1j * (self._kx * self.current[0] + self._ky * self.current[1])).astype(c)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                gain = np.where(self._omega > 0, 1j / self._omega, 0.0).astype(c)
-            z_u = k_u * z_c
-            spectra[2] += ux * gain * z_u  # u: D = j (K_x/K) coth z, D-rate - U . grad D
-            spectra[3] += uy * gain * z_u
-            spectra[4] += z_u  # dz/dt at the node: w - U . grad z
+        self._velocity_spectra(plus, minus, z_c, w)
         derived = self._irfft_scratch(spectra if slopes else spectra[2:])
         # last: the transform overwrites z_hat, which is z_c in double precision
         elevation = self._irfft_scratch(w["z_hat"])
@@ -536,6 +544,33 @@ class SeaSurface:
             slope_x=derived[0].astype(np.float64) if slopes else None,
             slope_y=derived[1].astype(np.float64) if slopes else None,
         )
+
+    def _velocity_spectra(self, plus, minus, z_c, w: dict):
+        """The spectra of the surface velocity (u, v, w) of the travelling waves ``plus``
+        and ``minus`` (``z_c``: their sum, :meth:`_spectrum_z`), written into
+        ``w["spectra"][2:]`` (:func:`_scratch`) and returned: the orbital velocity of
+        linear waves (Lamb 1932, art. 228-229: ``u = (K / K) omega coth(K d)`` times the
+        wave along +K minus the one along -K, ``w = -j omega`` times it), on a current
+        the Eulerian rates at the nodes (eq C1). ``w["phase"]`` is overwritten."""
+        jkx, jky, jw, ux, uy = self._derivatives
+        c = jkx.dtype
+        diff = np.subtract(plus, minus, out=w["phase"])  # wave along +K minus along -K
+        if c != diff.dtype:
+            diff = w["diff"]
+            np.copyto(diff, w["phase"], casting="same_kind")
+        spectra = w["spectra"]
+        np.multiply(ux, diff, out=spectra[2])  # u
+        np.multiply(uy, diff, out=spectra[3])  # v
+        np.multiply(jw, diff, out=spectra[4])  # w = dz/dt
+        if self._omega_current is not None:  # Eulerian rates: minus U . grad (eq C1)
+            k_u = (-1j * (self._kx * self.current[0] + self._ky * self.current[1])).astype(c)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                gain = np.where(self._omega > 0, 1j / self._omega, 0.0).astype(c)
+            z_u = k_u * z_c
+            spectra[2] += ux * gain * z_u  # u: D = j (K_x/K) coth z, D-rate - U . grad D
+            spectra[3] += uy * gain * z_u
+            spectra[4] += z_u  # dz/dt at the node: w - U . grad z
+        return spectra[2:]
 
 
 __all__ = ["PRECISIONS", "SeaSurface", "SurfaceFields", "cell_averaged_spectrum",
