@@ -563,7 +563,8 @@ class Simulation:
              "breaking": None, "t": float(state.t), "centre": centre, "velocity": velocity,
              "acceleration": acc}
         if self.sea_model.breaking is not None:
-            q["breaking"] = breaking_fraction(self.sea_model, self.sea, state, area)
+            q["breaking"] = breaking_fraction(self.sea_model, self.sea, state, area,
+                                              kin.acceleration_z)
             q["breaker_short"] = breaker_short_velocity(self.sea_model, self.sea, state)
         return q
 
