@@ -125,14 +125,14 @@ def test_composite_bragg_centroid_within_published_spread_of_cdop_upwind():
 
 # --- fast: the full simulation, one small case ------------------------------------------
 
-#: the quick case: X band, 8 m/s upwind, 35 deg incidence, a 64 m tile over 24 pulses
-#: (0.048 s at 500 Hz, three geometry updates), the centroid averaged over seeds 1-8.
-#: Its scatter is the sea's realisation, not the CPI's: over seeds 1-16 the HH centroid
-#: has mean 49.2 Hz and sd 6.87 Hz with 24 pulses, 49.6 and 7.02 Hz with 48 (the
-#: version before, one seed), VV 37.6 and 5.18 / 5.14 Hz; so half the pulses per seed
-#: buy twice the seeds for the same CPU time without moving the centroid.
+#: the quick case (``xband_doppler_measured.QUICK_*``): X band, 8 m/s upwind, 35 deg
+#: incidence, a 64 m tile over 24 pulses (0.048 s at 500 Hz, three geometry updates), the
+#: centroid averaged over seeds 1-8. Its scatter is the sea's realisation, not the CPI's:
+#: over seeds 1-16 the HH centroid has mean 49.2 Hz and sd 6.87 Hz with 24 pulses, 49.6
+#: and 7.02 Hz with 48 (the version before: one seed), VV 37.6 and 5.18 / 5.14 Hz
+#: (``examples/xband_doppler_measured.py --quick-spread``); so half the pulses per seed buy
+#: twice the seeds for the same CPU time without moving the centroid.
 QUICK_SEEDS = tuple(range(1, 9))
-QUICK_N_PULSES = 24
 #: sd of one seed's centroid [Hz] (seeds 1-16 of the quick case, above)
 QUICK_SD_HH_HZ = 6.87
 QUICK_SD_VV_HZ = 5.18
@@ -144,21 +144,28 @@ QUICK_SE_VV_HZ = QUICK_SD_VV_HZ / np.sqrt(len(QUICK_SEEDS))
 
 
 def test_xband_upwind_centroids_against_tandem_x_quick():
-    from xband_doppler_measured import F, published_centroids_hz, simulate
+    from xband_doppler_measured import (
+        QUICK_N,
+        QUICK_N_PULSES,
+        QUICK_SIZE_M,
+        QUICK_U19_5_M_S,
+        F,
+        published_centroids_hz,
+        simulate,
+    )
 
-    u19_5 = 8.0
-    u10 = float(u10_from_u19_5(u19_5))
-    sims = [simulate(u19_5, 90.0 - INC_DEG, QUICK_N_PULSES, 64.0, 64, 0.0, seed, F)
-            for seed in QUICK_SEEDS]
+    u10 = float(u10_from_u19_5(QUICK_U19_5_M_S))
+    sims = [simulate(QUICK_U19_5_M_S, 90.0 - INC_DEG, QUICK_N_PULSES, QUICK_SIZE_M, QUICK_N,
+                     0.0, seed, F) for seed in QUICK_SEEDS]
     ref = published_centroids_hz("X", u10, 0.0, INC_DEG)[0]  # 43.4 Hz (1.13 m/s)
     hh = np.array([s["centroid_hh_hz"] for s in sims])
     vv = np.array([s["centroid_vv_hz"] for s in sims])
     # the seeds scatter as measured (else the standard errors below do not hold): a
-    # sample sd of 8 draws exceeds 1.9 sd with probability 1e-3 (chi-square, 7 dof)
+    # sample sd of 8 draws exceeds 1.9 sd with probability below 1e-3 (chi-square, 7 dof)
     assert np.std(hh, ddof=1) < 1.9 * QUICK_SD_HH_HZ
     assert np.std(vv, ddof=1) < 1.9 * QUICK_SD_VV_HZ
     # HH and VV within the published spread (0.2 m/s: 7.7 Hz) plus two standard errors of
-    # the mean over the seeds (seeds 1-8: HH 48.3, VV 38.0 Hz for 43.4)
+    # the mean over the seeds (seeds 1-8: HH 49.55, VV 38.0 Hz for 43.4)
     assert abs(hh.mean() - ref) < _tol_hz(F) + 2.0 * QUICK_SE_HH_HZ
     assert abs(vv.mean() - ref) < _tol_hz(F) + 2.0 * QUICK_SE_VV_HZ
     # |DC_VV| < |DC_HH| (Elyouncha et al.: the polarisation difference is negative)
