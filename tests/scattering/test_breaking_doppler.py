@@ -211,7 +211,8 @@ def _dopRIM_cartesian(spec, u10, direction):
 
 def test_modulation_velocity_against_a_cartesian_sum_and_its_symmetries():
     # Eq BR9 (Hansen et al. 2012 eq 5, breaking term at grazing incidence), polar
-    # quadrature against the Cartesian sum of the DopRIM code: within 3 %. The upwind
+    # quadrature against the Cartesian sum of the DopRIM code: within 3 % (the same law
+    # discretised twice: a check of the quadrature, not of the physics). The upwind
     # MTF is m_k (n + 1) 3 / 4 = -20.25 at tau -> 0 (m_k = -9/2, n = 5).
     assert M_K / 4 * (N_GRAVITY + 1) * 3 == pytest.approx(-20.25)
     spec = DirectionalSpectrum("elfouhaily", "longuet-higgins", 8.0)
@@ -229,6 +230,9 @@ def test_modulation_velocity_against_a_cartesian_sum_and_its_symmetries():
 
 @pytest.mark.parametrize("u19_5, placed, linear", [(8.0, 0.70, 0.48), (12.0, 0.88, 0.67)])
 def test_placement_doppler_against_the_k05_linear_modulation(u19_5, placed, linear):
+    # A guard, not a validation: 0.70 / 0.48 and 0.88 / 0.67 m/s are this code's own values
+    # (no published number for these two quantities was found); what is published is the
+    # form of BR9 (Hansen et al. 2012 eq 5, K05's MTF), checked by the test above.
     # The quantile placement (BR8, here on the waves k < k_mod, which is within 1 % of
     # the simulation's on its 1 m grids: 0.70 and 0.87 m/s) against K05 / Hansen et al.'s
     # linear modulation (BR9) at the winds of the low-grazing comparison
