@@ -77,7 +77,7 @@ def main(argv: list[str] | None = None) -> int:
         runs[f"{f} alone"] = draws([f], f"{f} alone")
     reference = runs["alone"]
     same = True
-    for key in sorted(set().union(*runs.values())):
+    for key in sorted(reference):  # the fuzzing properties (not those of --before)
         verdicts = []
         for label, drawn in runs.items():
             if label == "alone":
