@@ -11,6 +11,12 @@ Prints, per property, the number of examples and whether every other run drew th
 ones in the same order (``--each-file``: also each fuzz file run alone, its properties
 compared); exit status 1 if one differs (``docs/checks.md``, "Fuzzing suite"). Each run
 runs the fuzzing suite (about a minute on a quiet machine) and the files before it.
+
+The recording has a limit of its own: Hypothesis' observability writes each example's
+arguments recursively, and an example nested deeper than Python's recursion limit (a
+``nesting`` mutation, arrays up to 3000 deep) fails there with a ``RecursionError``
+(``hypothesis/strategies/_internal/utils.py``, not seaecho); the failures of each run are
+printed, and such a run's draws stop at that example.
 """
 
 from __future__ import annotations
@@ -32,12 +38,14 @@ def draws(args: list[str], label: str) -> dict[tuple[str, int], list[str]]:
     with tempfile.TemporaryDirectory(prefix="seaecho-fuzz-draws-") as tmp:
         env = dict(os.environ, HYPOTHESIS_STORAGE_DIRECTORY=tmp,
                    HYPOTHESIS_EXPERIMENTAL_OBSERVABILITY_NOCOVER="1")
-        cmd = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
+        cmd = [sys.executable, "-m", "pytest", "-q", "-rf", "-p", "no:cacheprovider",
                "-p", "no:randomly", *args]
         print(f"[{label}] {' '.join(cmd[3:])}", file=sys.stderr, flush=True)
         r = subprocess.run(cmd, cwd=ROOT, env=env, capture_output=True, text=True)
-        print(f"[{label}] {r.stdout.strip().splitlines()[-1] if r.stdout else r.stderr}",
-              file=sys.stderr, flush=True)
+        summary = [line for line in r.stdout.splitlines() if line.startswith("FAILED")]
+        summary += r.stdout.strip().splitlines()[-1:] if r.stdout else [r.stderr]
+        print("\n".join(f"[{label}] {line}" for line in summary), file=sys.stderr,
+              flush=True)
         runs: dict[str, list[float]] = defaultdict(list)
         out: dict[tuple[str, int], list[str]] = defaultdict(list)
         for path in sorted(Path(tmp).glob("observed/*_testcases.jsonl")):
