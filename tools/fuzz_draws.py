@@ -16,7 +16,7 @@ The recording has a limit of its own: Hypothesis' observability writes each exam
 arguments recursively, and an example nested deeper than Python's recursion limit (a
 ``nesting`` mutation, arrays up to 3000 deep) fails there with a ``RecursionError``
 (``hypothesis/strategies/_internal/utils.py``, not seaecho); the failures of each run are
-printed, and such a run's draws stop at that example.
+printed, and such a run's record of that property is not comparable.
 """
 
 from __future__ import annotations
