@@ -114,3 +114,35 @@ def test_a_traced_hull_beyond_the_horizon_is_silent():
     assert len(echoes(0.8 * d_h)) == 1  # hidden height 0.35 m: the reflector is seen
     assert echoes(1.2 * d_h) == []
     assert len(echoes(1.2 * d_h, "flat")) == 1  # the Earth hides it, not the trace
+
+
+def test_every_hull_is_heard_after_one_on_the_sphere():
+    """Two 0.5 m trihedrals (SBR) inside the horizon of a 25 m antenna on the 4/3 Earth:
+    both echo (the horizon mask of the first hull once rebound the name of the beams'
+    test, so that the second hull called an array: TypeError)."""
+    from pathlib import Path
+
+    from seaecho.config import parse_scene
+    from seaecho.simulation import Simulation
+    from seaecho.targets.cache import ArrayCache
+
+    mesh = str(Path(__file__).resolve().parents[2] / "scenes" / "meshes"
+               / "trihedral_0p5m.ply")
+    d = 0.6 * float(horizon_range(25.0, 2.5, R43))
+    scene = parse_scene({
+        "sea": {"wind_speed_m_s": 5.0, "size_x_m": 64.0, "nx": 64},
+        "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 20e6,
+                  "prf_hz": 1000.0, "n_pulses": 1, "sea_clutter": False,
+                  "thermal_noise": False, "channels": ["HH"],
+                  "window_start_m": d - 200.0, "window_end_m": d + 200.0,
+                  "waveform": {"kind": "pulse", "duration_s": 5e-8}},
+        "transmitter": {"position_m": (0.0, 0.0, 25.0), "yaw_deg": 90.0, "antenna": {
+            "pattern": "isotropic", "azimuth_deg": 0.0, "depression_deg": 0.0}},
+        "propagation": {"earth": "spherical"},
+        "objects": [{"name": f"reflector{i}", "file": mesh, "position_m": (x, d, 2.0),
+                     "orientation_deg": (-90.0, 35.26, 45.0), "scatterer": True,
+                     "sea_multipath": False} for i, x in enumerate((-50.0, 50.0))]})
+    sim = Simulation(scene)
+    sim.hulls.disk_cache = ArrayCache.disabled()
+    assert len(sim.hulls.echoes(sim.radar.geometry(0), 0)) == 2
+    assert len(sim.hulls.echoes(sim.radar.geometry(0), 0, seen=lambda corners: True)) == 2

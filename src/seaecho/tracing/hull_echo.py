@@ -661,12 +661,12 @@ class HullEchoes:
             if s.flags.writeable:  # held until the next trace: uploaded once on a device
                 s.flags.writeable = False
             if self.earth is not None:  # on the sphere; the part below the horizon hidden
-                pos, seen = horizon_mask(self.earth, pos, geometry.tx.position,
-                                         geometry.rx.position)
-                if not seen.any():
+                pos, above = horizon_mask(self.earth, pos, geometry.tx.position,
+                                          geometry.rx.position)
+                if not above.any():
                     continue
-                if not seen.all():
-                    pos, vel, s = pos[seen], vel[seen], s[seen]
+                if not above.all():
+                    pos, vel, s = pos[above], vel[above], s[above]
             out.append(self.radar.scatterer_echo(geometry, pos, vel, s, on_device=True))
         return out
 
