@@ -11,7 +11,8 @@ pulses (the beam turning 0.144 deg per pulse) after one warm-up pulse (which mak
 tile of its beam), raw samples and range compression, and prints the seconds per pulse,
 the CPU spent making the tiles the beam reaches (eq U1) and the rest (eq U2: gains and
 the sum), the tiles and facets per pulse, the process's peak resident memory
-(``ru_maxrss``) and the load average (the machine is shared: ``uptime``'s first number).
+(``VmHWM``, :func:`peak_rss_mb`) and the load average (the machine is shared:
+``uptime``'s first number).
 
 A revolution is extrapolated (said so) from the timed sector of P pulses, which the beam
 crosses in P x 0.144 deg: the tiles made there times 2500 / P (every tile of the
@@ -42,6 +43,20 @@ from _smoke import add_option
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "scenes" / "coastal_vts_xband.toml"
+
+
+def peak_rss_mb() -> float:
+    """Peak resident memory of this program [MB]: ``VmHWM`` of ``/proc/self/status``, the
+    high-water mark of its own memory (``ru_maxrss`` would also hold the peak of the
+    process that started it, which Linux carries over ``exec``: a test run from a large
+    pytest process read that), else ``ru_maxrss`` where there is no ``/proc``."""
+    try:
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith("VmHWM:"):
+                return float(line.split()[1]) / 1024
+    except OSError:
+        pass
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
 def coverage_scene(path: Path, grid: int, end_m: float, pulses: int, start_m: float = 300.0,
@@ -96,7 +111,7 @@ def measure(grid: int, end_m: float, pulses: int) -> dict:
             "tiles_per_pulse": sum(tiles) / pulses, "facets_per_pulse": sum(facets) / pulses,
             "facets_echoed_per_pulse": echoed / pulses, "tiles_made": cov.tiles_made - made,
             "levels_m": [lv.spacing[0] for lv in cov.patchwork.levels],
-            "peak_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+            "peak_rss_mb": peak_rss_mb(),
             "load": os.getloadavg()[0]}
 
 
@@ -121,7 +136,7 @@ def revolution(grid: int, end_m: float, pulses: int, part: tuple[int, int] | Non
     return {"end_m": end_m, "pulses": pulses, "wall_s": time.perf_counter() - t0,
             "cpu_s": time.process_time() - c0, "tiles": len(cov),
             "tiles_made": cov.tiles_made, "making_cpu_s": cov.making_cpu_s,
-            "peak_rss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024,
+            "peak_rss_mb": peak_rss_mb(),
             "estimate_s": est.time_s, "estimate_mb": est.peak_bytes / 2**20,
             "load": os.getloadavg()[0]}
 
