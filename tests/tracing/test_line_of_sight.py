@@ -83,32 +83,10 @@ def test_hull_part_below_the_horizon_line_is_hidden():
 def test_a_traced_hull_beyond_the_horizon_is_silent():
     """A 0.5 m trihedral (SBR) 2 m up at 0.8 and 1.2 horizon ranges of a 25 m antenna on the
     4/3 Earth: heard inside, silent beyond (its whole height below the horizon line)."""
-    from pathlib import Path
-
-    from seaecho.config import parse_scene
-    from seaecho.simulation import Simulation
-    from seaecho.targets.cache import ArrayCache
-
-    mesh = str(Path(__file__).resolve().parents[2] / "scenes" / "meshes"
-               / "trihedral_0p5m.ply")
     d_h = float(horizon_range(25.0, 2.5, R43))
 
     def echoes(d, earth="spherical"):
-        scene = parse_scene({
-            "sea": {"wind_speed_m_s": 5.0, "size_x_m": 64.0, "nx": 64},
-            "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 20e6,
-                      "prf_hz": 1000.0, "n_pulses": 1, "sea_clutter": False,
-                      "thermal_noise": False, "channels": ["HH"],
-                      "window_start_m": d - 200.0, "window_end_m": d + 200.0,
-                      "waveform": {"kind": "pulse", "duration_s": 5e-8}},
-            "transmitter": {"position_m": (0.0, 0.0, 25.0), "yaw_deg": 90.0, "antenna": {
-                "pattern": "isotropic", "azimuth_deg": 0.0, "depression_deg": 0.0}},
-            "propagation": {"earth": earth},
-            "objects": [{"name": "reflector", "file": mesh, "position_m": (0.0, d, 2.0),
-                         "orientation_deg": (-90.0, 35.26, 45.0), "scatterer": True,
-                         "sea_multipath": False}]})
-        sim = Simulation(scene)
-        sim.hulls.disk_cache = ArrayCache.disabled()
+        sim = _reflectors(d, earth, (0.0,))
         return sim.hulls.echoes(sim.radar.geometry(0), 0)
 
     assert len(echoes(0.8 * d_h)) == 1  # hidden height 0.35 m: the reflector is seen
@@ -116,10 +94,9 @@ def test_a_traced_hull_beyond_the_horizon_is_silent():
     assert len(echoes(1.2 * d_h, "flat")) == 1  # the Earth hides it, not the trace
 
 
-def test_every_hull_is_heard_after_one_on_the_sphere():
-    """Two 0.5 m trihedrals (SBR) inside the horizon of a 25 m antenna on the 4/3 Earth:
-    both echo (the horizon mask of the first hull once rebound the name of the beams'
-    test, so that the second hull called an array: TypeError)."""
+def _reflectors(d: float, earth: str, xs: tuple[float, ...]):
+    """A 25 m isotropic antenna looking north and 0.5 m trihedrals (SBR, no sea multipath)
+    2 m up at ``(x, d)`` [m] for each x of ``xs``: the Simulation, its disk cache off."""
     from pathlib import Path
 
     from seaecho.config import parse_scene
@@ -128,7 +105,6 @@ def test_every_hull_is_heard_after_one_on_the_sphere():
 
     mesh = str(Path(__file__).resolve().parents[2] / "scenes" / "meshes"
                / "trihedral_0p5m.ply")
-    d = 0.6 * float(horizon_range(25.0, 2.5, R43))
     scene = parse_scene({
         "sea": {"wind_speed_m_s": 5.0, "size_x_m": 64.0, "nx": 64},
         "radar": {"carrier_frequency_hz": 10e9, "sampling_rate_hz": 20e6,
@@ -138,11 +114,20 @@ def test_every_hull_is_heard_after_one_on_the_sphere():
                   "waveform": {"kind": "pulse", "duration_s": 5e-8}},
         "transmitter": {"position_m": (0.0, 0.0, 25.0), "yaw_deg": 90.0, "antenna": {
             "pattern": "isotropic", "azimuth_deg": 0.0, "depression_deg": 0.0}},
-        "propagation": {"earth": "spherical"},
+        "propagation": {"earth": earth},
         "objects": [{"name": f"reflector{i}", "file": mesh, "position_m": (x, d, 2.0),
                      "orientation_deg": (-90.0, 35.26, 45.0), "scatterer": True,
-                     "sea_multipath": False} for i, x in enumerate((-50.0, 50.0))]})
+                     "sea_multipath": False} for i, x in enumerate(xs)]})
     sim = Simulation(scene)
     sim.hulls.disk_cache = ArrayCache.disabled()
+    return sim
+
+
+def test_every_hull_is_heard_after_one_on_the_sphere():
+    """Two 0.5 m trihedrals (SBR) inside the horizon of a 25 m antenna on the 4/3 Earth:
+    both echo (the horizon mask of the first hull once rebound the name of the beams'
+    test, so that the second hull called an array: TypeError)."""
+    sim = _reflectors(0.6 * float(horizon_range(25.0, 2.5, R43)), "spherical",
+                      (-50.0, 50.0))
     assert len(sim.hulls.echoes(sim.radar.geometry(0), 0)) == 2
     assert len(sim.hulls.echoes(sim.radar.geometry(0), 0, seen=lambda corners: True)) == 2
