@@ -32,31 +32,17 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import resource
 import subprocess
 import sys
 import time
 import warnings
 from pathlib import Path
 
+from _memory import peak_rss_mb
 from _smoke import add_option
 
 ROOT = Path(__file__).resolve().parents[1]
 SCENE = ROOT / "scenes" / "coastal_vts_xband.toml"
-
-
-def peak_rss_mb() -> float:
-    """Peak resident memory of this program [MB]: ``VmHWM`` of ``/proc/self/status``, the
-    high-water mark of its own memory (``ru_maxrss`` would also hold the peak of the
-    process that started it, which Linux carries over ``exec``: a test run from a large
-    pytest process read that), else ``ru_maxrss`` where there is no ``/proc``."""
-    try:
-        for line in Path("/proc/self/status").read_text().splitlines():
-            if line.startswith("VmHWM:"):
-                return float(line.split()[1]) / 1024
-    except OSError:
-        pass
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
 
 
 def coverage_scene(path: Path, grid: int, end_m: float, pulses: int, start_m: float = 300.0,

@@ -31,6 +31,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+from _memory import peak_rss_mb
 from _smoke import GRID, add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -57,7 +58,7 @@ def _worker_cpu() -> float:
 
 
 def _worker_rss_mb() -> float:
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    return peak_rss_mb()
 
 
 def _load() -> str:
@@ -136,7 +137,7 @@ def bench_costs(grids: list[int], repeat: int = 3) -> dict:
     print(f"\n3. per-block costs (best of {repeat}; cpu = this process's CPU time); {_load()}")
     out = {}
     for g in grids:
-        rss0 = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+        rss0 = peak_rss_mb()
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             sim = Simulation(_scene(g, 400), base_dir=SIM2.parent)
@@ -153,7 +154,7 @@ def bench_costs(grids: list[int], repeat: int = 3) -> dict:
             c = _cpu()
             sim.sea.state(float(r))
             surface.append(_cpu() - c)
-        rss = (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - rss0) / 1024.0
+        rss = peak_rss_mb() - rss0
         res = {"pulse": min(pulse), "trace": max(min(trace) - min(pulse), 0.0),
                "surface": min(surface), "facets": 2 * (g - 1) ** 2, "rss_mb": rss}
         out[g] = res

@@ -26,12 +26,12 @@ from __future__ import annotations
 
 import argparse
 import os
-import resource
 import time
 import warnings
 from pathlib import Path
 
 import numpy as np
+from _memory import peak_rss_mb
 from _smoke import GRID, add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -184,7 +184,7 @@ def motion(a, held: tuple[float, float]) -> None:
           f"{held1[0] / held[0]:.2f})")
     print(f"    new surface every pulse, evolving (the default, 'auto') / held (the former "
           f"default): {evo1[0] / held1[0]:.2f} wall, {evo1[1] / held1[1]:.2f} CPU")
-    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    rss = peak_rss_mb()
     print(f"peak RSS {rss:.0f} MiB")
 
 

@@ -11,10 +11,10 @@ from __future__ import annotations
 
 import argparse
 import os
-import resource
 import time
 
 import numpy as np
+from _memory import peak_rss_mb
 from _smoke import GRID, add_option
 
 from seaecho.ocean.spectra import DirectionalSpectrum
@@ -51,7 +51,7 @@ def main() -> None:
                                               np.random.default_rng(0)), args.repeat)
         t_z, _ = best_of(lambda surf=surf: surf.elevation(12.3), args.repeat)
         t_all, _ = best_of(lambda surf=surf: surf.fields(12.3), args.repeat)
-        rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+        rss = peak_rss_mb()
         print(f"{name:>10} {t_syn * 1e3:11.1f} {t_z * 1e3:14.1f} {t_all * 1e3:18.1f} "
               f"{(t_syn + t_z) * 1e3:18.1f} {rss:15.0f}")
 

@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import argparse
 import os
-import resource
 import subprocess
 import sys
 import tempfile
@@ -30,6 +29,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+from _memory import peak_rss_mb
 from _smoke import GRID, add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -261,7 +261,7 @@ def _child_run(scene_path: str, out: str) -> None:
     warnings.simplefilter("ignore")
     t = time.perf_counter()
     Simulation(load_scene(scene_path)).run(out, progress=False)
-    peak_mb = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    peak_mb = peak_rss_mb()
     print(f"{peak_mb:.1f} {time.perf_counter() - t:.1f}")
 
 

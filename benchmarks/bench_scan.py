@@ -19,12 +19,12 @@ from __future__ import annotations
 
 import argparse
 import os
-import resource
 import time
 import warnings
 from pathlib import Path
 
 import numpy as np
+from _memory import peak_rss_mb
 from _smoke import add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -97,7 +97,7 @@ def main() -> None:
               f"{r['n'] / r['wall_s']:.1f} pulses/s; revolution (extrapolated) "
               f"{r['wall_s'] * scale:.0f} s wall / {r['cpu_s'] * scale:.0f} s CPU; "
               f"load {os.getloadavg()[0]:.1f}", flush=True)
-    rss_mib = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    rss_mib = peak_rss_mb()
     print(f"  peak resident memory {rss_mib:.0f} MiB (both runs)", flush=True)
 
 

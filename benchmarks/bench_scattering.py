@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import argparse
 import os
-import resource
 import time
 
 import numpy as np
+from _memory import peak_rss_mb
 from _smoke import add_option
 
 from seaecho.constants import C0
@@ -92,7 +92,7 @@ def main() -> None:
             ta = best_time(amp, repeats if n <= 65536 or backend == "drjit" else 3)
             print(f"{name:>8} ({n:7d} facets) {backend:>5}: facet_sigma {ts * 1e3:8.1f} ms"
                   f"   facet_amplitudes {ta * 1e3:8.1f} ms")
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    peak = peak_rss_mb()
     print(f"peak resident memory: {peak:.0f} MiB")
     print(f"load average after: {os.getloadavg()}")
 

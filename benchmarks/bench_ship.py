@@ -23,12 +23,12 @@ from __future__ import annotations
 
 import argparse
 import os
-import resource
 import time
 import warnings
 from pathlib import Path
 
 import numpy as np
+from _memory import peak_rss_mb
 from _smoke import add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -42,7 +42,7 @@ def _load():
 
 
 def _rss_mb() -> float:
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    return peak_rss_mb()
 
 
 def _simulation(name: str, **objects):

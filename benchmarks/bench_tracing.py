@@ -1,7 +1,7 @@
 """Benchmark of the tracing stage: vertex update (BVH rebuild) and visibility + local angles.
 
 Run ``python benchmarks/bench_tracing.py [--sizes 512 1024] [--repeat 5]``. Each size runs
-in its own subprocess so that its peak resident memory (``ru_maxrss``, which includes
+in its own subprocess so that its peak resident memory (``VmHWM``, which includes
 Dr.Jit / Embree buffers that ``tracemalloc`` does not see) is its own. Times are the best
 of ``--repeat`` runs after a warm-up call (JIT compilation excluded; Dr.Jit caches kernels
 on disk). The surface is a Gaussian random sea on a 1 m grid (rms height 0.5 m,
@@ -16,12 +16,12 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import resource
 import subprocess
 import sys
 import time
 
 import numpy as np
+from _memory import peak_rss_mb
 from _smoke import GRID, add_option
 
 
@@ -82,7 +82,7 @@ def run_size(n: int, repeat: int, variant: str | None) -> dict:
         "visibility_and_angles_s": t_vis, "facet_geometry_s": t_geom,
         "frames_s": t_frames, "frames_numpy_s": t_frames_np, "shadow_rays_2x_all_s": t_rays,
         "lit_fraction": float(f.lit.mean()), "seen_fraction": float(f.seen.mean()),
-        "peak_rss_mib": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0,
+        "peak_rss_mib": peak_rss_mb(),
     }
 
 

@@ -21,12 +21,12 @@ from __future__ import annotations
 
 import argparse
 import os
-import resource
 import time
 import warnings
 from pathlib import Path
 
 import numpy as np
+from _memory import peak_rss_mb
 from _smoke import RAYS_PER_WAVELENGTH, add_option
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -54,7 +54,7 @@ def _load() -> str:
 
 
 def _rss_mb() -> float:
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    return peak_rss_mb()
 
 
 def scene(rays: float | None = None, ships: int = 10):

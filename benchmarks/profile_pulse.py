@@ -28,12 +28,12 @@ import argparse
 import functools
 import importlib
 import os
-import resource
 import sys
 import time
 import warnings
 from pathlib import Path
 
+from _memory import peak_rss_mb
 from _smoke import GRID, add_option, small_scene
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -244,7 +244,7 @@ def main() -> None:
               f"{1e3 * timer.cpu[label] / n:10.1f} {timer.calls[label] / n:6.2f}")
     print(f"  {'per pulse, all (pulse + compression)':44s} {1e3 * wall / n:10.1f} "
           f"{1e3 * cpu / n:10.1f}")
-    print(f"  peak RSS {resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024:.0f} MiB")
+    print(f"  peak RSS {peak_rss_mb():.0f} MiB")
 
 
 if __name__ == "__main__":
