@@ -82,6 +82,19 @@ DRIFT_FRACTION = SURFACE_DRIFT_OVER_U10
 N_PULSES = 96
 
 
+def write_csv(outdir: str, name: str, header: list[str], rows: list[list]) -> Path:
+    """Write ``rows`` under ``header`` to ``outdir/name`` (made if missing); its path."""
+    out = Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    path = out / name
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(header)
+        w.writerows(rows)
+    print(f"wrote {path}")
+    return path
+
+
 def references(u19_5: float, grazing_deg: float = GRAZING_DEG) -> dict[str, float]:
     """Bragg line and the wind drift's Doppler [Hz] (monostatic, upwind)."""
     lam = C0 / F
@@ -175,21 +188,14 @@ def gmf_comparison(outdir: str = "docs/figures", seeds=GMF_SEEDS, size: float = 
                              r["bragg_centroid_hz"].mean(), ref_vv, ref_hh)),
                          *(round(float(vh(x, freq, inc)), 3)
                            for x in (vv.mean(), hh.mean(), ref_vv, ref_hh))])
-    out = Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / ("dynamics_doppler_gmf.csv" if wind_drift is None
-                  else f"dynamics_doppler_gmf_{wind_drift.replace('none', 'nodrift')}.csv")
-    with open(path, "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(["band", "frequency_hz", "incidence_deg", "u19_5_m_s", "u10_m_s",
-                    "look_deg", "spreading", "centroid_vv_hz", "centroid_vv_std_hz",
-                    "centroid_hh_hz", "centroid_hh_std_hz", "width_vv_hz", "width_hh_hz",
-                    "bragg_centroid_hz", "published_vv_hz", "published_hh_hz",
-                    "velocity_vv_m_s", "velocity_hh_m_s", "published_vv_m_s",
-                    "published_hh_m_s"])
-        w.writerows(rows)
-    print(f"wrote {path}")
-    return path
+    name = ("dynamics_doppler_gmf.csv" if wind_drift is None
+            else f"dynamics_doppler_gmf_{wind_drift.replace('none', 'nodrift')}.csv")
+    return write_csv(outdir, name, [
+        "band", "frequency_hz", "incidence_deg", "u19_5_m_s", "u10_m_s", "look_deg",
+        "spreading", "centroid_vv_hz", "centroid_vv_std_hz", "centroid_hh_hz",
+        "centroid_hh_std_hz", "width_vv_hz", "width_hh_hz", "bragg_centroid_hz",
+        "published_vv_hz", "published_hh_hz", "velocity_vv_m_s", "velocity_hh_m_s",
+        "published_vv_m_s", "published_hh_m_s"], rows)
 
 
 #: the quick case of ``tests/validation/test_doppler_gmf.py``: X band, U19.5 = 8 m/s
@@ -222,16 +228,9 @@ def quick_spread(outdir: str = "docs/figures", seeds=tuple(range(1, 17)),
               f"({time.perf_counter() - t:.0f} s)", flush=True)
         rows += [[n_pulses, s, round(float(a), 2), round(float(b), 2), round(ref, 2)]
                  for s, a, b in zip(seeds, hh, vv, strict=True)]
-    out = Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / "dynamics_doppler_quick_spread.csv"
-    with open(path, "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(["n_pulses", "seed", "centroid_hh_hz", "centroid_vv_hz",
-                    "published_hz"])
-        w.writerows(rows)
-    print(f"wrote {path}")
-    return path
+    return write_csv(outdir, "dynamics_doppler_quick_spread.csv",
+                     ["n_pulses", "seed", "centroid_hh_hz", "centroid_vv_hz",
+                      "published_hz"], rows)
 
 
 #: low-grazing breaking cases (Hwang, Sletten & Toporkov 2008: winds 7-15 m/s, 1.4-5.5 deg)
@@ -264,24 +263,15 @@ def breaking_comparison(outdir: str = "docs/figures", seeds=BREAKING_SEEDS,
                          ("blend+breaking", "vv"), ("blend+breaking", "hh"),
                          ("blend", "vv"), ("blend", "hh"))),
                      round(float(ratio["vv"]), 3), round(float(ratio["hh"]), 3)])
-    out = Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
-    path = out / "dynamics_doppler_breaking.csv"
-    with open(path, "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(["u19_5_m_s", "u10_m_s", "grazing_deg", "centroid_vv_breaking_hz",
-                    "centroid_hh_breaking_hz", "centroid_vv_no_breaking_hz",
-                    "centroid_hh_no_breaking_hz", "ratio_vv", "ratio_hh"])
-        w.writerows(rows)
-    print(f"wrote {path}")
-    return path
+    return write_csv(outdir, "dynamics_doppler_breaking.csv",
+                     ["u19_5_m_s", "u10_m_s", "grazing_deg", "centroid_vv_breaking_hz",
+                      "centroid_hh_breaking_hz", "centroid_vv_no_breaking_hz",
+                      "centroid_hh_no_breaking_hz", "ratio_vv", "ratio_hh"], rows)
 
 
 def main(outdir: str = "docs/figures", grazing_deg: float = GRAZING_DEG) -> Path:
     """Run the three winds at ``grazing_deg`` [deg] (``--grazing G`` on the command
     line); the CSV of a grazing other than 10 deg is named after it."""
-    out = Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
     lam = C0 / F
     rows = []
     for u in WINDS:
@@ -301,15 +291,10 @@ def main(outdir: str = "docs/figures", grazing_deg: float = GRAZING_DEG) -> Path
                      round(ref["f_bragg_hz"], 2), round(ref["f_drift_hz"], 2)])
     name = ("dynamics_doppler_measured.csv" if grazing_deg == GRAZING_DEG
             else f"dynamics_doppler_measured_{grazing_deg:g}deg.csv")
-    path = out / name
-    with open(path, "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(["u19_5_m_s", "u10_m_s", "grazing_deg", "centroid_vv_hz",
-                    "centroid_hh_hz", "width_vv_hz", "width_hh_hz", "bragg_hz",
-                    "drift_hz"])
-        w.writerows(rows)
-    print(f"wrote {path}")
-    return path
+    return write_csv(outdir, name,
+                     ["u19_5_m_s", "u10_m_s", "grazing_deg", "centroid_vv_hz",
+                      "centroid_hh_hz", "width_vv_hz", "width_hh_hz", "bragg_hz",
+                      "drift_hz"], rows)
 
 
 if __name__ == "__main__":

@@ -109,10 +109,16 @@ def _bragg_series(p_plus, theta_deg=45.0, prf=200.0, n=256, current=(0.0, 0.0)):
                                       FacetModel(K, EPS, table, 0.01, 0.01, 0.0, model="spm"),
                                       draws=sp.draws(p / prf), backend="numpy")
         out.append(a[:, 3].sum())
-    spec = np.abs(np.fft.fftshift(np.fft.fft(np.array(out) * np.hanning(n)))) ** 2
+    return _line_frequency(out, prf)
+
+
+def _line_frequency(series, prf: float) -> float:
+    """Frequency [Hz] of the strongest line of a pulse series (Hann window, parabolic
+    interpolation of the peak in dB)."""
+    n = len(series)
+    spec = np.abs(np.fft.fftshift(np.fft.fft(np.array(series) * np.hanning(n)))) ** 2
     f = np.fft.fftshift(np.fft.fftfreq(n, 1 / prf))
     i = int(np.argmax(spec))
-    # parabolic interpolation of the peak in dB
     y0, y1, y2 = np.log(spec[i - 1: i + 2])
     return f[i] + 0.5 * (y0 - y2) / (y0 - 2 * y1 + y2) * (f[1] - f[0])
 
@@ -258,11 +264,7 @@ def _breaking_series(breaker, short=None, prf=200.0, n=128):
                                       draws=sp.draws(p / prf, short), backend="numpy",
                                       breaking_fraction=np.ones(m))
         out.append(a[:, 3].sum())
-    spec = np.abs(np.fft.fftshift(np.fft.fft(np.array(out) * np.hanning(n)))) ** 2
-    f = np.fft.fftshift(np.fft.fftfreq(n, 1 / prf))
-    i = int(np.argmax(spec))
-    y0, y1, y2 = np.log(spec[i - 1: i + 2])
-    return f[i] + 0.5 * (y0 - y2) / (y0 - 2 * y1 + y2) * (f[1] - f[0])
+    return _line_frequency(out, prf)
 
 
 def test_breakers_ride_on_the_long_waves_only():
